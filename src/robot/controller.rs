@@ -1,0 +1,99 @@
+//! The controller's joint convention, kept beside the URDF in `<stem>.controller.yaml`.
+//!
+//! URDF cannot say that the IRB 1400's controller reports axis 3 as the forearm angle to the
+//! horizontal (`rax3 = q3 + q2`, a parallelogram drive), nor that axis 3 has a coupled range, nor
+//! the controller's axis speeds. This small file does. A URDF without one is taken as a serial
+//! arm with its own limits and velocities (converted to degrees).
+
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// How controller axis values map to URDF joint values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Coupling {
+    /// Controller values are URDF values.
+    Serial,
+    /// Controller axis 3 = URDF q3 + q2 (ABB parallel-arm robots; ROS-Industrial "J23_coupled").
+    Parallelogram,
+}
+
+/// Range (deg) and maximum speed (deg/s) of one controller axis.
+#[derive(Clone, Copy, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AxisSpec {
+    #[serde(rename = "min")]
+    pub min_deg: f64,
+    #[serde(rename = "max")]
+    pub max_deg: f64,
+    #[serde(rename = "speed")]
+    pub speed_deg_s: f64,
+}
+
+/// The controller's convention for one robot.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Controller {
+    pub coupling: Coupling,
+    /// Axes 1..6.
+    pub axes: [AxisSpec; 6],
+    /// Range of rax3 - rax2, when the controller bounds the angle between the arms too.
+    pub coupled_axis3_deg: Option<[f64; 2]>,
+    /// Where it came from (None: derived from the URDF).
+    pub source: Option<PathBuf>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawRange {
+    min: f64,
+    max: f64,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawController {
+    coupling: Coupling,
+    axes: Vec<AxisSpec>,
+    #[serde(default)]
+    coupled_axis3: Option<RawRange>,
+}
+
+/// `robots/irb1400.urdf` -> `robots/irb1400.controller.yaml`.
+pub fn path_beside(urdf_path: &Path) -> PathBuf {
+    urdf_path.with_extension("controller.yaml")
+}
+
+/// Parses a controller file; the message says what is wrong (with line:column when YAML is).
+pub fn parse(text: &str) -> Result<Controller, String> {
+    let raw: RawController = serde_saphyr::from_str(text).map_err(|e| match e.location() {
+        Some(loc) => format!("{}:{}: {}", loc.line(), loc.column(), first_line(&e.to_string())),
+        None => e.to_string(),
+    })?;
+    let axes: [AxisSpec; 6] = raw
+        .axes
+        .try_into()
+        .map_err(|v: Vec<AxisSpec>| format!("`axes` must list 6 axes, found {}", v.len()))?;
+    for (i, a) in axes.iter().enumerate() {
+        if !(a.min_deg.is_finite() && a.max_deg.is_finite() && a.min_deg < a.max_deg) {
+            return Err(format!("axis {}: min must be below max", i + 1));
+        }
+        if !(a.speed_deg_s.is_finite() && a.speed_deg_s > 0.0) {
+            return Err(format!("axis {}: speed must be positive", i + 1));
+        }
+    }
+    let coupled_axis3_deg = match raw.coupled_axis3 {
+        Some(r) if r.min < r.max => Some([r.min, r.max]),
+        Some(_) => return Err("coupled_axis3: min must be below max".into()),
+        None => None,
+    };
+    Ok(Controller {
+        coupling: raw.coupling,
+        axes,
+        coupled_axis3_deg,
+        source: None,
+    })
+}
+
+fn first_line(s: &str) -> &str {
+    s.lines().next().unwrap_or(s)
+}

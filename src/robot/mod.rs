@@ -1,0 +1,361 @@
+//! The robot model: a serial chain of six revolute joints read from a URDF, the collision
+//! cylinders of its first three links, and the controller's joint convention.
+//!
+//! Stage: URDF (+ controller file) -> [`Robot`]. Paper: Ting & Jar (2006) section 3 and 6 lump
+//! the arm into its first three links, each a cylinder; this module holds those cylinders and the
+//! forward kinematics that places them.
+//!
+//! Units: the URDF speaks metres and radians; [`urdf`] converts once, at load, to millimetres
+//! and degrees. Every joint value that crosses this module's API is a **controller value** in
+//! degrees (what a RAPID `jointtarget` holds); [`Robot::urdf_joints_deg`] is the one place that
+//! applies the controller's coupling ([`controller`]) to get URDF joint values.
+
+pub mod controller;
+pub mod urdf;
+
+use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
+use std::path::{Path, PathBuf};
+
+pub use controller::{AxisSpec, Controller, Coupling};
+
+/// Controller values of axes 1..6, degrees.
+pub type Axes6 = [f64; 6];
+/// Controller values of axes 1..3 (the planning axes), degrees.
+pub type Axes3 = [f64; 3];
+
+/// One revolute joint of the chain, in millimetres.
+#[derive(Clone, Debug)]
+pub struct RevoluteJoint {
+    pub name: String,
+    /// Name of the child link (the link this joint moves).
+    pub child_link: String,
+    /// Pose of the joint frame in the parent link frame (fixed joints in between folded in), mm.
+    pub origin: Isometry3<f64>,
+    /// Rotation axis in the joint frame.
+    pub axis: Unit<Vector3<f64>>,
+}
+
+/// A collision cylinder attached to the child link of `joints[joint_index]` (0, 1 or 2).
+#[derive(Clone, Debug)]
+pub struct LinkCylinder {
+    pub link: String,
+    pub joint_index: usize,
+    /// Axis end points in the link frame, mm.
+    pub a: Point3<f64>,
+    pub b: Point3<f64>,
+    pub radius_mm: f64,
+}
+
+/// A robot ready for kinematics and collision checks.
+#[derive(Clone, Debug)]
+pub struct Robot {
+    pub name: String,
+    /// The URDF file it came from, for messages.
+    pub urdf_path: PathBuf,
+    /// Exactly six revolute joints, base to flange.
+    pub joints: Vec<RevoluteJoint>,
+    /// Pose of `tool0` in the last joint's child link frame (identity if the URDF has no tool0).
+    pub flange_to_tool0: Isometry3<f64>,
+    /// Collision cylinders of links 1..3, in chain order.
+    pub cylinders: Vec<LinkCylinder>,
+    pub controller: Controller,
+}
+
+/// Why a robot could not be loaded.
+#[derive(Debug, thiserror::Error)]
+pub enum RobotError {
+    #[error("cannot read URDF {path}: {source}")]
+    ReadUrdf {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("URDF {path} is not valid: {message}")]
+    ParseUrdf { path: PathBuf, message: String },
+    #[error("URDF {path}: {message}")]
+    Model { path: PathBuf, message: String },
+    #[error("cannot read controller file {path}: {source}")]
+    ReadController {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("controller file {path}: {message}")]
+    Controller { path: PathBuf, message: String },
+}
+
+/// Which limit a pose breaks.
+#[derive(Clone, Debug, PartialEq)]
+pub enum RangeViolation {
+    /// Axis (1-based) outside its range.
+    Axis {
+        axis: usize,
+        value_deg: f64,
+        min_deg: f64,
+        max_deg: f64,
+    },
+    /// rax3 - rax2 outside the coupled range.
+    Coupled {
+        value_deg: f64,
+        min_deg: f64,
+        max_deg: f64,
+    },
+}
+
+impl std::fmt::Display for RangeViolation {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            RangeViolation::Axis {
+                axis,
+                value_deg,
+                min_deg,
+                max_deg,
+            } => write!(
+                f,
+                "axis {axis} = {value_deg} deg is outside its range {min_deg} .. {max_deg} deg"
+            ),
+            RangeViolation::Coupled {
+                value_deg,
+                min_deg,
+                max_deg,
+            } => write!(
+                f,
+                "axis 3 - axis 2 = {value_deg} deg is outside the coupled range {min_deg} .. {max_deg} deg"
+            ),
+        }
+    }
+}
+
+impl Robot {
+    /// Reads a URDF and, if present, the controller file beside it (`<stem>.controller.yaml`).
+    pub fn load(urdf_path: &Path) -> Result<Robot, RobotError> {
+        let text = std::fs::read_to_string(urdf_path).map_err(|source| RobotError::ReadUrdf {
+            path: urdf_path.to_path_buf(),
+            source,
+        })?;
+        let controller_path = controller::path_beside(urdf_path);
+        let controller_text = match std::fs::read_to_string(&controller_path) {
+            Ok(t) => Some(t),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
+            Err(source) => {
+                return Err(RobotError::ReadController {
+                    path: controller_path,
+                    source,
+                })
+            }
+        };
+        urdf::robot_from_urdf(
+            urdf_path,
+            &text,
+            controller_text.as_deref().map(|t| (controller_path.as_path(), t)),
+        )
+    }
+
+    /// The bundled IRB 1400 (URDF and controller file compiled in); for tests and benchmarks.
+    pub fn irb1400() -> Robot {
+        let path = Path::new("robots/irb1400.urdf");
+        let controller = Path::new("robots/irb1400.controller.yaml");
+        match urdf::robot_from_urdf(
+            path,
+            include_str!("../../robots/irb1400.urdf"),
+            Some((controller, include_str!("../../robots/irb1400.controller.yaml"))),
+        ) {
+            Ok(r) => r,
+            // The bundled files are tested; reaching this is a build defect, not user input.
+            Err(e) => panic!("bundled IRB 1400 model is invalid: {e}"),
+        }
+    }
+
+    /// URDF joint values (degrees) for controller values: the one place the coupling applies.
+    pub fn urdf_joints_deg(&self, axes_deg: &Axes6) -> [f64; 6] {
+        let mut q = *axes_deg;
+        if self.controller.coupling == Coupling::Parallelogram {
+            q[2] = axes_deg[2] - axes_deg[1];
+        }
+        q
+    }
+
+    /// Checks axes 1..3 against the controller ranges (the coupled axis-3 range included).
+    pub fn check_range3(&self, axes_deg: &Axes3) -> Result<(), RangeViolation> {
+        for (i, (&v, spec)) in axes_deg.iter().zip(&self.controller.axes).enumerate() {
+            if v < spec.min_deg || v > spec.max_deg {
+                return Err(RangeViolation::Axis {
+                    axis: i + 1,
+                    value_deg: v,
+                    min_deg: spec.min_deg,
+                    max_deg: spec.max_deg,
+                });
+            }
+        }
+        if let Some([lo, hi]) = self.controller.coupled_axis3_deg {
+            let v = axes_deg[2] - axes_deg[1];
+            if v < lo || v > hi {
+                return Err(RangeViolation::Coupled {
+                    value_deg: v,
+                    min_deg: lo,
+                    max_deg: hi,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// Checks all six axes against the controller ranges.
+    pub fn check_range6(&self, axes_deg: &Axes6) -> Result<(), RangeViolation> {
+        self.check_range3(&[axes_deg[0], axes_deg[1], axes_deg[2]])?;
+        for (i, (&v, spec)) in axes_deg.iter().zip(&self.controller.axes).enumerate().skip(3) {
+            if v < spec.min_deg || v > spec.max_deg {
+                return Err(RangeViolation::Axis {
+                    axis: i + 1,
+                    value_deg: v,
+                    min_deg: spec.min_deg,
+                    max_deg: spec.max_deg,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// Pose of the child link of each of the first `N` joints in the robot base frame, mm.
+    fn chain_poses<const N: usize>(&self, urdf_deg: &[f64]) -> [Isometry3<f64>; N] {
+        let mut out = [Isometry3::identity(); N];
+        let mut pose = Isometry3::identity();
+        for (i, slot) in out.iter_mut().enumerate() {
+            let j = &self.joints[i];
+            let rot = UnitQuaternion::from_axis_angle(&j.axis, urdf_deg[i].to_radians());
+            pose = pose * j.origin * Isometry3::from_parts(Translation3::identity(), rot);
+            *slot = pose;
+        }
+        out
+    }
+
+    /// Poses of links 1..6 (children of joints 1..6) in the robot base frame, mm.
+    pub fn link_poses(&self, axes_deg: &Axes6) -> [Isometry3<f64>; 6] {
+        self.chain_poses::<6>(&self.urdf_joints_deg(axes_deg))
+    }
+
+    /// Poses of links 1..3 for controller axes 1..3, mm. Axes 4..6 do not move them.
+    pub fn arm_link_poses(&self, axes_deg: &Axes3) -> [Isometry3<f64>; 3] {
+        let q = self.urdf_joints_deg(&[axes_deg[0], axes_deg[1], axes_deg[2], 0.0, 0.0, 0.0]);
+        self.chain_poses::<3>(&q)
+    }
+
+    /// Pose of tool0 in the robot base frame, mm.
+    pub fn tool0(&self, axes_deg: &Axes6) -> Isometry3<f64> {
+        self.link_poses(axes_deg)[5] * self.flange_to_tool0
+    }
+
+    /// Wrist centre (origin of the link moved by joint 5) in the robot base frame, mm.
+    pub fn wrist_centre(&self, axes_deg: &Axes6) -> Point3<f64> {
+        let p = self.link_poses(axes_deg)[4];
+        Point3::from(p.translation.vector)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: f64, b: f64, tol: f64) -> bool {
+        (a - b).abs() <= tol
+    }
+
+    /// Joint values read in ABB RobotStudio and the tool0 position it reported
+    /// (../shared/irb1400.md, forward-kinematics check data).
+    const ROBOTSTUDIO: [(Axes6, [f64; 3]); 4] = [
+        ([30.80, -12.13, 15.33, -40.0, 59.80, -28.0], [691.03, 356.96, 921.35]),
+        ([9.07, 39.20, 46.50, -8.0, 62.87, 44.0], [1072.34, 160.46, 420.62]),
+        ([-95.20, 28.93, 6.17, -20.0, 21.47, 40.0], [-123.39, -1238.42, 1004.51]),
+        ([31.73, -8.40, 61.17, 12.0, -36.80, 24.0], [508.35, 301.93, 460.09]),
+    ];
+
+    #[test]
+    fn tool0_matches_robotstudio_within_0_2_mm() {
+        let robot = Robot::irb1400();
+        for (axes, expected) in ROBOTSTUDIO {
+            let p = robot.tool0(&axes).translation.vector;
+            let err = (p - Vector3::from(expected)).norm();
+            assert!(err < 0.2, "{axes:?}: tool0 at {p:?}, RobotStudio {expected:?}, off by {err} mm");
+        }
+    }
+
+    #[test]
+    fn zero_pose_matches_the_data_sheet() {
+        let robot = Robot::irb1400();
+        let poses = robot.link_poses(&[0.0; 6]);
+        let t = |i: usize| poses[i].translation.vector;
+        assert!((t(1) - Vector3::new(150.0, 0.0, 475.0)).norm() < 1e-9, "axis 2");
+        assert!((t(2) - Vector3::new(150.0, 0.0, 1075.0)).norm() < 1e-9, "axis 3");
+        assert!((t(4) - Vector3::new(870.0, 0.0, 1195.0)).norm() < 1e-9, "wrist centre");
+        let tool = robot.tool0(&[0.0; 6]);
+        assert!((tool.translation.vector - Vector3::new(955.0, 0.0, 1195.0)).norm() < 1e-9);
+        let q = tool.rotation.quaternion();
+        let s = std::f64::consts::FRAC_1_SQRT_2;
+        assert!(close(q.w, s, 1e-5) && close(q.i, 0.0, 1e-9) && close(q.j, s, 1e-5) && close(q.k, 0.0, 1e-9), "{q:?}");
+    }
+
+    /// The wrist-centre closed form of irb1400.md, an independent computation.
+    fn wrist_closed_form(a: Axes3) -> [f64; 3] {
+        let [r1, r2, r3] = a.map(f64::to_radians);
+        let r = 150.0 + 600.0 * r2.sin() + 720.0 * r3.cos() + 120.0 * r3.sin();
+        let z = 475.0 + 600.0 * r2.cos() - 720.0 * r3.sin() + 120.0 * r3.cos();
+        [r * r1.cos(), r * r1.sin(), z]
+    }
+
+    #[test]
+    fn wrist_centre_matches_the_closed_form() {
+        let robot = Robot::irb1400();
+        for a in [[0.0, 0.0, 0.0], [90.0, 0.0, 0.0], [30.0, 20.0, 10.0], [-25.0, 15.0, 10.0], [-160.0, -60.0, 65.0], [12.5, 69.0, -40.0]] {
+            let w = robot.wrist_centre(&[a[0], a[1], a[2], 17.0, -33.0, 80.0]);
+            let e = wrist_closed_form(a);
+            assert!((w.coords - Vector3::from(e)).norm() < 1e-9, "{a:?}: {w:?} vs {e:?}");
+        }
+    }
+
+    #[test]
+    fn coupling_applies_to_axis_3_only() {
+        let robot = Robot::irb1400();
+        assert_eq!(robot.urdf_joints_deg(&[1.0, 20.0, 10.0, 4.0, 5.0, 6.0]), [1.0, 20.0, -10.0, 4.0, 5.0, 6.0]);
+    }
+
+    #[test]
+    fn ranges_include_the_coupled_axis_3_limit() {
+        let robot = Robot::irb1400();
+        assert!(robot.check_range3(&[170.0, 70.0, 70.0]).is_ok());
+        assert!(matches!(robot.check_range3(&[170.5, 0.0, 0.0]), Err(RangeViolation::Axis { axis: 1, .. })));
+        assert!(matches!(robot.check_range3(&[0.0, 0.0, -65.5]), Err(RangeViolation::Axis { axis: 3, .. })));
+        // rax2 = -70, rax3 = +70: both in range, but the arms would fold to 140 deg.
+        assert!(matches!(robot.check_range3(&[0.0, -70.0, 70.0]), Err(RangeViolation::Coupled { .. })));
+        assert!(matches!(robot.check_range3(&[0.0, 60.0, -10.0]), Err(RangeViolation::Coupled { .. })));
+    }
+
+    #[test]
+    fn cylinders_sit_where_irb1400_md_puts_them() {
+        let robot = Robot::irb1400();
+        let c: Vec<_> = robot.cylinders.iter().map(|c| (c.link.as_str(), c.joint_index, c.a, c.b, c.radius_mm)).collect();
+        assert_eq!(c.len(), 3);
+        let near = |p: Point3<f64>, q: [f64; 3]| (p.coords - Vector3::from(q)).norm() < 1e-9;
+        assert_eq!((c[0].0, c[0].1, c[0].4), ("link_1", 0, 350.0));
+        assert!(near(c[0].2, [0.0, 0.0, 0.0]) && near(c[0].3, [0.0, 0.0, 650.0]));
+        assert_eq!((c[1].0, c[1].1, c[1].4), ("link_2", 1, 150.0));
+        assert!(near(c[1].2, [0.0, 0.0, 0.0]) && near(c[1].3, [0.0, 0.0, 600.0]));
+        assert_eq!((c[2].0, c[2].1, c[2].4), ("link_3", 2, 120.0));
+        assert!(near(c[2].2, [-300.0, 0.0, 120.0]) && near(c[2].3, [805.0, 0.0, 120.0]), "{:?} {:?}", c[2].2, c[2].3);
+    }
+
+    #[test]
+    fn a_urdf_without_controller_file_is_serial_with_its_own_limits() {
+        let text = include_str!("../../robots/irb1400.urdf");
+        let robot = urdf::robot_from_urdf(Path::new("x.urdf"), text, None).expect("loads");
+        assert_eq!(robot.controller.coupling, Coupling::Serial);
+        assert!(close(robot.controller.axes[1].max_deg, 70.0, 1e-3));
+        assert!(close(robot.controller.axes[0].speed_deg_s, 110.0, 1e-2));
+        assert_eq!(robot.urdf_joints_deg(&[0.0, 20.0, 10.0, 0.0, 0.0, 0.0])[2], 10.0);
+    }
+
+    #[test]
+    fn non_cylinder_collision_on_the_arm_is_refused() {
+        let text = include_str!("../../robots/irb1400.urdf")
+            .replace(r#"<cylinder radius="0.15" length="0.6"/>"#, r#"<box size="0.1 0.1 0.6"/>"#);
+        let err = urdf::robot_from_urdf(Path::new("x.urdf"), &text, None).unwrap_err();
+        assert!(err.to_string().contains("link_2") && err.to_string().contains("cylinder"), "{err}");
+    }
+}

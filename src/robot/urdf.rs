@@ -1,0 +1,209 @@
+//! The URDF adapter: urdf-rs types -> [`Robot`]. The only place that reads URDF, and the only
+//! place where metres and radians become millimetres and degrees.
+//!
+//! What it accepts: one serial chain from the root link through exactly six revolute (or
+//! continuous) joints; fixed joints anywhere in the chain are folded into the next joint's origin;
+//! a fixed child named `tool0` after joint 6 gives the tool0 frame. Collision geometry of the
+//! child links of joints 1..3 must be cylinders (the paper's lumped model); collision geometry of
+//! links 4..6 is ignored (the forearm cylinder covers the wrist, paper section 6).
+
+use super::controller::{self, AxisSpec, Controller, Coupling};
+use super::{LinkCylinder, RevoluteJoint, Robot, RobotError};
+use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
+use std::path::Path;
+
+const MM_PER_M: f64 = 1000.0;
+
+fn pose_mm(p: &urdf_rs::Pose) -> Isometry3<f64> {
+    let [x, y, z] = *p.xyz;
+    let [roll, pitch, yaw] = *p.rpy;
+    Isometry3::from_parts(
+        Translation3::new(x * MM_PER_M, y * MM_PER_M, z * MM_PER_M),
+        UnitQuaternion::from_euler_angles(roll, pitch, yaw),
+    )
+}
+
+/// Builds a [`Robot`] from URDF text and an optional controller file `(path, text)`.
+pub fn robot_from_urdf(
+    path: &Path,
+    text: &str,
+    controller_file: Option<(&Path, &str)>,
+) -> Result<Robot, RobotError> {
+    let model_err = |message: String| RobotError::Model {
+        path: path.to_path_buf(),
+        message,
+    };
+    let urdf = urdf_rs::read_from_string(text).map_err(|e| RobotError::ParseUrdf {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })?;
+
+    // The root: the one link that is no joint's child.
+    let roots: Vec<&urdf_rs::Link> = urdf
+        .links
+        .iter()
+        .filter(|l| !urdf.joints.iter().any(|j| j.child.link == l.name))
+        .collect();
+    let root = match roots.as_slice() {
+        [r] => r.name.clone(),
+        [] => return Err(model_err("no root link (every link is some joint's child)".into())),
+        _ => {
+            let names: Vec<&str> = roots.iter().map(|l| l.name.as_str()).collect();
+            return Err(model_err(format!("several root links: {}", names.join(", "))));
+        }
+    };
+
+    let mut joints = Vec::new();
+    let mut pending = Isometry3::identity(); // fixed joints since the last revolute one
+    let mut flange_to_tool0 = Isometry3::identity();
+    let mut link = root;
+    loop {
+        let children: Vec<&urdf_rs::Joint> =
+            urdf.joints.iter().filter(|j| j.parent.link == link).collect();
+        let next = match children.as_slice() {
+            [] => break,
+            [j] => *j,
+            _ if joints.len() == 6 => {
+                // Branches after the flange (tool frames, sensors): only tool0 matters.
+                match children.iter().find(|j| j.child.link == "tool0") {
+                    Some(j) => *j,
+                    None => break,
+                }
+            }
+            _ => {
+                let names: Vec<&str> = children.iter().map(|j| j.name.as_str()).collect();
+                return Err(model_err(format!(
+                    "link '{link}' has several child joints ({}); gen-rapid needs one serial chain",
+                    names.join(", ")
+                )));
+            }
+        };
+        match next.joint_type {
+            urdf_rs::JointType::Revolute | urdf_rs::JointType::Continuous if joints.len() < 6 => {
+                let axis = Vector3::from(*next.axis.xyz);
+                let axis = Unit::try_new(axis, 1e-9).ok_or_else(|| {
+                    model_err(format!("joint '{}' has a zero axis", next.name))
+                })?;
+                joints.push((next, pending * pose_mm(&next.origin), axis));
+                pending = Isometry3::identity();
+            }
+            urdf_rs::JointType::Fixed => {
+                pending *= pose_mm(&next.origin);
+                if joints.len() == 6 && next.child.link == "tool0" {
+                    flange_to_tool0 = pending;
+                }
+            }
+            _ if joints.len() == 6 => break,
+            _ => {
+                return Err(model_err(format!(
+                    "joint '{}' is {:?}; gen-rapid handles revolute joints only",
+                    next.name, next.joint_type
+                )))
+            }
+        }
+        link = next.child.link.clone();
+    }
+    if joints.len() != 6 {
+        return Err(model_err(format!(
+            "the chain from the root has {} revolute joints; gen-rapid needs 6",
+            joints.len()
+        )));
+    }
+
+    let mut cylinders = Vec::new();
+    for (index, (joint, _, _)) in joints.iter().enumerate().take(3) {
+        let Some(l) = urdf.links.iter().find(|l| l.name == joint.child.link) else {
+            return Err(model_err(format!("link '{}' is not defined", joint.child.link)));
+        };
+        for c in &l.collision {
+            let urdf_rs::Geometry::Cylinder { radius, length } = c.geometry else {
+                return Err(model_err(format!(
+                    "link '{}': collision geometry must be a cylinder (gen-rapid lumps links 1..3 into cylinders)",
+                    l.name
+                )));
+            };
+            if !(radius > 0.0 && length > 0.0) {
+                return Err(model_err(format!(
+                    "link '{}': cylinder radius and length must be positive",
+                    l.name
+                )));
+            }
+            // URDF cylinders are centred on their origin, axis along local z.
+            let pose = pose_mm(&c.origin);
+            let half = length * MM_PER_M / 2.0;
+            cylinders.push(LinkCylinder {
+                link: l.name.clone(),
+                joint_index: index,
+                a: pose * Point3::new(0.0, 0.0, -half),
+                b: pose * Point3::new(0.0, 0.0, half),
+                radius_mm: radius * MM_PER_M,
+            });
+        }
+    }
+
+    let controller = match controller_file {
+        Some((cpath, ctext)) => {
+            let mut c = controller::parse(ctext).map_err(|message| RobotError::Controller {
+                path: cpath.to_path_buf(),
+                message,
+            })?;
+            c.source = Some(cpath.to_path_buf());
+            c
+        }
+        None => serial_controller(&joints.iter().map(|(j, _, _)| *j).collect::<Vec<_>>())
+            .map_err(model_err)?,
+    };
+
+    Ok(Robot {
+        name: urdf.name.clone(),
+        urdf_path: path.to_path_buf(),
+        joints: joints
+            .into_iter()
+            .map(|(j, origin, axis)| RevoluteJoint {
+                name: j.name.clone(),
+                child_link: j.child.link.clone(),
+                origin,
+                axis,
+            })
+            .collect(),
+        flange_to_tool0,
+        cylinders,
+        controller,
+    })
+}
+
+/// A serial convention from the URDF's own limits and velocities.
+fn serial_controller(joints: &[&urdf_rs::Joint]) -> Result<Controller, String> {
+    let mut axes = [AxisSpec {
+        min_deg: 0.0,
+        max_deg: 0.0,
+        speed_deg_s: 0.0,
+    }; 6];
+    for (a, j) in axes.iter_mut().zip(joints) {
+        let (lo, hi) = if j.joint_type == urdf_rs::JointType::Continuous {
+            (-180.0, 180.0)
+        } else {
+            (j.limit.lower.to_degrees(), j.limit.upper.to_degrees())
+        };
+        if !(lo < hi) {
+            return Err(format!("joint '{}' needs <limit lower < upper>", j.name));
+        }
+        if !(j.limit.velocity > 0.0) {
+            return Err(format!(
+                "joint '{}' needs a positive <limit velocity> (or a controller file beside the URDF)",
+                j.name
+            ));
+        }
+        *a = AxisSpec {
+            min_deg: lo,
+            max_deg: hi,
+            speed_deg_s: j.limit.velocity.to_degrees(),
+        };
+    }
+    Ok(Controller {
+        coupling: Coupling::Serial,
+        axes,
+        coupled_axis3_deg: None,
+        source: None,
+    })
+}
