@@ -1,0 +1,389 @@
+//! Tests of [`render`](super::render) (format and names have their own).
+
+use super::*;
+
+fn point(name: &str, axes_deg: [f64; 6]) -> Target {
+    Target {
+        kind: TargetKind::CellPoint {
+            name: name.to_string(),
+        },
+        axes_deg,
+    }
+}
+fn via(leg: usize, index: usize, axes_deg: [f64; 6]) -> Target {
+    Target {
+        kind: TargetKind::Via { leg, index },
+        axes_deg,
+    }
+}
+
+fn small_program() -> Program {
+    Program {
+        module: "Trunk".to_string(),
+        header: Header {
+            generator: "gen-rapid 0.1.0".to_string(),
+            cell_file: "trunk.yaml".to_string(),
+            planner: "extensile".to_string(),
+            grid_deg: 5.0,
+            clearance_mm: 10.0,
+            base_mm: [0.0, -250.5, 12.26],
+            yaw_deg: -90.0,
+            moves: 3,
+            min_clearance_mm: 14.04,
+            estimated_time_s: Some(3.456),
+        },
+        targets: vec![
+            point("home", [0.0, 0.0, 0.0, 0.0, 30.0, 0.0]),
+            via(0, 1, [10.5, -0.0004, 20.0, -0.0, 29.99951, -180.0]),
+            via(0, 2, [21.0, 1.23456, 19.9996, 0.0, 30.0, 179.9999]),
+            point("pick", [45.0, 10.0, -5.0, 0.0, 60.0, 90.0]),
+        ],
+        speed: "v300".to_string(),
+        zone: "fine".to_string(),
+        tool: "tool0".to_string(),
+    }
+}
+
+/// Written by hand from the specification, not copied from the output.
+const SMALL_EXPECTED: &str = r"MODULE Trunk
+    ! generator: gen-rapid 0.1.0
+    ! cell: trunk.yaml
+    ! planner: extensile
+    ! grid (deg): 5.000
+    ! clearance (mm): 10.0
+    ! base: [0.0, -250.5, 12.3] yaw: -90.000
+    ! moves: 3
+    ! min clearance (mm): 14.0
+    ! estimated time (s): 3.46
+
+    CONST jointtarget home := [[0.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_01 := [[10.500,0.000,20.000,0.000,30.000,-180.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_02 := [[21.000,1.235,20.000,0.000,30.000,180.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget pick := [[45.000,10.000,-5.000,0.000,60.000,90.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+
+    PROC main()
+        MoveAbsJ home\NoEOffs, v300, fine, tool0;
+        MoveAbsJ via01_01\NoEOffs, v300, fine, tool0;
+        MoveAbsJ via01_02\NoEOffs, v300, fine, tool0;
+        MoveAbsJ pick\NoEOffs, v300, fine, tool0;
+    ENDPROC
+ENDMODULE
+";
+
+/// A bigger program with awkward values and name clashes.
+fn awkward_program() -> Program {
+    let mut targets = vec![point(
+        "Start",
+        [-0.0, -0.0004, 0.0004, -1e-12, 123456.7894, -165.0005],
+    )];
+    for i in 1..=12 {
+        let x = i as f64;
+        targets.push(via(
+            0,
+            i,
+            [-x * 0.0001, x * 13.333_333, -x * 7.77777, 1e-9, -1e-7, x],
+        ));
+    }
+    targets.push(point("VIA01_03", [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]));
+    targets.push(via(
+        1,
+        1,
+        [-0.00049, 0.00049, -0.0005, 0.0005, 170.0, -170.0],
+    ));
+    targets.push(point("End_point", [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]));
+    Program {
+        module: "CellX_01".to_string(),
+        header: Header {
+            generator: "gen-rapid 0.1.0".to_string(),
+            cell_file: "c\u{e9}ll\tfile.yaml ".to_string(),
+            planner: "depth-first".to_string(),
+            grid_deg: 2.5e-3,
+            clearance_mm: -0.04,
+            base_mm: [1e7, -0.04, 3.0],
+            yaw_deg: -0.0001,
+            moves: targets.len() - 1,
+            min_clearance_mm: 1e-20,
+            estimated_time_s: None,
+        },
+        targets,
+        speed: "v1000".to_string(),
+        zone: "z10".to_string(),
+        tool: "gripper".to_string(),
+    }
+}
+
+/// Checks the textual guarantees that hold for any rendered module.
+fn assert_properties(text: &str) {
+    assert!(
+        text.ends_with('\n') && !text.ends_with("\n\n"),
+        "must end with exactly one newline"
+    );
+    assert!(!text.contains('\r'), "no CR");
+    assert!(!text.contains('\t'), "no tabs");
+    assert!(text.is_ascii(), "ASCII only");
+    assert!(
+        !text.contains("-0.000") && !text.contains("-0.0,") && !text.contains("-0.0]"),
+        "no negative zero"
+    );
+    let lines: Vec<&str> = text.lines().collect();
+    assert!(lines[0].starts_with("MODULE "));
+    assert_eq!(*lines.last().unwrap(), "ENDMODULE");
+    for line in &lines {
+        assert_eq!(line.trim_end(), *line, "trailing whitespace in {line:?}");
+    }
+    // Numbers: no exponent apart from the literal 9E9 of unused external axes.
+    for token in
+        text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '.' || c == '-' || c == '+'))
+    {
+        let body = token.trim_start_matches(['-', '+']);
+        if body.starts_with(|c: char| c.is_ascii_digit()) && body != "9E9" {
+            assert!(!body.contains(['e', 'E']), "exponent in number {token:?}");
+        }
+    }
+    // Indentation and pairing of CONSTs and MoveAbsJs.
+    let mut consts = Vec::new();
+    let mut moves = Vec::new();
+    for line in &lines {
+        if let Some(rest) = line.strip_prefix("    CONST jointtarget ") {
+            let (name, value) = rest.split_once(" := ").expect("CONST shape");
+            assert!(
+                value.starts_with("[[") && value.ends_with("],[9E9,9E9,9E9,9E9,9E9,9E9]];"),
+                "{line}"
+            );
+            let axes = &value[2..value.find(']').unwrap()];
+            let axes: Vec<&str> = axes.split(',').collect();
+            assert_eq!(axes.len(), 6, "{line}");
+            for a in axes {
+                let (_, frac) = a.split_once('.').expect("decimal point");
+                assert_eq!(frac.len(), 3, "{line}");
+                assert!(a.parse::<f64>().unwrap().is_finite());
+            }
+            consts.push(name.to_string());
+        } else if let Some(rest) = line.strip_prefix("        MoveAbsJ ") {
+            let (name, _) = rest.split_once("\\NoEOffs, ").expect("MoveAbsJ shape");
+            assert!(rest.ends_with(';'));
+            moves.push(name.to_string());
+        } else if line.contains("CONST") || line.contains("MoveAbsJ") {
+            panic!("badly indented line {line:?}");
+        }
+    }
+    assert_eq!(
+        consts, moves,
+        "each CONST used by exactly one MoveAbsJ, in order"
+    );
+    let mut lower: Vec<String> = consts.iter().map(|n| n.to_ascii_lowercase()).collect();
+    lower.sort();
+    lower.dedup();
+    assert_eq!(
+        lower.len(),
+        consts.len(),
+        "CONST names unique ignoring case"
+    );
+    for name in &consts {
+        assert_eq!(check_identifier(name), Ok(()), "{name}");
+    }
+}
+
+#[test]
+fn render_small_program_matches_hand_written_text() {
+    let text = render(&small_program()).unwrap();
+    assert_eq!(text, SMALL_EXPECTED);
+}
+
+#[test]
+fn render_small_program_has_properties() {
+    assert_properties(&render(&small_program()).unwrap());
+    assert_properties(SMALL_EXPECTED); // the property checker itself accepts a known-good text
+}
+
+#[test]
+fn render_awkward_program_has_properties() {
+    let program = awkward_program();
+    let text = render(&program).unwrap();
+    assert_properties(&text);
+    // Clash resolution visible in the output.
+    assert!(text.contains("CONST jointtarget VIA01_03 := "), "{text}");
+    assert!(text.contains("CONST jointtarget via01_03_x1 := "), "{text}");
+    assert!(
+        text.contains("MoveAbsJ via02_01\\NoEOffs, v1000, z10, gripper;"),
+        "{text}"
+    );
+    // Header text sanitized, time line absent.
+    assert!(text.contains("    ! cell: c?ll?file.yaml\n"), "{text}");
+    assert!(!text.contains("estimated time"), "{text}");
+    assert!(
+        text.contains("    ! base: [10000000.0, 0.0, 3.0] yaw: 0.000\n"),
+        "{text}"
+    );
+    assert!(text.contains("    ! grid (deg): 0.003\n"), "{text}");
+    assert!(text.contains("    ! clearance (mm): 0.0\n"), "{text}");
+    assert!(text.contains("    ! min clearance (mm): 0.0\n"), "{text}");
+    assert!(text.contains("    ! moves: 15\n"), "{text}");
+    // -165.0005 is stored as -165.000499999..., so it rounds towards zero.
+    assert!(
+        text.contains("[[0.000,0.000,0.000,0.000,123456.789,-165.000]"),
+        "{text}"
+    );
+    assert_eq!(text.matches("MoveAbsJ ").count(), program.targets.len());
+}
+
+#[test]
+fn render_is_deterministic() {
+    let a = render(&awkward_program()).unwrap();
+    let b = render(&awkward_program()).unwrap();
+    assert_eq!(a.as_bytes(), b.as_bytes());
+}
+
+#[test]
+fn render_without_targets() {
+    let mut p = small_program();
+    p.targets.clear();
+    p.header.moves = 0;
+    p.header.estimated_time_s = None;
+    let text = render(&p).unwrap();
+    let expected = r"MODULE Trunk
+    ! generator: gen-rapid 0.1.0
+    ! cell: trunk.yaml
+    ! planner: extensile
+    ! grid (deg): 5.000
+    ! clearance (mm): 10.0
+    ! base: [0.0, -250.5, 12.3] yaw: -90.000
+    ! moves: 0
+    ! min clearance (mm): 14.0
+
+
+    PROC main()
+    ENDPROC
+ENDMODULE
+";
+    assert_eq!(text, expected);
+    assert_properties(&text);
+}
+
+#[test]
+fn render_rejects_invalid_module_name() {
+    for bad in [
+        "",
+        "1trunk",
+        "my-cell",
+        "Module",
+        "jointtarget",
+        &"m".repeat(33),
+    ] {
+        let mut p = small_program();
+        p.module = bad.to_string();
+        assert!(
+            matches!(render(&p), Err(RapidError::InvalidModuleName { .. })),
+            "{bad:?}"
+        );
+    }
+}
+
+#[test]
+fn render_checks_speed_zone_tool_shape_but_allows_predefined() {
+    let mut p = small_program();
+    p.speed = "vmax".into();
+    p.zone = "z200".into();
+    p.tool = "Tool0".into();
+    assert!(render(&p).is_ok());
+    for (field, bad) in [
+        (0, "v 300"),
+        (1, "If"),
+        (2, "tool-1"),
+        (0, ""),
+        (1, "9fine"),
+    ] {
+        let mut p = small_program();
+        match field {
+            0 => p.speed = bad.into(),
+            1 => p.zone = bad.into(),
+            _ => p.tool = bad.into(),
+        }
+        let role = ["speed", "zone", "tool"][field];
+        match render(&p) {
+            Err(RapidError::InvalidDataName { role: r, name, .. }) => {
+                assert_eq!(r, role);
+                assert_eq!(name, bad);
+            }
+            other => panic!("{bad:?}: expected InvalidDataName, got {other:?}"),
+        }
+    }
+}
+
+#[test]
+fn render_rejects_target_named_like_module_or_tool() {
+    let mut p = small_program();
+    p.targets[3] = point("TRUNK", [0.0; 6]);
+    assert!(matches!(render(&p), Err(RapidError::NameClash { .. })));
+    let mut p = small_program();
+    p.tool = "gripper".into();
+    p.targets[3] = point("Gripper", [0.0; 6]);
+    let err = render(&p).unwrap_err();
+    assert!(matches!(err, RapidError::NameClash { .. }));
+    assert!(err.to_string().contains("tool"), "{err}");
+    let mut p = small_program();
+    p.module = "gripper".into();
+    p.tool = "Gripper".into();
+    let err = render(&p).unwrap_err();
+    assert!(err.to_string().contains("the tool data `Gripper`"), "{err}");
+    let mut p = small_program();
+    p.module = "main".into();
+    assert!(matches!(render(&p), Err(RapidError::NameClash { .. })));
+}
+
+#[test]
+fn render_reports_invalid_cell_point_by_name_and_rule() {
+    let mut p = small_program();
+    p.targets[3] = point("Proc", [0.0; 6]);
+    let err = render(&p).unwrap_err();
+    let msg = err.to_string();
+    assert!(msg.contains("`Proc`") && msg.contains("reserved"), "{msg}");
+}
+
+#[test]
+fn render_rejects_non_finite_values() {
+    let mut p = small_program();
+    p.targets[2].axes_deg[4] = f64::NAN;
+    let err = render(&p).unwrap_err();
+    assert!(matches!(err, RapidError::NonFinite { .. }));
+    assert!(
+        err.to_string().contains("axis 5 of target `via01_02`"),
+        "{err}"
+    );
+    let mut p = small_program();
+    p.header.min_clearance_mm = f64::INFINITY;
+    assert!(matches!(render(&p), Err(RapidError::NonFinite { .. })));
+    let mut p = small_program();
+    p.header.estimated_time_s = Some(f64::NEG_INFINITY);
+    assert!(matches!(render(&p), Err(RapidError::NonFinite { .. })));
+}
+
+#[test]
+fn render_rejects_moves_mismatch() {
+    let mut p = small_program();
+    p.header.moves = 4;
+    assert!(matches!(
+        render(&p),
+        Err(RapidError::MovesMismatch {
+            header: 4,
+            actual: 3
+        })
+    ));
+}
+
+#[test]
+fn template_source_is_ascii_lf_with_one_final_newline() {
+    assert!(TEMPLATE.is_ascii());
+    assert!(!TEMPLATE.contains('\r'));
+    assert!(TEMPLATE.ends_with("ENDMODULE\n"));
+    assert!(!TEMPLATE.ends_with("\n\n"));
+}
+
+#[test]
+fn comment_text_is_printable_ascii() {
+    assert_eq!(comment_text("tr\u{e4}d.yaml"), "tr?d.yaml");
+    assert_eq!(comment_text("a\nb\r"), "a?b?");
+    assert_eq!(comment_text("  x  "), "x");
+    assert_eq!(comment_text(""), "-");
+    assert_eq!(comment_text("   "), "-");
+}
