@@ -1,1 +1,2 @@
 //! gen-rapid
+pub mod geometry;
