@@ -253,12 +253,14 @@ fn bounds(c: &Cylinder, bx: &Aabb) -> (f64, f64) {
 /// touch or overlap), via parry3d's GJK. Slow path.
 ///
 /// Precision: parry3d 0.31 computes in `f32` and its GJK stops at a relative
-/// gap of about `sqrt(10 * f32::EPSILON) ≈ 1.1e-3`; the query is made in a
-/// frame centred on the box to keep the `f32` rounding small, and the result
-/// is clamped into the exact capsule bounds, so it is always within
-/// `[distance_capsule_aabb, distance_inner_capsule_aabb]` and within about
-/// `1e-3 mm + 1.1e-3 × distance` of the true value (from above, as GJK
-/// returns a pair of points on the two shapes).
+/// gap of about `sqrt(10 * f32::EPSILON) ≈ 1.1e-3` of the shapes' support
+/// scale, so on cell-sized inputs (~2000 mm) it can be off by up to about
+/// 1 mm (0.6 mm seen in the tests), always from above: GJK returns a pair of
+/// points on the two shapes. The query is made in a frame centred on the box
+/// (smaller `f32` rounding), run in both argument orders (a single run was
+/// seen to stall at 70.8 mm for a true 2.88 mm), and the result is clamped
+/// into the exact capsule bounds, so it always lies in
+/// `[distance_capsule_aabb, distance_inner_capsule_aabb]`.
 ///
 /// Degenerate inputs: radius 0 gives the segment distance; an axis of zero
 /// length has no orientation, and is answered conservatively with the ball of
