@@ -1,0 +1,89 @@
+//! Timing of the hand-written geometry queries against parry3d.
+use criterion::{criterion_group, criterion_main, Criterion};
+use gen_rapid::geometry::{
+    cylinder_clear_of_aabb, distance_cylinder_aabb_exact, distance_segment_aabb, Aabb, Cylinder,
+    Point,
+};
+use parry3d::math::{Pose, Vector};
+use std::hint::black_box;
+
+fn cases() -> Vec<(Cylinder, Aabb)> {
+    let mut s: u64 = 0x9E37_79B9_7F4A_7C15;
+    let mut r = move || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s >> 11) as f64 / (1u64 << 53) as f64 * 2000.0
+    };
+    (0..256)
+        .map(|_| {
+            let c = Point::new(r(), r(), r());
+            let h = nalgebra::Vector3::new(r() * 0.2, r() * 0.2, r() * 0.2);
+            let bx = Aabb::new(c - h, c + h);
+            let cyl = Cylinder {
+                a: Point::new(r(), r(), r()),
+                b: Point::new(r(), r(), r()),
+                radius: 20.0 + r() * 0.05,
+            };
+            (cyl, bx)
+        })
+        .collect()
+}
+
+fn bench(cr: &mut Criterion) {
+    let cs = cases();
+    let n = cs.len();
+    let parry: Vec<_> = cs
+        .iter()
+        .map(|(c, bx)| {
+            let m = nalgebra::center(&bx.min, &bx.max);
+            let h = (bx.max - bx.min) * 0.5;
+            let cub = parry3d::shape::Cuboid::new(Vector::new(h.x as f32, h.y as f32, h.z as f32));
+            let (a, b) = (c.a - m, c.b - m);
+            let seg = parry3d::shape::Segment::new(
+                Vector::new(a.x as f32, a.y as f32, a.z as f32),
+                Vector::new(b.x as f32, b.y as f32, b.z as f32),
+            );
+            (cub, seg)
+        })
+        .collect();
+    let mut i = 0usize;
+    cr.bench_function("distance_segment_aabb", |bn| {
+        bn.iter(|| {
+            i = (i + 1) % n;
+            let (c, bx) = &cs[i];
+            distance_segment_aabb(black_box(&c.a), black_box(&c.b), black_box(bx))
+        })
+    });
+    cr.bench_function("parry_segment_cuboid", |bn| {
+        bn.iter(|| {
+            i = (i + 1) % n;
+            let (cub, seg) = &parry[i];
+            parry3d::query::distance(
+                &Pose::identity(),
+                black_box(cub),
+                &Pose::identity(),
+                black_box(seg),
+            )
+            .map(|d| d.distance)
+            .unwrap_or(0.0)
+        })
+    });
+    cr.bench_function("cylinder_clear_of_aabb_50mm", |bn| {
+        bn.iter(|| {
+            i = (i + 1) % n;
+            let (c, bx) = &cs[i];
+            cylinder_clear_of_aabb(black_box(c), black_box(bx), 50.0)
+        })
+    });
+    cr.bench_function("distance_cylinder_aabb_exact", |bn| {
+        bn.iter(|| {
+            i = (i + 1) % n;
+            let (c, bx) = &cs[i];
+            distance_cylinder_aabb_exact(black_box(c), black_box(bx))
+        })
+    });
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -1,0 +1,829 @@
+//! Shapes and distance queries for the collision checker.
+//!
+//! The arm is lumped into three link cylinders, following Ting & Jar (2006),
+//! sections 3 and 6 ("the shape of the first three links is assumed to be
+//! cylinder"); the obstacles of the cell are axis-aligned boxes. All lengths
+//! are millimetres in the cell frame.
+//!
+//! The planner calls these queries millions of times, so the hot functions
+//! ([`distance_point_aabb`], [`distance_segment_aabb`], the two capsule
+//! bounds and [`cylinder_clear_of_aabb`]) are hand-written, closed-form,
+//! allocation-free and exact in `f64`. The exact cylinder–box distance has no
+//! closed form; it is delegated to parry3d's GJK
+//! ([`distance_cylinder_aabb_exact`]), which is only consulted when the two
+//! capsule bounds disagree. Every fast query is checked against parry3d in the
+//! tests of this module.
+//!
+//! Inputs are assumed finite (validated upstream): no function panics on
+//! finite input, and behaviour for NaN is out of scope (it may return NaN or
+//! an arbitrary value, but does not panic).
+
+use nalgebra::{Point3, Vector3};
+
+/// A point of the cell frame, mm.
+pub type Point = Point3<f64>;
+
+/// Bounds within which the two capsule bounds are considered to agree in
+/// [`distance_cylinder_aabb`]: below this band width (mm) the lower bound is
+/// returned without calling parry.
+pub const BOUNDS_AGREE_TOL: f64 = 1e-9;
+
+/// Axis-aligned box in the cell frame, mm. Invariant: `min <= max` per axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Aabb {
+    /// Lower corner, mm.
+    pub min: Point,
+    /// Upper corner, mm.
+    pub max: Point,
+}
+
+/// Solid right circular cylinder with flat caps: axis segment `a -> b` (mm)
+/// and `radius` (mm, assumed `>= 0`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cylinder {
+    /// Centre of the first cap, mm.
+    pub a: Point,
+    /// Centre of the second cap, mm.
+    pub b: Point,
+    /// Radius, mm.
+    pub radius: f64,
+}
+
+impl Aabb {
+    /// Box spanned by two corners (mm). The corners are sorted per axis, so
+    /// any two opposite corners may be given.
+    pub fn new(min: Point, max: Point) -> Aabb {
+        Aabb {
+            min: min.inf(&max),
+            max: min.sup(&max),
+        }
+    }
+
+    /// The box grown by `by` mm on every side (a Minkowski sum with a cube,
+    /// not with a ball). A negative `by` shrinks it; an axis that would
+    /// invert collapses to its mid-plane.
+    pub fn grown(&self, by: f64) -> Aabb {
+        let mut min = self.min;
+        let mut max = self.max;
+        for i in 0..3 {
+            let lo = min[i] - by;
+            let hi = max[i] + by;
+            if lo <= hi {
+                min[i] = lo;
+                max[i] = hi;
+            } else {
+                let mid = 0.5 * (self.min[i] + self.max[i]);
+                min[i] = mid;
+                max[i] = mid;
+            }
+        }
+        Aabb { min, max }
+    }
+
+    /// Centre of the box, mm.
+    fn center(&self) -> Point {
+        nalgebra::center(&self.min, &self.max)
+    }
+}
+
+/// Signed excess of coordinate `x` outside the interval `[lo, hi]`:
+/// negative below, positive above, zero inside.
+#[inline(always)]
+fn excess(x: f64, lo: f64, hi: f64) -> f64 {
+    if x < lo {
+        x - lo
+    } else if x > hi {
+        x - hi
+    } else {
+        0.0
+    }
+}
+
+/// Squared distance from a point to a box, mm².
+#[inline(always)]
+fn distance_sq_point_aabb(p: &Point, b: &Aabb) -> f64 {
+    let ex = excess(p.x, b.min.x, b.max.x);
+    let ey = excess(p.y, b.min.y, b.max.y);
+    let ez = excess(p.z, b.min.z, b.max.z);
+    ex * ex + ey * ey + ez * ez
+}
+
+/// Euclidean distance from point `p` to box `b`, mm; 0 inside or on it.
+#[inline]
+pub fn distance_point_aabb(p: &Point, b: &Aabb) -> f64 {
+    distance_sq_point_aabb(p, b).sqrt()
+}
+
+/// Parameter `t` in `[0, 1]` of the point of segment `a + t d` closest to the
+/// box (one minimiser when several exist).
+///
+/// `g(t)`, the squared distance from `a + t d` to the box, is a convex, C¹,
+/// piecewise quadratic function of `t`, with breakpoints where a coordinate
+/// crosses a face plane (at most 6). Its derivative is
+/// `g'(t) / 2 = sum_i d_i * excess_i(t)`, which is non-decreasing and linear
+/// on each piece. We sort the breakpoints inside `(0, 1)`, walk the pieces
+/// left to right and stop on the first piece whose right end has
+/// `g' >= 0`; there the minimiser is the root of the linear derivative,
+/// clamped to the piece. No iteration, no allocation.
+#[inline]
+fn closest_param_segment_aabb(a: &Point, d: &Vector3<f64>, bx: &Aabb) -> f64 {
+    // Breakpoints strictly inside (0, 1), plus the closing 1.0.
+    let mut bp = [0.0f64; 7];
+    let mut n = 0usize;
+    for i in 0..3 {
+        let di = d[i];
+        if di != 0.0 {
+            let inv = 1.0 / di;
+            let t0 = (bx.min[i] - a[i]) * inv;
+            let t1 = (bx.max[i] - a[i]) * inv;
+            if t0 > 0.0 && t0 < 1.0 {
+                bp[n] = t0;
+                n += 1;
+            }
+            if t1 > 0.0 && t1 < 1.0 {
+                bp[n] = t1;
+                n += 1;
+            }
+        }
+    }
+    // Insertion sort of at most 6 values.
+    for i in 1..n {
+        let v = bp[i];
+        let mut j = i;
+        while j > 0 && bp[j - 1] > v {
+            bp[j] = bp[j - 1];
+            j -= 1;
+        }
+        bp[j] = v;
+    }
+    bp[n] = 1.0;
+    n += 1;
+
+    let mut lo = 0.0f64;
+    for &hi in &bp[..n] {
+        // On [lo, hi] every axis stays in one state (below / inside / above);
+        // read it at the midpoint. g'(t)/2 = A t + B on this piece.
+        let mid = 0.5 * (lo + hi);
+        let mut ca = 0.0f64;
+        let mut cb = 0.0f64;
+        for i in 0..3 {
+            let di = d[i];
+            let x = a[i] + mid * di;
+            let bound = if x < bx.min[i] {
+                bx.min[i]
+            } else if x > bx.max[i] {
+                bx.max[i]
+            } else {
+                continue;
+            };
+            ca += di * di;
+            cb += di * (a[i] - bound);
+        }
+        if ca * hi + cb >= 0.0 {
+            // The minimiser lies in this piece.
+            return if ca > 0.0 {
+                (-cb / ca).max(lo).min(hi)
+            } else {
+                lo
+            };
+        }
+        lo = hi;
+    }
+    1.0
+}
+
+/// Exact Euclidean distance between segment `a -> b` and box `bx`, mm;
+/// 0 when they touch or intersect. Closed form (see the module source); a
+/// degenerate segment (`a == b`) is a point.
+#[inline]
+pub fn distance_segment_aabb(a: &Point, b: &Point, bx: &Aabb) -> f64 {
+    let d = b - a;
+    let t = closest_param_segment_aabb(a, &d, bx);
+    distance_point_aabb(&(a + d * t), bx)
+}
+
+/// Lower bound of the cylinder–box distance, mm: the distance of the capsule
+/// of the same radius on the same axis segment, which contains the cylinder
+/// (segment distance minus radius, clamped at 0).
+#[inline]
+pub fn distance_capsule_aabb(c: &Cylinder, bx: &Aabb) -> f64 {
+    (distance_segment_aabb(&c.a, &c.b, bx) - c.radius.max(0.0)).max(0.0)
+}
+
+/// Radius `rho` and axis segment of the largest inner capsule used for the
+/// upper bound: `rho = min(r, L/2)`, segment shortened by `rho` at each end.
+#[inline(always)]
+fn inner_capsule(c: &Cylinder) -> (Point, Point, f64) {
+    let d = c.b - c.a;
+    let len = d.norm();
+    let r = c.radius.max(0.0);
+    if len <= 2.0 * r {
+        // Segment shorter than the diameter: the midpoint sphere of radius
+        // L/2 (the largest ball centred on the axis inside the cylinder).
+        let m = nalgebra::center(&c.a, &c.b);
+        (m, m, 0.5 * len)
+    } else {
+        let s = r / len;
+        (c.a + d * s, c.b - d * s, r)
+    }
+}
+
+/// Upper bound of the cylinder–box distance, mm: the distance of the capsule
+/// of radius `r` on the axis segment shortened by `r` at each end (it lies
+/// inside the cylinder). If the axis is shorter than `2r`, the midpoint
+/// sphere of radius `L/2` is used instead (the largest axis-centred ball
+/// inside the cylinder). A result of 0 proves the cylinder meets the box.
+#[inline]
+pub fn distance_inner_capsule_aabb(c: &Cylinder, bx: &Aabb) -> f64 {
+    let (p, q, rho) = inner_capsule(c);
+    (distance_segment_aabb(&p, &q, bx) - rho).max(0.0)
+}
+
+/// Both bounds at once, sharing nothing but the call (kept separate so the
+/// fast accept can return before the second segment query).
+#[inline(always)]
+fn bounds(c: &Cylinder, bx: &Aabb) -> (f64, f64) {
+    (
+        distance_capsule_aabb(c, bx),
+        distance_inner_capsule_aabb(c, bx),
+    )
+}
+
+/// Exact distance between the solid cylinder and the box, mm (0 when they
+/// touch or overlap), via parry3d's GJK. Slow path.
+///
+/// Precision: parry3d 0.31 computes in `f32` and its GJK stops at a relative
+/// gap of about `sqrt(10 * f32::EPSILON) ≈ 1.1e-3` of the shapes' support
+/// scale, so on cell-sized inputs (~2000 mm) it can be off by up to about
+/// 1 mm (0.6 mm seen in the tests), always from above: GJK returns a pair of
+/// points on the two shapes. The query is made in a frame centred on the box
+/// (smaller `f32` rounding), run in both argument orders (a single run was
+/// seen to stall at 70.8 mm for a true 2.88 mm), and the result is clamped
+/// into the exact capsule bounds, so it always lies in
+/// `[distance_capsule_aabb, distance_inner_capsule_aabb]`.
+///
+/// Degenerate inputs: radius 0 gives the segment distance; an axis of zero
+/// length has no orientation, and is answered conservatively with the ball of
+/// radius `r` around `a` (which contains every disc it could stand for).
+pub fn distance_cylinder_aabb_exact(c: &Cylinder, bx: &Aabb) -> f64 {
+    let (lo, hi) = bounds(c, bx);
+    if hi <= 0.0 {
+        return 0.0;
+    }
+    let r = c.radius.max(0.0);
+    if r == 0.0 {
+        return hi; // lo == hi == segment distance
+    }
+    let d = c.b - c.a;
+    let len = d.norm();
+    if len == 0.0 {
+        return lo;
+    }
+    clamp_into(parry_cylinder_aabb(c, bx, &(d / len), len, r), lo, hi)
+}
+
+/// `x` clamped into `[lo, hi]` without panicking when rounding makes
+/// `lo > hi` (then the bounds coincide and `lo` is returned).
+#[inline(always)]
+fn clamp_into(x: f64, lo: f64, hi: f64) -> f64 {
+    x.min(hi).max(lo)
+}
+
+/// The raw parry3d (f32, GJK) cylinder–cuboid distance in a box-centred frame.
+/// `u` is the unit axis, `len` its length, `r > 0`.
+fn parry_cylinder_aabb(c: &Cylinder, bx: &Aabb, u: &Vector3<f64>, len: f64, r: f64) -> f64 {
+    use parry3d::math::{Pose, Rotation, Vector};
+
+    let centre = bx.center();
+    let half = (bx.max - bx.min) * 0.5;
+    let cuboid = parry3d::shape::Cuboid {
+        half_extents: Vector::new(half.x as f32, half.y as f32, half.z as f32),
+    };
+    // Built from the fields: `Cylinder::new` asserts on its arguments.
+    let cyl = parry3d::shape::Cylinder {
+        half_height: (0.5 * len) as f32,
+        radius: r as f32,
+    };
+    // Shortest rotation taking parry's local +Y axis onto `u`, in f64.
+    // Y × u = (u.z, 0, -u.x), w = 1 + Y·u.
+    let w = 1.0 + u.y;
+    let (qx, qy, qz, qw) = if w < 1e-12 {
+        (1.0, 0.0, 0.0, 0.0) // u = -Y: half turn about X
+    } else {
+        let n = (u.z * u.z + u.x * u.x + w * w).sqrt();
+        (u.z / n, 0.0, -u.x / n, w / n)
+    };
+    let rot = Rotation::from_xyzw(qx as f32, qy as f32, qz as f32, qw as f32);
+    let mid = nalgebra::center(&c.a, &c.b) - centre;
+    let pos12 = Pose::from_parts(Vector::new(mid.x as f32, mid.y as f32, mid.z as f32), rot);
+    // GJK in f32 occasionally stalls far from the optimum (seen: 70.8 mm
+    // returned for a true 2.88 mm). Its result is a pair of points on the
+    // shapes, so an upper bound: run it in both orders and keep the smaller.
+    let d12 = parry3d::query::details::distance_support_map_support_map(&pos12, &cuboid, &cyl);
+    let d21 =
+        parry3d::query::details::distance_support_map_support_map(&pos12.inverse(), &cyl, &cuboid);
+    d12.min(d21) as f64
+}
+
+/// The query the planner uses: `true` when the cylinder keeps MORE than
+/// `clearance` mm from the box.
+///
+/// The capsule bound accepts fast (`lower > clearance`), the inner-capsule
+/// bound rejects fast (`upper <= clearance`); only when `clearance` lies in
+/// `[lower, upper)` is the parry query made, so the answer is exact except
+/// when the true distance is within parry's tolerance of `clearance` (see
+/// [`distance_cylinder_aabb_exact`]; there parry errs towards "clear").
+#[inline]
+pub fn cylinder_clear_of_aabb(c: &Cylinder, bx: &Aabb, clearance: f64) -> bool {
+    let lo = distance_capsule_aabb(c, bx);
+    if lo > clearance {
+        return true;
+    }
+    let hi = distance_inner_capsule_aabb(c, bx);
+    if hi <= clearance {
+        return false;
+    }
+    distance_cylinder_aabb_exact_in_band(c, bx, lo, hi) > clearance
+}
+
+/// Parry query for a cylinder whose bounds `lo < hi` are already known.
+#[inline]
+fn distance_cylinder_aabb_exact_in_band(c: &Cylinder, bx: &Aabb, lo: f64, hi: f64) -> f64 {
+    let r = c.radius.max(0.0);
+    let d = c.b - c.a;
+    let len = d.norm();
+    if r == 0.0 || len == 0.0 {
+        return lo;
+    }
+    clamp_into(parry_cylinder_aabb(c, bx, &(d / len), len, r), lo, hi)
+}
+
+/// Distance between the solid cylinder and the box, mm, computed through the
+/// capsule bounds.
+///
+/// Returns the lower (capsule) bound when the two bounds are within
+/// [`BOUNDS_AGREE_TOL`] of each other — then it is the exact distance to
+/// that tolerance; this is the common case where the closest point of the
+/// axis lies at least `r` from both ends, or the inner capsule touches the
+/// box (0). Otherwise it returns [`distance_cylinder_aabb_exact`], i.e. the
+/// parry value clamped into the bounds. The result is always within
+/// `[distance_capsule_aabb, distance_inner_capsule_aabb]`.
+#[inline]
+pub fn distance_cylinder_aabb(c: &Cylinder, bx: &Aabb) -> f64 {
+    let (lo, hi) = bounds(c, bx);
+    if hi - lo <= BOUNDS_AGREE_TOL {
+        return lo;
+    }
+    distance_cylinder_aabb_exact_in_band(c, bx, lo, hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use parry3d::math::{Pose, Vector};
+
+    /// Tiny deterministic xorshift64* generator (no `rand` dependency).
+    struct Rng(u64);
+    impl Rng {
+        fn next_u64(&mut self) -> u64 {
+            self.0 ^= self.0 >> 12;
+            self.0 ^= self.0 << 25;
+            self.0 ^= self.0 >> 27;
+            self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
+        }
+        /// Uniform in [lo, hi).
+        fn range(&mut self, lo: f64, hi: f64) -> f64 {
+            let u = (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+            lo + (hi - lo) * u
+        }
+        fn below(&mut self, n: u64) -> u64 {
+            self.next_u64() % n
+        }
+        fn point(&mut self, lo: f64, hi: f64) -> Point {
+            Point::new(self.range(lo, hi), self.range(lo, hi), self.range(lo, hi))
+        }
+    }
+
+    fn p(x: f64, y: f64, z: f64) -> Point {
+        Point::new(x, y, z)
+    }
+
+    fn random_box(rng: &mut Rng) -> Aabb {
+        let c = rng.point(600.0, 1400.0);
+        let h = Vector3::new(
+            rng.range(0.0, 400.0),
+            rng.range(0.0, 400.0),
+            rng.range(0.0, 400.0),
+        );
+        Aabb::new(c - h, c + h)
+    }
+
+    /// Random segment of one of several kinds: generic, degenerate,
+    /// parallel to one or two axes, crossing the box, starting on a face.
+    fn random_segment(rng: &mut Rng, bx: &Aabb) -> (Point, Point) {
+        let a = rng.point(0.0, 2000.0);
+        match rng.below(6) {
+            0 => (a, a),
+            1 => {
+                let mut b = a;
+                let i = rng.below(3) as usize;
+                b[i] = rng.range(0.0, 2000.0);
+                (a, b)
+            }
+            2 => {
+                let mut b = rng.point(0.0, 2000.0);
+                let i = rng.below(3) as usize;
+                b[i] = a[i];
+                (a, b)
+            }
+            3 => {
+                // Through the box centre, well beyond both sides.
+                let c = bx.center();
+                (a, c + (c - a) * rng.range(0.5, 1.5))
+            }
+            4 => {
+                // Endpoint exactly on a face plane, parallel to it.
+                let i = rng.below(3) as usize;
+                let plane = if rng.below(2) == 0 {
+                    bx.min[i]
+                } else {
+                    bx.max[i]
+                };
+                let mut a2 = a;
+                a2[i] = plane;
+                let mut b = rng.point(0.0, 2000.0);
+                b[i] = plane;
+                (a2, b)
+            }
+            _ => (a, rng.point(0.0, 2000.0)),
+        }
+    }
+
+    fn parry_segment_aabb(a: &Point, b: &Point, bx: &Aabb) -> f64 {
+        let c = bx.center();
+        let h = (bx.max - bx.min) * 0.5;
+        let cub = parry3d::shape::Cuboid::new(Vector::new(h.x as f32, h.y as f32, h.z as f32));
+        let (a, b) = (a - c, b - c);
+        let seg = parry3d::shape::Segment::new(
+            Vector::new(a.x as f32, a.y as f32, a.z as f32),
+            Vector::new(b.x as f32, b.y as f32, b.z as f32),
+        );
+        parry3d::query::distance(&Pose::identity(), &cub, &Pose::identity(), &seg)
+            .expect("segment-cuboid is supported")
+            .distance as f64
+    }
+
+    /// Brute-force reference in f64: dense sampling of t then golden-section
+    /// refinement of the convex g(t) (for cross-checking the f32 parry runs).
+    fn reference_segment_aabb(a: &Point, b: &Point, bx: &Aabb) -> f64 {
+        let f = |t: f64| distance_point_aabb(&(a + (b - a) * t), bx);
+        let (mut lo, mut hi) = (0.0f64, 1.0f64);
+        for _ in 0..200 {
+            let m1 = lo + (hi - lo) * 0.381_966;
+            let m2 = hi - (hi - lo) * 0.381_966;
+            if f(m1) <= f(m2) {
+                hi = m2;
+            } else {
+                lo = m1;
+            }
+        }
+        f(0.5 * (lo + hi)).min(f(0.0)).min(f(1.0))
+    }
+
+    #[test]
+    fn aabb_new_sorts_corners_and_grown_inflates() {
+        let b = Aabb::new(p(10.0, 0.0, 5.0), p(0.0, 20.0, -5.0));
+        assert_eq!(b.min, p(0.0, 0.0, -5.0));
+        assert_eq!(b.max, p(10.0, 20.0, 5.0));
+        let g = b.grown(2.0);
+        assert_eq!(g.min, p(-2.0, -2.0, -7.0));
+        assert_eq!(g.max, p(12.0, 22.0, 7.0));
+        // Shrinking past the thin x-axis collapses it to its mid-plane.
+        let s = b.grown(-6.0);
+        assert_eq!(s.min.x, 5.0);
+        assert_eq!(s.max.x, 5.0);
+        assert_eq!(s.min.y, 6.0);
+        assert_eq!(s.max.y, 14.0);
+    }
+
+    #[test]
+    fn point_aabb_hand_cases() {
+        let b = Aabb::new(p(0.0, 0.0, 0.0), p(100.0, 200.0, 300.0));
+        // Above the top face.
+        assert_eq!(distance_point_aabb(&p(50.0, 50.0, 310.0), &b), 10.0);
+        // Near the edge x = 100, z = 300: 3-4-5.
+        assert!((distance_point_aabb(&p(103.0, 50.0, 304.0), &b) - 5.0).abs() < 1e-12);
+        // Near the corner (0, 0, 0): 2-3-6 -> 7.
+        assert!((distance_point_aabb(&p(-2.0, -3.0, -6.0), &b) - 7.0).abs() < 1e-12);
+        // Inside and on the boundary.
+        assert_eq!(distance_point_aabb(&p(50.0, 50.0, 50.0), &b), 0.0);
+        assert_eq!(distance_point_aabb(&p(100.0, 200.0, 300.0), &b), 0.0);
+    }
+
+    #[test]
+    fn segment_aabb_hand_cases() {
+        let b = Aabb::new(p(0.0, 0.0, 0.0), p(100.0, 100.0, 100.0));
+        // Parallel to the top face, 10 above, spanning beyond it.
+        assert_eq!(
+            distance_segment_aabb(&p(-50.0, 50.0, 110.0), &p(150.0, 50.0, 110.0), &b),
+            10.0
+        );
+        // Skew over the edge x = 100, z = 100: the closest point is at the
+        // middle of the segment, above the edge at (103, y, 104): 5.
+        let d = distance_segment_aabb(&p(103.0, -50.0, 104.0), &p(103.0, 150.0, 104.0), &b);
+        assert!((d - 5.0).abs() < 1e-12, "{d}");
+        // A diagonal passing the corner (100,100,100): the line
+        // (110 + s, 110 - s, 120) is closest at s = 0 -> sqrt(100+100+400).
+        let d = distance_segment_aabb(&p(100.0, 120.0, 120.0), &p(120.0, 100.0, 120.0), &b);
+        assert!((d - 600f64.sqrt()).abs() < 1e-12, "{d}");
+        // Crossing the box, no endpoint inside.
+        assert_eq!(
+            distance_segment_aabb(&p(-10.0, -10.0, -10.0), &p(110.0, 110.0, 110.0), &b),
+            0.0
+        );
+        // Degenerate segment = point.
+        assert_eq!(
+            distance_segment_aabb(&p(50.0, 50.0, 130.0), &p(50.0, 50.0, 130.0), &b),
+            30.0
+        );
+        // Pointing away: closest point is the start.
+        assert_eq!(
+            distance_segment_aabb(&p(50.0, 50.0, 120.0), &p(50.0, 50.0, 900.0), &b),
+            20.0
+        );
+    }
+
+    #[test]
+    fn segment_aabb_matches_parry_and_reference_on_random_cases() {
+        let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+        let mut zero = 0;
+        let mut worst = 0.0f64;
+        let mut loose = 0;
+        for k in 0..5000 {
+            let bx = random_box(&mut rng);
+            let (a, b) = random_segment(&mut rng, &bx);
+            let ours = distance_segment_aabb(&a, &b, &bx);
+            let theirs = parry_segment_aabb(&a, &b, &bx);
+            let reference = reference_segment_aabb(&a, &b, &bx);
+            // The f64 reference is a sampled minimum, hence never below the
+            // exact value: ours may be lower only by rounding.
+            assert!(
+                ours <= reference + 1e-9,
+                "case {k}: {ours} > ref {reference}"
+            );
+            assert!(
+                ours >= reference - 1e-6,
+                "case {k}: {ours} < ref {reference}"
+            );
+            // Parry is f32 (~1e-3 mm on coordinates up to ~2000) and its GJK
+            // stops at a relative gap of sqrt(10 f32::EPSILON) ~ 1.1e-3, from
+            // above (it returns points on the shapes).
+            let tol = 1e-3 + 1.1e-3 * theirs;
+            assert!(
+                ours <= theirs + 1e-3 && theirs - ours <= tol,
+                "case {k}: ours {ours} parry {theirs} a {a:?} b {b:?} box {bx:?}"
+            );
+            worst = worst.max((ours - theirs).abs());
+            if (ours - theirs).abs() > 1e-3 {
+                loose += 1;
+            }
+            if ours == 0.0 {
+                zero += 1;
+            }
+        }
+        // The generator must exercise both hits and misses.
+        assert!(zero > 300 && zero < 4700, "zero-distance cases: {zero}");
+        eprintln!("segment vs parry: worst {worst} mm, {loose} cases beyond 1e-3 mm");
+        assert!(
+            loose < 250,
+            "{loose} cases beyond 1e-3 mm of parry, worst {worst}"
+        );
+    }
+
+    fn random_cylinder(rng: &mut Rng, bx: &Aabb) -> Cylinder {
+        let a = rng.point(0.0, 2000.0);
+        let kind = rng.below(4);
+        let b = match kind {
+            0 => {
+                // Short, fat (L < 2r possible).
+                let dir = rng.point(-1.0, 1.0).coords;
+                a + dir * rng.range(1.0, 80.0)
+            }
+            1 => {
+                // Axis-parallel.
+                let mut b = a;
+                let i = rng.below(3) as usize;
+                b[i] += rng.range(-800.0, 800.0);
+                b
+            }
+            2 => {
+                // Pointing at the box.
+                a + (bx.center() - a) * rng.range(0.1, 0.9)
+            }
+            _ => rng.point(0.0, 2000.0),
+        };
+        Cylinder {
+            a,
+            b,
+            radius: rng.range(5.0, 150.0),
+        }
+    }
+
+    #[test]
+    fn capsule_bounds_bracket_exact_cylinder_distance() {
+        let mut rng = Rng(0x1234_5678_9ABC_DEF1);
+        let mut strict = 0;
+        let mut loose = 0;
+        let mut worst_over = 0.0f64;
+        let mut worst_rel = 0.0f64;
+        for k in 0..3000 {
+            let bx = random_box(&mut rng);
+            let c = random_cylinder(&mut rng, &bx);
+            let lo = distance_capsule_aabb(&c, &bx);
+            let hi = distance_inner_capsule_aabb(&c, &bx);
+            let ex = distance_cylinder_aabb_exact(&c, &bx);
+            assert!(lo <= hi + 1e-9, "case {k}: lo {lo} > hi {hi}");
+            // The exact value is clamped into the bounds by construction;
+            // check the raw parry value too, within parry's tolerance.
+            assert!(lo <= ex && ex <= hi + 1e-9, "case {k}: {lo} {ex} {hi}");
+            let d = c.b - c.a;
+            let len = d.norm();
+            let raw = parry_cylinder_aabb(&c, &bx, &(d / len), len, c.radius);
+            // GJK returns points on the shapes: never below the true value
+            // beyond f32 rounding, but above it by up to its stopping gap.
+            assert!(
+                raw >= lo - 1e-3,
+                "case {k}: raw {raw} < lo {lo} ({c:?} {bx:?})"
+            );
+            let over = raw - hi;
+            worst_over = worst_over.max(over);
+            worst_rel = worst_rel.max(over / raw.max(1.0));
+            if over > 1e-3 {
+                loose += 1;
+            }
+            if lo < ex && ex < hi {
+                strict += 1;
+            }
+        }
+        // The band must actually be exercised.
+        assert!(strict > 100, "cases strictly inside the band: {strict}");
+        eprintln!(
+            "parry cylinder above inner bound: worst {worst_over} mm (rel {worst_rel}), {loose} cases beyond 1e-3 mm, {strict} in band"
+        );
+        assert!(
+            worst_over < 1.0 && loose < 900,
+            "parry exceeded the upper bound by {worst_over} mm; {loose} cases beyond 1e-3 mm"
+        );
+    }
+
+    #[test]
+    fn clear_of_aabb_agrees_with_exact_distance() {
+        let mut rng = Rng(0xDEAD_BEEF_CAFE_F00D);
+        let mut clear = 0;
+        let mut blocked = 0;
+        for k in 0..3000 {
+            let bx = random_box(&mut rng);
+            let c = random_cylinder(&mut rng, &bx);
+            let ex = distance_cylinder_aabb_exact(&c, &bx);
+            // Clearances near the distance, and far from it.
+            let clearance = match k % 3 {
+                0 => ex + rng.range(-5.0, 5.0),
+                1 => rng.range(0.0, 300.0),
+                _ => distance_capsule_aabb(&c, &bx) + rng.range(0.0, 50.0),
+            };
+            let got = cylinder_clear_of_aabb(&c, &bx, clearance);
+            let tol = 2e-3 + 1.2e-3 * ex;
+            if (ex - clearance).abs() > tol {
+                assert_eq!(
+                    got,
+                    ex > clearance,
+                    "case {k}: exact {ex} clearance {clearance}"
+                );
+            }
+            if got {
+                clear += 1;
+            } else {
+                blocked += 1;
+            }
+            // distance_cylinder_aabb returns the same value, or the (equal
+            // to within BOUNDS_AGREE_TOL) lower bound.
+            let d = distance_cylinder_aabb(&c, &bx);
+            assert!((d - ex).abs() <= BOUNDS_AGREE_TOL, "case {k}: {d} vs {ex}");
+        }
+        assert!(
+            clear > 300 && blocked > 300,
+            "clear {clear} blocked {blocked}"
+        );
+    }
+
+    #[test]
+    fn cylinder_standing_on_box_cap_touching_and_above() {
+        let bx = Aabb::new(p(0.0, 0.0, 0.0), p(500.0, 500.0, 300.0));
+        let c = Cylinder {
+            a: p(250.0, 250.0, 300.0),
+            b: p(250.0, 250.0, 700.0),
+            radius: 60.0,
+        };
+        assert_eq!(distance_cylinder_aabb(&c, &bx), 0.0);
+        assert_eq!(distance_cylinder_aabb_exact(&c, &bx), 0.0);
+        assert!(!cylinder_clear_of_aabb(&c, &bx, 0.0));
+        // Lifted by 7.5: the flat cap is 7.5 above the top face. The capsule
+        // bound is 0 (its end sphere dips into the box); the inner capsule
+        // gives the exact 7.5.
+        let up = Vector3::new(0.0, 0.0, 7.5);
+        let c2 = Cylinder {
+            a: c.a + up,
+            b: c.b + up,
+            ..c
+        };
+        assert_eq!(distance_capsule_aabb(&c2, &bx), 0.0);
+        assert!((distance_inner_capsule_aabb(&c2, &bx) - 7.5).abs() < 1e-12);
+        let d = distance_cylinder_aabb(&c2, &bx);
+        assert!((d - 7.5).abs() < 2e-3, "{d}");
+        assert!(cylinder_clear_of_aabb(&c2, &bx, 7.0));
+        assert!(!cylinder_clear_of_aabb(&c2, &bx, 8.0));
+    }
+
+    #[test]
+    fn cylinder_lying_parallel_to_face_at_known_gap() {
+        let bx = Aabb::new(p(0.0, 0.0, 0.0), p(1000.0, 400.0, 200.0));
+        // Axis along x, above the top face, side 12.25 above it.
+        let c = Cylinder {
+            a: p(100.0, 200.0, 200.0 + 40.0 + 12.25),
+            b: p(900.0, 200.0, 200.0 + 40.0 + 12.25),
+            radius: 40.0,
+        };
+        assert_eq!(distance_capsule_aabb(&c, &bx), 12.25);
+        assert_eq!(distance_inner_capsule_aabb(&c, &bx), 12.25);
+        assert_eq!(distance_cylinder_aabb(&c, &bx), 12.25);
+        let ex = distance_cylinder_aabb_exact(&c, &bx);
+        assert!((ex - 12.25).abs() < 1e-3, "{ex}");
+        assert!(cylinder_clear_of_aabb(&c, &bx, 12.0));
+        assert!(!cylinder_clear_of_aabb(&c, &bx, 12.25));
+    }
+
+    #[test]
+    fn cylinder_rim_near_box_edge() {
+        // Vertical cylinder beside the edge x = 0, z = 100 and above it: the
+        // closest pair is the cap rim point (-10, 50, 110) and the edge.
+        let bx = Aabb::new(p(0.0, 0.0, 0.0), p(100.0, 100.0, 100.0));
+        let c = Cylinder {
+            a: p(-20.0, 50.0, 110.0),
+            b: p(-20.0, 50.0, 200.0),
+            radius: 10.0,
+        };
+        let want = 200f64.sqrt();
+        let lo = distance_capsule_aabb(&c, &bx);
+        let hi = distance_inner_capsule_aabb(&c, &bx);
+        assert!((lo - (500f64.sqrt() - 10.0)).abs() < 1e-12);
+        assert!((hi - (800f64.sqrt() - 10.0)).abs() < 1e-12);
+        let d = distance_cylinder_aabb(&c, &bx);
+        assert!((d - want).abs() < 2e-3 + 1.2e-3 * want, "{d} vs {want}");
+        assert!(cylinder_clear_of_aabb(&c, &bx, 14.0));
+        assert!(!cylinder_clear_of_aabb(&c, &bx, 14.3));
+    }
+
+    #[test]
+    fn degenerate_and_extreme_inputs_do_not_panic() {
+        let bx = Aabb::new(p(0.0, 0.0, 0.0), p(0.0, 0.0, 0.0));
+        let pt = p(3.0, 4.0, 0.0);
+        assert_eq!(distance_segment_aabb(&pt, &pt, &bx), 5.0);
+        // Zero-length axis: ball of radius r around a.
+        let c = Cylinder {
+            a: pt,
+            b: pt,
+            radius: 1.0,
+        };
+        assert_eq!(distance_cylinder_aabb_exact(&c, &bx), 4.0);
+        assert_eq!(distance_cylinder_aabb(&c, &bx), 4.0);
+        // Zero radius: the segment.
+        let c = Cylinder {
+            a: pt,
+            b: p(3.0, 4.0, 9.0),
+            radius: 0.0,
+        };
+        assert_eq!(distance_cylinder_aabb_exact(&c, &bx), 5.0);
+        assert!(cylinder_clear_of_aabb(&c, &bx, 4.9));
+        // Huge coordinates: finite, non-negative.
+        let far = p(1e300, -1e300, 1e300);
+        let d = distance_segment_aabb(&far, &p(-1e300, 1e300, -1e300), &bx);
+        assert!(d.is_finite() && d >= 0.0, "{d}");
+        // Cylinder pointing exactly along -Y (quaternion half-turn branch).
+        let bx = Aabb::new(p(0.0, 0.0, 0.0), p(100.0, 100.0, 100.0));
+        let c = Cylinder {
+            a: p(130.0, 90.0, 50.0),
+            b: p(130.0, -500.0, 50.0),
+            radius: 10.0,
+        };
+        let ex = distance_cylinder_aabb_exact(&c, &bx);
+        assert!((ex - 20.0).abs() < 1e-3, "{ex}");
+        // And capped end pointing at the box along -Y: the cap is 15 away.
+        let c = Cylinder {
+            a: p(50.0, 700.0, 50.0),
+            b: p(50.0, 115.0, 50.0),
+            radius: 30.0,
+        };
+        let ex = distance_cylinder_aabb_exact(&c, &bx);
+        assert!((ex - 15.0).abs() < 1e-3, "{ex}");
+    }
+}
