@@ -38,11 +38,11 @@ fn bench(cr: &mut Criterion) {
         .map(|(c, bx)| {
             let m = nalgebra::center(&bx.min, &bx.max);
             let h = (bx.max - bx.min) * 0.5;
-            let cub = parry3d::shape::Cuboid::new(Vector::new(h.x as f32, h.y as f32, h.z as f32));
+            let cub = parry3d::shape::Cuboid::new(Vector::new(h.x, h.y, h.z));
             let (a, b) = (c.a - m, c.b - m);
             let seg = parry3d::shape::Segment::new(
-                Vector::new(a.x as f32, a.y as f32, a.z as f32),
-                Vector::new(b.x as f32, b.y as f32, b.z as f32),
+                Vector::new(a.x, a.y, a.z),
+                Vector::new(b.x, b.y, b.z),
             );
             (cub, seg)
         })

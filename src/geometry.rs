@@ -297,12 +297,12 @@ fn parry_cylinder_aabb(c: &Cylinder, bx: &Aabb, u: &Vector3<f64>, len: f64, r: f
     let centre = bx.center();
     let half = (bx.max - bx.min) * 0.5;
     let cuboid = parry3d::shape::Cuboid {
-        half_extents: Vector::new(half.x as f32, half.y as f32, half.z as f32),
+        half_extents: Vector::new(half.x, half.y, half.z),
     };
     // Built from the fields: `Cylinder::new` asserts on its arguments.
     let cyl = parry3d::shape::Cylinder {
-        half_height: (0.5 * len) as f32,
-        radius: r as f32,
+        half_height: (0.5 * len),
+        radius: r,
     };
     // Shortest rotation taking parry's local +Y axis onto `u`, in f64.
     // Y × u = (u.z, 0, -u.x), w = 1 + Y·u.
@@ -313,16 +313,16 @@ fn parry_cylinder_aabb(c: &Cylinder, bx: &Aabb, u: &Vector3<f64>, len: f64, r: f
         let n = (u.z * u.z + u.x * u.x + w * w).sqrt();
         (u.z / n, 0.0, -u.x / n, w / n)
     };
-    let rot = Rotation::from_xyzw(qx as f32, qy as f32, qz as f32, qw as f32);
+    let rot = Rotation::from_xyzw(qx, qy, qz, qw);
     let mid = nalgebra::center(&c.a, &c.b) - centre;
-    let pos12 = Pose::from_parts(Vector::new(mid.x as f32, mid.y as f32, mid.z as f32), rot);
+    let pos12 = Pose::from_parts(Vector::new(mid.x, mid.y, mid.z), rot);
     // GJK in f32 occasionally stalls far from the optimum (seen: 70.8 mm
     // returned for a true 2.88 mm). Its result is a pair of points on the
     // shapes, so an upper bound: run it in both orders and keep the smaller.
     let d12 = parry3d::query::details::distance_support_map_support_map(&pos12, &cuboid, &cyl);
     let d21 =
         parry3d::query::details::distance_support_map_support_map(&pos12.inverse(), &cyl, &cuboid);
-    d12.min(d21) as f64
+    d12.min(d21)
 }
 
 /// The query the planner uses: `true` when the cylinder keeps MORE than
@@ -462,11 +462,11 @@ mod tests {
     fn parry_segment_aabb(a: &Point, b: &Point, bx: &Aabb) -> f64 {
         let c = bx.center();
         let h = (bx.max - bx.min) * 0.5;
-        let cub = parry3d::shape::Cuboid::new(Vector::new(h.x as f32, h.y as f32, h.z as f32));
+        let cub = parry3d::shape::Cuboid::new(Vector::new(h.x, h.y, h.z));
         let (a, b) = (a - c, b - c);
         let seg = parry3d::shape::Segment::new(
-            Vector::new(a.x as f32, a.y as f32, a.z as f32),
-            Vector::new(b.x as f32, b.y as f32, b.z as f32),
+            Vector::new(a.x, a.y, a.z),
+            Vector::new(b.x, b.y, b.z),
         );
         parry3d::query::distance(&Pose::identity(), &cub, &Pose::identity(), &seg)
             .expect("segment-cuboid is supported")
