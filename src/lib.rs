@@ -4,6 +4,9 @@
 //! `cell` -> `robot` -> `collision` -> `cspace` -> `wave` -> `search` -> `shorten`/`merge`
 //! -> `plan` -> `rapid`.
 
+pub mod cell;
+pub mod cspace;
 pub mod geometry;
 pub mod rapid;
 pub mod robot;
+pub mod wave;

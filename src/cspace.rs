@@ -1,0 +1,246 @@
+//! The configuration-space grid of axes 1..3 (paper section 3, "Collision Inspection").
+//!
+//! Nodes sit at integer multiples of the spacing d (degrees) within the controller's axis
+//! ranges; a node is free (the paper's 0) or blocked (-1: out of range, coupled axis-3 range
+//! included, or a link cylinder within the clearance of a box). Which nodes are free is asked of
+//! an [`Inspector`]; this module knows no geometry. The grid is filled once per cell, in parallel
+//! over axis-1 slices; the result does not depend on the number of threads.
+
+/// A grid node: indices along axes 1..3 (0-based within the grid).
+pub type Node = [i32; 3];
+
+/// The lattice: node `n` has controller values `(origin[k] + n[k]) * step_deg`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Grid {
+    pub step_deg: f64,
+    /// Integer multiple of `step_deg` of the first node along each axis.
+    pub origin: [i64; 3],
+    pub dims: [usize; 3],
+}
+
+/// Largest grid accepted (nodes); 0.25 deg over the IRB 1400's ranges is ~420 M.
+pub const MAX_NODES: usize = 500_000_000;
+
+impl Grid {
+    /// The nodes k*step inside `[lo, hi]` of each axis (deg).
+    pub fn over(ranges_deg: [[f64; 2]; 3], step_deg: f64) -> Grid {
+        let mut origin = [0i64; 3];
+        let mut dims = [0usize; 3];
+        for k in 0..3 {
+            let [lo, hi] = ranges_deg[k];
+            let first = (lo / step_deg - 1e-9).ceil() as i64;
+            let last = (hi / step_deg + 1e-9).floor() as i64;
+            origin[k] = first;
+            dims[k] = (last - first + 1).max(0) as usize;
+        }
+        Grid {
+            step_deg,
+            origin,
+            dims,
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        self.dims.iter().product()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    pub fn contains(&self, n: Node) -> bool {
+        (0..3).all(|k| n[k] >= 0 && (n[k] as usize) < self.dims[k])
+    }
+
+    /// Linear index; axis 3 varies fastest so a column (fixed axes 1, 2) is contiguous.
+    #[inline]
+    pub fn index(&self, n: Node) -> usize {
+        (n[0] as usize * self.dims[1] + n[1] as usize) * self.dims[2] + n[2] as usize
+    }
+
+    #[inline]
+    pub fn node(&self, i: usize) -> Node {
+        let z = i % self.dims[2];
+        let r = i / self.dims[2];
+        [(r / self.dims[1]) as i32, (r % self.dims[1]) as i32, z as i32]
+    }
+
+    /// Controller value (deg) of index `i` along axis `k`.
+    #[inline]
+    pub fn value(&self, k: usize, i: i64) -> f64 {
+        (self.origin[k] + i) as f64 * self.step_deg
+    }
+
+    /// Controller values of a node, deg.
+    pub fn axes_deg(&self, n: Node) -> [f64; 3] {
+        [
+            self.value(0, n[0] as i64),
+            self.value(1, n[1] as i64),
+            self.value(2, n[2] as i64),
+        ]
+    }
+
+    /// The node at `axes` if `axes` lies on the lattice (within 1e-9 deg) and in the grid.
+    pub fn node_at(&self, axes: &[f64; 3]) -> Option<Node> {
+        let mut n = [0i32; 3];
+        for k in 0..3 {
+            let f = axes[k] / self.step_deg;
+            let r = f.round();
+            if (f - r).abs() * self.step_deg > 1e-9 {
+                return None;
+            }
+            n[k] = (r as i64 - self.origin[k]) as i32;
+        }
+        self.contains(n).then_some(n)
+    }
+
+    /// Grid nodes within `rings` cells of `axes` (Chebyshev), nearest first (Euclidean in
+    /// degrees, ties by index): the candidates to join an off-grid point to the grid.
+    pub fn nodes_near(&self, axes: &[f64; 3], rings: i32) -> Vec<Node> {
+        let base: Vec<i64> = (0..3)
+            .map(|k| (axes[k] / self.step_deg).floor() as i64 - self.origin[k])
+            .collect();
+        let mut out = Vec::new();
+        for d0 in -rings + 1..=rings {
+            for d1 in -rings + 1..=rings {
+                for d2 in -rings + 1..=rings {
+                    let n = [
+                        (base[0] + d0 as i64) as i32,
+                        (base[1] + d1 as i64) as i32,
+                        (base[2] + d2 as i64) as i32,
+                    ];
+                    if self.contains(n) {
+                        out.push(n);
+                    }
+                }
+            }
+        }
+        let dist = |n: &Node| {
+            let v = self.axes_deg(*n);
+            (0..3).map(|k| (v[k] - axes[k]).powi(2)).sum::<f64>()
+        };
+        out.sort_by(|a, b| dist(a).total_cmp(&dist(b)).then(a.cmp(b)));
+        out
+    }
+}
+
+/// Answers "is this node free?" for a whole column of axis-3 values at once, so an
+/// implementation can hoist the work that does not depend on axis 3.
+pub trait Inspector: Sync {
+    fn inspect_column(&self, a1_deg: f64, a2_deg: f64, a3_deg: &[f64], free: &mut [bool]);
+}
+
+/// The inspected grid.
+#[derive(Clone, Debug)]
+pub struct CSpace {
+    pub grid: Grid,
+    free: Vec<bool>,
+}
+
+impl CSpace {
+    /// Inspects every node, axis-1 slices spread over the available cores.
+    pub fn build(grid: Grid, inspector: &dyn Inspector) -> CSpace {
+        let mut free = vec![false; grid.len()];
+        let slice = grid.dims[1] * grid.dims[2];
+        if slice == 0 {
+            return CSpace { grid, free };
+        }
+        let threads = std::thread::available_parallelism()
+            .map(|n| n.get())
+            .unwrap_or(1)
+            .min(grid.dims[0].max(1));
+        let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
+        let slices_per_thread = grid.dims[0].div_ceil(threads);
+        std::thread::scope(|s| {
+            for (t, chunk) in free.chunks_mut(slices_per_thread * slice).enumerate() {
+                let a3 = &a3;
+                s.spawn(move || {
+                    for (j, slab) in chunk.chunks_mut(slice).enumerate() {
+                        let a1 = grid.value(0, (t * slices_per_thread + j) as i64);
+                        for (i2, column) in slab.chunks_mut(grid.dims[2]).enumerate() {
+                            inspector.inspect_column(a1, grid.value(1, i2 as i64), a3, column);
+                        }
+                    }
+                });
+            }
+        });
+        CSpace { grid, free }
+    }
+
+    /// A grid from explicit node states (tests and hand-made examples).
+    pub fn from_fn(grid: Grid, is_free: impl Fn(Node) -> bool) -> CSpace {
+        let free = (0..grid.len()).map(|i| is_free(grid.node(i))).collect();
+        CSpace { grid, free }
+    }
+
+    #[inline]
+    pub fn is_free(&self, n: Node) -> bool {
+        self.grid.contains(n) && self.free[self.grid.index(n)]
+    }
+
+    #[inline]
+    pub fn is_free_index(&self, i: usize) -> bool {
+        self.free[i]
+    }
+
+    pub fn free_count(&self) -> usize {
+        self.free.iter().filter(|&&f| f).count()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lattice_covers_the_ranges_at_multiples_of_the_step() {
+        let g = Grid::over([[-170.0, 170.0], [-70.0, 70.0], [-65.0, 70.0]], 1.0);
+        assert_eq!(g.dims, [341, 141, 136]);
+        assert_eq!(g.axes_deg([0, 0, 0]), [-170.0, -70.0, -65.0]);
+        let g = Grid::over([[-170.0, 170.0], [-70.0, 70.0], [-65.0, 70.0]], 3.0);
+        // -168 .. 168, -69 .. 69, -63 .. 69
+        assert_eq!(g.dims, [113, 47, 45]);
+        assert_eq!(g.axes_deg([0, 0, 0]), [-168.0, -69.0, -63.0]);
+    }
+
+    #[test]
+    fn index_and_node_are_inverse() {
+        let g = Grid::over([[-10.0, 10.0], [-5.0, 5.0], [0.0, 3.0]], 1.0);
+        for i in 0..g.len() {
+            assert_eq!(g.index(g.node(i)), i);
+        }
+        assert_eq!(g.node_at(&[3.0, -2.0, 1.0]), Some([13, 3, 1]));
+        assert_eq!(g.node_at(&[3.5, -2.0, 1.0]), None);
+        assert_eq!(g.node_at(&[30.0, -2.0, 1.0]), None);
+    }
+
+    #[test]
+    fn nodes_near_are_sorted_by_distance() {
+        let g = Grid::over([[-10.0, 10.0], [-10.0, 10.0], [-10.0, 10.0]], 1.0);
+        let n = g.nodes_near(&[0.2, 0.7, 0.4], 1);
+        assert_eq!(n.len(), 8);
+        assert_eq!(g.axes_deg(n[0]), [0.0, 1.0, 0.0]);
+        assert_eq!(g.axes_deg(n[7]), [1.0, 0.0, 1.0]);
+    }
+
+    struct Ball;
+    impl Inspector for Ball {
+        fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], free: &mut [bool]) {
+            for (f, &c) in free.iter_mut().zip(a3) {
+                *f = a1 * a1 + a2 * a2 + c * c > 25.0;
+            }
+        }
+    }
+
+    #[test]
+    fn parallel_build_matches_a_direct_fill() {
+        let g = Grid::over([[-9.0, 9.0], [-8.0, 8.0], [-7.0, 7.0]], 1.0);
+        let built = CSpace::build(g, &Ball);
+        let direct = CSpace::from_fn(g, |n| {
+            let v = g.axes_deg(n);
+            v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > 25.0
+        });
+        assert_eq!(built.free, direct.free);
+        assert!(built.free_count() < g.len());
+    }
+}

@@ -1,0 +1,182 @@
+//! Wave expansion (paper section 4): free nodes are numbered 1 at the start node and outward,
+//! one more per step, until the end node is numbered n.
+//!
+//! The expansion is breadth-first over the free nodes with 26 neighbours (every node that
+//! differs by at most one step on each axis), as the pipeline specifies; [`Connectivity::Six`]
+//! (axis neighbours only) serves the depth-first search, which walks axis steps (see
+//! `search`). It stops once the end node is numbered: every node numbered below n is then final,
+//! and those are the only ones a search back from the end node visits.
+
+use crate::cspace::{CSpace, Node};
+use std::collections::VecDeque;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Connectivity {
+    /// The 6 axis neighbours.
+    Six,
+    /// All 26 neighbours.
+    TwentySix,
+}
+
+/// Neighbour offsets in a fixed order: lexicographic over (d1, d2, d3) in {-1, 0, 1}^3.
+pub fn offsets(c: Connectivity) -> &'static [[i32; 3]] {
+    const SIX: [[i32; 3]; 6] = [[-1, 0, 0], [0, -1, 0], [0, 0, -1], [0, 0, 1], [0, 1, 0], [1, 0, 0]];
+    const ALL: [[i32; 3]; 26] = {
+        let mut out = [[0; 3]; 26];
+        let mut i = 0;
+        let mut a = -1;
+        while a <= 1 {
+            let mut b = -1;
+            while b <= 1 {
+                let mut c = -1;
+                while c <= 1 {
+                    if !(a == 0 && b == 0 && c == 0) {
+                        out[i] = [a, b, c];
+                        i += 1;
+                    }
+                    c += 1;
+                }
+                b += 1;
+            }
+            a += 1;
+        }
+        out
+    };
+    match c {
+        Connectivity::Six => &SIX,
+        Connectivity::TwentySix => &ALL,
+    }
+}
+
+/// Wave numbers of one expansion; 0 = not numbered (blocked or beyond the end node's wave).
+#[derive(Clone, Debug)]
+pub struct Wave {
+    pub start: Node,
+    pub end: Node,
+    pub connectivity: Connectivity,
+    labels: Vec<u32>,
+    dims: [usize; 3],
+}
+
+impl Wave {
+    /// The number of a node (0 when not numbered or outside the grid).
+    #[inline]
+    pub fn label(&self, n: Node) -> u32 {
+        if (0..3).all(|k| n[k] >= 0 && (n[k] as usize) < self.dims[k]) {
+            self.labels[(n[0] as usize * self.dims[1] + n[1] as usize) * self.dims[2] + n[2] as usize]
+        } else {
+            0
+        }
+    }
+
+    /// n, the end node's number.
+    pub fn n(&self) -> u32 {
+        self.label(self.end)
+    }
+
+    /// How many nodes were numbered.
+    pub fn numbered(&self) -> usize {
+        self.labels.iter().filter(|&&l| l > 0).count()
+    }
+}
+
+/// Numbers the free nodes from `start` (1) outward until `end` is numbered; `None` when `end`
+/// cannot be reached through free nodes. Both nodes must be free.
+pub fn expand(cs: &CSpace, start: Node, end: Node, connectivity: Connectivity) -> Option<Wave> {
+    let g = &cs.grid;
+    if !cs.is_free(start) || !cs.is_free(end) {
+        return None;
+    }
+    let mut labels = vec![0u32; g.len()];
+    let mut queue = VecDeque::new();
+    labels[g.index(start)] = 1;
+    queue.push_back(start);
+    let offs = offsets(connectivity);
+    let dims = [g.dims[0] as i32, g.dims[1] as i32, g.dims[2] as i32];
+    let mut found = start == end;
+    while let Some(n) = queue.pop_front() {
+        if found {
+            break;
+        }
+        let next = labels[g.index(n)] + 1;
+        for o in offs {
+            let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
+            if m[0] < 0 || m[1] < 0 || m[2] < 0 || m[0] >= dims[0] || m[1] >= dims[1] || m[2] >= dims[2] {
+                continue;
+            }
+            let i = g.index(m);
+            if labels[i] == 0 && cs.is_free_index(i) {
+                labels[i] = next;
+                if m == end {
+                    found = true;
+                    break;
+                }
+                queue.push_back(m);
+            }
+        }
+    }
+    found.then_some(Wave {
+        start,
+        end,
+        connectivity,
+        labels,
+        dims: g.dims,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cspace::Grid;
+
+    fn open(n: f64) -> CSpace {
+        let g = Grid::over([[0.0, n], [0.0, n], [0.0, n]], 1.0);
+        CSpace::from_fn(g, |_| true)
+    }
+
+    #[test]
+    fn numbers_are_chebyshev_steps_in_free_space() {
+        let cs = open(10.0);
+        let w = expand(&cs, [0, 0, 0], [7, 3, 5], Connectivity::TwentySix).expect("reachable");
+        assert_eq!(w.n(), 8); // 7 steps, numbered from 1
+        assert_eq!(w.label([3, 3, 3]), 4);
+        assert_eq!(w.label([1, 0, 1]), 2);
+    }
+
+    #[test]
+    fn six_neighbour_numbers_are_manhattan_steps() {
+        let cs = open(10.0);
+        let w = expand(&cs, [0, 0, 0], [3, 2, 1], Connectivity::Six).expect("reachable");
+        assert_eq!(w.n(), 7);
+        assert_eq!(w.label([1, 1, 0]), 3);
+    }
+
+    #[test]
+    fn walls_force_a_detour_and_a_closed_wall_fails() {
+        // A wall at x = 5 with a hole at (5, 9, *).
+        let g = Grid::over([[0.0, 10.0], [0.0, 10.0], [0.0, 0.0]], 1.0);
+        let cs = CSpace::from_fn(g, |n| n[0] != 5 || n[1] == 9);
+        let w = expand(&cs, [0, 0, 0], [10, 0, 0], Connectivity::TwentySix).expect("through the hole");
+        // Out to y = 9 and back: 9 steps up (x rising to 5 on the way), then 5 + ... at least 18 steps.
+        assert_eq!(w.n(), 19);
+        let closed = CSpace::from_fn(g, |n| n[0] != 5);
+        assert!(expand(&closed, [0, 0, 0], [10, 0, 0], Connectivity::TwentySix).is_none());
+    }
+
+    #[test]
+    fn every_numbered_node_below_n_has_a_predecessor() {
+        let g = Grid::over([[0.0, 12.0], [0.0, 12.0], [0.0, 6.0]], 1.0);
+        let cs = CSpace::from_fn(g, |n| !(n[0] == 6 && n[1] < 10) && !(n[1] == 4 && n[2] == 3));
+        let w = expand(&cs, [0, 0, 0], [12, 0, 6], Connectivity::TwentySix).expect("reachable");
+        for i in 0..g.len() {
+            let n = g.node(i);
+            let l = w.label(n);
+            if l > 1 && l < w.n() {
+                let has = offsets(Connectivity::TwentySix)
+                    .iter()
+                    .any(|o| w.label([n[0] + o[0], n[1] + o[1], n[2] + o[2]]) == l - 1);
+                assert!(has, "{n:?} numbered {l} has no neighbour numbered {}", l - 1);
+            }
+        }
+    }
+}
