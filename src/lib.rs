@@ -9,4 +9,5 @@ pub mod cspace;
 pub mod geometry;
 pub mod rapid;
 pub mod robot;
+pub mod search;
 pub mod wave;

@@ -1,0 +1,49 @@
+//! Depth-first search (paper section 4.2): from the end node, only the 6 axis neighbours whose
+//! number is exactly one less, tried depth first in the fixed order -axis1, -axis2, -axis3,
+//! +axis3, +axis2, +axis1 (the order of [`crate::wave::offsets`]), backing up on dead ends.
+//!
+//! It walks axis steps, so the wave it descends is numbered over the 6 axis neighbours. It fails
+//! (the paper's Fig. 8) when the start and end are joined only through diagonal steps; the plan
+//! then reports the leg. Same-direction steps are merged afterwards by `merge`.
+
+use super::{descend, Accept, GridPath};
+use crate::cspace::{CSpace, Node};
+use crate::wave::{self, offsets, Connectivity, Wave};
+
+fn candidates(w: &Wave, n: Node, _prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
+    let want = w.label(n).saturating_sub(1);
+    offsets(Connectivity::Six)
+        .iter()
+        .copied()
+        .filter(|o| w.label(super::add(n, *o)) == want)
+        .collect()
+}
+
+/// The path start -> end by axis steps, or `None` (no axis-step path, or every branch refused).
+pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> Option<GridPath> {
+    let w = wave::expand(cs, start, end, Connectivity::Six)?;
+    descend(&w, &candidates, accept)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::search::testing::{assert_path, grid};
+
+    #[test]
+    fn walks_axis_steps_in_the_fixed_order() {
+        let cs = grid(5, 5, 5, |_| true);
+        let p = search(&cs, [0, 0, 0], [2, 1, 1], &mut |_, _| true).expect("path");
+        assert_path(&p, [0, 0, 0], [2, 1, 1]);
+        assert_eq!(p.len(), 5, "4 axis steps");
+        // Back from the end: -axis1 twice first, then -axis2, then -axis3.
+        assert_eq!(p, vec![[0, 0, 0], [0, 0, 1], [0, 1, 1], [1, 1, 1], [2, 1, 1]]);
+    }
+
+    #[test]
+    fn fails_where_only_a_diagonal_joins_the_free_space() {
+        // Fig. 8: the free nodes touch only at a corner.
+        let cs = grid(3, 3, 1, |n| n[0] == n[1]);
+        assert!(search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true).is_none());
+    }
+}

@@ -1,0 +1,156 @@
+//! Extensile neighboring search (paper section 4.3), the search half: walk back on the
+//! 26-neighbour wave preferring the previous direction, then axis neighbours, then face
+//! diagonals, then corner diagonals (each group in the fixed lexicographic order), so that a
+//! diagonal is taken where no axis neighbour carries n-1 (Fig. 8); do it both ways (a wave from
+//! each end, Fig. 4) and merge the two paths into one (Fig. 5).
+//!
+//! The merge (our reading of Fig. 5, where the two paths differ in parallelograms that are known
+//! to be free): take the union of the two paths' nodes, join every two of them that are grid
+//! neighbours and whose straight move is accepted, and choose the path from start to end with
+//! the fewest changes of direction, then the fewest steps, then the lowest node order. Where the
+//! paths agree it follows them; where they part it crosses between them to keep straight. The
+//! recursive k -> k+2 shortening (`shorten`) then cuts across the parallelograms.
+
+use super::{add, descend, order_of, Accept, GridPath};
+use crate::cspace::{CSpace, Node};
+use crate::wave::{self, offsets, Connectivity, Wave};
+use std::cmp::Reverse;
+use std::collections::{BinaryHeap, HashMap};
+
+fn candidates(w: &Wave, n: Node, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
+    let mut c: Vec<[i32; 3]> = offsets(Connectivity::TwentySix).to_vec();
+    c.sort_by_key(|o| {
+        let l = match w.label(add(n, *o)) {
+            0 => u32::MAX,
+            l => l,
+        };
+        (l, Some(*o) != prev, order_of(*o))
+    });
+    c
+}
+
+/// One walk back on the wave from `start` to `end`: the path start -> end.
+pub fn one_way(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> Option<GridPath> {
+    let w = wave::expand(cs, start, end, Connectivity::TwentySix)?;
+    descend(&w, &candidates, accept)
+}
+
+/// Both ways and merged: the path start -> end.
+pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> Option<GridPath> {
+    let forward = one_way(cs, start, end, accept)?;
+    // The wave from the end node, walked back from the start node, gives start -> end directly.
+    let backward = one_way(cs, end, start, accept).map(|mut p| {
+        p.reverse();
+        p
+    });
+    Some(match backward {
+        Some(b) => merge_paths(&forward, &b, accept),
+        None => forward,
+    })
+}
+
+/// The merge of Fig. 5 (see the module doc). Both paths run start -> end.
+pub fn merge_paths(a: &[Node], b: &[Node], accept: &mut Accept<'_>) -> GridPath {
+    let (Some(&start), Some(&end)) = (a.first(), a.last()) else {
+        return b.to_vec();
+    };
+    // Nodes of the union, in a fixed order.
+    let mut nodes: Vec<Node> = a.iter().chain(b).copied().collect();
+    nodes.sort();
+    nodes.dedup();
+    let id: HashMap<Node, usize> = nodes.iter().enumerate().map(|(i, n)| (*n, i)).collect();
+    let on_path = |p: &[Node], x: Node, y: Node| p.windows(2).any(|w| (w[0] == x && w[1] == y) || (w[0] == y && w[1] == x));
+    // Edges: path steps, and accepted moves between neighbouring union nodes.
+    let mut edges: Vec<Vec<(usize, [i32; 3])>> = vec![Vec::new(); nodes.len()];
+    for (i, &n) in nodes.iter().enumerate() {
+        for &o in offsets(Connectivity::TwentySix) {
+            let m = add(n, o);
+            if let Some(&j) = id.get(&m) {
+                if on_path(a, n, m) || on_path(b, n, m) || (i < j && accept(n, m)) || (i > j && edges[j].iter().any(|&(k, _)| k == i)) {
+                    edges[i].push((j, o));
+                }
+            }
+        }
+    }
+    // Dijkstra over (node, direction of arrival), cost (turns, steps).
+    let dir_index = |o: [i32; 3]| ((o[0] + 1) * 9 + (o[1] + 1) * 3 + (o[2] + 1)) as usize;
+    let ns = nodes.len() * 27;
+    let mut best = vec![(u32::MAX, u32::MAX); ns];
+    let mut from = vec![usize::MAX; ns];
+    let s = id[&start] * 27 + 13; // 13: no direction yet
+    best[s] = (0, 0);
+    let mut heap = BinaryHeap::new();
+    heap.push(Reverse((0u32, 0u32, s)));
+    let mut goal_state = None;
+    while let Some(Reverse((turns, steps, st))) = heap.pop() {
+        if best[st] != (turns, steps) {
+            continue;
+        }
+        let (i, d) = (st / 27, st % 27);
+        if nodes[i] == end {
+            goal_state = Some(st);
+            break;
+        }
+        for &(j, o) in &edges[i] {
+            let nd = dir_index(o);
+            let t = turns + u32::from(d != 13 && d != nd);
+            let cost = (t, steps + 1);
+            let ns_ = j * 27 + nd;
+            if cost < best[ns_] {
+                best[ns_] = cost;
+                from[ns_] = st;
+                heap.push(Reverse((cost.0, cost.1, ns_)));
+            }
+        }
+    }
+    let Some(mut st) = goal_state else {
+        return a.to_vec();
+    };
+    let mut path = vec![nodes[st / 27]];
+    while from[st] != usize::MAX {
+        st = from[st];
+        path.push(nodes[st / 27]);
+    }
+    path.reverse();
+    path
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::search::testing::{assert_path, grid};
+
+    #[test]
+    fn takes_the_diagonal_where_depth_first_fails() {
+        // Fig. 8: free nodes joined only at corners.
+        let cs = grid(3, 3, 1, |n| n[0] == n[1]);
+        let p = search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true).expect("extensile finds it");
+        assert_eq!(p, vec![[0, 0, 0], [1, 1, 0], [2, 2, 0]]);
+        assert!(crate::search::depth_first::search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true).is_none());
+    }
+
+    #[test]
+    fn keeps_its_direction_in_open_space() {
+        let cs = grid(8, 8, 8, |_| true);
+        let p = one_way(&cs, [0, 0, 0], [6, 2, 0], &mut |_, _| true).expect("path");
+        assert_path(&p, [0, 0, 0], [6, 2, 0]);
+        // Back from the end: axis steps along -axis1 while they keep the numbers falling
+        // (4 of them), then the diagonal: two straight pieces, one turn.
+        let turns = p.windows(3).filter(|w| {
+            (0..3).any(|k| w[1][k] - w[0][k] != w[2][k] - w[1][k])
+        }).count();
+        assert_eq!(turns, 1, "{p:?}");
+    }
+
+    #[test]
+    fn merge_crosses_between_two_paths_to_keep_straight() {
+        // Two staircases around a free square; the straight diagonal is in the union.
+        let a = vec![[0, 0, 0], [1, 0, 0], [2, 1, 0], [2, 2, 0]];
+        let b = vec![[0, 0, 0], [1, 1, 0], [1, 2, 0], [2, 2, 0]];
+        let m = merge_paths(&a, &b, &mut |_, _| true);
+        assert_eq!(m, vec![[0, 0, 0], [1, 1, 0], [2, 2, 0]]);
+        // Refuse the cross moves: it stays on one of the given paths.
+        let m = merge_paths(&a, &b, &mut |_, _| false);
+        assert!(m == a || m == b, "{m:?}");
+    }
+}

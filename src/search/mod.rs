@@ -1,0 +1,131 @@
+//! Path search back from the end node over a wave-numbered grid (paper section 4).
+//!
+//! The three methods of the paper share one walk: start at the end node (number n) and step to
+//! a neighbour with a smaller number until the start node (number 1) is reached; when a chosen
+//! node leads nowhere, back up and take the next candidate (section 4.1). They differ in which
+//! neighbours they look at and in what order:
+//!
+//! * [`neighboring`] (4.1): the 26 neighbours, smallest number first, ties in a fixed
+//!   lexicographic order. It follows the grid squares and so produces the saw-tooth of Fig. 6.
+//! * [`depth_first`] (4.2): the 6 axis neighbours whose number is exactly one less, in a fixed
+//!   order, depth first. It walks axis steps, so it runs on a wave numbered over the 6 axis
+//!   neighbours (on a 26-neighbour wave a chain of axis steps, each one number lower, exists only
+//!   along a single axis). It fails (Fig. 8) where the free space is joined only diagonally.
+//! * [`extensile`] (4.3): the 26 neighbours; where no axis neighbour carries n-1 it takes a
+//!   diagonal one. In the paper's 2D figures the wave counts axis steps, so a diagonal neighbour
+//!   is two numbers down ("it also considers n-2", Fig. 8); on our 26-neighbour wave the same
+//!   node carries n-1, and the rule reads "axis neighbours first, then diagonals". It keeps the
+//!   previous direction when it can, searches both ways (waves from either end) and merges the
+//!   two paths (Fig. 4-5); `shorten` then straightens it.
+//!
+//! Every step is taken only if `accept(from, to)` holds: the plan passes the whole-move safety
+//! check, so every edge of a returned path is a proven-safe straight move.
+
+pub mod depth_first;
+pub mod extensile;
+pub mod neighboring;
+
+use crate::cspace::Node;
+use crate::wave::Wave;
+use std::collections::HashSet;
+
+/// A path of grid nodes from the start node to the end node, each step to a neighbour.
+pub type GridPath = Vec<Node>;
+
+/// Edge acceptance: is the straight move between two neighbouring nodes safe?
+pub type Accept<'a> = dyn FnMut(Node, Node) -> bool + 'a;
+
+#[inline]
+pub(crate) fn add(n: Node, o: [i32; 3]) -> Node {
+    [n[0] + o[0], n[1] + o[1], n[2] + o[2]]
+}
+
+/// Number of axes an offset moves (1 axis step, 2 face diagonal, 3 corner diagonal).
+#[inline]
+pub(crate) fn order_of(o: [i32; 3]) -> usize {
+    o.iter().filter(|&&c| c != 0).count()
+}
+
+/// The shared walk. `candidates(node, previous_offset)` lists the neighbours to try, best
+/// first; only those with a number strictly between 0 and the current node's are taken.
+/// Returns the path from the wave's start to its end, or `None` when every branch dead-ends.
+pub(crate) fn descend(
+    wave: &Wave,
+    candidates: &dyn Fn(&Wave, Node, Option<[i32; 3]>) -> Vec<[i32; 3]>,
+    accept: &mut Accept<'_>,
+) -> Option<GridPath> {
+    struct Frame {
+        node: Node,
+        options: Vec<[i32; 3]>,
+        next: usize,
+    }
+    let first = candidates(wave, wave.end, None);
+    let mut stack = vec![Frame {
+        node: wave.end,
+        options: first,
+        next: 0,
+    }];
+    let mut dead: HashSet<Node> = HashSet::new();
+    while let Some(top) = stack.last_mut() {
+        if top.node == wave.start {
+            let mut path: GridPath = stack.iter().map(|f| f.node).collect();
+            path.reverse();
+            return Some(path);
+        }
+        let here = top.node;
+        let label = wave.label(here);
+        let mut chosen = None;
+        while top.next < top.options.len() {
+            let o = top.options[top.next];
+            top.next += 1;
+            let m = add(here, o);
+            let l = wave.label(m);
+            if l == 0 || l >= label || dead.contains(&m) {
+                continue;
+            }
+            if accept(here, m) {
+                chosen = Some((m, o));
+                break;
+            }
+        }
+        match chosen {
+            Some((m, o)) => {
+                let options = candidates(wave, m, Some(o));
+                stack.push(Frame {
+                    node: m,
+                    options,
+                    next: 0,
+                });
+            }
+            None => {
+                dead.insert(here);
+                stack.pop();
+            }
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+pub(crate) mod testing {
+    use crate::cspace::{CSpace, Grid, Node};
+
+    /// A grid of `nx` x `ny` x `nz` nodes at 1 deg, free where `free` says.
+    pub fn grid(nx: usize, ny: usize, nz: usize, free: impl Fn(Node) -> bool) -> CSpace {
+        let g = Grid::over(
+            [[0.0, nx as f64 - 1.0], [0.0, ny as f64 - 1.0], [0.0, nz as f64 - 1.0]],
+            1.0,
+        );
+        CSpace::from_fn(g, free)
+    }
+
+    /// Every step moves to a neighbour; ends are right.
+    pub fn assert_path(p: &[Node], start: Node, end: Node) {
+        assert_eq!(p.first(), Some(&start));
+        assert_eq!(p.last(), Some(&end));
+        for w in p.windows(2) {
+            let d: Vec<i32> = (0..3).map(|k| (w[1][k] - w[0][k]).abs()).collect();
+            assert!(d.iter().all(|&x| x <= 1) && d.iter().any(|&x| x == 1), "{:?} -> {:?}", w[0], w[1]);
+        }
+    }
+}
