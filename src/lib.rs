@@ -7,7 +7,9 @@
 pub mod cell;
 pub mod cspace;
 pub mod geometry;
+pub mod merge;
 pub mod rapid;
 pub mod robot;
 pub mod search;
+pub mod shorten;
 pub mod wave;
