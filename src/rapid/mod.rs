@@ -19,7 +19,7 @@
 //!     ! clearance (mm): <clearance_mm, 1 decimal>
 //!     ! base: [<x>, <y>, <z>] yaw: <yaw_deg>      (x, y, z 1 decimal in mm; yaw 3 decimals in deg)
 //!     ! moves: <moves>
-//!     ! min clearance (mm): <min_clearance_mm, 1 decimal>
+//!     ! min clearance (mm): <min_clearance_mm, 1 decimal, or `none (no obstacles)`>
 //!     ! estimated time (s): <estimated_time_s, 2 decimals>   (only when known)
 //!
 //!     CONST jointtarget <name> := [[a1,a2,a3,a4,a5,a6],[9E9,9E9,9E9,9E9,9E9,9E9]];   (one per target)
@@ -116,7 +116,8 @@ pub struct Header {
     /// `targets.len() - 1` (0 for no targets).
     pub moves: usize,
     /// Smallest clearance along the whole path in mm (printed with 1 decimal).
-    pub min_clearance_mm: f64,
+    /// None when the cell has no obstacles (the header then says so).
+    pub min_clearance_mm: Option<f64>,
     /// Manipulation time estimate in seconds, when known (printed with 2 decimals).
     pub estimated_time_s: Option<f64>,
 }
@@ -272,7 +273,10 @@ fn header_lines(h: &Header) -> Result<Vec<String>, RapidError> {
         finite("header base_mm[2]", z)?,
     );
     let yaw = finite("header yaw_deg", h.yaw_deg)?;
-    let min_clearance = finite("header min_clearance_mm", h.min_clearance_mm)?;
+    let min_clearance = match h.min_clearance_mm {
+        Some(c) => format_fixed(finite("header min_clearance_mm", c)?, LENGTH_DECIMALS),
+        None => "none (no obstacles)".to_string(),
+    };
     let mut lines = vec![
         format!("generator: {}", comment_text(&h.generator)),
         format!("cell: {}", comment_text(&h.cell_file)),
@@ -290,10 +294,7 @@ fn header_lines(h: &Header) -> Result<Vec<String>, RapidError> {
             format_fixed(yaw, YAW_DECIMALS)
         ),
         format!("moves: {}", h.moves),
-        format!(
-            "min clearance (mm): {}",
-            format_fixed(min_clearance, LENGTH_DECIMALS)
-        ),
+        format!("min clearance (mm): {min_clearance}"),
     ];
     if let Some(t) = h.estimated_time_s {
         let t = finite("header estimated_time_s", t)?;

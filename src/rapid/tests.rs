@@ -29,7 +29,7 @@ fn small_program() -> Program {
             base_mm: [0.0, -250.5, 12.26],
             yaw_deg: -90.0,
             moves: 3,
-            min_clearance_mm: 14.04,
+            min_clearance_mm: Some(14.04),
             estimated_time_s: Some(3.456),
         },
         targets: vec![
@@ -102,7 +102,7 @@ fn awkward_program() -> Program {
             base_mm: [1e7, -0.04, 3.0],
             yaw_deg: -0.0001,
             moves: targets.len() - 1,
-            min_clearance_mm: 1e-20,
+            min_clearance_mm: Some(1e-20),
             estimated_time_s: None,
         },
         targets,
@@ -351,7 +351,7 @@ fn render_rejects_non_finite_values() {
         "{err}"
     );
     let mut p = small_program();
-    p.header.min_clearance_mm = f64::INFINITY;
+    p.header.min_clearance_mm = Some(f64::INFINITY);
     assert!(matches!(render(&p), Err(RapidError::NonFinite { .. })));
     let mut p = small_program();
     p.header.estimated_time_s = Some(f64::NEG_INFINITY);
