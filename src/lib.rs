@@ -4,4 +4,6 @@
 //! `cell` -> `robot` -> `collision` -> `cspace` -> `wave` -> `search` -> `shorten`/`merge`
 //! -> `plan` -> `rapid`.
 
+pub mod ik;
+pub mod locate;
 pub mod robot;
