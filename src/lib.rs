@@ -1,13 +1,17 @@
 //! gen-rapid: cell YAML -> collision-free joint-space path -> ABB RAPID module.
 //!
 //! The pipeline, one module per stage (see ARCHITECTURE.md):
-//! `cell` -> `robot` -> `collision` -> `cspace` -> `wave` -> `search` -> `shorten`/`merge`
-//! -> `plan` -> `rapid`.
+//! `cell` -> `robot` -> (`locate`, `ik`) -> `collision` -> `cspace` -> `wave` -> `search`
+//! -> `shorten` / `merge` -> `plan` -> `program` -> `rapid`.
 
 pub mod cell;
 pub mod cspace;
 pub mod geometry;
+pub mod ik;
+pub mod locate;
 pub mod merge;
+pub mod plan;
+pub mod program;
 pub mod rapid;
 pub mod robot;
 pub mod search;
