@@ -5,11 +5,15 @@
 //! -> `shorten` / `merge` -> `plan` -> `program` -> `rapid`.
 
 pub mod cell;
+pub mod cli;
+pub mod collision;
 pub mod cspace;
+pub mod error;
 pub mod geometry;
 pub mod ik;
 pub mod locate;
 pub mod merge;
+pub mod pipeline;
 pub mod plan;
 pub mod program;
 pub mod rapid;

@@ -52,6 +52,7 @@ pub struct RobotSpec {
     pub urdf_path: PathBuf,
     pub urdf_loc: Loc,
     pub base: Base,
+    pub base_loc: Loc,
     pub yaw_deg: f64,
     /// Axes 4..6 held during the moves, deg.
     pub wrist_deg: [f64; 3],
@@ -482,6 +483,7 @@ fn validate(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
             urdf_path,
             urdf_loc: loc(&r.urdf),
             base,
+            base_loc: loc(&r.base),
             yaw_deg,
             wrist_deg,
         },

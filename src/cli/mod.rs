@@ -1,0 +1,89 @@
+//! The commands behind `gen-rapid`: each reads a cell, runs the stages it needs and writes its
+//! result. `main.rs` only parses the command line and turns the result into an exit status.
+
+pub mod run;
+
+use crate::cell::{self, Cell};
+use crate::error::Error;
+use std::io::Write;
+use std::path::Path;
+
+/// A cell loaded with its text (kept for pointing at lines in error messages).
+pub struct Loaded {
+    pub cell: Cell,
+    pub text: String,
+}
+
+/// A failure with the cell's name and text, ready to print.
+pub struct Failure {
+    pub error: Error,
+    pub file: String,
+    pub text: Option<String>,
+}
+
+impl Failure {
+    pub fn render(&self) -> String {
+        self.error.render(&self.file, self.text.as_deref())
+    }
+}
+
+pub fn load(path: &Path) -> Result<Loaded, Failure> {
+    let file = path.display().to_string();
+    match cell::load(path) {
+        Ok((cell, text)) => Ok(Loaded { cell, text }),
+        Err(e) => {
+            let text = std::fs::read_to_string(path).ok();
+            Err(Failure {
+                error: Error::Cell(e),
+                file,
+                text,
+            })
+        }
+    }
+}
+
+impl Loaded {
+    pub fn fail(&self, error: Error) -> Failure {
+        Failure {
+            error,
+            file: self.cell.path.display().to_string(),
+            text: Some(self.text.clone()),
+        }
+    }
+}
+
+/// Writes `bytes` to `path` atomically: a temporary file beside it, then a rename, so a failed
+/// run leaves no half-written file and an existing file is replaced whole.
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
+    let err = |source| Error::Write {
+        path: path.to_path_buf(),
+        source,
+    };
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
+    let result = (|| {
+        let mut f = std::fs::File::create(&tmp)?;
+        f.write_all(bytes)?;
+        f.sync_all()?;
+        std::fs::rename(&tmp, path)
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result.map_err(err)
+}
+
+/// Writes to stdout (the module) or to a file; stdout only ever receives a complete result.
+pub fn emit(output: Option<&Path>, bytes: &[u8]) -> Result<(), Error> {
+    match output {
+        Some(p) => write_atomically(p, bytes),
+        None => {
+            let mut out = std::io::stdout().lock();
+            out.write_all(bytes).and_then(|_| out.flush()).map_err(|source| Error::Write {
+                path: "<stdout>".into(),
+                source,
+            })
+        }
+    }
+}

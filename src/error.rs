@@ -1,0 +1,115 @@
+//! One error type for the whole run, and the one message a user sees.
+//!
+//! Each stage has its own typed error; this wraps them, says which exit status each one gets,
+//! and renders it pointing at the input: `file:line:column`, the offending line of the cell with
+//! a caret, the reason, and a help line where one helps. Errors found after parsing (a point that
+//! cannot be reached, no path between two points) carry the location of the item they are about.
+
+use crate::cell::{CellError, Loc};
+use crate::ik::IkError;
+use crate::locate::LocateError;
+use crate::plan::PlanError;
+use crate::rapid::RapidError;
+use crate::robot::RobotError;
+use std::path::PathBuf;
+
+/// Exit statuses (also in README.md).
+pub mod exit {
+    /// The cell file or the robot files are wrong (syntax, unknown key, bad value, bad URDF).
+    pub const INPUT: u8 = 1;
+    /// Command-line usage (clap's own status).
+    pub const USAGE: u8 = 2;
+    /// The input is valid but cannot be planned: a point out of reach or in collision, no base
+    /// position, no path, a search that fails.
+    pub const PLANNING: u8 = 3;
+    /// The module could not be rendered or written.
+    pub const OUTPUT: u8 = 4;
+}
+
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    #[error(transparent)]
+    Cell(#[from] CellError),
+    #[error(transparent)]
+    Robot { source: RobotError, loc: Loc },
+    #[error(transparent)]
+    Locate { source: LocateError, loc: Loc },
+    #[error("point '{point}': {source}")]
+    Ik {
+        point: String,
+        source: IkError,
+        loc: Loc,
+    },
+    #[error(transparent)]
+    Plan { source: PlanError, loc: Loc },
+    #[error(transparent)]
+    Rapid(#[from] RapidError),
+    #[error("cannot write {path}: {source}")]
+    Write {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+}
+
+impl Error {
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            Error::Cell(_) | Error::Robot { .. } => exit::INPUT,
+            Error::Ik {
+                source: IkError::Structure { .. },
+                ..
+            } => exit::INPUT,
+            Error::Locate { .. } | Error::Ik { .. } | Error::Plan { .. } => exit::PLANNING,
+            Error::Rapid(_) | Error::Write { .. } => exit::OUTPUT,
+        }
+    }
+
+    /// Where in the cell file the error points, if anywhere.
+    pub fn loc(&self) -> Option<Loc> {
+        match self {
+            Error::Cell(e) => e.loc(),
+            Error::Robot { loc, .. } | Error::Locate { loc, .. } | Error::Ik { loc, .. } | Error::Plan { loc, .. } => {
+                Some(*loc)
+            }
+            Error::Rapid(_) | Error::Write { .. } => None,
+        }
+    }
+
+    fn help(&self) -> Option<String> {
+        match self {
+            Error::Cell(e) => e.help().map(str::to_string),
+            Error::Plan {
+                source: PlanError::PointBlocked { .. },
+                ..
+            } => Some("every cell point must be in range and keep the clearance from every obstacle; move the point or the obstacle, or lower planner.clearance".into()),
+            Error::Plan {
+                source: PlanError::NoPath { .. },
+                ..
+            } => Some("a finer planner.grid or a smaller planner.clearance may open a passage; `gen-rapid --svg FILE` draws the blocked nodes".into()),
+            Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
+            _ => None,
+        }
+    }
+
+    /// The message for stderr: `error: ...`, then the place in the cell, then help.
+    pub fn render(&self, file: &str, text: Option<&str>) -> String {
+        let mut out = format!("error: {self}\n");
+        if let Some(loc) = self.loc().filter(|l| l.line > 0) {
+            out += &format!("  --> {file}:{}:{}\n", loc.line, loc.column);
+            if let Some(line) = text.and_then(|t| t.lines().nth(loc.line as usize - 1)) {
+                let num = loc.line.to_string();
+                let pad = " ".repeat(num.len());
+                let caret = " ".repeat(loc.column.saturating_sub(1) as usize);
+                out += &format!("{pad} |\n{num} | {line}\n{pad} | {caret}^\n");
+            }
+        } else if matches!(self, Error::Cell(CellError::Read { .. })) {
+            // The message names the file already.
+        } else if !matches!(self, Error::Write { .. }) {
+            out += &format!("  --> {file}\n");
+        }
+        if let Some(h) = self.help() {
+            out += &format!("help: {h}\n");
+        }
+        out
+    }
+}
