@@ -4,6 +4,7 @@
 //! `cell` -> `robot` -> `collision` -> `cspace` -> `wave` -> `search` -> `shorten`/`merge`
 //! -> `plan` -> `rapid`.
 
+pub mod collision;
 pub mod geometry;
 pub mod rapid;
 pub mod robot;
