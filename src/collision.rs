@@ -61,7 +61,8 @@
 //! about z); obstacles are axis-aligned boxes of the cell frame. Units: mm and degrees.
 
 use crate::geometry::{
-    cylinder_clear_of_aabb, distance_cylinder_aabb, distance_point_aabb, Aabb, Cylinder, Point,
+    cylinder_clear_of_aabb, distance_capsule_aabb, distance_cylinder_aabb, distance_point_aabb,
+    distance_segment_aabb, Aabb, Cylinder, Point,
 };
 use crate::robot::{RangeViolation, Robot};
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
@@ -291,7 +292,7 @@ impl CollisionModel {
             let c = self.cylinder_in(i, &poses);
             self.obstacles
                 .iter()
-                .all(|o| cylinder_clear_of_aabb(&c, &o.aabb, self.clearance_mm))
+                .all(|o| link_clear_of_box(&c, &o.aabb, self.clearance_mm))
         })
     }
 
@@ -306,7 +307,7 @@ impl CollisionModel {
         for i in 0..self.cyl.len() {
             let c = self.cylinder_in(i, &poses);
             for (k, o) in self.obstacles.iter().enumerate() {
-                if !cylinder_clear_of_aabb(&c, &o.aabb, self.clearance_mm) {
+                if !link_clear_of_box(&c, &o.aabb, self.clearance_mm) {
                     let d = distance_cylinder_aabb(&c, &o.aabb);
                     if worst.is_none_or(|(_, _, w)| d < w) {
                         worst = Some((i, k, d));
@@ -364,7 +365,7 @@ impl CollisionModel {
             if !self
                 .obstacles
                 .iter()
-                .all(|o| cylinder_clear_of_aabb(&cyl, &o.aabb, c))
+                .all(|o| link_clear_of_box(&cyl, &o.aabb, c))
             {
                 free.fill(false);
                 return;
@@ -395,22 +396,44 @@ impl CollisionModel {
                 if nk == 0 {
                     continue;
                 }
+                // Coherence along the column: the capsule distance to a box changes by at most
+                // `reach` per radian of joint 3 (module doc, `R[2][L]`; the capsule's points obey
+                // the same bound). A box whose last capsule distance `lb[j]`, taken at joint-3
+                // angle `at[j]`, minus that motion still exceeds the clearance is clear here, as
+                // `cylinder_clear_of_aabb`'s fast accept would find.
+                let reach = cd.reach_mm[2];
+                let mut lb = [f64::NEG_INFINITY; CULL_CHUNK];
+                let mut at = [0.0f64; CULL_CHUNK];
                 for (f, &a3) in free.iter_mut().zip(a3_deg) {
                     if !*f {
                         continue;
                     }
                     let q3 = self
                         .robot
-                        .urdf_joints_deg(&[a1_deg, a2_deg, a3, 0.0, 0.0, 0.0])[2];
-                    let (s, co) = q3.to_radians().sin_cos();
-                    let cyl = Cylinder {
-                        a: ends[0].0 + ends[0].1 * co + ends[0].2 * s,
-                        b: ends[1].0 + ends[1].1 * co + ends[1].2 * s,
-                        radius,
-                    };
-                    *f = kept[..nk]
-                        .iter()
-                        .all(|&k| cylinder_clear_of_aabb(&cyl, &chunk[k].aabb, c));
+                        .urdf_joints_deg(&[a1_deg, a2_deg, a3, 0.0, 0.0, 0.0])[2]
+                        .to_radians();
+                    let mut cyl: Option<Cylinder> = None;
+                    for (slot, &k) in kept[..nk].iter().enumerate() {
+                        if lb[slot] - reach * (q3 - at[slot]).abs() - CULL_MARGIN_MM > c {
+                            continue;
+                        }
+                        let cy = *cyl.get_or_insert_with(|| {
+                            let (s, co) = q3.sin_cos();
+                            Cylinder {
+                                a: ends[0].0 + ends[0].1 * co + ends[0].2 * s,
+                                b: ends[1].0 + ends[1].1 * co + ends[1].2 * s,
+                                radius,
+                            }
+                        });
+                        let b = &chunk[k].aabb;
+                        let lo = distance_capsule_aabb(&cy, b);
+                        lb[slot] = lo;
+                        at[slot] = q3;
+                        if lo <= c && !link_clear_of_box(&cy, b, c) {
+                            *f = false;
+                            break;
+                        }
+                    }
                 }
             }
         }
@@ -479,7 +502,8 @@ impl CollisionModel {
                 }
             }
         }
-        result.min(upper)
+        // Distances are never negative: the slack may have taken the bound below 0.
+        result.min(upper).max(0.0)
     }
 
     /// Where a move fails: `(t, why)`, `t` in `[0, 1]`. An end out of range gives `t` = 0 or 1
@@ -684,6 +708,56 @@ fn may_meet_sweep(b: &Aabb, o: &Point, u: &Vector3<f64>, cd: &CylData, clearance
     let mid = centre.dot(u);
     let ext = half.x * u.x.abs() + half.y * u.y.abs() + half.z * u.z.abs();
     mid + ext >= cd.axial_mm[0] - grow && mid - ext <= cd.axial_mm[1] + grow
+}
+
+/// The node test used everywhere in this module: `true` when the cylinder keeps MORE than
+/// `clearance` from the box. [`cylinder_clear_of_aabb`] after two cheap extra bounds that keep
+/// most queries out of parry's GJK (the capsule bounds are loose where a flat cap faces a box):
+/// a lower bound from capsules around shortened axes that still contain the rim, and an upper
+/// bound from points of the cylinder. Both are valid bounds, so the answer is the same.
+#[inline]
+fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
+    if distance_capsule_aabb(c, b) > clearance {
+        return true;
+    }
+    let d = c.b - c.a;
+    let len = d.norm();
+    let r = c.radius.max(0.0);
+    if len > 0.0 && r > 0.0 {
+        let u = d / len;
+        // Segment shortened by s at both ends, radius sqrt(r^2 + s^2): contains the cylinder.
+        for k in [1.0, 2.5, 6.0] {
+            let s = (k * r).min(0.5 * len);
+            let lb = distance_segment_aabb(&(c.a + u * s), &(c.b - u * s), b) - r.hypot(s);
+            if lb > clearance {
+                return true;
+            }
+        }
+        // Cap centres and the rim point of each cap nearest to the box lie on the cylinder.
+        let mut ub = f64::INFINITY;
+        for p in [c.a, c.b] {
+            let q = Point::new(
+                p.x.clamp(b.min.x, b.max.x),
+                p.y.clamp(b.min.y, b.max.y),
+                p.z.clamp(b.min.z, b.max.z),
+            );
+            let w = q - p;
+            let perp = w - u * u.dot(&w);
+            let n = perp.norm();
+            let rim = if n > 0.0 {
+                p + perp * (r.min(n) / n)
+            } else {
+                p
+            };
+            ub = ub
+                .min(distance_point_aabb(&p, b))
+                .min(distance_point_aabb(&rim, b));
+        }
+        if ub <= clearance {
+            return false;
+        }
+    }
+    cylinder_clear_of_aabb(c, b, clearance)
 }
 
 #[cfg(test)]
@@ -941,10 +1015,89 @@ mod tests {
             free > 1000 && blocked > 500 && range > 1000,
             "{free} {blocked} {range}"
         );
+        // At 1 degree, as the planner fills the grid (exercises the skipping along the column).
+        let fine: Vec<f64> = (-65..=70).map(f64::from).collect();
+        let mut col = vec![false; fine.len()];
+        let mut rng = Rng(0xF1E1_D000_0000_0001);
+        let (mut free, mut blocked) = (0, 0);
+        for _ in 0..300 {
+            let (a1, a2) = (rng.range(-170.0, 170.0), rng.range(-70.0, 70.0));
+            model.inspect_column(a1, a2, &fine, &mut col);
+            for (k, &v) in fine.iter().enumerate() {
+                assert_eq!(col[k], model.is_free(&[a1, a2, v]), "{:?}", [a1, a2, v]);
+                if col[k] {
+                    free += 1;
+                } else {
+                    blocked += 1;
+                }
+            }
+        }
+        assert!(free > 5000 && blocked > 5000, "{free} {blocked}");
         // A free slice longer than the column is padded with `false`.
         let mut longer = vec![true; 4];
         model.inspect_column(0.0, 0.0, &[0.0, -5.0], &mut longer);
         assert_eq!(longer, [true, true, false, false]);
+    }
+
+    #[test]
+    fn extra_bounds_of_link_clear_of_box_agree_with_parry() {
+        let mut rng = Rng(0xB0B0_CAFE_1234_5678);
+        let (mut clear, mut blocked) = (0, 0);
+        for k in 0..4000 {
+            let b = Aabb::new(
+                Point::new(
+                    rng.range(-300.0, 0.0),
+                    rng.range(-300.0, 0.0),
+                    rng.range(-300.0, 0.0),
+                ),
+                Point::new(
+                    rng.range(0.0, 300.0),
+                    rng.range(0.0, 300.0),
+                    rng.range(0.0, 300.0),
+                ),
+            );
+            // Cylinders near the box, often with a cap facing it.
+            let a = Point::new(
+                rng.range(-600.0, 600.0),
+                rng.range(-600.0, 600.0),
+                rng.range(-600.0, 600.0),
+            );
+            let dir = if k % 2 == 0 {
+                (a - nalgebra::center(&b.min, &b.max)).normalize()
+            } else {
+                Vector3::new(
+                    rng.range(-1.0, 1.0),
+                    rng.range(-1.0, 1.0),
+                    rng.range(-1.0, 1.0),
+                )
+                .normalize()
+            };
+            let c = Cylinder {
+                a,
+                b: a + dir * rng.range(50.0, 1100.0),
+                radius: rng.range(20.0, 150.0),
+            };
+            let exact = parry_distance(&c, &b);
+            let clearance = if k % 3 == 0 {
+                rng.range(0.0, 30.0)
+            } else {
+                exact + rng.range(-20.0, 20.0)
+            };
+            let got = link_clear_of_box(&c, &b, clearance.max(0.0));
+            if (exact - clearance.max(0.0)).abs() > 1e-6 {
+                assert_eq!(
+                    got,
+                    exact > clearance.max(0.0),
+                    "case {k}: exact {exact}, clearance {clearance}, {c:?} {b:?}"
+                );
+            }
+            if got {
+                clear += 1
+            } else {
+                blocked += 1
+            }
+        }
+        assert!(clear > 1000 && blocked > 1000, "{clear} {blocked}");
     }
 
     #[test]
