@@ -464,10 +464,8 @@ mod tests {
         let h = (bx.max - bx.min) * 0.5;
         let cub = parry3d::shape::Cuboid::new(Vector::new(h.x, h.y, h.z));
         let (a, b) = (a - c, b - c);
-        let seg = parry3d::shape::Segment::new(
-            Vector::new(a.x, a.y, a.z),
-            Vector::new(b.x, b.y, b.z),
-        );
+        let seg =
+            parry3d::shape::Segment::new(Vector::new(a.x, a.y, a.z), Vector::new(b.x, b.y, b.z));
         parry3d::query::distance(&Pose::identity(), &cub, &Pose::identity(), &seg)
             .expect("segment-cuboid is supported")
             .distance as f64

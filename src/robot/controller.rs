@@ -66,7 +66,12 @@ pub fn path_beside(urdf_path: &Path) -> PathBuf {
 /// Parses a controller file; the message says what is wrong (with line:column when YAML is).
 pub fn parse(text: &str) -> Result<Controller, String> {
     let raw: RawController = serde_saphyr::from_str(text).map_err(|e| match e.location() {
-        Some(loc) => format!("{}:{}: {}", loc.line(), loc.column(), first_line(&e.to_string())),
+        Some(loc) => format!(
+            "{}:{}: {}",
+            loc.line(),
+            loc.column(),
+            first_line(&e.to_string())
+        ),
         None => e.to_string(),
     })?;
     let axes: [AxisSpec; 6] = raw

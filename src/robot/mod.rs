@@ -145,7 +145,9 @@ impl Robot {
         urdf::robot_from_urdf(
             urdf_path,
             &text,
-            controller_text.as_deref().map(|t| (controller_path.as_path(), t)),
+            controller_text
+                .as_deref()
+                .map(|t| (controller_path.as_path(), t)),
         )
     }
 
@@ -156,7 +158,10 @@ impl Robot {
         match urdf::robot_from_urdf(
             path,
             include_str!("../../robots/irb1400.urdf"),
-            Some((controller, include_str!("../../robots/irb1400.controller.yaml"))),
+            Some((
+                controller,
+                include_str!("../../robots/irb1400.controller.yaml"),
+            )),
         ) {
             Ok(r) => r,
             // The bundled files are tested; reaching this is a build defect, not user input.
@@ -201,7 +206,12 @@ impl Robot {
     /// Checks all six axes against the controller ranges.
     pub fn check_range6(&self, axes_deg: &Axes6) -> Result<(), RangeViolation> {
         self.check_range3(&[axes_deg[0], axes_deg[1], axes_deg[2]])?;
-        for (i, (&v, spec)) in axes_deg.iter().zip(&self.controller.axes).enumerate().skip(3) {
+        for (i, (&v, spec)) in axes_deg
+            .iter()
+            .zip(&self.controller.axes)
+            .enumerate()
+            .skip(3)
+        {
             if v < spec.min_deg || v > spec.max_deg {
                 return Err(RangeViolation::Axis {
                     axis: i + 1,
@@ -261,10 +271,22 @@ mod tests {
     /// Joint values read in ABB RobotStudio and the tool0 position it reported
     /// (../shared/irb1400.md, forward-kinematics check data).
     const ROBOTSTUDIO: [(Axes6, [f64; 3]); 4] = [
-        ([30.80, -12.13, 15.33, -40.0, 59.80, -28.0], [691.03, 356.96, 921.35]),
-        ([9.07, 39.20, 46.50, -8.0, 62.87, 44.0], [1072.34, 160.46, 420.62]),
-        ([-95.20, 28.93, 6.17, -20.0, 21.47, 40.0], [-123.39, -1238.42, 1004.51]),
-        ([31.73, -8.40, 61.17, 12.0, -36.80, 24.0], [508.35, 301.93, 460.09]),
+        (
+            [30.80, -12.13, 15.33, -40.0, 59.80, -28.0],
+            [691.03, 356.96, 921.35],
+        ),
+        (
+            [9.07, 39.20, 46.50, -8.0, 62.87, 44.0],
+            [1072.34, 160.46, 420.62],
+        ),
+        (
+            [-95.20, 28.93, 6.17, -20.0, 21.47, 40.0],
+            [-123.39, -1238.42, 1004.51],
+        ),
+        (
+            [31.73, -8.40, 61.17, 12.0, -36.80, 24.0],
+            [508.35, 301.93, 460.09],
+        ),
     ];
 
     #[test]
@@ -273,7 +295,10 @@ mod tests {
         for (axes, expected) in ROBOTSTUDIO {
             let p = robot.tool0(&axes).translation.vector;
             let err = (p - Vector3::from(expected)).norm();
-            assert!(err < 0.2, "{axes:?}: tool0 at {p:?}, RobotStudio {expected:?}, off by {err} mm");
+            assert!(
+                err < 0.2,
+                "{axes:?}: tool0 at {p:?}, RobotStudio {expected:?}, off by {err} mm"
+            );
         }
     }
 
@@ -282,14 +307,29 @@ mod tests {
         let robot = Robot::irb1400();
         let poses = robot.link_poses(&[0.0; 6]);
         let t = |i: usize| poses[i].translation.vector;
-        assert!((t(1) - Vector3::new(150.0, 0.0, 475.0)).norm() < 1e-9, "axis 2");
-        assert!((t(2) - Vector3::new(150.0, 0.0, 1075.0)).norm() < 1e-9, "axis 3");
-        assert!((t(4) - Vector3::new(870.0, 0.0, 1195.0)).norm() < 1e-9, "wrist centre");
+        assert!(
+            (t(1) - Vector3::new(150.0, 0.0, 475.0)).norm() < 1e-9,
+            "axis 2"
+        );
+        assert!(
+            (t(2) - Vector3::new(150.0, 0.0, 1075.0)).norm() < 1e-9,
+            "axis 3"
+        );
+        assert!(
+            (t(4) - Vector3::new(870.0, 0.0, 1195.0)).norm() < 1e-9,
+            "wrist centre"
+        );
         let tool = robot.tool0(&[0.0; 6]);
         assert!((tool.translation.vector - Vector3::new(955.0, 0.0, 1195.0)).norm() < 1e-9);
         let q = tool.rotation.quaternion();
         let s = std::f64::consts::FRAC_1_SQRT_2;
-        assert!(close(q.w, s, 1e-5) && close(q.i, 0.0, 1e-9) && close(q.j, s, 1e-5) && close(q.k, 0.0, 1e-9), "{q:?}");
+        assert!(
+            close(q.w, s, 1e-5)
+                && close(q.i, 0.0, 1e-9)
+                && close(q.j, s, 1e-5)
+                && close(q.k, 0.0, 1e-9),
+            "{q:?}"
+        );
     }
 
     /// The wrist-centre closed form of irb1400.md, an independent computation.
@@ -303,34 +343,63 @@ mod tests {
     #[test]
     fn wrist_centre_matches_the_closed_form() {
         let robot = Robot::irb1400();
-        for a in [[0.0, 0.0, 0.0], [90.0, 0.0, 0.0], [30.0, 20.0, 10.0], [-25.0, 15.0, 10.0], [-160.0, -60.0, 65.0], [12.5, 69.0, -40.0]] {
+        for a in [
+            [0.0, 0.0, 0.0],
+            [90.0, 0.0, 0.0],
+            [30.0, 20.0, 10.0],
+            [-25.0, 15.0, 10.0],
+            [-160.0, -60.0, 65.0],
+            [12.5, 69.0, -40.0],
+        ] {
             let w = robot.wrist_centre(&[a[0], a[1], a[2], 17.0, -33.0, 80.0]);
             let e = wrist_closed_form(a);
-            assert!((w.coords - Vector3::from(e)).norm() < 1e-9, "{a:?}: {w:?} vs {e:?}");
+            assert!(
+                (w.coords - Vector3::from(e)).norm() < 1e-9,
+                "{a:?}: {w:?} vs {e:?}"
+            );
         }
     }
 
     #[test]
     fn coupling_applies_to_axis_3_only() {
         let robot = Robot::irb1400();
-        assert_eq!(robot.urdf_joints_deg(&[1.0, 20.0, 10.0, 4.0, 5.0, 6.0]), [1.0, 20.0, -10.0, 4.0, 5.0, 6.0]);
+        assert_eq!(
+            robot.urdf_joints_deg(&[1.0, 20.0, 10.0, 4.0, 5.0, 6.0]),
+            [1.0, 20.0, -10.0, 4.0, 5.0, 6.0]
+        );
     }
 
     #[test]
     fn ranges_include_the_coupled_axis_3_limit() {
         let robot = Robot::irb1400();
         assert!(robot.check_range3(&[170.0, 70.0, 70.0]).is_ok());
-        assert!(matches!(robot.check_range3(&[170.5, 0.0, 0.0]), Err(RangeViolation::Axis { axis: 1, .. })));
-        assert!(matches!(robot.check_range3(&[0.0, 0.0, -65.5]), Err(RangeViolation::Axis { axis: 3, .. })));
+        assert!(matches!(
+            robot.check_range3(&[170.5, 0.0, 0.0]),
+            Err(RangeViolation::Axis { axis: 1, .. })
+        ));
+        assert!(matches!(
+            robot.check_range3(&[0.0, 0.0, -65.5]),
+            Err(RangeViolation::Axis { axis: 3, .. })
+        ));
         // rax2 = -70, rax3 = +70: both in range, but the arms would fold to 140 deg.
-        assert!(matches!(robot.check_range3(&[0.0, -70.0, 70.0]), Err(RangeViolation::Coupled { .. })));
-        assert!(matches!(robot.check_range3(&[0.0, 60.0, -10.0]), Err(RangeViolation::Coupled { .. })));
+        assert!(matches!(
+            robot.check_range3(&[0.0, -70.0, 70.0]),
+            Err(RangeViolation::Coupled { .. })
+        ));
+        assert!(matches!(
+            robot.check_range3(&[0.0, 60.0, -10.0]),
+            Err(RangeViolation::Coupled { .. })
+        ));
     }
 
     #[test]
     fn cylinders_sit_where_irb1400_md_puts_them() {
         let robot = Robot::irb1400();
-        let c: Vec<_> = robot.cylinders.iter().map(|c| (c.link.as_str(), c.joint_index, c.a, c.b, c.radius_mm)).collect();
+        let c: Vec<_> = robot
+            .cylinders
+            .iter()
+            .map(|c| (c.link.as_str(), c.joint_index, c.a, c.b, c.radius_mm))
+            .collect();
         assert_eq!(c.len(), 3);
         let near = |p: Point3<f64>, q: [f64; 3]| (p.coords - Vector3::from(q)).norm() < 1e-9;
         assert_eq!((c[0].0, c[0].1, c[0].4), ("link_1", 0, 350.0));
@@ -338,7 +407,12 @@ mod tests {
         assert_eq!((c[1].0, c[1].1, c[1].4), ("link_2", 1, 150.0));
         assert!(near(c[1].2, [0.0, 0.0, 0.0]) && near(c[1].3, [0.0, 0.0, 600.0]));
         assert_eq!((c[2].0, c[2].1, c[2].4), ("link_3", 2, 120.0));
-        assert!(near(c[2].2, [-300.0, 0.0, 120.0]) && near(c[2].3, [805.0, 0.0, 120.0]), "{:?} {:?}", c[2].2, c[2].3);
+        assert!(
+            near(c[2].2, [-300.0, 0.0, 120.0]) && near(c[2].3, [805.0, 0.0, 120.0]),
+            "{:?} {:?}",
+            c[2].2,
+            c[2].3
+        );
     }
 
     #[test]
@@ -348,14 +422,22 @@ mod tests {
         assert_eq!(robot.controller.coupling, Coupling::Serial);
         assert!(close(robot.controller.axes[1].max_deg, 70.0, 1e-3));
         assert!(close(robot.controller.axes[0].speed_deg_s, 110.0, 1e-2));
-        assert_eq!(robot.urdf_joints_deg(&[0.0, 20.0, 10.0, 0.0, 0.0, 0.0])[2], 10.0);
+        assert_eq!(
+            robot.urdf_joints_deg(&[0.0, 20.0, 10.0, 0.0, 0.0, 0.0])[2],
+            10.0
+        );
     }
 
     #[test]
     fn non_cylinder_collision_on_the_arm_is_refused() {
-        let text = include_str!("../../robots/irb1400.urdf")
-            .replace(r#"<cylinder radius="0.15" length="0.6"/>"#, r#"<box size="0.1 0.1 0.6"/>"#);
+        let text = include_str!("../../robots/irb1400.urdf").replace(
+            r#"<cylinder radius="0.15" length="0.6"/>"#,
+            r#"<box size="0.1 0.1 0.6"/>"#,
+        );
         let err = urdf::robot_from_urdf(Path::new("x.urdf"), &text, None).unwrap_err();
-        assert!(err.to_string().contains("link_2") && err.to_string().contains("cylinder"), "{err}");
+        assert!(
+            err.to_string().contains("link_2") && err.to_string().contains("cylinder"),
+            "{err}"
+        );
     }
 }

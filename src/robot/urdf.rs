@@ -46,10 +46,17 @@ pub fn robot_from_urdf(
         .collect();
     let root = match roots.as_slice() {
         [r] => r.name.clone(),
-        [] => return Err(model_err("no root link (every link is some joint's child)".into())),
+        [] => {
+            return Err(model_err(
+                "no root link (every link is some joint's child)".into(),
+            ))
+        }
         _ => {
             let names: Vec<&str> = roots.iter().map(|l| l.name.as_str()).collect();
-            return Err(model_err(format!("several root links: {}", names.join(", "))));
+            return Err(model_err(format!(
+                "several root links: {}",
+                names.join(", ")
+            )));
         }
     };
 
@@ -58,8 +65,11 @@ pub fn robot_from_urdf(
     let mut flange_to_tool0 = Isometry3::identity();
     let mut link = root;
     loop {
-        let children: Vec<&urdf_rs::Joint> =
-            urdf.joints.iter().filter(|j| j.parent.link == link).collect();
+        let children: Vec<&urdf_rs::Joint> = urdf
+            .joints
+            .iter()
+            .filter(|j| j.parent.link == link)
+            .collect();
         let next = match children.as_slice() {
             [] => break,
             [j] => *j,
@@ -81,9 +91,8 @@ pub fn robot_from_urdf(
         match next.joint_type {
             urdf_rs::JointType::Revolute | urdf_rs::JointType::Continuous if joints.len() < 6 => {
                 let axis = Vector3::from(*next.axis.xyz);
-                let axis = Unit::try_new(axis, 1e-9).ok_or_else(|| {
-                    model_err(format!("joint '{}' has a zero axis", next.name))
-                })?;
+                let axis = Unit::try_new(axis, 1e-9)
+                    .ok_or_else(|| model_err(format!("joint '{}' has a zero axis", next.name)))?;
                 joints.push((next, pending * pose_mm(&next.origin), axis));
                 pending = Isometry3::identity();
             }
@@ -113,7 +122,10 @@ pub fn robot_from_urdf(
     let mut cylinders = Vec::new();
     for (index, (joint, _, _)) in joints.iter().enumerate().take(3) {
         let Some(l) = urdf.links.iter().find(|l| l.name == joint.child.link) else {
-            return Err(model_err(format!("link '{}' is not defined", joint.child.link)));
+            return Err(model_err(format!(
+                "link '{}' is not defined",
+                joint.child.link
+            )));
         };
         for c in &l.collision {
             let urdf_rs::Geometry::Cylinder { radius, length } = c.geometry else {

@@ -1,0 +1,88 @@
+//! Timing of the collision model on the trunk-like scene of the paper's section 6: the grid
+//! build's hot path (`inspect_column`, one column of 136 axis-3 values) and the whole-move check.
+use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use gen_rapid::collision::{CollisionModel, Obstacle, Placement};
+use gen_rapid::geometry::{Aabb, Point};
+use gen_rapid::robot::Robot;
+use std::hint::black_box;
+
+fn bx(name: &str, min: [f64; 3], max: [f64; 3]) -> Obstacle {
+    Obstacle {
+        name: name.to_string(),
+        aabb: Aabb::new(Point::from(min), Point::from(max)),
+    }
+}
+
+/// Robot at (0, -850, 0), yaw 90, before a trunk of 1800 x 900 x 500 mm with a tall box in it.
+fn trunk_model() -> CollisionModel {
+    let obstacles = vec![
+        bx("floor", [-900.0, -450.0, 0.0], [900.0, 450.0, 100.0]),
+        bx("near wall", [-900.0, -450.0, 0.0], [900.0, -430.0, 500.0]),
+        bx("far wall", [-900.0, 430.0, 0.0], [900.0, 450.0, 500.0]),
+        bx("left wall", [-900.0, -450.0, 0.0], [-880.0, 450.0, 500.0]),
+        bx("right wall", [880.0, -450.0, 0.0], [900.0, 450.0, 500.0]),
+        bx("tower", [-150.0, 0.0, 0.0], [150.0, 300.0, 1000.0]),
+    ];
+    let placement = Placement {
+        base_mm: [0.0, -850.0, 0.0],
+        yaw_deg: 90.0,
+    };
+    CollisionModel::new(&Robot::irb1400(), placement, obstacles, 10.0)
+}
+
+fn bench(c: &mut Criterion) {
+    let model = trunk_model();
+    // Axis 3 from -65 to +70 at 1 degree: 136 nodes per column.
+    let a3: Vec<f64> = (-65..=70).map(f64::from).collect();
+    // Columns spread over axes 1 and 2 (in range), visited in turn.
+    let columns: Vec<(f64, f64)> = (-17..=17)
+        .flat_map(|i| (-7..=7).map(move |j| (i as f64 * 10.0, j as f64 * 10.0)))
+        .collect();
+    let mut free = vec![false; a3.len()];
+    let mut g = c.benchmark_group("collision");
+    g.throughput(Throughput::Elements(a3.len() as u64));
+    let mut k = 0usize;
+    g.bench_function("inspect_column_136", |b| {
+        b.iter(|| {
+            k = (k + 1) % columns.len();
+            let (a1, a2) = columns[k];
+            model.inspect_column(black_box(a1), black_box(a2), black_box(&a3), &mut free);
+            free[0]
+        })
+    });
+    // The same nodes through is_free, for comparison.
+    g.bench_function("is_free_136", |b| {
+        b.iter(|| {
+            k = (k + 1) % columns.len();
+            let (a1, a2) = columns[k];
+            a3.iter()
+                .filter(|&&v| model.is_free(black_box(&[a1, a2, v])))
+                .count()
+        })
+    });
+    g.throughput(Throughput::Elements(1));
+    // Paper's A -> F: axis 1 from +90 to -90, the forearm passing over the tower.
+    let (from, to) = ([90.0, 0.0, 0.0], [-90.0, 0.0, 0.0]);
+    eprintln!(
+        "long move {from:?} -> {to:?}: safe {}, min clearance >= {:.3} mm",
+        model.move_is_safe(&from, &to),
+        model.min_clearance_along(&from, &to, 0.1)
+    );
+    g.bench_function("move_is_safe_long", |b| {
+        b.iter(|| model.move_is_safe(black_box(&from), black_box(&to)))
+    });
+    // A long move into the trunk (B -> E of the paper).
+    let (from2, to2) = ([30.0, 20.0, 10.0], [-30.0, 20.0, 10.0]);
+    eprintln!(
+        "move {from2:?} -> {to2:?}: safe {}, min clearance >= {:.3} mm",
+        model.move_is_safe(&from2, &to2),
+        model.min_clearance_along(&from2, &to2, 0.1)
+    );
+    g.bench_function("move_is_safe_b_to_e", |b| {
+        b.iter(|| model.move_is_safe(black_box(&from2), black_box(&to2)))
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
