@@ -1283,3 +1283,9 @@ mod tests {
         model.inspect_column(0.0, 0.0, &[], &mut []);
     }
 }
+
+impl crate::cspace::Inspector for CollisionModel {
+    fn inspect_column(&self, a1_deg: f64, a2_deg: f64, a3_deg: &[f64], free: &mut [bool]) {
+        CollisionModel::inspect_column(self, a1_deg, a2_deg, a3_deg, free)
+    }
+}

@@ -30,9 +30,9 @@ pub mod exit {
 pub enum Error {
     #[error(transparent)]
     Cell(#[from] CellError),
-    #[error(transparent)]
+    #[error("{source}")]
     Robot { source: RobotError, loc: Loc },
-    #[error(transparent)]
+    #[error("{source}")]
     Locate { source: LocateError, loc: Loc },
     #[error("point '{point}': {source}")]
     Ik {
@@ -40,7 +40,7 @@ pub enum Error {
         source: IkError,
         loc: Loc,
     },
-    #[error(transparent)]
+    #[error("{source}")]
     Plan { source: PlanError, loc: Loc },
     #[error(transparent)]
     Rapid(#[from] RapidError),
