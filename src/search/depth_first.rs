@@ -1,6 +1,7 @@
 //! Depth-first search (paper section 4.2): from the end node, only the 6 axis neighbours whose
-//! number is exactly one less, tried depth first in the fixed order -axis1, -axis2, -axis3,
-//! +axis3, +axis2, +axis1 (the order of [`crate::wave::offsets`]), backing up on dead ends.
+//! number is exactly one less, tried depth first, backing up on dead ends. The order is fixed:
+//! the direction of the previous step first (so runs stay straight and merge into one move),
+//! then -axis1, -axis2, -axis3, +axis3, +axis2, +axis1 (the order of [`crate::wave::offsets`]).
 //!
 //! It walks axis steps, so the wave it descends is numbered over the 6 axis neighbours. It fails
 //! (the paper's Fig. 8) when the start and end are joined only through diagonal steps; the plan
@@ -10,13 +11,16 @@ use super::{descend, Accept, GridPath};
 use crate::cspace::{CSpace, Node};
 use crate::wave::{self, offsets, Connectivity, Wave};
 
-fn candidates(w: &Wave, n: Node, _prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
+fn candidates(w: &Wave, n: Node, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     let want = w.label(n).saturating_sub(1);
-    offsets(Connectivity::Six)
+    let mut c: Vec<[i32; 3]> = offsets(Connectivity::Six)
         .iter()
         .copied()
         .filter(|o| w.label(super::add(n, *o)) == want)
-        .collect()
+        .collect();
+    // The previous direction first: the stable sort keeps the fixed order among the rest.
+    c.sort_by_key(|o| Some(*o) != prev);
+    c
 }
 
 /// The path start -> end by axis steps, or `None` (no axis-step path, or every branch refused).
