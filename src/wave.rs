@@ -93,25 +93,38 @@ pub fn expand(cs: &CSpace, start: Node, end: Node, connectivity: Connectivity) -
     queue.push_back(start);
     let offs = offsets(connectivity);
     let dims = [g.dims[0] as i32, g.dims[1] as i32, g.dims[2] as i32];
+    // Linear-index steps of the offsets, for nodes off the grid's border (no bounds checks).
+    let stride = [(g.dims[1] * g.dims[2]) as isize, g.dims[2] as isize, 1isize];
+    let steps: Vec<isize> = offs
+        .iter()
+        .map(|o| o[0] as isize * stride[0] + o[1] as isize * stride[1] + o[2] as isize * stride[2])
+        .collect();
+    let end_index = g.index(end);
     let mut found = start == end;
     while let Some(n) = queue.pop_front() {
         if found {
             break;
         }
-        let next = labels[g.index(n)] + 1;
-        for o in offs {
-            let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
-            if m[0] < 0 || m[1] < 0 || m[2] < 0 || m[0] >= dims[0] || m[1] >= dims[1] || m[2] >= dims[2] {
-                continue;
-            }
-            let i = g.index(m);
+        let here = g.index(n);
+        let next = labels[here] + 1;
+        let interior = (0..3).all(|k| n[k] > 0 && n[k] < dims[k] - 1);
+        for (o, &step) in offs.iter().zip(&steps) {
+            let i = if interior {
+                (here as isize + step) as usize
+            } else {
+                let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
+                if m[0] < 0 || m[1] < 0 || m[2] < 0 || m[0] >= dims[0] || m[1] >= dims[1] || m[2] >= dims[2] {
+                    continue;
+                }
+                g.index(m)
+            };
             if labels[i] == 0 && cs.is_free_index(i) {
                 labels[i] = next;
-                if m == end {
+                if i == end_index {
                     found = true;
                     break;
                 }
-                queue.push_back(m);
+                queue.push_back([n[0] + o[0], n[1] + o[1], n[2] + o[2]]);
             }
         }
     }

@@ -35,11 +35,19 @@ pub fn one_way(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> 
     descend(&w, &candidates, accept)
 }
 
-/// Both ways and merged: the path start -> end.
+/// Both ways and merged: the path start -> end. The two waves are independent and expand on
+/// two threads; the walks back and the merge run in order, so the result is the same.
 pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> Option<GridPath> {
-    let forward = one_way(cs, start, end, accept)?;
-    // The wave from the end node, walked back from the start node, gives start -> end directly.
-    let backward = one_way(cs, end, start, accept).map(|mut p| {
+    let (from_start, from_end) = std::thread::scope(|s| {
+        let other = s.spawn(|| wave::expand(cs, end, start, Connectivity::TwentySix));
+        let here = wave::expand(cs, start, end, Connectivity::TwentySix);
+        // A panic in the other wave is a defect; fall back to computing it here.
+        let there = other.join().unwrap_or_else(|_| wave::expand(cs, end, start, Connectivity::TwentySix));
+        (here, there)
+    });
+    let forward = descend(&from_start?, &candidates, accept)?;
+    // The wave from the end node, walked back from the start node, gives end -> start.
+    let backward = from_end.and_then(|w| descend(&w, &candidates, accept)).map(|mut p| {
         p.reverse();
         p
     });
