@@ -62,7 +62,11 @@ impl Grid {
     pub fn node(&self, i: usize) -> Node {
         let z = i % self.dims[2];
         let r = i / self.dims[2];
-        [(r / self.dims[1]) as i32, (r % self.dims[1]) as i32, z as i32]
+        [
+            (r / self.dims[1]) as i32,
+            (r % self.dims[1]) as i32,
+            z as i32,
+        ]
     }
 
     /// Controller value (deg) of index `i` along axis `k`.

@@ -68,9 +68,10 @@ impl Error {
     pub fn loc(&self) -> Option<Loc> {
         match self {
             Error::Cell(e) => e.loc(),
-            Error::Robot { loc, .. } | Error::Locate { loc, .. } | Error::Ik { loc, .. } | Error::Plan { loc, .. } => {
-                Some(*loc)
-            }
+            Error::Robot { loc, .. }
+            | Error::Locate { loc, .. }
+            | Error::Ik { loc, .. }
+            | Error::Plan { loc, .. } => Some(*loc),
             Error::Rapid(_) | Error::Write { .. } => None,
         }
     }

@@ -11,7 +11,7 @@ use crate::cspace::{CSpace, Grid};
 use crate::error::Error;
 use crate::geometry::Aabb;
 use crate::ik::{self, ArmGeometry, Branch};
-use crate::locate::{self, Location, LocateInput};
+use crate::locate::{self, LocateInput, Location};
 use crate::plan::{self, Plan, Waypoint};
 use crate::program::{self, ProgramInput};
 use crate::rapid;
@@ -51,7 +51,11 @@ fn obstacles(cell: &Cell) -> Vec<Obstacle> {
 /// Cell-frame position -> robot-base-frame position.
 fn to_robot_frame(p: [f64; 3], placement: &Placement) -> [f64; 3] {
     let (s, c) = placement.yaw_deg.to_radians().sin_cos();
-    let d = [p[0] - placement.base_mm[0], p[1] - placement.base_mm[1], p[2] - placement.base_mm[2]];
+    let d = [
+        p[0] - placement.base_mm[0],
+        p[1] - placement.base_mm[1],
+        p[2] - placement.base_mm[2],
+    ];
     [c * d[0] + s * d[1], -s * d[0] + c * d[1], d[2]]
 }
 
@@ -73,20 +77,31 @@ pub fn prepare(cell: Cell) -> Result<Prepared, Error> {
         Base::Fixed(b) => (*b, None),
         Base::Auto => {
             let location = locate_base(&cell, &robot, &geometry()?)?;
-            ([location.base_mm[0], location.base_mm[1], 0.0], Some(location))
+            (
+                [location.base_mm[0], location.base_mm[1], 0.0],
+                Some(location),
+            )
         }
     };
     let placement = Placement {
         base_mm,
         yaw_deg: cell.robot.yaw_deg,
     };
-    let model = CollisionModel::new(&robot, placement, obstacles(&cell), cell.planner.clearance_mm);
+    let model = CollisionModel::new(
+        &robot,
+        placement,
+        obstacles(&cell),
+        cell.planner.clearance_mm,
+    );
 
     let mut points = Vec::with_capacity(cell.points.len());
     let mut wrists_deg = Vec::with_capacity(cell.points.len());
     for p in &cell.points {
         let (axes_deg, wrist) = match &p.target {
-            Target::Joints { axes_deg, wrist_deg } => (*axes_deg, wrist_deg.unwrap_or(cell.robot.wrist_deg)),
+            Target::Joints {
+                axes_deg,
+                wrist_deg,
+            } => (*axes_deg, wrist_deg.unwrap_or(cell.robot.wrist_deg)),
             Target::Xyz {
                 wrist_centre_mm,
                 branch,
@@ -110,8 +125,10 @@ pub fn prepare(cell: Cell) -> Result<Prepared, Error> {
                 let geom = geometry()?;
                 let previous = points.last().map(|w: &Waypoint| w.axes_deg);
                 let local = to_robot_frame(*wrist_centre_mm, &placement);
-                let sol = ik::choose(&robot, &geom, local, previous, branch, |a| model.is_free(&plan::quantize(a)))
-                    .map_err(|e| ik_err(e, p.loc))?;
+                let sol = ik::choose(&robot, &geom, local, previous, branch, |a| {
+                    model.is_free(&plan::quantize(a))
+                })
+                .map_err(|e| ik_err(e, p.loc))?;
                 (plan::quantize(sol.axes_deg), cell.robot.wrist_deg)
             }
         };
@@ -151,7 +168,11 @@ pub fn locate_base(cell: &Cell, robot: &Robot, geom: &ArmGeometry) -> Result<Loc
             }
         }
     }
-    let boxes: Vec<(String, [f64; 3], [f64; 3])> = cell.obstacles.iter().map(|o| (o.name.clone(), o.min_mm, o.max_mm)).collect();
+    let boxes: Vec<(String, [f64; 3], [f64; 3])> = cell
+        .obstacles
+        .iter()
+        .map(|o| (o.name.clone(), o.min_mm, o.max_mm))
+        .collect();
     let (radius, height) = locate::base_cylinder_mm(robot).unwrap_or((0.0, 0.0));
     locate::locate(&LocateInput {
         geom,
@@ -170,16 +191,30 @@ pub fn locate_base(cell: &Cell, robot: &Robot, geom: &ArmGeometry) -> Result<Loc
 pub fn cspace(prep: &Prepared, grid_deg: f64) -> CSpace {
     let a = &prep.robot.controller.axes;
     let grid = Grid::over(
-        [[a[0].min_deg, a[0].max_deg], [a[1].min_deg, a[1].max_deg], [a[2].min_deg, a[2].max_deg]],
+        [
+            [a[0].min_deg, a[0].max_deg],
+            [a[1].min_deg, a[1].max_deg],
+            [a[2].min_deg, a[2].max_deg],
+        ],
         grid_deg,
     );
     CSpace::build(grid, &prep.model)
 }
 
 /// Plans with `method` on an inspected grid and renders the module.
-pub fn plan_and_render(prep: &Prepared, cs: &CSpace, method: Method, estimated_time: impl Fn(&Plan) -> Option<f64>) -> Result<Outcome, Error> {
+pub fn plan_and_render(
+    prep: &Prepared,
+    cs: &CSpace,
+    method: Method,
+    estimated_time: impl Fn(&Plan) -> Option<f64>,
+) -> Result<Outcome, Error> {
     let plan = plan::plan(cs, &prep.model, &prep.points, method).map_err(|source| {
-        let loc = prep.cell.points.get(source.point()).map(|p| p.loc).unwrap_or_default();
+        let loc = prep
+            .cell
+            .points
+            .get(source.point())
+            .map(|p| p.loc)
+            .unwrap_or_default();
         Error::Plan { source, loc }
     })?;
     let names: Vec<String> = prep.points.iter().map(|p| p.name.clone()).collect();
@@ -207,5 +242,9 @@ pub fn plan_and_render(prep: &Prepared, cs: &CSpace, method: Method, estimated_t
         },
     );
     let text = rapid::render(&program)?;
-    Ok(Outcome { plan, program, text })
+    Ok(Outcome {
+        plan,
+        program,
+        text,
+    })
 }

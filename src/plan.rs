@@ -143,7 +143,12 @@ fn join(cs: &CSpace, model: &CollisionModel, p: &[f64; 3]) -> Option<Node> {
 }
 
 /// Plans the route through `points` (at least two), in order.
-pub fn plan(cs: &CSpace, model: &CollisionModel, points: &[Waypoint], method: Method) -> Result<Plan, PlanError> {
+pub fn plan(
+    cs: &CSpace,
+    model: &CollisionModel,
+    points: &[Waypoint],
+    method: Method,
+) -> Result<Plan, PlanError> {
     let mut nodes = Vec::with_capacity(points.len());
     for (i, p) in points.iter().enumerate() {
         if let Some(reason) = model.why_blocked(&p.axes_deg) {
@@ -160,7 +165,8 @@ pub fn plan(cs: &CSpace, model: &CollisionModel, points: &[Waypoint], method: Me
         nodes.push(n);
     }
     let grid = &cs.grid;
-    let mut accept_nodes = |a: Node, b: Node| model.move_is_safe(&grid.axes_deg(a), &grid.axes_deg(b));
+    let mut accept_nodes =
+        |a: Node, b: Node| model.move_is_safe(&grid.axes_deg(a), &grid.axes_deg(b));
     let mut legs = Vec::with_capacity(points.len() - 1);
     for i in 0..points.len() - 1 {
         let (s, g) = (nodes[i], nodes[i + 1]);
@@ -199,7 +205,10 @@ pub fn plan(cs: &CSpace, model: &CollisionModel, points: &[Waypoint], method: Me
         if method == Method::Extensile {
             shorten::shorten(cs, &mut waypoints, &mut |a, b| model.move_is_safe(a, b));
         }
-        let mut waypoints: Vec<[f64; 3]> = merge::collinear(&waypoints).into_iter().map(quantize).collect();
+        let mut waypoints: Vec<[f64; 3]> = merge::collinear(&waypoints)
+            .into_iter()
+            .map(quantize)
+            .collect();
         waypoints.dedup();
         if waypoints.len() == 1 {
             // The two points coincide: one (empty) move keeps both in the program.

@@ -50,7 +50,11 @@ fn on_grid(grid: &Grid, p: &[f64; 3]) -> Option<Node> {
 
 /// Shortens a path of waypoints (controller values, deg) in place, recursively, keeping the
 /// first and last waypoint. `accept(from, to)` is the whole-move safety check.
-pub fn shorten(cs: &CSpace, path: &mut Vec<[f64; 3]>, accept: &mut dyn FnMut(&[f64; 3], &[f64; 3]) -> bool) {
+pub fn shorten(
+    cs: &CSpace,
+    path: &mut Vec<[f64; 3]>,
+    accept: &mut dyn FnMut(&[f64; 3], &[f64; 3]) -> bool,
+) {
     loop {
         let mut changed = false;
         let mut k = 0;
@@ -80,14 +84,20 @@ mod tests {
 
     #[test]
     fn condition_1_diagonal_inspects_the_nodes_on_the_line() {
-        assert_eq!(inspected_nodes([0, 0, 0], [3, 3, 3]), vec![[1, 1, 1], [2, 2, 2]]);
+        assert_eq!(
+            inspected_nodes([0, 0, 0], [3, 3, 3]),
+            vec![[1, 1, 1], [2, 2, 2]]
+        );
     }
 
     #[test]
     fn condition_2_inspects_two_nodes_per_step() {
         // |p| = |q| != |r|: x and y move 4, z moves 2.
         let n = inspected_nodes([0, 0, 0], [4, 4, 2]);
-        assert_eq!(n, vec![[1, 1, 0], [1, 1, 1], [2, 2, 1], [3, 3, 1], [3, 3, 2]]);
+        assert_eq!(
+            n,
+            vec![[1, 1, 0], [1, 1, 1], [2, 2, 1], [3, 3, 1], [3, 3, 2]]
+        );
     }
 
     #[test]
@@ -96,29 +106,54 @@ mod tests {
         // Step 1: y = 2/3, z = 1/3 -> floor/ceil 0/1 each; step 2: y = 4/3, z = 2/3.
         assert_eq!(
             n,
-            vec![[1, 0, 0], [1, 0, 1], [1, 1, 0], [1, 1, 1], [2, 1, 0], [2, 1, 1], [2, 2, 0], [2, 2, 1]]
+            vec![
+                [1, 0, 0],
+                [1, 0, 1],
+                [1, 1, 0],
+                [1, 1, 1],
+                [2, 1, 0],
+                [2, 1, 1],
+                [2, 2, 0],
+                [2, 2, 1]
+            ]
         );
     }
 
     #[test]
     fn fig_6a_checks_only_node_e() {
         // A (0,0) -> B (1,1) -> C (2,1): A -> C inspects (1,0) (= E) and (1,1) (= B, on the path).
-        assert_eq!(inspected_nodes([0, 0, 0], [2, 1, 0]), vec![[1, 0, 0], [1, 1, 0]]);
+        assert_eq!(
+            inspected_nodes([0, 0, 0], [2, 1, 0]),
+            vec![[1, 0, 0], [1, 1, 0]]
+        );
     }
 
     #[test]
     fn negative_directions_mirror() {
-        assert_eq!(inspected_nodes([3, 2, 0], [0, 0, 0]), vec![[2, 1, 0], [2, 2, 0], [1, 0, 0], [1, 1, 0]]);
+        assert_eq!(
+            inspected_nodes([3, 2, 0], [0, 0, 0]),
+            vec![[2, 1, 0], [2, 2, 0], [1, 0, 0], [1, 1, 0]]
+        );
     }
 
     fn nodes(p: &[[i32; 3]]) -> Vec<[f64; 3]> {
-        p.iter().map(|n| [n[0] as f64, n[1] as f64, n[2] as f64]).collect()
+        p.iter()
+            .map(|n| [n[0] as f64, n[1] as f64, n[2] as f64])
+            .collect()
     }
 
     #[test]
     fn straightens_a_saw_tooth_in_free_space() {
         let cs = grid(10, 10, 1, |_| true);
-        let mut p = nodes(&[[0, 0, 0], [1, 1, 0], [2, 1, 0], [3, 2, 0], [4, 2, 0], [5, 3, 0], [6, 3, 0]]);
+        let mut p = nodes(&[
+            [0, 0, 0],
+            [1, 1, 0],
+            [2, 1, 0],
+            [3, 2, 0],
+            [4, 2, 0],
+            [5, 3, 0],
+            [6, 3, 0],
+        ]);
         shorten(&cs, &mut p, &mut |_, _| true);
         assert_eq!(p, nodes(&[[0, 0, 0], [6, 3, 0]]));
     }

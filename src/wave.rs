@@ -20,7 +20,14 @@ pub enum Connectivity {
 
 /// Neighbour offsets in a fixed order: lexicographic over (d1, d2, d3) in {-1, 0, 1}^3.
 pub fn offsets(c: Connectivity) -> &'static [[i32; 3]] {
-    const SIX: [[i32; 3]; 6] = [[-1, 0, 0], [0, -1, 0], [0, 0, -1], [0, 0, 1], [0, 1, 0], [1, 0, 0]];
+    const SIX: [[i32; 3]; 6] = [
+        [-1, 0, 0],
+        [0, -1, 0],
+        [0, 0, -1],
+        [0, 0, 1],
+        [0, 1, 0],
+        [1, 0, 0],
+    ];
     const ALL: [[i32; 3]; 26] = {
         let mut out = [[0; 3]; 26];
         let mut i = 0;
@@ -63,7 +70,8 @@ impl Wave {
     #[inline]
     pub fn label(&self, n: Node) -> u32 {
         if (0..3).all(|k| n[k] >= 0 && (n[k] as usize) < self.dims[k]) {
-            self.labels[(n[0] as usize * self.dims[1] + n[1] as usize) * self.dims[2] + n[2] as usize]
+            self.labels
+                [(n[0] as usize * self.dims[1] + n[1] as usize) * self.dims[2] + n[2] as usize]
         } else {
             0
         }
@@ -113,7 +121,13 @@ pub fn expand(cs: &CSpace, start: Node, end: Node, connectivity: Connectivity) -
                 (here as isize + step) as usize
             } else {
                 let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
-                if m[0] < 0 || m[1] < 0 || m[2] < 0 || m[0] >= dims[0] || m[1] >= dims[1] || m[2] >= dims[2] {
+                if m[0] < 0
+                    || m[1] < 0
+                    || m[2] < 0
+                    || m[0] >= dims[0]
+                    || m[1] >= dims[1]
+                    || m[2] >= dims[2]
+                {
                     continue;
                 }
                 g.index(m)
@@ -169,7 +183,8 @@ mod tests {
         // A wall at x = 5 with a hole at (5, 9, *).
         let g = Grid::over([[0.0, 10.0], [0.0, 10.0], [0.0, 0.0]], 1.0);
         let cs = CSpace::from_fn(g, |n| n[0] != 5 || n[1] == 9);
-        let w = expand(&cs, [0, 0, 0], [10, 0, 0], Connectivity::TwentySix).expect("through the hole");
+        let w =
+            expand(&cs, [0, 0, 0], [10, 0, 0], Connectivity::TwentySix).expect("through the hole");
         // Out to y = 9 and back: 9 steps up (x rising to 5 on the way), then 5 + ... at least 18 steps.
         assert_eq!(w.n(), 19);
         let closed = CSpace::from_fn(g, |n| n[0] != 5);
@@ -179,7 +194,9 @@ mod tests {
     #[test]
     fn every_numbered_node_below_n_has_a_predecessor() {
         let g = Grid::over([[0.0, 12.0], [0.0, 12.0], [0.0, 6.0]], 1.0);
-        let cs = CSpace::from_fn(g, |n| !(n[0] == 6 && n[1] < 10) && !(n[1] == 4 && n[2] == 3));
+        let cs = CSpace::from_fn(g, |n| {
+            !(n[0] == 6 && n[1] < 10) && !(n[1] == 4 && n[2] == 3)
+        });
         let w = expand(&cs, [0, 0, 0], [12, 0, 6], Connectivity::TwentySix).expect("reachable");
         for i in 0..g.len() {
             let n = g.node(i);
@@ -188,7 +205,11 @@ mod tests {
                 let has = offsets(Connectivity::TwentySix)
                     .iter()
                     .any(|o| w.label([n[0] + o[0], n[1] + o[1], n[2] + o[2]]) == l - 1);
-                assert!(has, "{n:?} numbered {l} has no neighbour numbered {}", l - 1);
+                assert!(
+                    has,
+                    "{n:?} numbered {l} has no neighbour numbered {}",
+                    l - 1
+                );
             }
         }
     }

@@ -231,12 +231,16 @@ pub fn parse(path: &Path, text: &str) -> Result<Cell, CellError> {
 /// serde-saphyr renders a snippet of its own; we render ours, so keep the first line only.
 fn syntax_message(e: &serde_saphyr::Error) -> String {
     let full = e.to_string();
-    let first = full.lines().next().unwrap_or("").trim();
-    // Strip a leading "line N column M:"-style prefix if the library adds one.
-    let msg = match first.find(": ") {
-        Some(i) if first[..i].contains("line") => &first[i + 2..],
-        _ => first,
-    };
+    let mut msg = full.lines().next().unwrap_or("").trim();
+    // Our report says "error:" and gives the place itself; drop the library's own prefixes.
+    if let Some(rest) = msg.strip_prefix("error: ") {
+        msg = rest;
+    }
+    if msg.starts_with("line ") {
+        if let Some(i) = msg.find(": ") {
+            msg = &msg[i + 2..];
+        }
+    }
     msg.to_string()
 }
 
@@ -244,7 +248,10 @@ fn finite(v: &Spanned<Vec<f64>>, what: &str) -> Result<(), CellError> {
     if v.value.iter().all(|x| x.is_finite()) {
         Ok(())
     } else {
-        Err(invalid(loc(v), format!("{what}: every value must be a finite number")))
+        Err(invalid(
+            loc(v),
+            format!("{what}: every value must be a finite number"),
+        ))
     }
 }
 
@@ -276,8 +283,12 @@ fn joint_value(v: f64, loc: Loc, what: &str) -> Result<f64, CellError> {
 }
 
 fn identifier(s: &Spanned<String>, what: &str) -> Result<String, CellError> {
-    check_identifier(&s.value)
-        .map_err(|e| invalid(loc(s), format!("{what} '{}' is not a valid RAPID name: {e}", s.value)))?;
+    check_identifier(&s.value).map_err(|e| {
+        invalid(
+            loc(s),
+            format!("{what} '{}' is not a valid RAPID name: {e}", s.value),
+        )
+    })?;
     Ok(s.value.clone())
 }
 
@@ -321,7 +332,9 @@ fn validate(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
         }
     };
     let yaw_deg = match &r.yaw {
-        Some(y) if !y.value.is_finite() => return Err(invalid(loc(y), "robot.yaw must be a finite number (deg)")),
+        Some(y) if !y.value.is_finite() => {
+            return Err(invalid(loc(y), "robot.yaw must be a finite number (deg)"))
+        }
         Some(y) => y.value,
         None => 0.0,
     };
@@ -348,11 +361,20 @@ fn validate(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
         if let Some(first) = obstacles.iter().find(|p| p.name == name) {
             return Err(invalid(
                 loc(&o.value.name),
-                format!("obstacle name '{name}' is used twice (first at line {})", first.loc.line),
+                format!(
+                    "obstacle name '{name}' is used twice (first at line {})",
+                    first.loc.line
+                ),
             ));
         }
-        let min_mm = triple(&o.value.aabb.value.min, &format!("obstacle '{name}' box.min"))?;
-        let max_mm = triple(&o.value.aabb.value.max, &format!("obstacle '{name}' box.max"))?;
+        let min_mm = triple(
+            &o.value.aabb.value.min,
+            &format!("obstacle '{name}' box.min"),
+        )?;
+        let max_mm = triple(
+            &o.value.aabb.value.max,
+            &format!("obstacle '{name}' box.max"),
+        )?;
         if let Some(i) = (0..3).find(|&i| min_mm[i] >= max_mm[i]) {
             return Err(invalid_help(
                 loc(&o.value.aabb),
@@ -378,7 +400,10 @@ fn validate(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
     if raw.points.value.len() < 2 {
         return Err(invalid(
             loc(&raw.points),
-            format!("a cell needs at least 2 points (a start and an end), found {}", raw.points.value.len()),
+            format!(
+                "a cell needs at least 2 points (a start and an end), found {}",
+                raw.points.value.len()
+            ),
         ));
     }
     let mut points: Vec<Point> = Vec::new();
@@ -387,7 +412,10 @@ fn validate(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
         if let Some(first) = points.iter().find(|q| q.name.eq_ignore_ascii_case(&name)) {
             return Err(invalid_help(
                 loc(&p.value.name),
-                format!("point name '{name}' is used twice (first at line {})", first.loc.line),
+                format!(
+                    "point name '{name}' is used twice (first at line {})",
+                    first.loc.line
+                ),
                 "RAPID names are case-insensitive; give every point its own name",
             ));
         }
@@ -453,7 +481,10 @@ fn validate(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
             planner.method = Method::parse(&m.value).ok_or_else(|| {
                 invalid(
                     loc(m),
-                    format!("planner.method '{}' is not one of neighboring, depth-first, extensile", m.value),
+                    format!(
+                        "planner.method '{}' is not one of neighboring, depth-first, extensile",
+                        m.value
+                    ),
                 )
             })?;
         }
@@ -462,7 +493,10 @@ fn validate(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
         }
         if let Some(c) = &p.value.clearance {
             if !(c.value.is_finite() && c.value >= 0.0) {
-                return Err(invalid(loc(c), "planner.clearance must be a number >= 0 (mm)"));
+                return Err(invalid(
+                    loc(c),
+                    "planner.clearance must be a number >= 0 (mm)",
+                ));
             }
             planner.clearance_mm = c.value;
         }
@@ -471,9 +505,21 @@ fn validate(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
     // Motion.
     let m = raw.motion.as_ref().map(|m| &m.value);
     let motion = Motion {
-        speed: data_name(m.and_then(|m| m.speed.as_ref()), defaults::SPEED, "motion.speed")?,
-        zone: data_name(m.and_then(|m| m.zone.as_ref()), defaults::ZONE, "motion.zone")?,
-        tool: data_name(m.and_then(|m| m.tool.as_ref()), defaults::TOOL, "motion.tool")?,
+        speed: data_name(
+            m.and_then(|m| m.speed.as_ref()),
+            defaults::SPEED,
+            "motion.speed",
+        )?,
+        zone: data_name(
+            m.and_then(|m| m.zone.as_ref()),
+            defaults::ZONE,
+            "motion.zone",
+        )?,
+        tool: data_name(
+            m.and_then(|m| m.tool.as_ref()),
+            defaults::TOOL,
+            "motion.tool",
+        )?,
     };
 
     Ok(Cell {

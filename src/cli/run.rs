@@ -22,7 +22,8 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     let grid_deg = opts.grid_deg.unwrap_or(loaded.cell.planner.grid_deg);
     let prep = pipeline::prepare(loaded.cell.clone()).map_err(|e| loaded.fail(e))?;
     let cs = pipeline::cspace(&prep, grid_deg);
-    let outcome = pipeline::plan_and_render(&prep, &cs, method, |_| None).map_err(|e| loaded.fail(e))?;
+    let outcome =
+        pipeline::plan_and_render(&prep, &cs, method, |_| None).map_err(|e| loaded.fail(e))?;
     emit(opts.output.as_deref(), outcome.text.as_bytes()).map_err(|e| loaded.fail(e))?;
     let clearance = match outcome.program.header.min_clearance_mm {
         Some(c) => format!("smallest clearance {c:.1} mm"),

@@ -41,7 +41,10 @@ mod tests {
         assert_path(&p, [0, 0, 0], [2, 1, 1]);
         assert_eq!(p.len(), 5, "4 axis steps");
         // Back from the end: -axis1 twice first, then -axis2, then -axis3.
-        assert_eq!(p, vec![[0, 0, 0], [0, 0, 1], [0, 1, 1], [1, 1, 1], [2, 1, 1]]);
+        assert_eq!(
+            p,
+            vec![[0, 0, 0], [0, 0, 1], [0, 1, 1], [1, 1, 1], [2, 1, 1]]
+        );
     }
 
     #[test]

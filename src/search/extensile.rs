@@ -42,15 +42,19 @@ pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> O
         let other = s.spawn(|| wave::expand(cs, end, start, Connectivity::TwentySix));
         let here = wave::expand(cs, start, end, Connectivity::TwentySix);
         // A panic in the other wave is a defect; fall back to computing it here.
-        let there = other.join().unwrap_or_else(|_| wave::expand(cs, end, start, Connectivity::TwentySix));
+        let there = other
+            .join()
+            .unwrap_or_else(|_| wave::expand(cs, end, start, Connectivity::TwentySix));
         (here, there)
     });
     let forward = descend(&from_start?, &candidates, accept)?;
     // The wave from the end node, walked back from the start node, gives end -> start.
-    let backward = from_end.and_then(|w| descend(&w, &candidates, accept)).map(|mut p| {
-        p.reverse();
-        p
-    });
+    let backward = from_end
+        .and_then(|w| descend(&w, &candidates, accept))
+        .map(|mut p| {
+            p.reverse();
+            p
+        });
     Some(match backward {
         Some(b) => merge_paths(&forward, &b, accept),
         None => forward,
@@ -67,14 +71,21 @@ pub fn merge_paths(a: &[Node], b: &[Node], accept: &mut Accept<'_>) -> GridPath 
     nodes.sort();
     nodes.dedup();
     let id: HashMap<Node, usize> = nodes.iter().enumerate().map(|(i, n)| (*n, i)).collect();
-    let on_path = |p: &[Node], x: Node, y: Node| p.windows(2).any(|w| (w[0] == x && w[1] == y) || (w[0] == y && w[1] == x));
+    let on_path = |p: &[Node], x: Node, y: Node| {
+        p.windows(2)
+            .any(|w| (w[0] == x && w[1] == y) || (w[0] == y && w[1] == x))
+    };
     // Edges: path steps, and accepted moves between neighbouring union nodes.
     let mut edges: Vec<Vec<(usize, [i32; 3])>> = vec![Vec::new(); nodes.len()];
     for (i, &n) in nodes.iter().enumerate() {
         for &o in offsets(Connectivity::TwentySix) {
             let m = add(n, o);
             if let Some(&j) = id.get(&m) {
-                if on_path(a, n, m) || on_path(b, n, m) || (i < j && accept(n, m)) || (i > j && edges[j].iter().any(|&(k, _)| k == i)) {
+                if on_path(a, n, m)
+                    || on_path(b, n, m)
+                    || (i < j && accept(n, m))
+                    || (i > j && edges[j].iter().any(|&(k, _)| k == i))
+                {
                     edges[i].push((j, o));
                 }
             }
@@ -134,7 +145,10 @@ mod tests {
         let cs = grid(3, 3, 1, |n| n[0] == n[1]);
         let p = search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true).expect("extensile finds it");
         assert_eq!(p, vec![[0, 0, 0], [1, 1, 0], [2, 2, 0]]);
-        assert!(crate::search::depth_first::search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true).is_none());
+        assert!(
+            crate::search::depth_first::search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true)
+                .is_none()
+        );
     }
 
     #[test]
@@ -144,9 +158,10 @@ mod tests {
         assert_path(&p, [0, 0, 0], [6, 2, 0]);
         // Back from the end: axis steps along -axis1 while they keep the numbers falling
         // (4 of them), then the diagonal: two straight pieces, one turn.
-        let turns = p.windows(3).filter(|w| {
-            (0..3).any(|k| w[1][k] - w[0][k] != w[2][k] - w[1][k])
-        }).count();
+        let turns = p
+            .windows(3)
+            .filter(|w| (0..3).any(|k| w[1][k] - w[0][k] != w[2][k] - w[1][k]))
+            .count();
         assert_eq!(turns, 1, "{p:?}");
     }
 

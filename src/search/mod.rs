@@ -113,7 +113,11 @@ pub(crate) mod testing {
     /// A grid of `nx` x `ny` x `nz` nodes at 1 deg, free where `free` says.
     pub fn grid(nx: usize, ny: usize, nz: usize, free: impl Fn(Node) -> bool) -> CSpace {
         let g = Grid::over(
-            [[0.0, nx as f64 - 1.0], [0.0, ny as f64 - 1.0], [0.0, nz as f64 - 1.0]],
+            [
+                [0.0, nx as f64 - 1.0],
+                [0.0, ny as f64 - 1.0],
+                [0.0, nz as f64 - 1.0],
+            ],
             1.0,
         );
         CSpace::from_fn(g, free)
@@ -125,7 +129,12 @@ pub(crate) mod testing {
         assert_eq!(p.last(), Some(&end));
         for w in p.windows(2) {
             let d: Vec<i32> = (0..3).map(|k| (w[1][k] - w[0][k]).abs()).collect();
-            assert!(d.iter().all(|&x| x <= 1) && d.iter().any(|&x| x == 1), "{:?} -> {:?}", w[0], w[1]);
+            assert!(
+                d.iter().all(|&x| x <= 1) && d.iter().any(|&x| x == 1),
+                "{:?} -> {:?}",
+                w[0],
+                w[1]
+            );
         }
     }
 }

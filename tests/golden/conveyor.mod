@@ -1,0 +1,48 @@
+MODULE ConveyorPick
+    ! generator: gen-rapid 0.1.0
+    ! cell: conveyor.yaml
+    ! planner: depth-first
+    ! grid (deg): 2.000
+    ! clearance (mm): 25.0
+    ! base: [250.0, -300.0, 0.0] yaw: -30.000
+    ! moves: 16
+    ! min clearance (mm): 26.4
+
+    CONST jointtarget ready := [[-10.000,-10.000,-20.000,0.000,45.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_01 := [[-10.000,-14.000,-20.000,0.000,45.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_02 := [[48.000,-14.000,-20.000,0.000,45.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_03 := [[48.000,-14.000,26.000,0.000,45.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_04 := [[48.000,16.000,26.000,0.000,45.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_05 := [[120.000,16.000,26.000,0.000,45.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget pick := [[120.500,15.250,25.125,0.000,55.500,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via02_01 := [[120.000,16.000,26.000,0.000,55.500,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via02_02 := [[120.000,-20.000,26.000,0.000,55.500,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via02_03 := [[-60.000,-20.000,26.000,0.000,55.500,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via02_04 := [[-60.000,-20.000,22.000,0.000,55.500,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via02_05 := [[-60.000,18.000,22.000,0.000,55.500,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget place := [[-59.750,18.500,22.250,10.000,60.000,-15.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via03_01 := [[-60.000,18.000,22.000,10.000,60.000,-15.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via03_02 := [[-60.000,-10.000,22.000,10.000,60.000,-15.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via03_03 := [[-60.000,-10.000,-20.000,10.000,60.000,-15.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget ready2 := [[-10.000,-10.000,-20.000,0.000,45.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+
+    PROC main()
+        MoveAbsJ ready\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via01_01\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via01_02\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via01_03\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via01_04\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via01_05\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ pick\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via02_01\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via02_02\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via02_03\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via02_04\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via02_05\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ place\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via03_01\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via03_02\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ via03_03\NoEOffs, v1000, fine, tool0;
+        MoveAbsJ ready2\NoEOffs, v1000, fine, tool0;
+    ENDPROC
+ENDMODULE

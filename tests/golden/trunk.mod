@@ -1,0 +1,36 @@
+MODULE TrunkWeld
+    ! generator: gen-rapid 0.1.0
+    ! cell: trunk.yaml
+    ! planner: extensile
+    ! grid (deg): 1.000
+    ! clearance (mm): 10.0
+    ! base: [0.0, -850.0, 0.0] yaw: 90.000
+    ! moves: 10
+    ! min clearance (mm): 10.3
+
+    CONST jointtarget A := [[90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_01 := [[49.000,-3.000,-12.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_02 := [[30.000,16.000,7.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget B := [[30.000,20.000,10.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget C := [[25.000,15.000,10.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via03_01 := [[-4.000,15.000,1.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget D := [[-25.000,15.000,10.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget E := [[-30.000,20.000,10.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via05_01 := [[-40.000,6.000,-4.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via05_02 := [[-54.000,-8.000,-15.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget F := [[-90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+
+    PROC main()
+        MoveAbsJ A\NoEOffs, v300, fine, tool0;
+        MoveAbsJ via01_01\NoEOffs, v300, fine, tool0;
+        MoveAbsJ via01_02\NoEOffs, v300, fine, tool0;
+        MoveAbsJ B\NoEOffs, v300, fine, tool0;
+        MoveAbsJ C\NoEOffs, v300, fine, tool0;
+        MoveAbsJ via03_01\NoEOffs, v300, fine, tool0;
+        MoveAbsJ D\NoEOffs, v300, fine, tool0;
+        MoveAbsJ E\NoEOffs, v300, fine, tool0;
+        MoveAbsJ via05_01\NoEOffs, v300, fine, tool0;
+        MoveAbsJ via05_02\NoEOffs, v300, fine, tool0;
+        MoveAbsJ F\NoEOffs, v300, fine, tool0;
+    ENDPROC
+ENDMODULE
