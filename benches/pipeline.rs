@@ -19,13 +19,16 @@ fn trunk() -> cell::Cell {
 fn whole(c: &mut Criterion) {
     let cell = trunk();
     let mut g = c.benchmark_group("trunk");
-    g.sample_size(10).measurement_time(Duration::from_secs(8)).warm_up_time(Duration::from_secs(1));
+    g.sample_size(10)
+        .measurement_time(Duration::from_secs(8))
+        .warm_up_time(Duration::from_secs(1));
     for grid in [2.0, 1.0] {
         g.bench_function(format!("pipeline_{grid}deg"), |b| {
             b.iter(|| {
                 let prep = pipeline::prepare(cell.clone()).expect("prepare");
                 let cs = pipeline::cspace(&prep, grid);
-                let out = pipeline::plan_and_render(&prep, &cs, cell.planner.method, |_| None).expect("plan");
+                let out = pipeline::plan_and_render(&prep, &cs, cell.planner.method, |_| None)
+                    .expect("plan");
                 black_box(out.text.len())
             })
         });

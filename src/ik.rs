@@ -351,8 +351,10 @@ pub enum IkError {
     },
 }
 
+/// A position as the messages give it: the frame is named, since a cell gives positions in the
+/// cell frame and these are in the robot's.
 fn fmt_p(p: &[f64; 3]) -> String {
-    format!("({:.1}, {:.1}, {:.1}) mm", p[0], p[1], p[2])
+    format!("({:.1}, {:.1}, {:.1}) mm (robot frame)", p[0], p[1], p[2])
 }
 
 fn fmt_branches(b: &[Branch]) -> String {

@@ -34,13 +34,20 @@
 //!   planner's business, not this stage's.
 //! - **Raster.** `R` is sampled on square cells of `cell_mm` (default [`DEFAULT_CELL_MM`] =
 //!   10 mm) over the intersection of the points' outer discs' bounding boxes (which contains
-//!   `R`); a cell is in `R` iff its centre is (exact test). Area = cells x cell^2.
+//!   `R`); a cell is in `R` iff its centre is (exact test, [`margin_at`]). Area = cells x cell^2.
+//!   The raster's origin is snapped to a multiple of `cell_mm`, so with the default cell every
+//!   cell centre, and so the chosen base, is a multiple of 5 mm: the module header's base
+//!   (written to 0.1 mm) is exactly the base the joint values were computed from.
 //! - **Choice of base.** The cell centre of `R` with the largest margin, the exact Euclidean
 //!   distance from the centre to the boundary of the true `R` (min over the points of the
 //!   distance to the ring edges, and over blocking obstacles of the distance to the grown
 //!   footprint); ties within 1e-6 mm broken by the smallest `|x| + |y|`, then `x`, then `y`.
 //!   The paper chooses its point E "via numerical analysis" without saying how; the largest
 //!   margin is the position that tolerates the most placement error.
+//! - **Yaw.** Only the position is chosen: the base's yaw stays what the cell gives (`robot.yaw`,
+//!   default 0). The reach regions do not depend on it (axis 1 turns all the way round in this
+//!   model), so `R` is the same for every yaw; the yaw matters to the axis-1 range and the
+//!   collision checks, which the IK and the planner apply from the chosen base.
 
 use crate::ik::{reach_interval_mm, ArmGeometry};
 use crate::robot::Robot;
@@ -171,6 +178,30 @@ pub struct Location {
     pub reach: Vec<ReachRegion>,
     /// Names of the obstacles whose z-range meets the base's (the others cannot block it).
     pub blocking_obstacles: Vec<String>,
+    /// Their boxes (min, max corners, mm), in the same order.
+    pub blocking_boxes_mm: Vec<([f64; 3], [f64; 3])>,
+    /// How far a blocking obstacle's footprint is grown: base radius + clearance, mm.
+    pub grow_mm: f64,
+}
+
+impl Location {
+    /// Exact test of a base position against the true `R` (not the raster): the distance from
+    /// `xy` to the boundary of `R` when `xy` lies in it, `None` when it does not. The same
+    /// margin as [`Location::margin_mm`] for the chosen base.
+    pub fn margin_at(&self, xy: [f64; 2]) -> Option<f64> {
+        let mut margin = f64::INFINITY;
+        for r in &self.reach {
+            margin = margin.min(r.margin(xy)?);
+        }
+        for (lo, hi) in &self.blocking_boxes_mm {
+            let m = rect_distance(xy, *lo, *hi) - self.grow_mm;
+            if m < 0.0 {
+                return None;
+            }
+            margin = margin.min(m);
+        }
+        Some(margin)
+    }
 }
 
 /// Why no location was found.
@@ -392,6 +423,8 @@ pub fn locate(input: &LocateInput) -> Result<Location, LocateError> {
         // Some two outer discs are apart, so the pairwise test names them.
         return Err(disjoint().unwrap_or_else(|| no_common(&reach, cell)));
     };
+    // Snap the origin to the cell lattice (module docs, "Raster").
+    let lo = lo.map(|v| (v / cell).floor() * cell);
     let nx = (((hi[0] - lo[0]) / cell).ceil() as usize).max(1);
     let ny = (((hi[1] - lo[1]) / cell).ceil() as usize).max(1);
     if nx.saturating_mul(ny) > MAX_CELLS {
@@ -498,6 +531,8 @@ pub fn locate(input: &LocateInput) -> Result<Location, LocateError> {
         margin_mm,
         reach,
         blocking_obstacles: blocking.iter().map(|(n, _, _)| n.clone()).collect(),
+        blocking_boxes_mm: blocking.iter().map(|(_, lo, hi)| (*lo, *hi)).collect(),
+        grow_mm: grow,
     })
 }
 

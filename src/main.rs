@@ -3,6 +3,7 @@
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use gen_rapid::cell::Method;
+use gen_rapid::cli::locate::{locate, LocateOptions};
 use gen_rapid::cli::run::{run, RunOptions};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -12,6 +13,7 @@ Examples:
   gen-rapid cells/trunk.yaml > trunk.mod          plan the trunk cell, module on stdout
   gen-rapid cells/trunk.yaml -o trunk.mod         the same, written atomically to a file
   gen-rapid cells/trunk.yaml --planner depth-first --grid 2
+  gen-rapid locate cells/trunk-auto.yaml --svg r.svg   where the base may stand (region R)
 
 The cell file (YAML, mm and degrees) names the robot's URDF, its base, the box obstacles and
 the points to visit; see README.md for the format. The module goes to stdout (or -o FILE);
@@ -48,7 +50,25 @@ struct RunArgs {
 }
 
 #[derive(Subcommand)]
-enum Command {}
+enum Command {
+    /// Robot location (paper section 2): the region R of base positions that reach every point
+    /// clear of the obstacles, its area and bounding box, and the base with the largest margin.
+    /// For a fixed base, also whether that base lies in R.
+    Locate(LocateArgs),
+}
+
+#[derive(Args)]
+struct LocateArgs {
+    /// The cell file (YAML).
+    #[arg(value_name = "CELL")]
+    cell: PathBuf,
+    /// Also draw the top view (obstacles, reach circles, R, base) to FILE as SVG (atomically).
+    #[arg(long, value_name = "FILE")]
+    svg: Option<PathBuf>,
+    /// Print the report as JSON on stdout instead of text.
+    #[arg(long)]
+    json: bool,
+}
 
 #[derive(Clone, Copy, ValueEnum)]
 enum MethodArg {
@@ -83,6 +103,11 @@ fn main() -> ExitCode {
             output: cli.run.output,
             planner: cli.run.planner.map(Method::from),
             grid_deg: cli.run.grid,
+        }),
+        Some(Command::Locate(a)) => locate(&LocateOptions {
+            cell: a.cell,
+            svg: a.svg,
+            json: a.json,
         }),
     };
     match result {

@@ -4,6 +4,25 @@
 //!
 //! Only this module and `cell`/`robot` touch files (the cell and the URDF); everything after
 //! [`prepare`] is a pure function of its inputs.
+//!
+//! Rules of [`prepare`]:
+//! - **Placement.** `base: [x, y, z]` is used as given. `base: auto` runs [`locate_base`] (paper
+//!   section 2) and stands the robot at the chosen position on the floor (z = 0). Either way the
+//!   yaw is `robot.yaw` as given (default 0): the location stage chooses a position, never a
+//!   yaw. The module header records the placement used (`! base: [x, y, z] yaw: deg`); with the
+//!   default 10 mm raster the chosen base is a multiple of 5 mm, so the header's 0.1 mm is exact.
+//!   With `base: auto` every point must be an `xyz` point: joint values mean nothing until the
+//!   base is known.
+//! - **`xyz` points** (wrist centre, cell frame, mm) are moved into the robot frame and solved by
+//!   [`ik::choose`] (solution closest to the previous point, or the most upright arm for the
+//!   first; `branch:` forces one of the four). The solution is rounded to the written precision
+//!   (0.001 deg, [`plan::quantize`]) and it is the *rounded* value that must be in collision-free
+//!   space (`model.is_free` is evaluated on it) and that the plan and the module use. Rounding
+//!   moves each axis by at most 0.0005 deg = 8.7e-6 rad, so the wrist centre moves by at most
+//!   `(r + a2 + L) x 8.7e-6` mm (`r` the wrist's distance from axis 1, `L` the forearm; the
+//!   upper arm's lever is `a2` for a parallelogram robot, at most `a2 + L` for a serial one):
+//!   about 0.025 mm on the IRB 1400 (`r <= 1444`), always under 0.05 mm. A point that cannot
+//!   be solved fails with the point's name and line (Error::Ik, exit 3).
 
 use crate::cell::{Base, Cell, Loc, Method, Target};
 use crate::collision::{CollisionModel, Obstacle, Placement};
@@ -48,8 +67,19 @@ fn obstacles(cell: &Cell) -> Vec<Obstacle> {
         .collect()
 }
 
+/// Robot-base-frame position -> cell-frame position (inverse of [`to_robot_frame`]).
+pub fn to_cell_frame(p: [f64; 3], placement: &Placement) -> [f64; 3] {
+    let (s, c) = placement.yaw_deg.to_radians().sin_cos();
+    let b = placement.base_mm;
+    [
+        b[0] + c * p[0] - s * p[1],
+        b[1] + s * p[0] + c * p[1],
+        b[2] + p[2],
+    ]
+}
+
 /// Cell-frame position -> robot-base-frame position.
-fn to_robot_frame(p: [f64; 3], placement: &Placement) -> [f64; 3] {
+pub fn to_robot_frame(p: [f64; 3], placement: &Placement) -> [f64; 3] {
     let (s, c) = placement.yaw_deg.to_radians().sin_cos();
     let d = [
         p[0] - placement.base_mm[0],
@@ -59,20 +89,33 @@ fn to_robot_frame(p: [f64; 3], placement: &Placement) -> [f64; 3] {
     [c * d[0] + s * d[1], -s * d[0] + c * d[1], d[2]]
 }
 
-/// Loads the robot, places it and resolves the points.
-pub fn prepare(cell: Cell) -> Result<Prepared, Error> {
-    let robot = Robot::load(&cell.robot.urdf_path).map_err(|source| Error::Robot {
+/// Loads the cell's robot (its URDF, relative to the cell file).
+pub fn load_robot(cell: &Cell) -> Result<Robot, Error> {
+    Robot::load(&cell.robot.urdf_path).map_err(|source| Error::Robot {
         source,
         loc: cell.robot.urdf_loc,
-    })?;
+    })
+}
+
+/// The closed-form arm geometry (needed by `base: auto`, `xyz` points and `locate`); a robot the
+/// closed form cannot handle is an input error pointing at `robot.urdf`.
+pub fn geometry(cell: &Cell, robot: &Robot) -> Result<ArmGeometry, Error> {
+    ArmGeometry::from_robot(robot).map_err(|source| Error::Ik {
+        point: cell
+            .points
+            .first()
+            .map(|p| p.name.clone())
+            .unwrap_or_default(),
+        source,
+        loc: cell.robot.urdf_loc,
+    })
+}
+
+/// Loads the robot, places it and resolves the points (module docs for the rules).
+pub fn prepare(cell: Cell) -> Result<Prepared, Error> {
+    let robot = load_robot(&cell)?;
     // The closed-form geometry, needed only for `base: auto` and `xyz` points.
-    let geometry = || {
-        ArmGeometry::from_robot(&robot).map_err(|source| Error::Ik {
-            point: cell.points[0].name.clone(),
-            source,
-            loc: cell.robot.urdf_loc,
-        })
-    };
+    let geometry = || geometry(&cell, &robot);
     let (base_mm, location) = match &cell.robot.base {
         Base::Fixed(b) => (*b, None),
         Base::Auto => {
@@ -149,12 +192,10 @@ pub fn prepare(cell: Cell) -> Result<Prepared, Error> {
     })
 }
 
-/// The feasible region of the base (paper section 2) and the chosen base.
+/// The feasible region of the base (paper section 2) and the chosen base, for a cell with
+/// `base: auto` (every point `xyz`; a `joints` point is refused, pointing at it). The base
+/// stands on the floor (z = 0). An empty region fails pointing at `robot.base`.
 pub fn locate_base(cell: &Cell, robot: &Robot, geom: &ArmGeometry) -> Result<Location, Error> {
-    let err = |source| Error::Locate {
-        source,
-        loc: cell.robot.base_loc,
-    };
     let mut pts = Vec::new();
     for p in &cell.points {
         match &p.target {
@@ -168,6 +209,68 @@ pub fn locate_base(cell: &Cell, robot: &Robot, geom: &ArmGeometry) -> Result<Loc
             }
         }
     }
+    locate_points(cell, robot, geom, &pts, 0.0)
+}
+
+/// Working points by name with their wrist centres (cell frame, mm).
+pub type NamedPoints = Vec<(String, [f64; 3])>;
+
+/// The feasible region for any cell, so that it can be reported and drawn (`gen-rapid
+/// locate`): with `base: auto` as [`locate_base`]; with a fixed base, from the wrist centres of
+/// the points at that base's height (`xyz` points as given, `joints` points by forward
+/// kinematics from the given base and yaw). Returns the region and the points used (cell frame).
+pub fn locate_any(
+    cell: &Cell,
+    robot: &Robot,
+    geom: &ArmGeometry,
+) -> Result<(Location, NamedPoints), Error> {
+    let base = match &cell.robot.base {
+        Base::Auto => {
+            let location = locate_base(cell, robot, geom)?;
+            let pts = cell
+                .points
+                .iter()
+                .filter_map(|p| match &p.target {
+                    Target::Xyz {
+                        wrist_centre_mm, ..
+                    } => Some((p.name.clone(), *wrist_centre_mm)),
+                    Target::Joints { .. } => None,
+                })
+                .collect();
+            return Ok((location, pts));
+        }
+        Base::Fixed(b) => *b,
+    };
+    let placement = Placement {
+        base_mm: base,
+        yaw_deg: cell.robot.yaw_deg,
+    };
+    let pts: Vec<(String, [f64; 3])> = cell
+        .points
+        .iter()
+        .map(|p| {
+            let xyz = match &p.target {
+                Target::Xyz {
+                    wrist_centre_mm, ..
+                } => *wrist_centre_mm,
+                Target::Joints { axes_deg, .. } => {
+                    to_cell_frame(ik::forward(geom, *axes_deg), &placement)
+                }
+            };
+            (p.name.clone(), xyz)
+        })
+        .collect();
+    let location = locate_points(cell, robot, geom, &pts, base[2])?;
+    Ok((location, pts))
+}
+
+fn locate_points(
+    cell: &Cell,
+    robot: &Robot,
+    geom: &ArmGeometry,
+    pts: &[(String, [f64; 3])],
+    base_z_mm: f64,
+) -> Result<Location, Error> {
     let boxes: Vec<(String, [f64; 3], [f64; 3])> = cell
         .obstacles
         .iter()
@@ -176,15 +279,18 @@ pub fn locate_base(cell: &Cell, robot: &Robot, geom: &ArmGeometry) -> Result<Loc
     let (radius, height) = locate::base_cylinder_mm(robot).unwrap_or((0.0, 0.0));
     locate::locate(&LocateInput {
         geom,
-        points_mm: &pts,
+        points_mm: pts,
         obstacles: &boxes,
-        base_z_mm: 0.0,
+        base_z_mm,
         base_radius_mm: radius,
         base_height_mm: height,
         clearance_mm: cell.planner.clearance_mm,
         cell_mm: locate::DEFAULT_CELL_MM,
     })
-    .map_err(err)
+    .map_err(|source| Error::Locate {
+        source,
+        loc: cell.robot.base_loc,
+    })
 }
 
 /// The grid over the robot's ranges of axes 1..3 at spacing `grid_deg`, inspected.

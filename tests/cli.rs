@@ -15,7 +15,14 @@ fn help_teaches_the_format_examples_and_exit_statuses() {
     let o = gen_rapid(&["--help"]);
     assert!(o.status.success());
     let h = stdout(&o);
-    for needle in ["Examples:", "gen-rapid cells/trunk.yaml > trunk.mod", "--planner", "--grid", "Exit status", "extensile"] {
+    for needle in [
+        "Examples:",
+        "gen-rapid cells/trunk.yaml > trunk.mod",
+        "--planner",
+        "--grid",
+        "Exit status",
+        "extensile",
+    ] {
         assert!(h.contains(needle), "--help lacks '{needle}':\n{h}");
     }
 }
@@ -35,13 +42,21 @@ fn a_run_writes_the_module_to_stdout_and_one_summary_line_to_stderr() {
 fn output_file_gets_the_same_bytes_and_stdout_stays_empty() {
     let dir = tempfile::tempdir().expect("tempdir");
     let file = dir.path().join("out.mod");
-    let o = gen_rapid(&["cells/conveyor.yaml", "-o", file.to_str().expect("utf-8 path")]);
+    let o = gen_rapid(&[
+        "cells/conveyor.yaml",
+        "-o",
+        file.to_str().expect("utf-8 path"),
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(o.stdout.is_empty());
     let written = std::fs::read(&file).expect("file written");
     assert_eq!(written, gen_rapid(&["cells/conveyor.yaml"]).stdout);
     // No temporary file is left beside it.
-    let names: Vec<_> = std::fs::read_dir(dir.path()).expect("dir").filter_map(|e| e.ok()).map(|e| e.file_name()).collect();
+    let names: Vec<_> = std::fs::read_dir(dir.path())
+        .expect("dir")
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name())
+        .collect();
     assert_eq!(names.len(), 1, "{names:?}");
 }
 
@@ -50,12 +65,20 @@ fn on_error_nothing_is_written_and_an_existing_file_is_kept() {
     let dir = tempfile::tempdir().expect("tempdir");
     let file = dir.path().join("out.mod");
     std::fs::write(&file, "previous\n").expect("write");
-    let o = gen_rapid(&["tests/err/no_path.yaml", "-o", file.to_str().expect("utf-8 path")]);
+    let o = gen_rapid(&[
+        "tests/err/no_path.yaml",
+        "-o",
+        file.to_str().expect("utf-8 path"),
+    ]);
     assert_eq!(o.status.code(), Some(3), "planning failed: {}", stderr(&o));
     assert!(o.stdout.is_empty());
     assert_eq!(std::fs::read_to_string(&file).expect("kept"), "previous\n");
     let fresh = dir.path().join("fresh.mod");
-    let o = gen_rapid(&["tests/err/unknown_key.yaml", "-o", fresh.to_str().expect("utf-8 path")]);
+    let o = gen_rapid(&[
+        "tests/err/unknown_key.yaml",
+        "-o",
+        fresh.to_str().expect("utf-8 path"),
+    ]);
     assert_eq!(o.status.code(), Some(1));
     assert!(!fresh.exists(), "no file on error");
 }
@@ -65,12 +88,22 @@ fn a_missing_cell_file_is_named() {
     let o = gen_rapid(&["cells/no_such_cell.yaml"]);
     assert_eq!(o.status.code(), Some(1));
     assert!(o.stdout.is_empty());
-    assert!(stderr(&o).contains("cells/no_such_cell.yaml"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("cells/no_such_cell.yaml"),
+        "{}",
+        stderr(&o)
+    );
 }
 
 #[test]
 fn planner_and_grid_flags_override_the_cell() {
-    let o = gen_rapid(&["cells/conveyor.yaml", "--planner", "neighboring", "--grid", "3"]);
+    let o = gen_rapid(&[
+        "cells/conveyor.yaml",
+        "--planner",
+        "neighboring",
+        "--grid",
+        "3",
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let text = stdout(&o);
     assert!(text.contains("! planner: neighboring\n"), "{text}");
@@ -79,7 +112,11 @@ fn planner_and_grid_flags_override_the_cell() {
 
 #[test]
 fn bad_flags_are_usage_errors() {
-    for args in [vec!["cells/trunk.yaml", "--grid", "0.01"], vec!["cells/trunk.yaml", "--planner", "astar"], vec![]] {
+    for args in [
+        vec!["cells/trunk.yaml", "--grid", "0.01"],
+        vec!["cells/trunk.yaml", "--planner", "astar"],
+        vec![],
+    ] {
         let o = gen_rapid(&args);
         assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
         assert!(o.stdout.is_empty());
@@ -101,7 +138,10 @@ fn a_cell_written_anywhere_finds_its_urdf_and_plans_depth_first() {
     assert!(o.status.success(), "{}", stderr(&o));
     let text = stdout(&o);
     assert!(text.contains("! planner: depth-first"));
-    assert!(text.contains("! min clearance (mm): none (no obstacles)"), "{text}");
+    assert!(
+        text.contains("! min clearance (mm): none (no obstacles)"),
+        "{text}"
+    );
     // Axis steps only: P -> (10, 0, 0) -> Q, or the other way round.
     assert!(text.contains("! moves: 2"), "{text}");
 }
