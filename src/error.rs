@@ -8,6 +8,7 @@
 use crate::cell::{CellError, Loc};
 use crate::ik::IkError;
 use crate::locate::LocateError;
+use crate::picture::PictureError;
 use crate::plan::PlanError;
 use crate::rapid::RapidError;
 use crate::robot::RobotError;
@@ -49,6 +50,11 @@ pub enum Error {
         path: PathBuf,
         source: std::io::Error,
     },
+    #[error(transparent)]
+    Picture(#[from] PictureError),
+    /// `compare`: every method failed (each reason is in the table).
+    #[error("no method found a route through the cell ({})", .failures.join("; "))]
+    NoMethodSucceeded { failures: Vec<String> },
 }
 
 impl Error {
@@ -59,8 +65,11 @@ impl Error {
                 source: IkError::Structure { .. },
                 ..
             } => exit::INPUT,
-            Error::Locate { .. } | Error::Ik { .. } | Error::Plan { .. } => exit::PLANNING,
-            Error::Rapid(_) | Error::Write { .. } => exit::OUTPUT,
+            Error::Locate { .. }
+            | Error::Ik { .. }
+            | Error::Plan { .. }
+            | Error::NoMethodSucceeded { .. } => exit::PLANNING,
+            Error::Rapid(_) | Error::Write { .. } | Error::Picture(_) => exit::OUTPUT,
         }
     }
 
@@ -72,7 +81,10 @@ impl Error {
             | Error::Locate { loc, .. }
             | Error::Ik { loc, .. }
             | Error::Plan { loc, .. } => Some(*loc),
-            Error::Rapid(_) | Error::Write { .. } => None,
+            Error::Rapid(_)
+            | Error::Write { .. }
+            | Error::Picture(_)
+            | Error::NoMethodSucceeded { .. } => None,
         }
     }
 

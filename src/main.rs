@@ -3,6 +3,7 @@
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use gen_rapid::cell::Method;
+use gen_rapid::cli::compare::{compare, CompareOptions};
 use gen_rapid::cli::locate::{locate, LocateOptions};
 use gen_rapid::cli::run::{run, RunOptions};
 use std::path::PathBuf;
@@ -14,6 +15,8 @@ Examples:
   gen-rapid cells/trunk.yaml -o trunk.mod         the same, written atomically to a file
   gen-rapid cells/trunk.yaml --planner depth-first --grid 2
   gen-rapid locate cells/trunk-auto.yaml --svg r.svg   where the base may stand (region R)
+  gen-rapid cells/trunk.yaml --svg trunk.svg      also draw the route over the C-space
+  gen-rapid compare cells/trunk.yaml --svg all.svg   the three methods side by side
 
 The cell file (YAML, mm and degrees) names the robot's URDF, its base, the box obstacles and
 the points to visit; see README.md for the format. The module goes to stdout (or -o FILE);
@@ -47,10 +50,16 @@ struct RunArgs {
     /// Grid spacing d in degrees, overriding the cell's planner.grid (0.25 .. 10).
     #[arg(long, value_name = "DEG", value_parser = parse_grid)]
     grid: Option<f64>,
+    /// Also draw the route over the blocked nodes of the configuration space to FILE (SVG).
+    #[arg(long, value_name = "FILE")]
+    svg: Option<PathBuf>,
 }
 
 #[derive(Subcommand)]
 enum Command {
+    /// Run the three search methods on the same grid and print one table: moves, path
+    /// length, manipulation time, planning time (exit 0 if any method succeeds, 3 if none).
+    Compare(CompareArgs),
     /// Robot location (paper section 2): the region R of base positions that reach every point
     /// clear of the obstacles, its area and bounding box, and the base with the largest margin.
     /// For a fixed base, also whether that base lies in R.
@@ -68,6 +77,22 @@ struct LocateArgs {
     /// Print the report as JSON on stdout instead of text.
     #[arg(long)]
     json: bool,
+}
+
+#[derive(Args)]
+struct CompareArgs {
+    /// The cell file (YAML).
+    #[arg(value_name = "CELL")]
+    cell: PathBuf,
+    /// Print the comparison as JSON instead of a table.
+    #[arg(long)]
+    json: bool,
+    /// Draw every method's route over the configuration space to FILE (SVG).
+    #[arg(long, value_name = "FILE")]
+    svg: Option<PathBuf>,
+    /// Grid spacing d in degrees, overriding the cell's planner.grid (0.25 .. 10).
+    #[arg(long, value_name = "DEG", value_parser = parse_grid)]
+    grid: Option<f64>,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -103,6 +128,13 @@ fn main() -> ExitCode {
             output: cli.run.output,
             planner: cli.run.planner.map(Method::from),
             grid_deg: cli.run.grid,
+            svg: cli.run.svg,
+        }),
+        Some(Command::Compare(a)) => compare(&CompareOptions {
+            cell: a.cell,
+            json: a.json,
+            svg: a.svg,
+            grid_deg: a.grid,
         }),
         Some(Command::Locate(a)) => locate(&LocateOptions {
             cell: a.cell,

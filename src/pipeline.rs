@@ -35,6 +35,7 @@ use crate::plan::{self, Plan, Waypoint};
 use crate::program::{self, ProgramInput};
 use crate::rapid;
 use crate::robot::Robot;
+use crate::timing;
 use nalgebra::Point3;
 
 /// Everything fixed before planning: the robot placed, the points resolved.
@@ -307,14 +308,9 @@ pub fn cspace(prep: &Prepared, grid_deg: f64) -> CSpace {
     CSpace::build(grid, &prep.model)
 }
 
-/// Plans with `method` on an inspected grid and renders the module.
-pub fn plan_and_render(
-    prep: &Prepared,
-    cs: &CSpace,
-    method: Method,
-    estimated_time: impl Fn(&Plan) -> Option<f64>,
-) -> Result<Outcome, Error> {
-    let plan = plan::plan(cs, &prep.model, &prep.points, method).map_err(|source| {
+/// Plans the route with `method` on an inspected grid (no rendering).
+pub fn plan_route(prep: &Prepared, cs: &CSpace, method: Method) -> Result<Plan, Error> {
+    plan::plan(cs, &prep.model, &prep.points, method).map_err(|source| {
         let loc = prep
             .cell
             .points
@@ -322,7 +318,32 @@ pub fn plan_and_render(
             .map(|p| p.loc)
             .unwrap_or_default();
         Error::Plan { source, loc }
-    })?;
+    })
+}
+
+/// The manipulation time of a plan (paper section 5; see `timing`), s.
+pub fn manipulation_time_s(prep: &Prepared, plan: &Plan) -> f64 {
+    timing::plan_time_s(plan, &prep.wrists_deg, &prep.robot.controller.axes)
+}
+
+/// Plans with `method` on an inspected grid and renders the module.
+pub fn plan_and_render(
+    prep: &Prepared,
+    cs: &CSpace,
+    method: Method,
+    estimated_time: impl Fn(&Plan) -> Option<f64>,
+) -> Result<Outcome, Error> {
+    let plan = plan_route(prep, cs, method)?;
+    render(prep, cs, plan, estimated_time)
+}
+
+/// Renders the module of a plan made on `cs`.
+pub fn render(
+    prep: &Prepared,
+    cs: &CSpace,
+    plan: Plan,
+    estimated_time: impl Fn(&Plan) -> Option<f64>,
+) -> Result<Outcome, Error> {
     let names: Vec<String> = prep.points.iter().map(|p| p.name.clone()).collect();
     let cell_file = prep
         .cell

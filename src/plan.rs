@@ -234,3 +234,88 @@ pub fn plan(
     }
     Ok(Plan { method, legs })
 }
+
+#[cfg(test)]
+mod tests {
+    //! The paper's figures through the plan layer: a hand-made grid (`CSpace::from_fn`) with the
+    //! real IRB 1400 model and no obstacles, so every move inside the axis ranges is safe and
+    //! only the hand-made free nodes steer the search.
+    use super::*;
+    use crate::collision::Placement;
+    use crate::cspace::Grid;
+    use crate::robot::Robot;
+
+    fn open_model() -> CollisionModel {
+        let placement = Placement {
+            base_mm: [0.0, 0.0, 0.0],
+            yaw_deg: 0.0,
+        };
+        CollisionModel::new(&Robot::irb1400(), placement, Vec::new(), 0.0)
+    }
+
+    fn point(name: &str, axes_deg: [f64; 3]) -> Waypoint {
+        Waypoint {
+            name: name.into(),
+            axes_deg,
+        }
+    }
+
+    #[test]
+    fn fig8_depth_first_fails_with_the_leg_named_and_extensile_takes_the_diagonal() {
+        // 3 x 3 nodes in the axis 1 - axis 2 plane; free only on the diagonal, so the free
+        // nodes touch only at corners (paper Fig. 8).
+        let g = Grid::over([[0.0, 2.0], [0.0, 2.0], [0.0, 0.0]], 1.0);
+        let cs = CSpace::from_fn(g, |n| n[0] == n[1]);
+        let model = open_model();
+        let pts = [point("P", [0.0, 0.0, 0.0]), point("Q", [2.0, 2.0, 0.0])];
+        match plan(&cs, &model, &pts, Method::DepthFirst) {
+            Err(e @ PlanError::SearchFailed { from: 0, to: 1, .. }) => {
+                let msg = e.to_string();
+                assert!(
+                    msg.contains("depth-first search found no path from 'P' to 'Q'"),
+                    "{msg}"
+                );
+                assert_eq!(e.point(), 1);
+            }
+            other => panic!("expected SearchFailed, got {other:?}"),
+        }
+        let p = plan(&cs, &model, &pts, Method::Extensile).expect("extensile plans");
+        assert_eq!(p.moves(), 1);
+        assert_eq!(p.legs[0].waypoints, vec![[0.0, 0.0, 0.0], [2.0, 2.0, 0.0]]);
+        assert_eq!(p.legs[0].grid_path, vec![[0, 0, 0], [1, 1, 0], [2, 2, 0]]);
+    }
+
+    #[test]
+    fn fig6_neighboring_saw_tooth_and_extensile_straightens_it() {
+        // A band of free nodes along axis 2 = axis 1 / 2 (|2 n2 - n1| <= 1), from (0, 0) to
+        // (10, 5). On the 26-neighbour wave node (x, y) carries x + 1. Back from (10, 5) the
+        // neighbouring search takes the first offset in lexicographic order among the smaller
+        // numbers: (-1, -1) to (9, 4), then only (-1, 0) to (8, 4), then (-1, -1) to (7, 3), ...
+        // a diagonal step and an axis step in turn: ten steps, no two in the same direction, so
+        // ten moves even after the collinear merge (the saw-tooth of Fig. 6).
+        let g = Grid::over([[0.0, 10.0], [0.0, 5.0], [0.0, 0.0]], 1.0);
+        let cs = CSpace::from_fn(g, |n| (2 * n[1] - n[0]).abs() <= 1);
+        let model = open_model();
+        let pts = [point("P", [0.0, 0.0, 0.0]), point("Q", [10.0, 5.0, 0.0])];
+        let nb = plan(&cs, &model, &pts, Method::Neighboring).expect("neighboring plans");
+        assert_eq!(nb.moves(), 10, "{:?}", nb.legs[0].waypoints);
+        assert_eq!(nb.legs[0].waypoints[1], [1.0, 0.0, 0.0]);
+        assert_eq!(nb.legs[0].waypoints[2], [2.0, 1.0, 0.0]);
+        // Extensile: search, shorten (k -> k+2 where the inspected nodes are free) and merge.
+        // The straight line (0, 0) -> (10, 5) passes only band nodes (at x = i its axis-2 value
+        // i / 2 rounds into the band), but the shortening cuts k -> k+2 greedily from the start,
+        // so it ends with at most a few pieces and never more than the saw-tooth.
+        let ex = plan(&cs, &model, &pts, Method::Extensile).expect("extensile plans");
+        assert!(ex.moves() <= 2, "{:?}", ex.legs[0].waypoints);
+        assert!(ex.path_length_deg() < nb.path_length_deg());
+        for (a, b) in ex.segments() {
+            let (na, nb_) = (cs.grid.node_at(&a), cs.grid.node_at(&b));
+            let (Some(na), Some(nb_)) = (na, nb_) else {
+                panic!("waypoints on the grid")
+            };
+            assert!(crate::shorten::inspected_nodes(na, nb_)
+                .iter()
+                .all(|&q| cs.is_free(q)));
+        }
+    }
+}

@@ -1,6 +1,7 @@
 //! The commands behind `gen-rapid`: each reads a cell, runs the stages it needs and writes its
 //! result. `main.rs` only parses the command line and turns the result into an exit status.
 
+pub mod compare;
 pub mod locate;
 pub mod run;
 

@@ -1,8 +1,9 @@
-//! `gen-rapid <CELL>`: plan the cell and write the RAPID module.
+//! `gen-rapid <CELL>`: plan the cell and write the RAPID module (and, with `--svg`, a picture
+//! of the search).
 
-use super::{emit, load, Failure};
+use super::{emit, load, write_atomically, Failure};
 use crate::cell::Method;
-use crate::pipeline;
+use crate::{picture, pipeline};
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -11,10 +12,13 @@ pub struct RunOptions {
     pub output: Option<PathBuf>,
     pub planner: Option<Method>,
     pub grid_deg: Option<f64>,
+    /// Also draw the route over the configuration space (`picture`) to this file.
+    pub svg: Option<PathBuf>,
 }
 
-/// Runs the pipeline; on success the module is written and a summary line is returned for
-/// stderr.
+/// Runs the pipeline; on success the module (and the picture) is written and a summary line is
+/// returned for stderr. On any error nothing is written: the picture is drawn before the module
+/// is emitted and written only after it.
 pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     let started = Instant::now();
     let loaded = load(&opts.cell)?;
@@ -22,15 +26,38 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     let grid_deg = opts.grid_deg.unwrap_or(loaded.cell.planner.grid_deg);
     let prep = pipeline::prepare(loaded.cell.clone()).map_err(|e| loaded.fail(e))?;
     let cs = pipeline::cspace(&prep, grid_deg);
-    let outcome =
-        pipeline::plan_and_render(&prep, &cs, method, |_| None).map_err(|e| loaded.fail(e))?;
+    let outcome = pipeline::plan_and_render(&prep, &cs, method, |plan| {
+        Some(pipeline::manipulation_time_s(&prep, plan))
+    })
+    .map_err(|e| loaded.fail(e))?;
+    let svg = match &opts.svg {
+        Some(path) => {
+            let title = format!(
+                "{}: {} on a {} deg grid",
+                opts.cell.display(),
+                method,
+                grid_deg
+            );
+            let text = picture::render_svg(&cs, &prep.points, &[&outcome.plan], &title)
+                .map_err(|e| loaded.fail(e.into()))?;
+            Some((path, text))
+        }
+        None => None,
+    };
     emit(opts.output.as_deref(), outcome.text.as_bytes()).map_err(|e| loaded.fail(e))?;
+    if let Some((path, text)) = svg {
+        write_atomically(path, text.as_bytes()).map_err(|e| loaded.fail(e))?;
+    }
     let clearance = match outcome.program.header.min_clearance_mm {
         Some(c) => format!("smallest clearance {c:.1} mm"),
         None => "no obstacles".to_string(),
     };
+    let time = match outcome.program.header.estimated_time_s {
+        Some(t) => format!(", about {t:.2} s of motion"),
+        None => String::new(),
+    };
     Ok(format!(
-        "gen-rapid: {}: {} moves, {}, {} on a {} deg grid, {:.2} s",
+        "gen-rapid: {}: {} moves{time}, {}, {} on a {} deg grid, {:.2} s",
         opts.cell.display(),
         outcome.plan.moves(),
         clearance,

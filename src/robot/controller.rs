@@ -2,8 +2,14 @@
 //!
 //! URDF cannot say that the IRB 1400's controller reports axis 3 as the forearm angle to the
 //! horizontal (`rax3 = q3 + q2`, a parallelogram drive), nor that axis 3 has a coupled range, nor
-//! the controller's axis speeds. This small file does. A URDF without one is taken as a serial
-//! arm with its own limits and velocities (converted to degrees).
+//! the controller's axis speeds and accelerations. This small file does. A URDF without one is
+//! taken as a serial arm with its own limits and velocities (converted to degrees).
+//!
+//! Each axis may give `acceleration` (deg/s^2), the peak acceleration the manipulation-time
+//! estimate (`timing`) allows. It is optional: without it the axis is taken to reach full speed
+//! in [`DEFAULT_RAMP_S`] along the quintic speed ramp of `timing`, whose peak acceleration is
+//! 15 v / (8 t_ramp), so the default is `15 * speed / (8 * 0.4 s)`. ABB does not publish axis
+//! accelerations; see `robots/irb1400.controller.yaml` for where the 0.4 s comes from.
 
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -18,7 +24,11 @@ pub enum Coupling {
     Parallelogram,
 }
 
-/// Range (deg) and maximum speed (deg/s) of one controller axis.
+/// Time an axis without a stated `acceleration` takes to reach full speed, s (an estimate).
+pub const DEFAULT_RAMP_S: f64 = 0.4;
+
+/// Range (deg), maximum speed (deg/s) and, when stated, peak acceleration (deg/s^2) of one
+/// controller axis.
 #[derive(Clone, Copy, Debug, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct AxisSpec {
@@ -28,6 +38,17 @@ pub struct AxisSpec {
     pub max_deg: f64,
     #[serde(rename = "speed")]
     pub speed_deg_s: f64,
+    #[serde(rename = "acceleration", default)]
+    pub acceleration_deg_s2: Option<f64>,
+}
+
+impl AxisSpec {
+    /// The peak acceleration, deg/s^2: as stated, or the one that reaches full speed in
+    /// [`DEFAULT_RAMP_S`] on the quintic ramp (15 v / (8 t_ramp)).
+    pub fn acceleration(&self) -> f64 {
+        self.acceleration_deg_s2
+            .unwrap_or(15.0 * self.speed_deg_s / (8.0 * DEFAULT_RAMP_S))
+    }
 }
 
 /// The controller's convention for one robot.
@@ -84,6 +105,11 @@ pub fn parse(text: &str) -> Result<Controller, String> {
         }
         if !(a.speed_deg_s.is_finite() && a.speed_deg_s > 0.0) {
             return Err(format!("axis {}: speed must be positive", i + 1));
+        }
+        if let Some(acc) = a.acceleration_deg_s2 {
+            if !(acc.is_finite() && acc > 0.0) {
+                return Err(format!("axis {}: acceleration must be positive", i + 1));
+            }
         }
     }
     let coupled_axis3_deg = match raw.coupled_axis3 {

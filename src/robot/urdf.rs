@@ -190,6 +190,7 @@ fn serial_controller(joints: &[&urdf_rs::Joint]) -> Result<Controller, String> {
         min_deg: 0.0,
         max_deg: 0.0,
         speed_deg_s: 0.0,
+        acceleration_deg_s2: None,
     }; 6];
     for (a, j) in axes.iter_mut().zip(joints) {
         let (lo, hi) = if j.joint_type == urdf_rs::JointType::Continuous {
@@ -210,6 +211,7 @@ fn serial_controller(joints: &[&urdf_rs::Joint]) -> Result<Controller, String> {
             min_deg: lo,
             max_deg: hi,
             speed_deg_s: j.limit.velocity.to_degrees(),
+            acceleration_deg_s2: None,
         };
     }
     Ok(Controller {

@@ -1,0 +1,271 @@
+//! A picture of the search (the paper's Figs. 11-13): the route(s) over the blocked nodes of
+//! the configuration space, as an SVG document (`--svg FILE` on a run and on `compare`).
+//!
+//! The grid of axes 1..3 (paper section 3) is drawn in its three axis-pair projections, side by
+//! side: axis 1 - axis 2, axis 1 - axis 3, axis 2 - axis 3. A node of a projection stands for the
+//! whole column of grid nodes along the projected-out axis, and is **shaded by the fraction of
+//! that column that is blocked**: white when every node is free, light to mid grey as more are
+//! blocked (ten steps), dark grey when all are blocked (the only shade that means "no way
+//! through at this pair of values"). A column that is partly blocked can still be passed at
+//! other values of the third axis, which is why the paths may cross grey areas.
+//!
+//! Each route is drawn as its straight moves (the waypoints after shortening and merging, i.e.
+//! what the module drives) in the method's colour, with a legend; the cell points are black
+//! dots labelled with their names. Text is plain SVG `<text>` (plotters' built-in size
+//! estimate, no font files), so rendering needs nothing beyond the Rust toolchain. The output is
+//! deterministic for the same grid and plans.
+
+use crate::cell::Method;
+use crate::cspace::CSpace;
+use crate::plan::{Plan, Waypoint};
+use plotters::prelude::*;
+
+/// Why a picture could not be drawn.
+#[derive(Debug, thiserror::Error)]
+pub enum PictureError {
+    #[error("cannot draw the picture: {0}")]
+    Draw(String),
+    #[error("cannot draw the picture: the grid is empty")]
+    EmptyGrid,
+}
+
+/// The colour each method's route is drawn in.
+pub fn colour(m: Method) -> RGBColor {
+    match m {
+        Method::Neighboring => RGBColor(230, 120, 0),
+        Method::DepthFirst => RGBColor(30, 90, 210),
+        Method::Extensile => RGBColor(200, 0, 70),
+    }
+}
+
+/// Shade steps for partly blocked columns.
+const LEVELS: usize = 10;
+const PANEL_W: u32 = 560;
+const PANEL_H: u32 = 520;
+
+/// For the projection onto axes (`u`, `v`): the shade level of each (u, v) column, 0 = all free,
+/// 1..=LEVELS partly blocked, LEVELS + 1 = all blocked. Indexed `[iu * dims[v] + iv]`.
+fn levels(counts: &[u32], depth: u32) -> Vec<u8> {
+    counts
+        .iter()
+        .map(|&c| {
+            if c == 0 {
+                0
+            } else if c >= depth {
+                (LEVELS + 1) as u8
+            } else {
+                (1 + (c as usize * LEVELS / depth as usize).min(LEVELS - 1)) as u8
+            }
+        })
+        .collect()
+}
+
+fn shade(level: u8) -> RGBColor {
+    if level as usize > LEVELS {
+        RGBColor(80, 80, 80)
+    } else {
+        let g = 235 - (level as u32 * 110 / LEVELS as u32) as u8;
+        RGBColor(g, g, g)
+    }
+}
+
+/// Draws the grid's blocked nodes, the cell points and each route; `title` heads the picture.
+pub fn render_svg(
+    cs: &CSpace,
+    points: &[Waypoint],
+    routes: &[&Plan],
+    title: &str,
+) -> Result<String, PictureError> {
+    let grid = &cs.grid;
+    if grid.is_empty() {
+        return Err(PictureError::EmptyGrid);
+    }
+    let d = grid.dims;
+    // Blocked counts of the three projections: (0,1) over axis 3, (0,2) over axis 2, (1,2) over
+    // axis 1.
+    let mut c01 = vec![0u32; d[0] * d[1]];
+    let mut c02 = vec![0u32; d[0] * d[2]];
+    let mut c12 = vec![0u32; d[1] * d[2]];
+    for i in 0..grid.len() {
+        if !cs.is_free_index(i) {
+            let n = grid.node(i);
+            let (a, b, c) = (n[0] as usize, n[1] as usize, n[2] as usize);
+            c01[a * d[1] + b] += 1;
+            c02[a * d[2] + c] += 1;
+            c12[b * d[2] + c] += 1;
+        }
+    }
+    let projections = [
+        ((0usize, 1usize), levels(&c01, d[2] as u32)),
+        ((0, 2), levels(&c02, d[1] as u32)),
+        ((1, 2), levels(&c12, d[0] as u32)),
+    ];
+
+    let err = |e: &dyn std::fmt::Display| PictureError::Draw(e.to_string());
+    let mut svg = String::new();
+    {
+        let root =
+            SVGBackend::with_string(&mut svg, (PANEL_W * 3, PANEL_H + 70)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        let root = root
+            .titled(title, ("sans-serif", 20))
+            .map_err(|e| err(&e))?;
+        let (body, foot) = root.split_vertically(PANEL_H);
+        foot.draw(&Text::new(
+            "grey: share of the grid nodes along the third axis that are blocked (darker = more); dark: all blocked",
+            (20, 10),
+            ("sans-serif", 14).into_font().color(&BLACK),
+        ))
+        .map_err(|e| err(&e))?;
+        let panels = body.split_evenly((1, 3));
+        let step = grid.step_deg;
+        for (panel, ((u, v), lv)) in panels.iter().zip(&projections) {
+            let (u, v) = (*u, *v);
+            let lo = |k: usize| grid.value(k, 0) - step / 2.0;
+            let hi = |k: usize| grid.value(k, d[k] as i64 - 1) + step / 2.0;
+            let mut chart = ChartBuilder::on(panel)
+                .caption(
+                    format!("axis {} - axis {}", u + 1, v + 1),
+                    ("sans-serif", 16),
+                )
+                .margin(12)
+                .x_label_area_size(40)
+                .y_label_area_size(50)
+                .build_cartesian_2d(lo(u)..hi(u), lo(v)..hi(v))
+                .map_err(|e| err(&e))?;
+            chart
+                .configure_mesh()
+                .disable_mesh()
+                .x_desc(format!("axis {} (deg)", u + 1))
+                .y_desc(format!("axis {} (deg)", v + 1))
+                .label_style(("sans-serif", 12))
+                .draw()
+                .map_err(|e| err(&e))?;
+            // Runs of equal shade along v become one rectangle each.
+            let mut rects = Vec::new();
+            for iu in 0..d[u] {
+                let mut iv = 0;
+                while iv < d[v] {
+                    let l = lv[iu * d[v] + iv];
+                    let start = iv;
+                    while iv < d[v] && lv[iu * d[v] + iv] == l {
+                        iv += 1;
+                    }
+                    if l > 0 {
+                        let x0 = grid.value(u, iu as i64) - step / 2.0;
+                        let y0 = grid.value(v, start as i64) - step / 2.0;
+                        let y1 = grid.value(v, iv as i64 - 1) + step / 2.0;
+                        rects.push(Rectangle::new(
+                            [(x0, y0), (x0 + step, y1)],
+                            shade(l).filled(),
+                        ));
+                    }
+                }
+            }
+            chart.draw_series(rects).map_err(|e| err(&e))?;
+            for plan in routes {
+                let c = colour(plan.method);
+                let line: Vec<(f64, f64)> = plan
+                    .legs
+                    .iter()
+                    .enumerate()
+                    .flat_map(|(i, l)| l.waypoints.iter().skip(usize::from(i > 0)))
+                    .map(|w| (w[u], w[v]))
+                    .collect();
+                chart
+                    .draw_series(LineSeries::new(line.iter().copied(), c.stroke_width(2)))
+                    .map_err(|e| err(&e))?
+                    .label(format!("{} ({} moves)", plan.method, plan.moves()))
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(3))
+                    });
+                chart
+                    .draw_series(line.iter().map(|&p| Circle::new(p, 2, c.filled())))
+                    .map_err(|e| err(&e))?;
+            }
+            chart
+                .draw_series(points.iter().map(|p| {
+                    let at = (p.axes_deg[u], p.axes_deg[v]);
+                    EmptyElement::at(at)
+                        + Circle::new((0, 0), 4, BLACK.filled())
+                        + Text::new(
+                            p.name.clone(),
+                            (6, -16),
+                            ("sans-serif", 14).into_font().color(&BLACK),
+                        )
+                }))
+                .map_err(|e| err(&e))?;
+            if !routes.is_empty() {
+                chart
+                    .configure_series_labels()
+                    .position(SeriesLabelPosition::LowerRight)
+                    .background_style(WHITE.mix(0.85))
+                    .border_style(BLACK)
+                    .label_font(("sans-serif", 13))
+                    .draw()
+                    .map_err(|e| err(&e))?;
+            }
+        }
+        root.present().map_err(|e| err(&e))?;
+    }
+    Ok(svg)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cspace::{CSpace, Grid};
+    use crate::plan::Leg;
+
+    #[test]
+    fn shades_by_the_blocked_fraction() {
+        // Depth 4: 0 blocked -> 0, 1 -> 1 + 10/4 = 3, 3 -> 1 + 30/4 = 8, 4 -> all (11).
+        assert_eq!(levels(&[0, 1, 3, 4], 4), vec![0, 3, 8, 11]);
+        assert!(shade(1).0 > shade(10).0 && shade(10).0 > shade(11).0);
+    }
+
+    #[test]
+    fn draws_points_routes_and_legend() {
+        let g = Grid::over([[0.0, 9.0], [0.0, 4.0], [0.0, 3.0]], 1.0);
+        // Axis-1 values 4 and 5 blocked for every axis 3 when axis 2 < 3: fully blocked in the
+        // axis 1 - axis 2 projection there, partly in the others.
+        let cs = CSpace::from_fn(g, |n| !((n[0] == 4 || n[0] == 5) && n[1] < 3));
+        let points = vec![
+            Waypoint {
+                name: "P1".into(),
+                axes_deg: [0.0, 0.0, 0.0],
+            },
+            Waypoint {
+                name: "P2".into(),
+                axes_deg: [9.0, 0.0, 0.0],
+            },
+        ];
+        let plan = Plan {
+            method: Method::Extensile,
+            legs: vec![Leg {
+                from: 0,
+                to: 1,
+                grid_path: Vec::new(),
+                waypoints: vec![
+                    [0.0, 0.0, 0.0],
+                    [3.0, 3.0, 0.0],
+                    [6.0, 3.0, 0.0],
+                    [9.0, 0.0, 0.0],
+                ],
+            }],
+        };
+        let svg = render_svg(&cs, &points, &[&plan], "test").expect("svg");
+        assert!(svg.starts_with("<svg"));
+        assert!(svg.contains("P1\n</text>") && svg.contains("P2\n</text>"));
+        assert!(svg.contains("extensile (3 moves)"));
+        assert!(svg.contains("axis 1 - axis 2") && svg.contains("axis 2 - axis 3"));
+        // The dark "all blocked" shade appears and the route's colour.
+        assert!(svg.contains("#505050"), "no fully blocked shade");
+        assert!(svg.contains("#C80046"), "no extensile colour");
+        // Same input, same bytes.
+        assert_eq!(
+            svg,
+            render_svg(&cs, &points, &[&plan], "test").expect("svg")
+        );
+    }
+}
