@@ -7,6 +7,7 @@ MODULE ShelfLoad
     ! base: [0.0, 0.0, 0.0] yaw: 0.000
     ! moves: 46
     ! min clearance (mm): 15.5
+    ! estimated time (s): 14.37
 
     CONST jointtarget home := [[0.000,-20.000,20.000,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[-6.000,-20.000,24.000,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

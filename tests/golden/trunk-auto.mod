@@ -7,6 +7,7 @@ MODULE TrunkWeldAuto
     ! base: [-5.0, -965.0, 0.0] yaw: 90.000
     ! moves: 10
     ! min clearance (mm): 10.4
+    ! estimated time (s): 4.19
 
     CONST jointtarget A := [[82.427,0.249,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[42.000,13.000,-13.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

@@ -7,6 +7,7 @@ MODULE TrunkWeld
     ! base: [0.0, -850.0, 0.0] yaw: 90.000
     ! moves: 10
     ! min clearance (mm): 10.3
+    ! estimated time (s): 4.33
 
     CONST jointtarget A := [[90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[49.000,-3.000,-12.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
