@@ -760,6 +760,12 @@ fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
     cylinder_clear_of_aabb(c, b, clearance)
 }
 
+impl crate::cspace::Inspector for CollisionModel {
+    fn inspect_column(&self, a1_deg: f64, a2_deg: f64, a3_deg: &[f64], free: &mut [bool]) {
+        CollisionModel::inspect_column(self, a1_deg, a2_deg, a3_deg, free)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1281,11 +1287,5 @@ mod tests {
         model.inspect_column(171.0, 0.0, &[0.0, 10.0, 20.0], &mut col);
         assert_eq!(col, [false; 3]);
         model.inspect_column(0.0, 0.0, &[], &mut []);
-    }
-}
-
-impl crate::cspace::Inspector for CollisionModel {
-    fn inspect_column(&self, a1_deg: f64, a2_deg: f64, a3_deg: &[f64], free: &mut [bool]) {
-        CollisionModel::inspect_column(self, a1_deg, a2_deg, a3_deg, free)
     }
 }

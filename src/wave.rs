@@ -194,9 +194,7 @@ mod tests {
     #[test]
     fn every_numbered_node_below_n_has_a_predecessor() {
         let g = Grid::over([[0.0, 12.0], [0.0, 12.0], [0.0, 6.0]], 1.0);
-        let cs = CSpace::from_fn(g, |n| {
-            !(n[0] == 6 && n[1] < 10) && !(n[1] == 4 && n[2] == 3)
-        });
+        let cs = CSpace::from_fn(g, |n| (n[0] != 6 || n[1] >= 10) && (n[1] != 4 || n[2] != 3));
         let w = expand(&cs, [0, 0, 0], [12, 0, 6], Connectivity::TwentySix).expect("reachable");
         for i in 0..g.len() {
             let n = g.node(i);

@@ -18,7 +18,8 @@ pub struct Loaded {
 
 /// A failure with the cell's name and text, ready to print.
 pub struct Failure {
-    pub error: Error,
+    /// Boxed: the error is large and a `Result` carrying it should not be.
+    pub error: Box<Error>,
     pub file: String,
     pub text: Option<String>,
 }
@@ -36,7 +37,7 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
         Err(e) => {
             let text = std::fs::read_to_string(path).ok();
             Err(Failure {
-                error: Error::Cell(e),
+                error: Box::new(Error::Cell(e)),
                 file,
                 text,
             })
@@ -47,7 +48,7 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
 impl Loaded {
     pub fn fail(&self, error: Error) -> Failure {
         Failure {
-            error,
+            error: Box::new(error),
             file: self.cell.path.display().to_string(),
             text: Some(self.text.clone()),
         }

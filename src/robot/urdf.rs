@@ -198,10 +198,11 @@ fn serial_controller(joints: &[&urdf_rs::Joint]) -> Result<Controller, String> {
         } else {
             (j.limit.lower.to_degrees(), j.limit.upper.to_degrees())
         };
-        if !(lo < hi) {
+        // Written so that NaN fails too.
+        if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
             return Err(format!("joint '{}' needs <limit lower < upper>", j.name));
         }
-        if !(j.limit.velocity > 0.0) {
+        if j.limit.velocity.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return Err(format!(
                 "joint '{}' needs a positive <limit velocity> (or a controller file beside the URDF)",
                 j.name

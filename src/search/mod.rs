@@ -32,6 +32,10 @@ use std::collections::HashSet;
 /// A path of grid nodes from the start node to the end node, each step to a neighbour.
 pub type GridPath = Vec<Node>;
 
+/// A method's neighbour order: the offsets to try from `node`, best first, given the offset of
+/// the step that led there.
+pub(crate) type Candidates = dyn Fn(&Wave, Node, Option<[i32; 3]>) -> Vec<[i32; 3]>;
+
 /// Edge acceptance: is the straight move between two neighbouring nodes safe?
 pub type Accept<'a> = dyn FnMut(Node, Node) -> bool + 'a;
 
@@ -51,7 +55,7 @@ pub(crate) fn order_of(o: [i32; 3]) -> usize {
 /// Returns the path from the wave's start to its end, or `None` when every branch dead-ends.
 pub(crate) fn descend(
     wave: &Wave,
-    candidates: &dyn Fn(&Wave, Node, Option<[i32; 3]>) -> Vec<[i32; 3]>,
+    candidates: &Candidates,
     accept: &mut Accept<'_>,
 ) -> Option<GridPath> {
     struct Frame {
@@ -130,7 +134,7 @@ pub(crate) mod testing {
         for w in p.windows(2) {
             let d: Vec<i32> = (0..3).map(|k| (w[1][k] - w[0][k]).abs()).collect();
             assert!(
-                d.iter().all(|&x| x <= 1) && d.iter().any(|&x| x == 1),
+                d.iter().all(|&x| x <= 1) && d.contains(&1),
                 "{:?} -> {:?}",
                 w[0],
                 w[1]
