@@ -772,20 +772,7 @@ mod tests {
     use nalgebra::Point3;
     use parry3d::math::{Pose, Rotation, Vector};
 
-    /// Deterministic xorshift64* generator.
-    struct Rng(u64);
-    impl Rng {
-        fn next_u64(&mut self) -> u64 {
-            self.0 ^= self.0 >> 12;
-            self.0 ^= self.0 << 25;
-            self.0 ^= self.0 >> 27;
-            self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
-        }
-        fn range(&mut self, lo: f64, hi: f64) -> f64 {
-            let u = (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
-            lo + (hi - lo) * u
-        }
-    }
+    use crate::geometry::testing::Rng;
 
     fn bx(name: &str, min: [f64; 3], max: [f64; 3]) -> Obstacle {
         Obstacle {

@@ -375,32 +375,40 @@ pub fn distance_cylinder_aabb(c: &Cylinder, bx: &Aabb) -> f64 {
     distance_cylinder_aabb_exact_in_band(c, bx, lo, hi)
 }
 
+/// Shared by the tests of this crate's geometry and collision modules.
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use parry3d::math::{Pose, Vector};
+pub(crate) mod testing {
+    use super::Point;
 
     /// Tiny deterministic xorshift64* generator (no `rand` dependency).
-    struct Rng(u64);
+    pub(crate) struct Rng(pub(crate) u64);
     impl Rng {
-        fn next_u64(&mut self) -> u64 {
+        pub(crate) fn next_u64(&mut self) -> u64 {
             self.0 ^= self.0 >> 12;
             self.0 ^= self.0 << 25;
             self.0 ^= self.0 >> 27;
             self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
         }
         /// Uniform in [lo, hi).
-        fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        pub(crate) fn range(&mut self, lo: f64, hi: f64) -> f64 {
             let u = (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
             lo + (hi - lo) * u
         }
-        fn below(&mut self, n: u64) -> u64 {
+        pub(crate) fn below(&mut self, n: u64) -> u64 {
             self.next_u64() % n
         }
-        fn point(&mut self, lo: f64, hi: f64) -> Point {
+        pub(crate) fn point(&mut self, lo: f64, hi: f64) -> Point {
             Point::new(self.range(lo, hi), self.range(lo, hi), self.range(lo, hi))
         }
     }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use parry3d::math::{Pose, Vector};
+
+    use super::testing::Rng;
 
     fn p(x: f64, y: f64, z: f64) -> Point {
         Point::new(x, y, z)

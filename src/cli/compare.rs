@@ -154,14 +154,7 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
         _ => None,
     };
     let text = if opts.json {
-        let mut j = serde_json::to_string_pretty(&comparison).map_err(|e| {
-            loaded.fail(Error::Write {
-                path: "<stdout>".into(),
-                source: std::io::Error::other(e),
-            })
-        })?;
-        j.push('\n');
-        j
+        super::to_json(&comparison).map_err(|e| loaded.fail(e))?
     } else {
         comparison.table()
     };

@@ -218,14 +218,7 @@ pub fn locate(opts: &LocateOptions) -> Result<String, Failure> {
         pipeline::locate_any(cell, &robot, &geom).map_err(|e| loaded.fail(e))?;
     let rep = report(cell, &location, &points);
     let out = if opts.json {
-        let mut s = serde_json::to_string_pretty(&rep).map_err(|e| {
-            loaded.fail(Error::Write {
-                path: "<stdout>".into(),
-                source: std::io::Error::other(e),
-            })
-        })?;
-        s.push('\n');
-        s
+        super::to_json(&rep).map_err(|e| loaded.fail(e))?
     } else {
         render_text(&rep)
     };

@@ -83,6 +83,16 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
     result.map_err(err)
 }
 
+/// A report as pretty JSON with a final newline (for `--json`).
+pub fn to_json<T: serde::Serialize>(value: &T) -> Result<String, Error> {
+    let mut text = serde_json::to_string_pretty(value).map_err(|e| Error::Write {
+        path: "<stdout>".into(),
+        source: std::io::Error::other(e),
+    })?;
+    text.push('\n');
+    Ok(text)
+}
+
 /// Writes to stdout (the module) or to a file; stdout only ever receives a complete result.
 pub fn emit(output: Option<&Path>, bytes: &[u8]) -> Result<(), Error> {
     match output {
