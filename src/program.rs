@@ -10,6 +10,7 @@
 use crate::collision::CollisionModel;
 use crate::plan::Plan;
 use crate::rapid::{Header, Program, Target, TargetKind};
+use crate::timing::six_axis_targets;
 
 /// Tolerance of the reported smallest clearance, mm.
 pub const MIN_CLEARANCE_TOL_MM: f64 = 0.05;
@@ -30,10 +31,6 @@ pub struct ProgramInput<'a> {
     pub estimated_time_s: Option<f64>,
 }
 
-fn six(a: [f64; 3], w: [f64; 3]) -> [f64; 6] {
-    [a[0], a[1], a[2], w[0], w[1], w[2]]
-}
-
 /// The smallest clearance along all moves (a certified lower bound within
 /// [`MIN_CLEARANCE_TOL_MM`]); None without obstacles.
 pub fn min_clearance_mm(plan: &Plan, model: &CollisionModel) -> Option<f64> {
@@ -46,37 +43,34 @@ pub fn min_clearance_mm(plan: &Plan, model: &CollisionModel) -> Option<f64> {
 }
 
 pub fn build(plan: &Plan, model: &CollisionModel, input: &ProgramInput) -> Program {
-    let mut targets = Vec::with_capacity(plan.moves() + 1);
+    // The kind of each target, in the order of `timing::six_axis_targets`, which holds the one
+    // rule for the wrist axes (so the time estimate and the module agree).
+    let mut kinds = Vec::with_capacity(plan.moves() + 1);
     if let Some(first) = plan.legs.first() {
-        targets.push(Target {
-            kind: TargetKind::CellPoint {
-                name: input.names[first.from].clone(),
-            },
-            axes_deg: six(first.waypoints[0], input.wrists_deg[first.from]),
+        kinds.push(TargetKind::CellPoint {
+            name: input.names[first.from].clone(),
         });
     }
     for (leg_index, leg) in plan.legs.iter().enumerate() {
         let n = leg.waypoints.len();
-        for (k, w) in leg.waypoints.iter().enumerate().skip(1) {
-            let target = if k == n - 1 {
-                Target {
-                    kind: TargetKind::CellPoint {
-                        name: input.names[leg.to].clone(),
-                    },
-                    axes_deg: six(*w, input.wrists_deg[leg.to]),
+        for k in 1..n {
+            kinds.push(if k == n - 1 {
+                TargetKind::CellPoint {
+                    name: input.names[leg.to].clone(),
                 }
             } else {
-                Target {
-                    kind: TargetKind::Via {
-                        leg: leg_index,
-                        index: k,
-                    },
-                    axes_deg: six(*w, input.wrists_deg[leg.from]),
+                TargetKind::Via {
+                    leg: leg_index,
+                    index: k,
                 }
-            };
-            targets.push(target);
+            });
         }
     }
+    let targets = kinds
+        .into_iter()
+        .zip(six_axis_targets(plan, input.wrists_deg))
+        .map(|(kind, axes_deg)| Target { kind, axes_deg })
+        .collect();
     Program {
         module: input.module.to_string(),
         header: Header {
