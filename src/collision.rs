@@ -59,6 +59,14 @@
 //!
 //! Frames: the robot base frame sits in the cell frame at [`Placement`] (translation, then yaw
 //! about z); obstacles are axis-aligned boxes of the cell frame. Units: mm and degrees.
+//!
+//! # What the robot stands on
+//!
+//! The base cylinder (link 1) starts at the mounting plane, so a floor or pedestal under the
+//! robot would touch it in every pose. Boxes that lie wholly at or below the base's mounting
+//! plane (their top `z <= base z`) are therefore not checked against the cylinders of link 1:
+//! the robot stands on them. Links 2 and 3 are checked against every box, floors included, and
+//! link 1 against every box that reaches above the mounting plane (a wall beside the base).
 
 use crate::geometry::{
     cylinder_clear_of_aabb, distance_capsule_aabb, distance_cylinder_aabb, distance_point_aabb,
@@ -66,6 +74,10 @@ use crate::geometry::{
 };
 use crate::robot::{RangeViolation, Robot};
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
+
+/// A box whose top is within this of the base's mounting plane (or below it) counts as what the
+/// robot stands on, mm.
+pub const STANDS_ON_TOL_MM: f64 = 1e-6;
 
 /// Bisection of a move stops (and rejects it) when the largest displacement of a link over the
 /// interval, `M_L h`, falls below this, mm.
@@ -156,6 +168,9 @@ struct CylData {
     sweep_radius_mm: f64,
     /// Range of `p . u` over the cylinder's points (link frame), mm.
     axial_mm: [f64; 2],
+    /// Per obstacle: not checked against this cylinder (link 1 and a box the robot stands on,
+    /// module doc).
+    exempt: Vec<bool>,
 }
 
 /// The robot in its cell, ready for node and move checks.
@@ -233,12 +248,17 @@ impl CollisionModel {
                     [par, perp, u.cross(&perp)]
                 };
                 let (sa, sb) = (u.dot(&c.a.coords), u.dot(&c.b.coords));
+                let exempt = obstacles
+                    .iter()
+                    .map(|o| j == 0 && o.aabb.max.z <= placement.base_mm[2] + STANDS_ON_TOL_MM)
+                    .collect();
                 CylData {
                     joint: j,
                     reach_mm,
                     split: [split_of(c.a.coords), split_of(c.b.coords)],
                     sweep_radius_mm: far,
                     axial_mm: [sa.min(sb) - r, sa.max(sb) + r],
+                    exempt,
                 }
             })
             .collect();
@@ -290,9 +310,9 @@ impl CollisionModel {
         let poses = self.cell_link_poses(axes);
         (0..self.cyl.len()).all(|i| {
             let c = self.cylinder_in(i, &poses);
-            self.obstacles
-                .iter()
-                .all(|o| link_clear_of_box(&c, &o.aabb, self.clearance_mm))
+            self.obstacles.iter().enumerate().all(|(k, o)| {
+                self.cyl[i].exempt[k] || link_clear_of_box(&c, &o.aabb, self.clearance_mm)
+            })
         })
     }
 
@@ -307,7 +327,7 @@ impl CollisionModel {
         for i in 0..self.cyl.len() {
             let c = self.cylinder_in(i, &poses);
             for (k, o) in self.obstacles.iter().enumerate() {
-                if !link_clear_of_box(&c, &o.aabb, self.clearance_mm) {
+                if !self.cyl[i].exempt[k] && !link_clear_of_box(&c, &o.aabb, self.clearance_mm) {
                     let d = distance_cylinder_aabb(&c, &o.aabb);
                     if worst.is_none_or(|(_, _, w)| d < w) {
                         worst = Some((i, k, d));
@@ -325,8 +345,10 @@ impl CollisionModel {
         let mut best = f64::INFINITY;
         for i in 0..self.cyl.len() {
             let c = self.cylinder_in(i, &poses);
-            for o in &self.obstacles {
-                best = best.min(distance_cylinder_aabb(&c, &o.aabb));
+            for (k, o) in self.obstacles.iter().enumerate() {
+                if !self.cyl[i].exempt[k] {
+                    best = best.min(distance_cylinder_aabb(&c, &o.aabb));
+                }
             }
         }
         best
@@ -365,7 +387,8 @@ impl CollisionModel {
             if !self
                 .obstacles
                 .iter()
-                .all(|o| link_clear_of_box(&cyl, &o.aabb, c))
+                .enumerate()
+                .all(|(k, o)| self.cyl[i].exempt[k] || link_clear_of_box(&cyl, &o.aabb, c))
             {
                 free.fill(false);
                 return;
@@ -451,7 +474,7 @@ impl CollisionModel {
         for (i, &m) in speeds.iter().enumerate() {
             let d0 = self.pair_distances(i, from);
             let d1 = self.pair_distances(i, to);
-            for k in 0..self.obstacles.len() {
+            for k in (0..self.obstacles.len()).filter(|&k| !self.cyl[i].exempt[k]) {
                 if let PairVerdict::Fails { .. } =
                     self.certify_pair(i, k, from, to, m, d0[k], d1[k], false)
                 {
@@ -480,7 +503,7 @@ impl CollisionModel {
             .fold(f64::INFINITY, |m, &d| m.min(d));
         let mut result = f64::INFINITY;
         for (i, &m) in speeds.iter().enumerate() {
-            for k in 0..self.obstacles.len() {
+            for k in (0..self.obstacles.len()).filter(|&k| !self.cyl[i].exempt[k]) {
                 let (d0, d1) = (ends[i].0[k], ends[i].1[k]);
                 let mut evals = 0usize;
                 let mut stack = vec![(0.0f64, 1.0f64, d0, d1)];
@@ -524,7 +547,7 @@ impl CollisionModel {
         for (i, &m) in speeds.iter().enumerate() {
             let d0 = self.pair_distances(i, from);
             let d1 = self.pair_distances(i, to);
-            for k in 0..self.obstacles.len() {
+            for k in (0..self.obstacles.len()).filter(|&k| !self.cyl[i].exempt[k]) {
                 if let PairVerdict::Fails { t, d } =
                     self.certify_pair(i, k, from, to, m, d0[k], d1[k], true)
                 {
@@ -573,17 +596,28 @@ impl CollisionModel {
             .collect()
     }
 
-    /// Distances from cylinder `i` to every box at `axes`.
+    /// Distances from cylinder `i` to every box at `axes` (`f64::INFINITY` for an exempt pair;
+    /// callers skip those pairs, the slack of `lowered` is not meant for infinities).
     fn pair_distances(&self, i: usize, axes: &[f64; 3]) -> Vec<f64> {
         let c = self.cylinder_in(i, &self.cell_link_poses(axes));
         self.obstacles
             .iter()
-            .map(|o| distance_cylinder_aabb(&c, &o.aabb))
+            .zip(&self.cyl[i].exempt)
+            .map(|(o, &exempt)| {
+                if exempt {
+                    f64::INFINITY
+                } else {
+                    distance_cylinder_aabb(&c, &o.aabb)
+                }
+            })
             .collect()
     }
 
     /// Distance from cylinder `i` to box `k` at parameter `t` of the move.
     fn pair_distance_at(&self, i: usize, k: usize, from: &[f64; 3], to: &[f64; 3], t: f64) -> f64 {
+        if self.cyl[i].exempt[k] {
+            return f64::INFINITY;
+        }
         let axes = lerp(from, to, t);
         let c = self.cylinder_in(i, &self.cell_link_poses(&axes));
         distance_cylinder_aabb(&c, &self.obstacles[k].aabb)
@@ -1274,5 +1308,44 @@ mod tests {
         model.inspect_column(171.0, 0.0, &[0.0, 10.0, 20.0], &mut col);
         assert_eq!(col, [false; 3]);
         model.inspect_column(0.0, 0.0, &[], &mut []);
+    }
+
+    #[test]
+    fn the_robot_stands_on_a_floor_but_the_arm_may_not_touch_it() {
+        let robot = Robot::irb1400();
+        let on_floor = Placement {
+            base_mm: [0.0, 0.0, 0.0],
+            yaw_deg: 0.0,
+        };
+        let floor = bx("floor", [-3000.0, -3000.0, -50.0], [3000.0, 3000.0, 0.0]);
+        let m = CollisionModel::new(&robot, on_floor, vec![floor], 10.0);
+        // The base cylinder rests on the floor: not a contact.
+        assert!(m.is_free(&[0.0, 0.0, 0.0]));
+        assert!(m.move_is_safe(&[-90.0, 0.0, 0.0], &[90.0, 0.0, 0.0]));
+        // Nearest to the floor: the upper arm's bottom cap, at axis 2's height of 475 mm.
+        let d = m.min_clearance_along(&[-90.0, 0.0, 0.0], &[90.0, 0.0, 0.0], 0.1);
+        assert!((474.8..=475.0).contains(&d), "{d}");
+        // The forearm reaching down to the floor is a contact (wrist centre at z = 44 mm).
+        match m.why_blocked(&[0.0, 70.0, 70.0]) {
+            Some(Blocked::Contact { link, obstacle, .. }) => {
+                assert_eq!((link.as_str(), obstacle.as_str()), ("link_3", "floor"))
+            }
+            other => panic!("expected a contact, got {other:?}"),
+        }
+        // A box reaching 1 mm above the mounting plane is no floor: the base touches it.
+        let mat = bx("mat", [-3000.0, -3000.0, -50.0], [3000.0, 3000.0, 1.0]);
+        let m = CollisionModel::new(&robot, on_floor, vec![mat], 10.0);
+        assert!(
+            matches!(m.why_blocked(&[0.0, 0.0, 0.0]), Some(Blocked::Contact { ref link, .. }) if link == "link_1")
+        );
+        // On a 400 mm pedestal the pedestal is what it stands on; the floor below still counts
+        // for the arm.
+        let raised = Placement {
+            base_mm: [0.0, 0.0, 400.0],
+            yaw_deg: 0.0,
+        };
+        let pedestal = bx("pedestal", [-400.0, -400.0, 0.0], [400.0, 400.0, 400.0]);
+        let m = CollisionModel::new(&robot, raised, vec![pedestal], 10.0);
+        assert!(m.is_free(&[0.0, 0.0, 0.0]));
     }
 }

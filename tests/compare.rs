@@ -97,10 +97,11 @@ fn compare_is_deterministic_except_the_planning_time() {
         stdout(&o)
             .lines()
             .map(|l| match l.split_whitespace().next() {
-                Some("neighboring" | "depth-first" | "extensile") => l
-                    .rsplit_once(' ')
-                    .map(|(h, _)| h.to_string())
-                    .unwrap_or_default(),
+                // Fields but the last: the planning time's width varies with its value.
+                Some("neighboring" | "depth-first" | "extensile") => {
+                    let fields: Vec<&str> = l.split_whitespace().collect();
+                    fields[..fields.len() - 1].join(" ")
+                }
                 _ => l.to_string(),
             })
             .collect()

@@ -67,13 +67,16 @@ fn parse_module(text: &str) -> Module {
     m
 }
 
-/// Smallest distance from the arm's link cylinders to the boxes at one configuration.
+/// Smallest distance from the arm's link cylinders to the boxes at one configuration. The
+/// stated model rule (README, `collision` module doc): link 1's cylinder is not checked against
+/// a box whose top is at or below the base's mounting plane (the floor the robot stands on).
 fn min_distance(
     robot: &Robot,
     cell_from_robot: &Isometry3<f64>,
     boxes: &[(Cuboid, Pose)],
     axes: [f64; 3],
 ) -> f64 {
+    let base_z = cell_from_robot.translation.vector.z;
     let poses = robot.arm_link_poses(&axes);
     let mut best = f64::INFINITY;
     for c in &robot.cylinders {
@@ -93,6 +96,10 @@ fn min_distance(
         );
         let cyl = Cylinder::new(len / 2.0, c.radius_mm);
         for (cub, bp) in boxes {
+            let top = bp.translation.z + cub.half_extents.z;
+            if c.joint_index == 0 && top <= base_z + 1e-6 {
+                continue;
+            }
             let d = parry3d::query::distance(&pose, &cyl, bp, cub)
                 .expect("convex shapes")
                 .distance;
