@@ -289,8 +289,8 @@ mod tests {
     fn fig6_neighboring_saw_tooth_and_extensile_straightens_it() {
         // A band of free nodes along axis 2 = axis 1 / 2 (|2 n2 - n1| <= 1), from (0, 0) to
         // (10, 5). On the 26-neighbour wave node (x, y) carries x + 1. Back from (10, 5) the
-        // neighbouring search takes the first offset in lexicographic order among the smaller
-        // numbers: (-1, -1) to (9, 4), then only (-1, 0) to (8, 4), then (-1, -1) to (7, 3), ...
+        // neighbouring search takes, among the smaller numbers in the band, the node nearest the
+        // start: (9, 4) (97 against 106 for (9, 5)), then only (8, 4), then (7, 3), ...
         // a diagonal step and an axis step in turn: ten steps, no two in the same direction, so
         // ten moves even after the collinear merge (the saw-tooth of Fig. 6).
         let g = Grid::over([[0.0, 10.0], [0.0, 5.0], [0.0, 0.0]], 1.0);

@@ -5,8 +5,9 @@
 //! node leads nowhere, back up and take the next candidate (section 4.1). They differ in which
 //! neighbours they look at and in what order:
 //!
-//! * [`neighboring`] (4.1): the 26 neighbours, smallest number first, ties in a fixed
-//!   lexicographic order. It follows the grid squares and so produces the saw-tooth of Fig. 6.
+//! * [`neighboring`] (4.1): the 26 neighbours, smallest number first, ties to the neighbour
+//!   nearest the start node. Along obstacles it follows the grid squares and so produces the
+//!   saw-tooth of Fig. 6.
 //! * [`depth_first`] (4.2): the 6 axis neighbours whose number is exactly one less, in a fixed
 //!   order, depth first. It walks axis steps, so it runs on a wave numbered over the 6 axis
 //!   neighbours (on a 26-neighbour wave a chain of axis steps, each one number lower, exists only

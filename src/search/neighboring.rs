@@ -1,6 +1,15 @@
 //! Neighboring search (paper section 4.1): from the end node, step to the neighbour (26 in 3D)
-//! with the smallest number; ties go to the first in the fixed lexicographic order of offsets
-//! (d1, d2, d3) in {-1, 0, 1}^3. When a chosen node leads nowhere, back up and take the next.
+//! with the smallest number. When a chosen node leads nowhere, back up and take the next.
+//!
+//! The tie-break (the paper gives none; on a 26-neighbour wave every candidate carries n-1):
+//! among the smallest numbers, the neighbour nearest the start node (squared grid distance),
+//! then the fixed lexicographic order of offsets (d1, d2, d3) in {-1, 0, 1}^3. Heading for the
+//! target is what one does when the numbers do not decide, and unlike an order of offsets it
+//! treats the axes and their directions alike (a mirrored cell gets the mirrored path). In open
+//! space it gives a diagonal run and then a straight one; where the wave front bends around an
+//! obstacle the nearest neighbour flips from step to step, and the path follows the grid
+//! squares along the obstacle's edge: the saw-tooth of the paper's Fig. 6, with many short
+//! moves, which the extensile method's shortening straightens.
 
 use super::{descend, Accept, GridPath};
 use crate::cspace::{CSpace, Node};
@@ -8,10 +17,16 @@ use crate::wave::{self, offsets, Connectivity, Wave};
 
 fn candidates(w: &Wave, n: Node, _prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     let mut c: Vec<[i32; 3]> = offsets(Connectivity::TwentySix).to_vec();
-    // Stable sort: smallest number first, the fixed order among equals. Unnumbered last.
-    c.sort_by_key(|o| match w.label(super::add(n, *o)) {
-        0 => u32::MAX,
-        l => l,
+    // Stable sort: smallest number first; among equals the node nearest the start node
+    // (squared grid distance), then the fixed order. Unnumbered last.
+    c.sort_by_key(|o| {
+        let m = super::add(n, *o);
+        let label = match w.label(m) {
+            0 => u32::MAX,
+            l => l,
+        };
+        let d2: i64 = (0..3).map(|k| i64::from(m[k] - w.start[k]).pow(2)).sum();
+        (label, d2)
     });
     c
 }
@@ -28,15 +43,51 @@ mod tests {
     use crate::search::testing::{assert_path, grid};
 
     #[test]
-    fn finds_a_shortest_path_and_prefers_the_first_offset_in_order() {
+    fn finds_a_shortest_path_heading_for_the_start() {
         let cs = grid(6, 6, 1, |_| true);
         let p = search(&cs, [0, 0, 0], [5, 2, 0], &mut |_, _| true).expect("path");
         assert_path(&p, [0, 0, 0], [5, 2, 0]);
         assert_eq!(p.len(), 6, "5 steps");
-        // Back from (5,2): the first offset in order numbered 5 is (-1,-1,0) -> (4,1), then
-        // (-1,-1,0) -> (3,0), then only (-1,0,0) keeps the numbers falling.
+        // Back from (5,2) the nodes numbered 5 are (4,1), (4,2), (4,3): (4,1) is nearest the
+        // start (17 against 20 and 25); then (3,0) (9 against 10, 13); then along axis 1.
         assert_eq!(p[4], [4, 1, 0]);
         assert_eq!(p[3], [3, 0, 0]);
+    }
+
+    #[test]
+    fn zig_zags_along_a_wall_the_saw_tooth_of_fig_6() {
+        // A wall across axis 1 at x = 4 with a gap at y >= 6; start (0, 0), end (8, 0). Back
+        // from the end the path climbs to the gap and comes down again; on the way the nearest
+        // neighbour to the start alternates, so it holds no direction for long.
+        let cs = grid(9, 9, 1, |n| n[0] != 4 || n[1] >= 6);
+        let p = search(&cs, [0, 0, 0], [8, 0, 0], &mut |_, _| true).expect("path");
+        assert_path(&p, [0, 0, 0], [8, 0, 0]);
+        assert!(p.iter().all(|n| n[0] != 4 || n[1] >= 6));
+        let turns = p
+            .windows(3)
+            .filter(|w| (0..3).any(|k| w[1][k] - w[0][k] != w[2][k] - w[1][k]))
+            .count();
+        let ext = crate::search::extensile::one_way(&cs, [0, 0, 0], [8, 0, 0], &mut |_, _| true)
+            .expect("path");
+        let ext_turns = ext
+            .windows(3)
+            .filter(|w| (0..3).any(|k| w[1][k] - w[0][k] != w[2][k] - w[1][k]))
+            .count();
+        assert!(
+            turns > ext_turns,
+            "neighboring {turns} turns {p:?}, extensile walk {ext_turns} {ext:?}"
+        );
+    }
+
+    #[test]
+    fn mirrored_cells_get_mirrored_paths() {
+        // An obstacle off-centre: the path for the mirrored grid is the mirror image.
+        let cs = grid(9, 9, 1, |n| !(n[0] == 4 && (2..=7).contains(&n[1])));
+        let mirrored = grid(9, 9, 1, |n| !(n[0] == 4 && (1..=6).contains(&n[1])));
+        let p = search(&cs, [0, 4, 0], [8, 4, 0], &mut |_, _| true).expect("path");
+        let q = search(&mirrored, [0, 4, 0], [8, 4, 0], &mut |_, _| true).expect("path");
+        let flipped: Vec<_> = q.iter().map(|n| [n[0], 8 - n[1], n[2]]).collect();
+        assert_eq!(p, flipped);
     }
 
     #[test]
