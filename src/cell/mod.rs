@@ -522,6 +522,24 @@ fn validate(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
         )?,
     };
 
+    // The module's own names: a point named like one of them would clash in the RAPID text.
+    let taken = [
+        (module.as_str(), "the module"),
+        ("main", "the module's PROC main"),
+        (motion.speed.as_str(), "motion.speed"),
+        (motion.zone.as_str(), "motion.zone"),
+        (motion.tool.as_str(), "motion.tool"),
+    ];
+    for p in &points {
+        if let Some((_, what)) = taken.iter().find(|(n, _)| n.eq_ignore_ascii_case(&p.name)) {
+            return Err(invalid_help(
+                p.loc,
+                format!("point name '{}' is already the name of {what}", p.name),
+                "RAPID names are case-insensitive and share one name space in a module; rename the point",
+            ));
+        }
+    }
+
     Ok(Cell {
         path: path.to_path_buf(),
         module,
