@@ -4,10 +4,12 @@
 //! The grid of axes 1..3 (paper section 3) is drawn in its three axis-pair projections, side by
 //! side: axis 1 - axis 2, axis 1 - axis 3, axis 2 - axis 3. A node of a projection stands for the
 //! whole column of grid nodes along the projected-out axis, and is **shaded by the fraction of
-//! that column that is blocked**: white when every node is free, light to mid grey as more are
-//! blocked (ten steps), dark grey when all are blocked (the only shade that means "no way
-//! through at this pair of values"). A column that is partly blocked can still be passed at
-//! other values of the third axis, which is why the paths may cross grey areas.
+//! that column's in-range nodes that are blocked** by an obstacle: white when every node is
+//! free, light to mid grey as more are blocked (ten steps), dark grey when all are blocked (the
+//! only shade that means "no way through at this pair of values"); pale blue when no node of the
+//! column is within the axis ranges (the coupled axis-3 range cuts off corners of the grid). A
+//! column that is partly blocked can still be passed at other values of the third axis, which
+//! is why the paths may cross grey areas.
 //!
 //! Each route is drawn as its straight moves (the waypoints after shortening and merging, i.e.
 //! what the module drives) in the method's colour, with a legend; the cell points are black
@@ -43,13 +45,21 @@ const LEVELS: usize = 10;
 const PANEL_W: u32 = 560;
 const PANEL_H: u32 = 520;
 
-/// For the projection onto axes (`u`, `v`): the shade level of each (u, v) column, 0 = all free,
-/// 1..=LEVELS partly blocked, LEVELS + 1 = all blocked. Indexed `[iu * dims[v] + iv]`.
-fn levels(counts: &[u32], depth: u32) -> Vec<u8> {
-    counts
+/// Level of a column with no node in range.
+const OUT_OF_RANGE: u8 = (LEVELS + 2) as u8;
+
+/// For the projection onto axes (`u`, `v`): the shade level of each (u, v) column from its
+/// count of blocked in-range nodes and of in-range nodes: 0 = all free, 1..=LEVELS partly
+/// blocked, LEVELS + 1 = all blocked, [`OUT_OF_RANGE`] = no node in range. Indexed
+/// `[iu * dims[v] + iv]`.
+fn levels(blocked: &[u32], in_range: &[u32]) -> Vec<u8> {
+    blocked
         .iter()
-        .map(|&c| {
-            if c == 0 {
+        .zip(in_range)
+        .map(|(&c, &depth)| {
+            if depth == 0 {
+                OUT_OF_RANGE
+            } else if c == 0 {
                 0
             } else if c >= depth {
                 (LEVELS + 1) as u8
@@ -61,7 +71,9 @@ fn levels(counts: &[u32], depth: u32) -> Vec<u8> {
 }
 
 fn shade(level: u8) -> RGBColor {
-    if level as usize > LEVELS {
+    if level == OUT_OF_RANGE {
+        RGBColor(222, 232, 245)
+    } else if level as usize > LEVELS {
         RGBColor(80, 80, 80)
     } else {
         let g = 235 - (level as u32 * 110 / LEVELS as u32) as u8;
@@ -70,8 +82,10 @@ fn shade(level: u8) -> RGBColor {
 }
 
 /// Draws the grid's blocked nodes, the cell points and each route; `title` heads the picture.
+/// `in_range` tells a node out of the axis ranges (drawn apart) from one blocked by an obstacle.
 pub fn render_svg(
     cs: &CSpace,
+    in_range: &dyn Fn(&[f64; 3]) -> bool,
     points: &[Waypoint],
     routes: &[&Plan],
     title: &str,
@@ -83,22 +97,35 @@ pub fn render_svg(
     let d = grid.dims;
     // Blocked counts of the three projections: (0,1) over axis 3, (0,2) over axis 2, (1,2) over
     // axis 1.
-    let mut c01 = vec![0u32; d[0] * d[1]];
-    let mut c02 = vec![0u32; d[0] * d[2]];
-    let mut c12 = vec![0u32; d[1] * d[2]];
+    // Per projection: blocked in-range nodes, and in-range nodes, of each column.
+    let mut c01 = vec![[0u32; 2]; d[0] * d[1]];
+    let mut c02 = vec![[0u32; 2]; d[0] * d[2]];
+    let mut c12 = vec![[0u32; 2]; d[1] * d[2]];
     for i in 0..grid.len() {
-        if !cs.is_free_index(i) {
-            let n = grid.node(i);
-            let (a, b, c) = (n[0] as usize, n[1] as usize, n[2] as usize);
-            c01[a * d[1] + b] += 1;
-            c02[a * d[2] + c] += 1;
-            c12[b * d[2] + c] += 1;
+        let n = grid.node(i);
+        if !in_range(&grid.axes_deg(n)) {
+            continue;
+        }
+        let blocked = u32::from(!cs.is_free_index(i));
+        let (a, b, c) = (n[0] as usize, n[1] as usize, n[2] as usize);
+        for cell in [
+            &mut c01[a * d[1] + b],
+            &mut c02[a * d[2] + c],
+            &mut c12[b * d[2] + c],
+        ] {
+            cell[0] += blocked;
+            cell[1] += 1;
         }
     }
+    let split = |c: &[[u32; 2]]| {
+        let blocked: Vec<u32> = c.iter().map(|x| x[0]).collect();
+        let in_range: Vec<u32> = c.iter().map(|x| x[1]).collect();
+        levels(&blocked, &in_range)
+    };
     let projections = [
-        ((0usize, 1usize), levels(&c01, d[2] as u32)),
-        ((0, 2), levels(&c02, d[1] as u32)),
-        ((1, 2), levels(&c12, d[0] as u32)),
+        ((0usize, 1usize), split(&c01)),
+        ((0, 2), split(&c02)),
+        ((1, 2), split(&c12)),
     ];
 
     let err = |e: &dyn std::fmt::Display| PictureError::Draw(e.to_string());
@@ -112,7 +139,7 @@ pub fn render_svg(
             .map_err(|e| err(&e))?;
         let (body, foot) = root.split_vertically(PANEL_H);
         foot.draw(&Text::new(
-            "grey: share of the grid nodes along the third axis that are blocked (darker = more); dark: all blocked",
+            "grey: share of the in-range grid nodes along the third axis blocked by an obstacle (darker = more); dark: all blocked; pale blue: out of range",
             (20, 10),
             ("sans-serif", 14).into_font().color(&BLACK),
         ))
@@ -220,7 +247,9 @@ mod tests {
     #[test]
     fn shades_by_the_blocked_fraction() {
         // Depth 4: 0 blocked -> 0, 1 -> 1 + 10/4 = 3, 3 -> 1 + 30/4 = 8, 4 -> all (11).
-        assert_eq!(levels(&[0, 1, 3, 4], 4), vec![0, 3, 8, 11]);
+        assert_eq!(levels(&[0, 1, 3, 4], &[4; 4]), vec![0, 3, 8, 11]);
+        // Depth 0: no node in range; depth 2 with 1 blocked: 1 + 10/2 = 6.
+        assert_eq!(levels(&[0, 1], &[0, 2]), vec![OUT_OF_RANGE, 6]);
         assert!(shade(1).0 > shade(10).0 && shade(10).0 > shade(11).0);
     }
 
@@ -254,7 +283,7 @@ mod tests {
                 ],
             }],
         };
-        let svg = render_svg(&cs, &points, &[&plan], "test").expect("svg");
+        let svg = render_svg(&cs, &|_| true, &points, &[&plan], "test").expect("svg");
         assert!(svg.starts_with("<svg"));
         assert!(svg.contains("P1\n</text>") && svg.contains("P2\n</text>"));
         assert!(svg.contains("extensile (3 moves)"));
@@ -265,7 +294,7 @@ mod tests {
         // Same input, same bytes.
         assert_eq!(
             svg,
-            render_svg(&cs, &points, &[&plan], "test").expect("svg")
+            render_svg(&cs, &|_| true, &points, &[&plan], "test").expect("svg")
         );
     }
 }

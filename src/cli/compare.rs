@@ -147,7 +147,8 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
                 grid_deg
             );
             let routes: Vec<&Plan> = plans.iter().collect();
-            let text = picture::render_svg(&cs, &prep.points, &routes, &title)
+            let in_range = |a: &[f64; 3]| prep.robot.check_range3(a).is_ok();
+            let text = picture::render_svg(&cs, &in_range, &prep.points, &routes, &title)
                 .map_err(|e| loaded.fail(e.into()))?;
             Some((path, text))
         }

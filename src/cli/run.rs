@@ -38,7 +38,8 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
                 method,
                 grid_deg
             );
-            let text = picture::render_svg(&cs, &prep.points, &[&outcome.plan], &title)
+            let in_range = |a: &[f64; 3]| prep.robot.check_range3(a).is_ok();
+            let text = picture::render_svg(&cs, &in_range, &prep.points, &[&outcome.plan], &title)
                 .map_err(|e| loaded.fail(e.into()))?;
             Some((path, text))
         }
