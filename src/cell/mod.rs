@@ -241,6 +241,15 @@ fn syntax_message(e: &serde_saphyr::Error) -> String {
             msg = &msg[i + 2..];
         }
     }
+    // ... and a trailing " at line N, column M".
+    if let Some(i) = msg.rfind(" at line ") {
+        if msg[i + 9..]
+            .chars()
+            .all(|c| c.is_ascii_digit() || c == ',' || c == ' ' || c.is_ascii_lowercase())
+        {
+            msg = &msg[..i];
+        }
+    }
     msg.to_string()
 }
 

@@ -58,9 +58,10 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
         None => String::new(),
     };
     Ok(format!(
-        "gen-rapid: {}: {} moves{time}, {}, {} on a {} deg grid, {:.2} s",
+        "gen-rapid: {}: {} move{}{time}, {}, {} on a {} deg grid, {:.2} s",
         opts.cell.display(),
         outcome.plan.moves(),
+        if outcome.plan.moves() == 1 { "" } else { "s" },
         clearance,
         method,
         grid_deg,
