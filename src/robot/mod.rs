@@ -429,6 +429,25 @@ mod tests {
     }
 
     #[test]
+    fn a_robot_without_collision_cylinders_is_refused() {
+        let text = include_str!("../../robots/irb1400.urdf");
+        let bare: String = text
+            .lines()
+            .filter(|l| {
+                !l.contains("collision")
+                    && !l.contains("<origin xyz=\"0 0 0.325\"")
+                    && !l.contains("<geometry><cylinder")
+            })
+            .collect::<Vec<_>>()
+            .join("\n");
+        let err = urdf::robot_from_urdf(Path::new("x.urdf"), &bare, None).unwrap_err();
+        assert!(
+            err.to_string().contains("no <collision> cylinders"),
+            "{err}"
+        );
+    }
+
+    #[test]
     fn non_cylinder_collision_on_the_arm_is_refused() {
         let text = include_str!("../../robots/irb1400.urdf").replace(
             r#"<cylinder radius="0.15" length="0.6"/>"#,

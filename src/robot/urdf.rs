@@ -153,6 +153,12 @@ pub fn robot_from_urdf(
         }
     }
 
+    if cylinders.is_empty() {
+        return Err(model_err(
+            "links 1..3 carry no <collision> cylinders: gen-rapid could not check any move (the paper's model lumps the arm into its first three links, each a cylinder)".into(),
+        ));
+    }
+
     let controller = match controller_file {
         Some((cpath, ctext)) => {
             let mut c = controller::parse(ctext).map_err(|message| RobotError::Controller {
