@@ -14,13 +14,24 @@ Examples:
   gen-rapid cells/trunk.yaml > trunk.mod          plan the trunk cell, module on stdout
   gen-rapid cells/trunk.yaml -o trunk.mod         the same, written atomically to a file
   gen-rapid cells/trunk.yaml --planner depth-first --grid 2
-  gen-rapid locate cells/trunk-auto.yaml --svg r.svg   where the base may stand (region R)
   gen-rapid cells/trunk.yaml --svg trunk.svg      also draw the route over the C-space
-  gen-rapid compare cells/trunk.yaml --svg all.svg   the three methods side by side
+  gen-rapid compare cells/trunk.yaml --svg all.svg      the three methods side by side
+  gen-rapid locate cells/trunk-auto.yaml --svg r.svg    where the base may stand (region R)
 
-The cell file (YAML, mm and degrees) names the robot's URDF, its base, the box obstacles and
-the points to visit; see README.md for the format. The module goes to stdout (or -o FILE);
-one summary line goes to stderr. On error nothing is written to stdout and no FILE is made.
+A minimal cell (mm and degrees; joint values are the controller's, as in a jointtarget):
+  module: Demo
+  robot: { urdf: ../robots/irb1400.urdf, base: [0, 0, 0] }   # path relative to this file
+  obstacles:
+    - { name: table, box: { min: [600, -300, 0], max: [1000, 300, 400] } }
+  points:
+    - { name: P1, joints: [-30, 0, 0] }
+    - { name: P2, joints: [30, 0, 0] }
+Optional: robot.yaw, robot.wrist, points as xyz (wrist centre), base: auto, planner.method
+(extensile), planner.grid (1 deg), planner.clearance (10 mm), motion.speed/zone/tool
+(v300, fine, tool0). README.md describes every key.
+
+The module goes to stdout (or -o FILE); one summary line goes to stderr. On error nothing is
+written to stdout and no FILE is made.
 
 Exit status: 0 success, 1 invalid cell or robot files, 2 bad command line, 3 planning failed
 (point unreachable or in collision, no path), 4 the module could not be written.";

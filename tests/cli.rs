@@ -28,6 +28,27 @@ fn help_teaches_the_format_examples_and_exit_statuses() {
 }
 
 #[test]
+fn the_minimal_cell_in_help_plans_as_printed() {
+    let h = stdout(&gen_rapid(&["--help"]));
+    let cell: String = h
+        .lines()
+        .skip_while(|l| !l.starts_with("A minimal cell"))
+        .skip(1)
+        .take_while(|l| l.starts_with("  "))
+        .map(|l| format!("{}\n", &l[2..]))
+        .collect();
+    assert!(cell.contains("points:"), "{h}");
+    // Written where its relative URDF path holds: a directory beside robots/.
+    let dir = common::root().join("target").join("help-cell");
+    std::fs::create_dir_all(&dir).expect("dir");
+    let path = dir.join("demo.yaml");
+    std::fs::write(&path, cell.replace("../robots/", "../../robots/")).expect("write");
+    let o = gen_rapid(&[path.to_str().expect("utf-8")]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).starts_with("MODULE Demo\n"));
+}
+
+#[test]
 fn a_run_writes_the_module_to_stdout_and_one_summary_line_to_stderr() {
     let o = gen_rapid(&["cells/conveyor.yaml"]);
     assert!(o.status.success(), "{}", stderr(&o));
