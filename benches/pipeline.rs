@@ -27,8 +27,10 @@ fn whole(c: &mut Criterion) {
             b.iter(|| {
                 let prep = pipeline::prepare(cell.clone()).expect("prepare");
                 let cs = pipeline::cspace(&prep, grid);
-                let out = pipeline::plan_and_render(&prep, &cs, cell.planner.method, |_| None)
-                    .expect("plan");
+                let out = pipeline::plan_and_render(&prep, &cs, cell.planner.method, |p| {
+                    Some(pipeline::manipulation_time_s(&prep, p))
+                })
+                .expect("plan");
                 black_box(out.text.len())
             })
         });

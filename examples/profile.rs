@@ -46,7 +46,9 @@ fn main() {
     }
     for m in gen_rapid::cell::Method::ALL {
         let t = Instant::now();
-        match pipeline::plan_and_render(&prep, &cs, m, |_| None) {
+        match pipeline::plan_and_render(&prep, &cs, m, |p| {
+            Some(pipeline::manipulation_time_s(&prep, p))
+        }) {
             Ok(o) => eprintln!(
                 "{m}: {:?}, {} moves, {:.1} deg",
                 t.elapsed(),
