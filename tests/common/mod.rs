@@ -1,6 +1,8 @@
 //! Shared by the integration tests: running the binary, blessing golden files.
 #![allow(dead_code)]
 
+pub mod dense;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
