@@ -60,6 +60,10 @@
 //! Frames: the robot base frame sits in the cell frame at [`Placement`] (translation, then yaw
 //! about z); obstacles are axis-aligned boxes of the cell frame. Units: mm and degrees.
 //!
+//! Nodes and moves: a node is free when every link keeps *more* than the clearance (a node at
+//! exactly the clearance counts as blocked, the paper's "comes within"); a move is accepted when
+//! the proven lower bound is *at least* the clearance (the guarantee the module header states).
+//!
 //! # What the robot stands on
 //!
 //! The base cylinder (link 1) starts at the mounting plane, so a floor or pedestal under the
@@ -67,6 +71,11 @@
 //! plane (their top `z <= base z`) are therefore not checked against the cylinders of link 1:
 //! the robot stands on them. Links 2 and 3 are checked against every box, floors included, and
 //! link 1 against every box that reaches above the mounting plane (a wall beside the base).
+//! The exemption holds only where it is sound: joint 1 turns about the base's vertical axis and
+//! no point of the link-1 cylinder lies below the mounting plane (else every box counts).
+//!
+//! Boxes are clipped to the robot's workspace (plus a 10 m margin) when the model is built, so
+//! that every distance is computed on cell-sized shapes ([`CLIP_MARGIN_MM`]).
 
 use crate::geometry::{
     cylinder_clear_of_aabb, distance_capsule_aabb, distance_cylinder_aabb, distance_point_aabb,
@@ -78,6 +87,10 @@ use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 /// A box whose top is within this of the base's mounting plane (or below it) counts as what the
 /// robot stands on, mm.
 pub const STANDS_ON_TOL_MM: f64 = 1e-6;
+
+/// Boxes are clipped to a cube about the base this much larger than the arm's reach plus the
+/// clearance, mm (see [`clip_to_workspace`]).
+pub const CLIP_MARGIN_MM: f64 = 10_000.0;
 
 /// Bisection of a move stops (and rejects it) when the largest displacement of a link over the
 /// interval, `M_L h`, falls below this, mm.
@@ -206,6 +219,7 @@ impl CollisionModel {
         obstacles: Vec<Obstacle>,
         clearance_mm: f64,
     ) -> CollisionModel {
+        let obstacles = clip_to_workspace(robot, &placement, obstacles, clearance_mm.max(0.0));
         let cell_from_robot = Isometry3::from_parts(
             Translation3::new(
                 placement.base_mm[0],
@@ -248,9 +262,10 @@ impl CollisionModel {
                     [par, perp, u.cross(&perp)]
                 };
                 let (sa, sb) = (u.dot(&c.a.coords), u.dot(&c.b.coords));
+                let stands = j == 0 && stands_on_its_mounting_plane(robot, c);
                 let exempt = obstacles
                     .iter()
-                    .map(|o| j == 0 && o.aabb.max.z <= placement.base_mm[2] + STANDS_ON_TOL_MM)
+                    .map(|o| stands && o.aabb.max.z <= placement.base_mm[2] + STANDS_ON_TOL_MM)
                     .collect();
                 CylData {
                     joint: j,
@@ -710,12 +725,78 @@ impl CollisionModel {
 
 /// A distance lowered by the slack that covers GJK's tolerance.
 #[inline]
+/// The boxes clipped to a cube about the base of half-size (reach + clearance +
+/// [`CLIP_MARGIN_MM`]), where the reach bounds every point of every link cylinder. Within that
+/// cube nothing changes for any pose: a box point nearest to a link within the clearance (plus
+/// the margin) lies inside it. Outside, a box (even one wholly outside, which becomes a flat box
+/// on the cube's face) stays more than the margin away. Why: exact distances come from GJK, whose
+/// rounding grows with the shapes' size (a 2 km floor overestimated a distance by 2e-5 mm, more
+/// than the proofs' slack); clipping keeps every box within cell size, and keeps every number
+/// finite.
+fn clip_to_workspace(
+    robot: &Robot,
+    placement: &Placement,
+    obstacles: Vec<Obstacle>,
+    clearance_mm: f64,
+) -> Vec<Obstacle> {
+    let reach: f64 = robot
+        .cylinders
+        .iter()
+        .map(|c| {
+            let chain: f64 = (0..=c.joint_index)
+                .map(|k| robot.joints[k].origin.translation.vector.norm())
+                .sum();
+            chain + c.a.coords.norm().max(c.b.coords.norm()) + c.radius_mm
+        })
+        .fold(0.0, f64::max);
+    let half = reach + clearance_mm + CLIP_MARGIN_MM;
+    let lo = Point::from(placement.base_mm.map(|v| v - half));
+    let hi = Point::from(placement.base_mm.map(|v| v + half));
+    obstacles
+        .into_iter()
+        .map(|o| {
+            let clamp = |p: &Point| {
+                Point::new(
+                    p.x.clamp(lo.x, hi.x),
+                    p.y.clamp(lo.y, hi.y),
+                    p.z.clamp(lo.z, hi.z),
+                )
+            };
+            Obstacle {
+                aabb: Aabb::new(clamp(&o.aabb.min), clamp(&o.aabb.max)),
+                name: o.name,
+            }
+        })
+        .collect()
+}
+
+/// Whether the exemption of boxes below the mounting plane (module doc) is sound for link-1
+/// cylinder `c`: joint 1 turns about the base's vertical axis (so the cylinder's height is the
+/// same in every pose) and no point of the cylinder lies below the mounting plane.
+fn stands_on_its_mounting_plane(robot: &Robot, c: &crate::robot::LinkCylinder) -> bool {
+    let j1 = &robot.joints[0];
+    let axis = j1.origin.rotation * j1.axis.into_inner();
+    if (axis.z.abs() - 1.0).abs() > 1e-9 {
+        return false;
+    }
+    // Lowest point of the cylinder in the base frame (joint 1 at 0; its height is the same at
+    // any angle): each end disc reaches r * sin(tilt) below its centre.
+    let (a, b) = (j1.origin * c.a, j1.origin * c.b);
+    let dir = (b - a).try_normalize(1e-12).unwrap_or_else(Vector3::z);
+    let drop = c.radius_mm * (1.0 - dir.z * dir.z).max(0.0).sqrt();
+    a.z.min(b.z) - drop >= -STANDS_ON_TOL_MM
+}
+
 fn lowered(d: f64) -> f64 {
-    d - DISTANCE_SLACK_REL * (1.0 + d.abs())
+    if d.is_finite() {
+        d - DISTANCE_SLACK_REL * (1.0 + d.abs())
+    } else {
+        d
+    }
 }
 
 /// Certified lower bound of an `M`-Lipschitz distance on an interval where the link moves at
-/// most `reach` mm, from its (slack-lowered) end values.
+/// most `reach` mm, from its raw end values (lowered by the slack here).
 #[inline]
 fn interval_bound(d0: f64, d1: f64, reach: f64) -> f64 {
     let (l0, l1) = (lowered(d0), lowered(d1));
@@ -1347,5 +1428,63 @@ mod tests {
         let pedestal = bx("pedestal", [-400.0, -400.0, 0.0], [400.0, 400.0, 400.0]);
         let m = CollisionModel::new(&robot, raised, vec![pedestal], 10.0);
         assert!(m.is_free(&[0.0, 0.0, 0.0]));
+    }
+
+    #[test]
+    fn a_huge_box_is_measured_as_exactly_as_a_cell_sized_one() {
+        // Review finding: a 2 km floor let GJK's rounding overestimate a distance beyond the
+        // proofs' slack (0.4861370 against 0.4861155 mm). Boxes are clipped to the workspace.
+        let robot = Robot::irb1400();
+        let at = Placement {
+            base_mm: [0.0, 0.0, 0.0],
+            yaw_deg: 0.0,
+        };
+        let q = [0.0, 63.0, 68.1];
+        let floor = |s: f64| bx("floor", [-s, -s, -1000.0], [s, s, 0.0]);
+        let small = CollisionModel::new(&robot, at, vec![floor(5000.0)], 0.0).clearance_at(&q);
+        let huge = CollisionModel::new(&robot, at, vec![floor(1e6)], 0.0).clearance_at(&q);
+        assert!((small - huge).abs() < 1e-9, "{small} vs {huge}");
+        let c = small + 1e-5; // just above the true distance: the pose is not free
+        let m = CollisionModel::new(&robot, at, vec![floor(1e6)], c);
+        assert!(!m.is_free(&q) && !m.move_is_safe(&q, &q));
+    }
+
+    #[test]
+    fn a_box_far_away_blocks_nothing() {
+        let robot = Robot::irb1400();
+        let at = Placement {
+            base_mm: [0.0, 0.0, 0.0],
+            yaw_deg: 0.0,
+        };
+        let m = CollisionModel::new(&robot, at, vec![bx("far", [1e160; 3], [2e160; 3])], 10.0);
+        assert!(m.is_free(&[0.0, 0.0, 0.0]));
+        assert!(m.move_is_safe(&[0.0, 0.0, 0.0], &[10.0, 0.0, 0.0]));
+        let d = m.min_clearance_along(&[0.0, 0.0, 0.0], &[10.0, 0.0, 0.0], 0.1);
+        assert!(d.is_finite() && d > CLIP_MARGIN_MM, "{d}");
+    }
+
+    #[test]
+    fn a_base_cylinder_below_its_mounting_plane_is_not_exempt() {
+        // The same robot with its base cylinder lowered 125 mm into the floor: the floor counts.
+        let text = include_str!("../robots/irb1400.urdf").replace(
+            r#"<origin xyz="0 0 0.325" rpy="0 0 0"/>"#,
+            r#"<origin xyz="0 0 0.2" rpy="0 0 0"/>"#,
+        );
+        let robot =
+            crate::robot::urdf::robot_from_urdf(std::path::Path::new("x.urdf"), &text, None)
+                .expect("loads");
+        let at = Placement {
+            base_mm: [0.0, 0.0, 0.0],
+            yaw_deg: 0.0,
+        };
+        let floor = bx("floor", [-3000.0, -3000.0, -50.0], [3000.0, 3000.0, 0.0]);
+        let m = CollisionModel::new(&robot, at, vec![floor.clone()], 10.0);
+        assert!(
+            matches!(m.why_blocked(&[0.0, 0.0, 0.0]), Some(Blocked::Contact { ref link, .. }) if link == "link_1")
+        );
+        // The bundled robot stands on the same floor.
+        assert!(
+            CollisionModel::new(&Robot::irb1400(), at, vec![floor], 10.0).is_free(&[0.0, 0.0, 0.0])
+        );
     }
 }
