@@ -35,10 +35,18 @@ pub enum Error {
     Robot { source: RobotError, loc: Loc },
     #[error("{source}")]
     Locate { source: LocateError, loc: Loc },
-    #[error("point '{point}': {source}")]
+    /// The robot's structure does not fit the closed-form inverse kinematics.
+    #[error("{source}")]
+    Arm { source: IkError, loc: Loc },
+    /// A point given as a position has no usable solution from the base it was solved from.
+    #[error("point '{point}' (robot base at [{:.1}, {:.1}, {:.1}] mm, yaw {} deg): {source}{detail}", .base_mm[0], .base_mm[1], .base_mm[2], .yaw_deg)]
     Ik {
         point: String,
+        base_mm: [f64; 3],
+        yaw_deg: f64,
         source: IkError,
+        /// What blocks the solutions (link and obstacle), when they collide.
+        detail: String,
         loc: Loc,
     },
     #[error("{source}")]
@@ -60,11 +68,7 @@ pub enum Error {
 impl Error {
     pub fn exit_code(&self) -> u8 {
         match self {
-            Error::Cell(_) | Error::Robot { .. } => exit::INPUT,
-            Error::Ik {
-                source: IkError::Structure { .. },
-                ..
-            } => exit::INPUT,
+            Error::Cell(_) | Error::Robot { .. } | Error::Arm { .. } => exit::INPUT,
             Error::Locate { .. }
             | Error::Ik { .. }
             | Error::Plan { .. }
@@ -78,6 +82,7 @@ impl Error {
         match self {
             Error::Cell(e) => e.loc(),
             Error::Robot { loc, .. }
+            | Error::Arm { loc, .. }
             | Error::Locate { loc, .. }
             | Error::Ik { loc, .. }
             | Error::Plan { loc, .. } => Some(*loc),

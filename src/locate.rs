@@ -185,6 +185,33 @@ pub struct Location {
 }
 
 impl Location {
+    /// Every inside cell centre of the raster with its exact margin, best first: the order in
+    /// which base positions are tried (largest margin, then the smallest |x| + |y|, then x,
+    /// then y: the rule that chose [`Location::base_mm`], which comes first).
+    pub fn candidates(&self) -> Vec<([f64; 2], f64)> {
+        let r = &self.region;
+        let mut out: Vec<([f64; 2], f64)> = (0..r.ny)
+            .flat_map(|j| (0..r.nx).map(move |i| (i, j)))
+            .filter(|&(i, j)| r.inside[j * r.nx + i])
+            .filter_map(|(i, j)| {
+                let c = r.cell_centre(i, j);
+                self.margin_at(c).map(|m| (c, m))
+            })
+            .collect();
+        out.sort_by(|a, b| {
+            b.1.total_cmp(&a.1)
+                .then((a.0[0].abs() + a.0[1].abs()).total_cmp(&(b.0[0].abs() + b.0[1].abs())))
+                .then(a.0[0].total_cmp(&b.0[0]))
+                .then(a.0[1].total_cmp(&b.0[1]))
+        });
+        // The chosen base first, whatever the near-ties ([`TIE_MM`]) in the sort did.
+        if let Some(k) = out.iter().position(|(c, _)| *c == self.base_mm) {
+            let chosen = out.remove(k);
+            out.insert(0, chosen);
+        }
+        out
+    }
+
     /// Exact test of a base position against the true `R` (not the raster): the distance from
     /// `xy` to the boundary of `R` when `xy` lies in it, `None` when it does not. The same
     /// margin as [`Location::margin_mm`] for the chosen base.
@@ -243,6 +270,20 @@ pub enum LocateError {
         .names.join(", ")
     )]
     TooThin { names: Vec<String>, cell_mm: f64 },
+    /// R is not empty, but from none of its positions does every point have a solution within the
+    /// axis ranges and free of collision (the reach regions ignore the axis-2 and -3 ranges).
+    #[error(
+        "robot location: R holds {candidates} base positions, but from none of them does every \
+         point have a solution in range and free of collision; from the best one, [{:.1}, {:.1}]: \
+         {first}",
+        .best_mm[0],
+        .best_mm[1]
+    )]
+    NoReachableBase {
+        candidates: usize,
+        best_mm: [f64; 2],
+        first: String,
+    },
     #[error(
         "robot location: the reach regions of all points meet ({common_area_mm2:.0} mm^2), but \
          {} (footprints grown by base radius + clearance = {grow_mm:.1} mm)",
@@ -440,7 +481,9 @@ pub fn locate(input: &LocateInput) -> Result<Location, LocateError> {
     let blocking: Vec<&(String, [f64; 3], [f64; 3])> = input
         .obstacles
         .iter()
-        .filter(|(_, lo, hi)| lo[2] < base_top && hi[2] > input.base_z_mm)
+        // Boxes the robot stands on (top at or below the mounting plane) do not block it, as in
+        // `collision`; a box above the base's top blocks only within the clearance.
+        .filter(|(_, lo, hi)| lo[2] < base_top + input.clearance_mm && hi[2] > input.base_z_mm)
         .collect();
 
     let mut region = Region {

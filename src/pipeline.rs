@@ -2,12 +2,14 @@
 //! cell -> robot -> placement (given, or chosen by `locate`) -> points (given, or solved by `ik`)
 //! -> collision model -> grid -> plan -> program -> text.
 //!
-//! Only this module and `cell`/`robot` touch files (the cell and the URDF); everything after
-//! [`prepare`] is a pure function of its inputs.
+//! Only `cell` and `robot` read files (the cell, the URDF) and only `cli` writes them; everything
+//! after [`prepare`] is a pure function of its inputs.
 //!
 //! Rules of [`prepare`]:
 //! - **Placement.** `base: [x, y, z]` is used as given. `base: auto` runs [`locate_base`] (paper
-//!   section 2) and stands the robot at the chosen position on the floor (z = 0). Either way the
+//!   section 2) and stands the robot on the floor (z = 0) at the position of R with the largest
+//!   margin from which every point has a solution in range and free of collision (R's reach
+//!   regions ignore the axis-2 and -3 ranges, so positions are tried in order of margin). Either way the
 //!   yaw is `robot.yaw` as given (default 0): the location stage chooses a position, never a
 //!   yaw. The module header records the placement used (`! base: [x, y, z] yaw: deg`); with the
 //!   default 10 mm raster the chosen base is a multiple of 5 mm, so the header's 0.1 mm is exact.
@@ -22,14 +24,14 @@
 //!   `(r + a2 + L) x 8.7e-6` mm (`r` the wrist's distance from axis 1, `L` the forearm; the
 //!   upper arm's lever is `a2` for a parallelogram robot, at most `a2 + L` for a serial one):
 //!   about 0.025 mm on the IRB 1400 (`r <= 1444`), always under 0.05 mm. A point that cannot
-//!   be solved fails with the point's name and line (Error::Ik, exit 3).
+//!   be solved fails with the point's name, line and the base used (Error::Ik, exit 3).
 
-use crate::cell::{Base, Cell, Loc, Method, Target};
+use crate::cell::{Base, Cell, Method, Target};
 use crate::collision::{CollisionModel, Obstacle, Placement};
 use crate::cspace::{CSpace, Grid};
 use crate::error::Error;
 use crate::geometry::Aabb;
-use crate::ik::{self, ArmGeometry, Branch};
+use crate::ik::{self, ArmGeometry};
 use crate::locate::{self, LocateInput, Location};
 use crate::plan::{self, Plan, Waypoint};
 use crate::program::{self, ProgramInput};
@@ -101,44 +103,29 @@ pub fn load_robot(cell: &Cell) -> Result<Robot, Error> {
 /// The closed-form arm geometry (needed by `base: auto`, `xyz` points and `locate`); a robot the
 /// closed form cannot handle is an input error pointing at `robot.urdf`.
 pub fn geometry(cell: &Cell, robot: &Robot) -> Result<ArmGeometry, Error> {
-    ArmGeometry::from_robot(robot).map_err(|source| Error::Ik {
-        point: cell
-            .points
-            .first()
-            .map(|p| p.name.clone())
-            .unwrap_or_default(),
+    ArmGeometry::from_robot(robot).map_err(|source| Error::Arm {
         source,
         loc: cell.robot.urdf_loc,
     })
 }
 
-/// Loads the robot, places it and resolves the points (module docs for the rules).
-pub fn prepare(cell: Cell) -> Result<Prepared, Error> {
-    let robot = load_robot(&cell)?;
-    // The closed-form geometry, needed only for `base: auto` and `xyz` points.
-    let geometry = || geometry(&cell, &robot);
-    let (base_mm, location) = match &cell.robot.base {
-        Base::Fixed(b) => (*b, None),
-        Base::Auto => {
-            let location = locate_base(&cell, &robot, &geometry()?)?;
-            (
-                [location.base_mm[0], location.base_mm[1], 0.0],
-                Some(location),
-            )
-        }
-    };
-    let placement = Placement {
-        base_mm,
-        yaw_deg: cell.robot.yaw_deg,
-    };
-    let model = CollisionModel::new(
-        &robot,
-        placement,
-        obstacles(&cell),
-        cell.planner.clearance_mm,
-    );
+/// The robot with its points resolved at one placement.
+struct Resolved {
+    model: CollisionModel,
+    points: Vec<Waypoint>,
+    wrists_deg: Vec<[f64; 3]>,
+}
 
-    let mut points = Vec::with_capacity(cell.points.len());
+/// Places the robot and resolves every point (module docs for the rules): joint points as given,
+/// `xyz` points by [`ik::choose`] with the collision model of this placement.
+fn resolve_points(
+    cell: &Cell,
+    robot: &Robot,
+    geom: Option<&ArmGeometry>,
+    placement: Placement,
+) -> Result<Resolved, Error> {
+    let model = CollisionModel::new(robot, placement, obstacles(cell), cell.planner.clearance_mm);
+    let mut points: Vec<Waypoint> = Vec::with_capacity(cell.points.len());
     let mut wrists_deg = Vec::with_capacity(cell.points.len());
     for p in &cell.points {
         let (axes_deg, wrist) = match &p.target {
@@ -151,28 +138,43 @@ pub fn prepare(cell: Cell) -> Result<Prepared, Error> {
                 branch,
                 branch_loc,
             } => {
-                let ik_err = |source, loc: Loc| Error::Ik {
-                    point: p.name.clone(),
-                    source,
-                    loc,
+                let geom = match geom {
+                    Some(g) => g,
+                    None => &geometry(cell, robot)?,
                 };
-                let branch = match branch {
-                    Some(b) => Some(b.parse::<Branch>().map_err(|_| {
-                        Error::Cell(crate::cell::CellError::Invalid {
-                            loc: *branch_loc,
-                            message: format!("point '{}': branch '{b}' is not one of front-elbow-up, front-elbow-down, back-elbow-up, back-elbow-down", p.name),
-                            help: None,
-                        })
-                    })?),
-                    None => None,
-                };
-                let geom = geometry()?;
-                let previous = points.last().map(|w: &Waypoint| w.axes_deg);
+                let previous = points.last().map(|w| w.axes_deg);
                 let local = to_robot_frame(*wrist_centre_mm, &placement);
-                let sol = ik::choose(&robot, &geom, local, previous, branch, |a| {
-                    model.is_free(&plan::quantize(a))
-                })
-                .map_err(|e| ik_err(e, p.loc))?;
+                let free = |a: [f64; 3]| model.is_free(&plan::quantize(a));
+                let sol =
+                    ik::choose(robot, geom, local, previous, *branch, free).map_err(|source| {
+                        // What blocks the solutions in range, by link and obstacle.
+                        let detail = match &source {
+                            ik::IkError::InCollision { .. } => {
+                                let why: Vec<String> = ik::solve(geom, local)
+                                    .into_iter()
+                                    .filter(|s| robot.check_range3(&s.axes_deg).is_ok())
+                                    .filter_map(|s| {
+                                        let a = plan::quantize(s.axes_deg);
+                                        model.why_blocked(&a).map(|b| format!("{}: {b}", s.branch))
+                                    })
+                                    .collect();
+                                format!("; {}", why.join("; "))
+                            }
+                            _ => String::new(),
+                        };
+                        let loc = match source {
+                            ik::IkError::ForcedBranch { .. } => *branch_loc,
+                            _ => p.loc,
+                        };
+                        Error::Ik {
+                            point: p.name.clone(),
+                            base_mm: placement.base_mm,
+                            yaw_deg: placement.yaw_deg,
+                            source,
+                            detail,
+                            loc,
+                        }
+                    })?;
                 (plan::quantize(sol.axes_deg), cell.robot.wrist_deg)
             }
         };
@@ -182,16 +184,96 @@ pub fn prepare(cell: Cell) -> Result<Prepared, Error> {
         });
         wrists_deg.push(wrist);
     }
+    Ok(Resolved {
+        model,
+        points,
+        wrists_deg,
+    })
+}
+
+/// Loads the robot, places it and resolves the points (module docs for the rules).
+pub fn prepare(cell: Cell) -> Result<Prepared, Error> {
+    let robot = load_robot(&cell)?;
+    let (placement, location, resolved) = match &cell.robot.base {
+        Base::Fixed(b) => {
+            let placement = Placement {
+                base_mm: *b,
+                yaw_deg: cell.robot.yaw_deg,
+            };
+            let needs_geometry = cell
+                .points
+                .iter()
+                .any(|p| matches!(p.target, Target::Xyz { .. }));
+            let geom = if needs_geometry {
+                Some(geometry(&cell, &robot)?)
+            } else {
+                None
+            };
+            let resolved = resolve_points(&cell, &robot, geom.as_ref(), placement)?;
+            (placement, None, resolved)
+        }
+        Base::Auto => {
+            let geom = geometry(&cell, &robot)?;
+            let (location, resolved) = locate_and_resolve(&cell, &robot, &geom)?;
+            let placement = resolved.model.placement();
+            (placement, Some(location), resolved)
+        }
+    };
     Ok(Prepared {
         cell,
         robot,
         placement,
         location,
-        points,
-        wrists_deg,
-        model,
+        points: resolved.points,
+        wrists_deg: resolved.wrists_deg,
+        model: resolved.model,
     })
 }
+
+/// `base: auto`: the feasible region, then its positions in order of margin until one from which
+/// every point has a solution in range and free of collision (the reach regions of section 2 do
+/// not know the axis-2 and -3 ranges, so the position with the largest margin may not do). The
+/// returned location's base is that position.
+fn locate_and_resolve(
+    cell: &Cell,
+    robot: &Robot,
+    geom: &ArmGeometry,
+) -> Result<(Location, Resolved), Error> {
+    let mut location = locate_base(cell, robot, geom)?;
+    let candidates = location.candidates();
+    let mut first_failure: Option<(Error, [f64; 2])> = None;
+    for (xy, margin) in &candidates {
+        let placement = Placement {
+            base_mm: [xy[0], xy[1], AUTO_BASE_Z_MM],
+            yaw_deg: cell.robot.yaw_deg,
+        };
+        match resolve_points(cell, robot, Some(geom), placement) {
+            Ok(resolved) => {
+                location.base_mm = *xy;
+                location.margin_mm = *margin;
+                return Ok((location, resolved));
+            }
+            Err(e @ Error::Ik { .. }) => {
+                first_failure.get_or_insert((e, *xy));
+            }
+            Err(e) => return Err(e),
+        }
+    }
+    let (first, best_mm) = first_failure
+        .map(|(e, xy)| (e.to_string(), xy))
+        .unwrap_or_default();
+    Err(Error::Locate {
+        source: locate::LocateError::NoReachableBase {
+            candidates: candidates.len(),
+            best_mm,
+            first,
+        },
+        loc: cell.robot.base_loc,
+    })
+}
+
+/// Height of the base chosen by `base: auto`: it stands on the floor, mm.
+pub const AUTO_BASE_Z_MM: f64 = 0.0;
 
 /// The feasible region of the base (paper section 2) and the chosen base, for a cell with
 /// `base: auto` (every point `xyz`; a `joints` point is refused, pointing at it). The base
@@ -210,7 +292,7 @@ pub fn locate_base(cell: &Cell, robot: &Robot, geom: &ArmGeometry) -> Result<Loc
             }
         }
     }
-    locate_points(cell, robot, geom, &pts, 0.0)
+    locate_points(cell, robot, geom, &pts, AUTO_BASE_Z_MM)
 }
 
 /// Working points by name with their wrist centres (cell frame, mm).
@@ -227,7 +309,8 @@ pub fn locate_any(
 ) -> Result<(Location, NamedPoints), Error> {
     let base = match &cell.robot.base {
         Base::Auto => {
-            let location = locate_base(cell, robot, geom)?;
+            // The base a run would use: verified by solving every point (see `prepare`).
+            let (location, _) = locate_and_resolve(cell, robot, geom)?;
             let pts = cell
                 .points
                 .iter()

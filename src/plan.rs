@@ -170,6 +170,17 @@ pub fn plan(
     let mut legs = Vec::with_capacity(points.len() - 1);
     for i in 0..points.len() - 1 {
         let (s, g) = (nodes[i], nodes[i + 1]);
+        let (p, q) = (points[i].axes_deg, points[i + 1].axes_deg);
+        if p == q {
+            // The same axes 1..3 twice (the wrist may differ): one move that stays put.
+            legs.push(Leg {
+                from: i,
+                to: i + 1,
+                grid_path: vec![s],
+                waypoints: vec![p, q],
+            });
+            continue;
+        }
         let found = match method {
             Method::Neighboring => search::neighboring::search(cs, s, g, &mut accept_nodes),
             Method::DepthFirst => search::depth_first::search(cs, s, g, &mut accept_nodes),
@@ -197,7 +208,6 @@ pub fn plan(
                 }
             });
         };
-        let (p, q) = (points[i].axes_deg, points[i + 1].axes_deg);
         let mut waypoints = vec![p];
         waypoints.extend(grid_path.iter().map(|&n| grid.axes_deg(n)));
         waypoints.push(q);

@@ -166,3 +166,42 @@ fn a_cell_written_anywhere_finds_its_urdf_and_plans_depth_first() {
     // Axis steps only: P -> (10, 0, 0) -> Q, or the other way round.
     assert!(text.contains("! moves: 2"), "{text}");
 }
+
+#[test]
+fn a_picture_that_cannot_be_written_leaves_stdout_empty() {
+    for args in [
+        vec!["cells/conveyor.yaml", "--svg", "/nonexistent/dir/x.svg"],
+        vec![
+            "compare",
+            "cells/conveyor.yaml",
+            "--grid",
+            "3",
+            "--svg",
+            "/nonexistent/dir/x.svg",
+        ],
+    ] {
+        let o = gen_rapid(&args);
+        assert_eq!(o.status.code(), Some(4), "{args:?}: {}", stderr(&o));
+        assert!(o.stdout.is_empty(), "{args:?}: stdout must stay empty");
+        assert!(stderr(&o).contains("/nonexistent/dir/x.svg"));
+    }
+}
+
+#[test]
+fn the_same_point_twice_is_one_move_that_stays_put() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let urdf = common::root().join("robots/irb1400.urdf");
+    let cell = format!(
+        "module: Dup\nrobot: {{ urdf: {}, base: [0, 0, 0] }}\nobstacles: []\npoints:\n  - {{ name: P1, joints: [10.5, 3.25, 0.125] }}\n  - {{ name: P2, joints: [10.5, 3.25, 0.125] }}\nplanner: {{ grid: 0.5, method: neighboring }}\n",
+        urdf.display()
+    );
+    let path = dir.path().join("dup.yaml");
+    std::fs::write(&path, cell).expect("write");
+    let o = gen_rapid(&[path.to_str().expect("utf-8")]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    assert!(
+        text.contains("! moves: 1\n") && !text.contains("via"),
+        "{text}"
+    );
+}

@@ -361,7 +361,10 @@ fn branch_forces_the_back_stance_and_bad_branches_point_at_their_line() {
     let o = run(&[bad.to_str().expect("utf-8")]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     let e = stderr(&o);
-    assert!(e.contains("branch 'sideways' is not one of"), "{e}");
+    assert!(
+        e.contains("unknown branch `sideways`; expected one of"),
+        "{e}"
+    );
     let line = line_of(&body, "sideways");
     let col = body
         .lines()
@@ -371,4 +374,65 @@ fn branch_forces_the_back_stance_and_bad_branches_point_at_their_line() {
         + 1;
     assert!(e.contains(&format!("bad.yaml:{line}:{col}")), "{e}");
     assert!(o.stdout.is_empty());
+}
+
+#[test]
+fn base_auto_skips_positions_from_which_a_point_is_out_of_range() {
+    // Review finding: the reach regions ignore the axis-2 range, so the position of R with the
+    // largest margin (under the points' middle) left P1 at axis 2 = -70.3. The run and `locate`
+    // must both choose a position from which every point is solved in range, and agree.
+    let dir = tempfile::tempdir().expect("tempdir");
+    let urdf = manifest().join("robots/irb1400.urdf");
+    let body = format!(
+        "module: Auto1\nrobot: {{ urdf: {}, base: auto, yaw: 45 }}\nobstacles: []\npoints:\n  - {{ name: P1, xyz: [800, 200, 900] }}\n  - {{ name: P2, xyz: [600, 700, 1100] }}\n  - {{ name: P3, xyz: [900, -300, 700] }}\n",
+        urdf.display()
+    );
+    let path = temp_cell(dir.path(), "auto1.yaml", &body);
+    let (cell, _) = cell::load(&path).expect("cell");
+    let prep = pipeline::prepare(cell.clone()).expect("a base that reaches every point");
+    let location = prep.location.as_ref().expect("base: auto");
+    assert_eq!(
+        location.base_mm,
+        [prep.placement.base_mm[0], prep.placement.base_mm[1]]
+    );
+    // The chosen position lies in R, and is not the one with the largest margin (which fails).
+    assert!(location.margin_at(location.base_mm).is_some());
+    let mut by_margin = location.candidates();
+    by_margin.sort_by(|a, b| b.1.total_cmp(&a.1));
+    assert_ne!(
+        by_margin[0].0, location.base_mm,
+        "the largest-margin position should fail here"
+    );
+    let robot = pipeline::load_robot(&cell).expect("robot");
+    let geom = pipeline::geometry(&cell, &robot).expect("geometry");
+    for p in &prep.points {
+        robot.check_range3(&p.axes_deg).expect("in range");
+        let w = pipeline::to_cell_frame(ik::forward(&geom, p.axes_deg), &prep.placement);
+        let given = match cell
+            .points
+            .iter()
+            .find(|q| q.name == p.name)
+            .map(|q| &q.target)
+        {
+            Some(gen_rapid::cell::Target::Xyz {
+                wrist_centre_mm, ..
+            }) => *wrist_centre_mm,
+            _ => panic!("xyz point"),
+        };
+        assert!(dist(w, given) < 0.05, "{}: {w:?} vs {given:?}", p.name);
+    }
+    let o = run(&["locate", path.to_str().expect("utf-8"), "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+    let chosen = j["base_mm"]
+        .as_array()
+        .map(|a| [a[0].as_f64(), a[1].as_f64()]);
+    assert_eq!(
+        chosen,
+        Some([
+            Some(prep.placement.base_mm[0]),
+            Some(prep.placement.base_mm[1])
+        ]),
+        "{j}"
+    );
 }

@@ -8,6 +8,7 @@
 
 mod raw;
 
+use crate::ik::Branch;
 use crate::rapid::check_identifier;
 use raw::{RawBase, RawCell};
 use serde_saphyr::{Location, Spanned};
@@ -77,7 +78,7 @@ pub enum Target {
     /// Wrist-centre position in the cell frame (mm), with an optional forced IK branch.
     Xyz {
         wrist_centre_mm: [f64; 3],
-        branch: Option<String>,
+        branch: Option<Branch>,
         branch_loc: Loc,
     },
 }
@@ -274,6 +275,21 @@ fn triple(v: &Spanned<Vec<f64>>, what: &str) -> Result<[f64; 3], CellError> {
     })
 }
 
+/// Checks that `v` has at most `n` decimals: the module header states the base and yaw with
+/// that many, and must state exactly what was planned with.
+fn decimals(v: f64, n: i32, loc: Loc, what: &str, unit: &str) -> Result<f64, CellError> {
+    let scale = 10f64.powi(n);
+    if ((v * scale).round() / scale - v).abs() > 1e-9 * v.abs().max(1.0) {
+        let s = if n == 1 { "" } else { "s" };
+        return Err(invalid_help(
+            loc,
+            format!("{what} = {v} has more than {n} decimal{s}"),
+            format!("the module header states {what} to {n} decimal{s} ({unit}); give no more, so it states what was used"),
+        ));
+    }
+    Ok(v)
+}
+
 /// Checks that `v` has at most [`JOINT_DECIMALS`] decimals.
 fn joint_value(v: f64, loc: Loc, what: &str) -> Result<f64, CellError> {
     let scale = 10f64.powi(JOINT_DECIMALS);
@@ -337,14 +353,18 @@ fn validate(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
                 referenced: r.base.referenced,
                 defined: r.base.defined,
             };
-            Base::Fixed(triple(&v, "robot.base")?)
+            let b = triple(&v, "robot.base")?;
+            for x in b {
+                decimals(x, 1, loc(&v), "robot.base", "mm")?;
+            }
+            Base::Fixed(b)
         }
     };
     let yaw_deg = match &r.yaw {
         Some(y) if !y.value.is_finite() => {
             return Err(invalid(loc(y), "robot.yaw must be a finite number (deg)"))
         }
-        Some(y) => y.value,
+        Some(y) => decimals(y.value, JOINT_DECIMALS, loc(y), "robot.yaw", "deg")?,
         None => 0.0,
     };
     let wrist_deg = match &r.wrist {
@@ -458,7 +478,12 @@ fn validate(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
             }
             (None, Some(x)) => Target::Xyz {
                 wrist_centre_mm: triple(x, &format!("point '{name}' xyz"))?,
-                branch: p.value.branch.as_ref().map(|b| b.value.clone()),
+                branch: match &p.value.branch {
+                    Some(b) => Some(b.value.parse::<Branch>().map_err(|why| {
+                        invalid(loc(b), format!("point '{name}': {why}"))
+                    })?),
+                    None => None,
+                },
                 branch_loc: p.value.branch.as_ref().map(loc).unwrap_or_default(),
             },
             (Some(_), Some(x)) => {
@@ -648,7 +673,7 @@ mod tests {
                 branch_loc,
             } => {
                 assert_eq!(*wrist_centre_mm, [900.0, 0.0, 1000.0]);
-                assert_eq!(branch.as_deref(), Some("back-elbow-up"));
+                assert_eq!(*branch, Some(Branch::BackElbowUp));
                 assert_eq!(branch_loc.line, 6);
             }
             other => panic!("{other:?}"),
@@ -667,6 +692,21 @@ mod tests {
                 MINIMAL.replace("base: [1, 2, 3]", "base: somewhere"),
                 "auto",
                 4,
+            ),
+            (
+                MINIMAL.replace("base: [1, 2, 3]", "base: [1, 2.25, 3]"),
+                "more than 1 decimal",
+                4,
+            ),
+            (
+                MINIMAL.replace("base: [1, 2, 3]", "base: [1, 2, 3]\n  yaw: 45.0004"),
+                "robot.yaw",
+                5,
+            ),
+            (
+                MINIMAL.replace("joints: [1, 2, 3]", "xyz: [900, 0, 1000], branch: sideways"),
+                "unknown branch",
+                6,
             ),
             (
                 MINIMAL.replace("joints: [1, 2, 3]", "joints: [1, 2, 3], xyz: [1, 2, 3]"),
@@ -711,9 +751,12 @@ mod tests {
 
     #[test]
     fn joint_values_keep_at_most_three_decimals() {
-        assert!(parse_str(&MINIMAL.replace("[1, 2, 3]", "[1.125, -2.5, 3.001]")).is_ok());
-        let err =
-            parse_str(&MINIMAL.replace("[1, 2, 3]", "[1.0005, 2, 3]")).expect_err("4 decimals");
+        assert!(
+            parse_str(&MINIMAL.replace("joints: [1, 2, 3]", "joints: [1.125, -2.5, 3.001]"))
+                .is_ok()
+        );
+        let err = parse_str(&MINIMAL.replace("joints: [1, 2, 3]", "joints: [1.0005, 2, 3]"))
+            .expect_err("4 decimals");
         assert!(err.help().is_some_and(|h| h.contains("0.001")), "{err}");
     }
 

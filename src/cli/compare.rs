@@ -83,7 +83,7 @@ impl Comparison {
                 }
             }
         }
-        out += "(manipulation time: rest-to-rest quintic profiles per move, paper section 5; planning time varies from run to run)\n";
+        out += "(manipulation time: each move from rest to rest, quintic ramps and cruise or one quintic, paper section 5; planning time varies from run to run)\n";
         out
     }
 }
@@ -159,12 +159,14 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
     } else {
         comparison.table()
     };
+    // The picture first: if it cannot be written, nothing has reached stdout yet. (With no
+    // route there is no picture; the table still says why each method failed.)
+    if let (Some((path, svg_text)), false) = (&svg, plans.is_empty()) {
+        write_atomically(path, svg_text.as_bytes()).map_err(|e| loaded.fail(e))?;
+    }
     emit(None, text.as_bytes()).map_err(|e| loaded.fail(e))?;
     if plans.is_empty() {
         return Err(loaded.fail(Error::NoMethodSucceeded { failures }));
-    }
-    if let Some((path, text)) = svg {
-        write_atomically(path, text.as_bytes()).map_err(|e| loaded.fail(e))?;
     }
     Ok(format!(
         "gen-rapid compare: {}: {} of 3 methods found a route, {:.2} s",

@@ -52,7 +52,8 @@ pub struct Report {
     pub area_m2: f64,
     /// Bounding box of `R`, `[[x_min, y_min], [x_max, y_max]]`, mm.
     pub bbox_mm: Option<[[f64; 2]; 2]>,
-    /// The base with the largest margin (with `base: auto`, the one the run uses), `[x, y, z]`.
+    /// The chosen base, `[x, y, z]`: with `base: auto` the one the run uses (the position of `R`
+    /// with the largest margin from which every point is solved in range and free of collision).
     pub base_mm: [f64; 3],
     /// Its distance to the boundary of `R`, mm.
     pub margin_mm: f64,
@@ -93,7 +94,7 @@ pub fn report(cell: &Cell, location: &Location, points: &[(String, [f64; 3])]) -
     let r = &location.region;
     let base_z = match cell.robot.base {
         Base::Fixed(b) => b[2],
-        Base::Auto => 0.0,
+        Base::Auto => crate::pipeline::AUTO_BASE_Z_MM,
     };
     let given_base = match cell.robot.base {
         Base::Fixed(b) => {

@@ -45,10 +45,11 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
         }
         None => None,
     };
-    emit(opts.output.as_deref(), outcome.text.as_bytes()).map_err(|e| loaded.fail(e))?;
+    // The picture first: if it cannot be written, nothing has reached stdout yet.
     if let Some((path, text)) = svg {
         write_atomically(path, text.as_bytes()).map_err(|e| loaded.fail(e))?;
     }
+    emit(opts.output.as_deref(), outcome.text.as_bytes()).map_err(|e| loaded.fail(e))?;
     let clearance = match outcome.program.header.min_clearance_mm {
         Some(c) => format!("smallest clearance {c:.1} mm"),
         None => "no obstacles".to_string(),
