@@ -44,7 +44,7 @@ pub enum Error {
         point: String,
         base_mm: [f64; 3],
         yaw_deg: f64,
-        source: IkError,
+        source: Box<IkError>,
         /// What blocks the solutions (link and obstacle), when they collide.
         detail: String,
         loc: Loc,
@@ -106,10 +106,7 @@ impl Error {
             } => Some("a finer planner.grid or a smaller planner.clearance may open a passage; `gen-rapid --svg FILE` draws the blocked nodes".into()),
             Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
             Error::Locate { .. } => Some("`gen-rapid locate CELL --svg FILE` draws every point's reach region; move the points closer together or give `base: [x, y, z]`".into()),
-            Error::Ik {
-                source: IkError::Unreachable { .. },
-                ..
-            } => Some("`xyz` is the wrist centre in the cell frame (mm); `gen-rapid locate CELL` shows which base positions reach every point".into()),
+            Error::Ik { source, .. } if matches!(**source, IkError::Unreachable { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `gen-rapid locate CELL` shows which base positions reach every point".into()),
             _ => None,
         }
     }

@@ -59,27 +59,6 @@ impl Aabb {
         }
     }
 
-    /// The box grown by `by` mm on every side (a Minkowski sum with a cube,
-    /// not with a ball). A negative `by` shrinks it; an axis that would
-    /// invert collapses to its mid-plane.
-    pub fn grown(&self, by: f64) -> Aabb {
-        let mut min = self.min;
-        let mut max = self.max;
-        for i in 0..3 {
-            let lo = min[i] - by;
-            let hi = max[i] + by;
-            if lo <= hi {
-                min[i] = lo;
-                max[i] = hi;
-            } else {
-                let mid = 0.5 * (self.min[i] + self.max[i]);
-                min[i] = mid;
-                max[i] = mid;
-            }
-        }
-        Aabb { min, max }
-    }
-
     /// Centre of the box, mm.
     fn center(&self) -> Point {
         nalgebra::center(&self.min, &self.max)
@@ -495,19 +474,10 @@ mod tests {
     }
 
     #[test]
-    fn aabb_new_sorts_corners_and_grown_inflates() {
+    fn aabb_new_sorts_corners() {
         let b = Aabb::new(p(10.0, 0.0, 5.0), p(0.0, 20.0, -5.0));
         assert_eq!(b.min, p(0.0, 0.0, -5.0));
         assert_eq!(b.max, p(10.0, 20.0, 5.0));
-        let g = b.grown(2.0);
-        assert_eq!(g.min, p(-2.0, -2.0, -7.0));
-        assert_eq!(g.max, p(12.0, 22.0, 7.0));
-        // Shrinking past the thin x-axis collapses it to its mid-plane.
-        let s = b.grown(-6.0);
-        assert_eq!(s.min.x, 5.0);
-        assert_eq!(s.max.x, 5.0);
-        assert_eq!(s.min.y, 6.0);
-        assert_eq!(s.max.y, 14.0);
     }
 
     #[test]

@@ -170,7 +170,7 @@ fn resolve_points(
                             point: p.name.clone(),
                             base_mm: placement.base_mm,
                             yaw_deg: placement.yaw_deg,
-                            source,
+                            source: Box::new(source),
                             detail,
                             loc,
                         }

@@ -188,7 +188,7 @@ pub fn check_module(cell: &cell::Cell, robot: &Robot, text: &str, stem: &str) ->
         Translation3::new(module.base_mm[0], module.base_mm[1], module.base_mm[2]),
         UnitQuaternion::from_axis_angle(&Vector3::z_axis(), module.yaw_deg.to_radians()),
     );
-    let boxes = boxes_of(&cell);
+    let boxes = boxes_of(cell);
     // No point of the arm is farther than this from any joint axis (IRB 1400: reach 1.44 m plus
     // the wrist, radius and offsets stay well below 2 m); 1 mm per step of displacement.
     const ARM_RADIUS_MM: f64 = 2000.0;
@@ -212,7 +212,7 @@ pub fn check_module(cell: &cell::Cell, robot: &Robot, text: &str, stem: &str) ->
                 a[1] + t * (b[1] - a[1]),
                 a[2] + t * (b[2] - a[2]),
             ];
-            let d = min_distance(&robot, &cell_from_robot, &boxes, axes);
+            let d = min_distance(robot, &cell_from_robot, &boxes, axes);
             assert!(
                 d >= cell.planner.clearance_mm - 1e-6,
                 "{stem}: move {} -> {} at t = {t:.4} ({axes:?}) is {d:.3} mm from an obstacle, below the clearance {} mm",
