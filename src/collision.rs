@@ -325,9 +325,8 @@ impl CollisionModel {
         let poses = self.cell_link_poses(axes);
         (0..self.cyl.len()).all(|i| {
             let c = self.cylinder_in(i, &poses);
-            self.obstacles.iter().enumerate().all(|(k, o)| {
-                self.cyl[i].exempt[k] || link_clear_of_box(&c, &o.aabb, self.clearance_mm)
-            })
+            self.checked_boxes(i)
+                .all(|(_, b)| link_clear_of_box(&c, b, self.clearance_mm))
         })
     }
 
@@ -341,9 +340,9 @@ impl CollisionModel {
         let mut worst: Option<(usize, usize, f64)> = None;
         for i in 0..self.cyl.len() {
             let c = self.cylinder_in(i, &poses);
-            for (k, o) in self.obstacles.iter().enumerate() {
-                if !self.cyl[i].exempt[k] && !link_clear_of_box(&c, &o.aabb, self.clearance_mm) {
-                    let d = distance_cylinder_aabb(&c, &o.aabb);
+            for (k, b) in self.checked_boxes(i) {
+                if !link_clear_of_box(&c, b, self.clearance_mm) {
+                    let d = distance_cylinder_aabb(&c, b);
                     if worst.is_none_or(|(_, _, w)| d < w) {
                         worst = Some((i, k, d));
                     }
@@ -360,10 +359,8 @@ impl CollisionModel {
         let mut best = f64::INFINITY;
         for i in 0..self.cyl.len() {
             let c = self.cylinder_in(i, &poses);
-            for (k, o) in self.obstacles.iter().enumerate() {
-                if !self.cyl[i].exempt[k] {
-                    best = best.min(distance_cylinder_aabb(&c, &o.aabb));
-                }
+            for (_, b) in self.checked_boxes(i) {
+                best = best.min(distance_cylinder_aabb(&c, b));
             }
         }
         best
@@ -400,10 +397,8 @@ impl CollisionModel {
         for i in (0..self.cyl.len()).filter(|&i| self.cyl[i].joint < 2) {
             let cyl = self.cylinder_in(i, &poses);
             if !self
-                .obstacles
-                .iter()
-                .enumerate()
-                .all(|(k, o)| self.cyl[i].exempt[k] || link_clear_of_box(&cyl, &o.aabb, c))
+                .checked_boxes(i)
+                .all(|(_, b)| link_clear_of_box(&cyl, b, c))
             {
                 free.fill(false);
                 return;
@@ -489,7 +484,7 @@ impl CollisionModel {
         for (i, &m) in speeds.iter().enumerate() {
             let d0 = self.pair_distances(i, from);
             let d1 = self.pair_distances(i, to);
-            for k in (0..self.obstacles.len()).filter(|&k| !self.cyl[i].exempt[k]) {
+            for (k, _) in self.checked_boxes(i) {
                 if let PairVerdict::Fails { .. } =
                     self.certify_pair(i, k, from, to, m, d0[k], d1[k], false)
                 {
@@ -518,7 +513,7 @@ impl CollisionModel {
             .fold(f64::INFINITY, |m, &d| m.min(d));
         let mut result = f64::INFINITY;
         for (i, &m) in speeds.iter().enumerate() {
-            for k in (0..self.obstacles.len()).filter(|&k| !self.cyl[i].exempt[k]) {
+            for (k, _) in self.checked_boxes(i) {
                 let (d0, d1) = (ends[i].0[k], ends[i].1[k]);
                 let mut evals = 0usize;
                 let mut stack = vec![(0.0f64, 1.0f64, d0, d1)];
@@ -562,7 +557,7 @@ impl CollisionModel {
         for (i, &m) in speeds.iter().enumerate() {
             let d0 = self.pair_distances(i, from);
             let d1 = self.pair_distances(i, to);
-            for k in (0..self.obstacles.len()).filter(|&k| !self.cyl[i].exempt[k]) {
+            for (k, _) in self.checked_boxes(i) {
                 if let PairVerdict::Fails { t, d } =
                     self.certify_pair(i, k, from, to, m, d0[k], d1[k], true)
                 {
@@ -576,6 +571,16 @@ impl CollisionModel {
     }
 
     // ---- internals ----
+
+    /// The boxes cylinder `i` is checked against, with their indices: every box but those the
+    /// robot stands on, for link 1 (module doc).
+    fn checked_boxes(&self, i: usize) -> impl Iterator<Item = (usize, &Aabb)> + '_ {
+        self.obstacles
+            .iter()
+            .enumerate()
+            .filter(move |(k, _)| !self.cyl[i].exempt[*k])
+            .map(|(k, o)| (k, &o.aabb))
+    }
 
     /// Poses of links 1..3 in the cell frame.
     fn cell_link_poses(&self, axes: &[f64; 3]) -> [Isometry3<f64>; 3] {
@@ -630,9 +635,6 @@ impl CollisionModel {
 
     /// Distance from cylinder `i` to box `k` at parameter `t` of the move.
     fn pair_distance_at(&self, i: usize, k: usize, from: &[f64; 3], to: &[f64; 3], t: f64) -> f64 {
-        if self.cyl[i].exempt[k] {
-            return f64::INFINITY;
-        }
         let axes = lerp(from, to, t);
         let c = self.cylinder_in(i, &self.cell_link_poses(&axes));
         distance_cylinder_aabb(&c, &self.obstacles[k].aabb)

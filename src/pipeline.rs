@@ -279,24 +279,28 @@ pub const AUTO_BASE_Z_MM: f64 = 0.0;
 /// `base: auto` (every point `xyz`; a `joints` point is refused, pointing at it). The base
 /// stands on the floor (z = 0). An empty region fails pointing at `robot.base`.
 pub fn locate_base(cell: &Cell, robot: &Robot, geom: &ArmGeometry) -> Result<Location, Error> {
-    let mut pts = Vec::new();
-    for p in &cell.points {
-        match &p.target {
-            Target::Xyz { wrist_centre_mm, .. } => pts.push((p.name.clone(), *wrist_centre_mm)),
-            Target::Joints { .. } => {
-                return Err(Error::Cell(crate::cell::CellError::Invalid {
-                    loc: p.loc,
-                    message: format!("point '{}' gives joint values, but `base: auto` needs every point as `xyz` (joint values mean nothing until the base is known)", p.name),
-                    help: Some("give the point's wrist-centre position `xyz: [x, y, z]` in the cell frame (mm)".into()),
-                }))
-            }
-        }
-    }
+    let pts = xyz_points(cell)?;
     locate_points(cell, robot, geom, &pts, AUTO_BASE_Z_MM)
 }
 
 /// Working points by name with their wrist centres (cell frame, mm).
 pub type NamedPoints = Vec<(String, [f64; 3])>;
+
+/// The points of a `base: auto` cell, all given as `xyz`; a `joints` point is refused, pointing at
+/// it (joint values mean nothing until the base is known).
+fn xyz_points(cell: &Cell) -> Result<NamedPoints, Error> {
+    cell.points
+        .iter()
+        .map(|p| match &p.target {
+            Target::Xyz { wrist_centre_mm, .. } => Ok((p.name.clone(), *wrist_centre_mm)),
+            Target::Joints { .. } => Err(Error::Cell(crate::cell::CellError::Invalid {
+                loc: p.loc,
+                message: format!("point '{}' gives joint values, but `base: auto` needs every point as `xyz` (joint values mean nothing until the base is known)", p.name),
+                help: Some("give the point's wrist-centre position `xyz: [x, y, z]` in the cell frame (mm)".into()),
+            })),
+        })
+        .collect()
+}
 
 /// The feasible region for any cell, so that it can be reported and drawn (`gen-rapid
 /// locate`): with `base: auto` as [`locate_base`]; with a fixed base, from the wrist centres of
@@ -311,16 +315,7 @@ pub fn locate_any(
         Base::Auto => {
             // The base a run would use: verified by solving every point (see `prepare`).
             let (location, _) = locate_and_resolve(cell, robot, geom)?;
-            let pts = cell
-                .points
-                .iter()
-                .filter_map(|p| match &p.target {
-                    Target::Xyz {
-                        wrist_centre_mm, ..
-                    } => Some((p.name.clone(), *wrist_centre_mm)),
-                    Target::Joints { .. } => None,
-                })
-                .collect();
+            let pts = xyz_points(cell)?;
             return Ok((location, pts));
         }
         Base::Fixed(b) => *b,
