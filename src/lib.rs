@@ -19,6 +19,7 @@ pub mod pipeline;
 pub mod plan;
 pub mod program;
 pub mod rapid;
+pub mod rapid_data;
 pub mod robot;
 pub mod search;
 pub mod shorten;
