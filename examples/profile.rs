@@ -1,5 +1,6 @@
 //! Whole-pipeline timing by stage, for benches/README.md: `cargo run --release --example profile -- CELL GRID`.
-use gen_rapid::{cell, pipeline, search, wave};
+use gen_rapid::plan::{search, wave};
+use gen_rapid::{cell, pipeline};
 use std::time::Instant;
 fn main() {
     let path = std::env::args().nth(1).unwrap_or("cells/trunk.yaml".into());

@@ -6,11 +6,11 @@
 //! cannot be reached, no path between two points) carry the location of the item they are about.
 
 use crate::cell::{CellError, Loc};
-use crate::ik::IkError;
-use crate::locate::LocateError;
-use crate::picture::PictureError;
+use crate::output::cspace_svg::PictureError;
+use crate::output::rapid::RapidError;
+use crate::place::locate::LocateError;
 use crate::plan::PlanError;
-use crate::rapid::RapidError;
+use crate::robot::ik::IkError;
 use crate::robot::RobotError;
 use std::path::PathBuf;
 

@@ -28,14 +28,14 @@
 
 use crate::cell::{Base, Cell, Method, Target};
 use crate::collision::{CollisionModel, Obstacle, Placement};
-use crate::cspace::{CSpace, Grid};
 use crate::error::Error;
 use crate::geometry::Aabb;
-use crate::ik::{self, ArmGeometry};
-use crate::locate::{self, LocateInput, Location};
+use crate::output::program::{self, ProgramInput};
+use crate::output::rapid;
+use crate::place::locate::{self, LocateInput, Location};
+use crate::plan::cspace::{CSpace, Grid};
 use crate::plan::{self, Plan, Waypoint};
-use crate::program::{self, ProgramInput};
-use crate::rapid;
+use crate::robot::ik::{self, ArmGeometry};
 use crate::robot::Robot;
 use crate::timing;
 use nalgebra::Point3;

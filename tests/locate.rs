@@ -3,8 +3,8 @@
 
 use gen_rapid::cell::{self, Base, Target};
 use gen_rapid::collision::Placement;
-use gen_rapid::ik;
 use gen_rapid::pipeline;
+use gen_rapid::robot::ik;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 

@@ -8,8 +8,8 @@
 
 mod raw;
 
-use crate::ik::Branch;
-use crate::rapid::check_identifier;
+use crate::names::check_identifier;
+use crate::robot::ik::Branch;
 use raw::{RawBase, RawCell};
 use serde_saphyr::{Location, Spanned};
 use std::path::{Path, PathBuf};

@@ -11,8 +11,9 @@
 use super::{emit, load, write_atomically, Failure};
 use crate::cell::Method;
 use crate::error::Error;
+use crate::output::cspace_svg as picture;
+use crate::pipeline;
 use crate::plan::Plan;
-use crate::{picture, pipeline};
 use serde::Serialize;
 use std::path::PathBuf;
 use std::time::Instant;

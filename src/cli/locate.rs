@@ -24,8 +24,8 @@
 use super::{emit, load, write_atomically, Failure};
 use crate::cell::{Base, Cell};
 use crate::error::Error;
-use crate::locate::Location;
 use crate::pipeline;
+use crate::place::locate::Location;
 use serde::Serialize;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -250,7 +250,7 @@ pub fn locate(opts: &LocateOptions) -> Result<String, Failure> {
 pub mod svg {
     use super::Report;
     use crate::cell::Cell;
-    use crate::locate::Location;
+    use crate::place::locate::Location;
     use plotters::prelude::*;
 
     /// Pixel width of the plotting area; the height follows from the data (equal scales).

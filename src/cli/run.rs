@@ -3,7 +3,8 @@
 
 use super::{emit, load, write_atomically, Failure};
 use crate::cell::Method;
-use crate::{picture, pipeline};
+use crate::output::cspace_svg as picture;
+use crate::pipeline;
 use std::path::PathBuf;
 use std::time::Instant;
 

@@ -11,6 +11,7 @@
 //! applies the controller's coupling ([`controller`]) to get URDF joint values.
 
 pub mod controller;
+pub mod ik;
 pub mod urdf;
 
 use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};

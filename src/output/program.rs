@@ -8,8 +8,8 @@
 //! model: the forearm cylinder covers it (paper section 6).
 
 use crate::collision::CollisionModel;
+use crate::output::rapid::{Header, JointTarget, Program, TargetKind};
 use crate::plan::Plan;
-use crate::rapid::{Header, Program, Target, TargetKind};
 use crate::timing::six_axis_targets;
 
 /// Tolerance of the reported smallest clearance, mm.
@@ -69,7 +69,7 @@ pub fn build(plan: &Plan, model: &CollisionModel, input: &ProgramInput) -> Progr
     let targets = kinds
         .into_iter()
         .zip(six_axis_targets(plan, input.wrists_deg))
-        .map(|(kind, axes_deg)| Target { kind, axes_deg })
+        .map(|(kind, axes_deg)| JointTarget { kind, axes_deg })
         .collect();
     Program {
         module: input.module.to_string(),

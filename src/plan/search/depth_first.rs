@@ -1,15 +1,15 @@
 //! Depth-first search (paper section 4.2): from the end node, only the 6 axis neighbours whose
 //! number is exactly one less, tried depth first, backing up on dead ends. The order is fixed:
 //! the direction of the previous step first (so runs stay straight and merge into one move),
-//! then -axis1, -axis2, -axis3, +axis3, +axis2, +axis1 (the order of [`crate::wave::offsets`]).
+//! then -axis1, -axis2, -axis3, +axis3, +axis2, +axis1 (the order of [`crate::plan::wave::offsets`]).
 //!
 //! It walks axis steps, so the wave it descends is numbered over the 6 axis neighbours. It fails
 //! (the paper's Fig. 8) when the start and end are joined only through diagonal steps; the plan
 //! then reports the leg. Same-direction steps are merged afterwards by `merge`.
 
 use super::{descend, Accept, GridPath};
-use crate::cspace::{CSpace, Node};
-use crate::wave::{self, offsets, Connectivity, Wave};
+use crate::plan::cspace::{CSpace, Node};
+use crate::plan::wave::{self, offsets, Connectivity, Wave};
 
 fn candidates(w: &Wave, n: Node, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     let want = w.label(n).saturating_sub(1);
@@ -32,7 +32,7 @@ pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> O
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::search::testing::{assert_path, grid};
+    use crate::plan::search::testing::{assert_path, grid};
 
     #[test]
     fn walks_axis_steps_in_the_fixed_order() {

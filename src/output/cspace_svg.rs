@@ -18,7 +18,7 @@
 //! deterministic for the same grid and plans.
 
 use crate::cell::Method;
-use crate::cspace::CSpace;
+use crate::plan::cspace::CSpace;
 use crate::plan::{Plan, Waypoint};
 use plotters::prelude::*;
 
@@ -241,7 +241,7 @@ pub fn render_svg(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cspace::{CSpace, Grid};
+    use crate::plan::cspace::{CSpace, Grid};
     use crate::plan::Leg;
 
     #[test]

@@ -12,8 +12,8 @@
 //! moves, which the extensile method's shortening straightens.
 
 use super::{descend, Accept, GridPath};
-use crate::cspace::{CSpace, Node};
-use crate::wave::{self, offsets, Connectivity, Wave};
+use crate::plan::cspace::{CSpace, Node};
+use crate::plan::wave::{self, offsets, Connectivity, Wave};
 
 fn candidates(w: &Wave, n: Node, _prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     let mut c: Vec<[i32; 3]> = offsets(Connectivity::TwentySix).to_vec();
@@ -40,7 +40,7 @@ pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> O
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::search::testing::{assert_path, grid};
+    use crate::plan::search::testing::{assert_path, grid};
 
     #[test]
     fn finds_a_shortest_path_heading_for_the_start() {
@@ -67,8 +67,9 @@ mod tests {
             .windows(3)
             .filter(|w| (0..3).any(|k| w[1][k] - w[0][k] != w[2][k] - w[1][k]))
             .count();
-        let ext = crate::search::extensile::one_way(&cs, [0, 0, 0], [8, 0, 0], &mut |_, _| true)
-            .expect("path");
+        let ext =
+            crate::plan::search::extensile::one_way(&cs, [0, 0, 0], [8, 0, 0], &mut |_, _| true)
+                .expect("path");
         let ext_turns = ext
             .windows(3)
             .filter(|w| (0..3).any(|k| w[1][k] - w[0][k] != w[2][k] - w[1][k]))

@@ -858,7 +858,7 @@ mod tests {
 
     #[test]
     fn serial_robot_speaks_its_own_controller_values() {
-        let text = include_str!("../robots/irb1400.urdf");
+        let text = include_str!("../../../robots/irb1400.urdf");
         let robot = urdf::robot_from_urdf(Path::new("x.urdf"), text, None).expect("loads");
         let g = ArmGeometry::from_robot(&robot).expect("same structure");
         assert_eq!(g.coupling, Coupling::Serial);

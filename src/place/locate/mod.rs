@@ -49,7 +49,7 @@
 //!   model), so `R` is the same for every yaw; the yaw matters to the axis-1 range and the
 //!   collision checks, which the IK and the planner apply from the chosen base.
 
-use crate::ik::{reach_interval_mm, ArmGeometry};
+use crate::robot::ik::{reach_interval_mm, ArmGeometry};
 use crate::robot::Robot;
 
 /// Default raster cell, mm: a tenth of the IRB 1400's base radius, fine against the reach
@@ -674,7 +674,7 @@ fn blocked(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ik::{choose, forward};
+    use crate::robot::ik::{choose, forward};
 
     fn pts(v: &[(&str, [f64; 3])]) -> Vec<(String, [f64; 3])> {
         v.iter().map(|(n, p)| (n.to_string(), *p)).collect()

@@ -53,19 +53,18 @@
 //!   surrounding spaces are trimmed, and empty text becomes `-`.
 
 mod format;
-mod names;
+mod target_names;
 
 pub use format::format_fixed;
-pub use names::{
-    check_identifier, target_names, IdentifierError, MAX_IDENTIFIER_LEN, PREDEFINED_NAMES,
-    RESERVED_WORDS,
-};
+pub use target_names::target_names;
+
+use crate::names::{check_data_name, check_identifier, IdentifierError};
 
 use minijinja::{value::Serde, AutoEscape, Environment, UndefinedBehavior};
 use serde::Serialize;
 
 /// The module template, embedded at compile time.
-pub const TEMPLATE: &str = include_str!("../../templates/module.mod.j2");
+pub const TEMPLATE: &str = include_str!("../../../templates/module.mod.j2");
 
 /// Decimals of joint values in `CONST jointtarget` (degrees).
 pub const AXIS_DECIMALS: usize = 3;
@@ -86,7 +85,7 @@ pub struct Program {
     /// Values for the comment header.
     pub header: Header,
     /// Targets in visiting order; target 0 is the first cell point (the start).
-    pub targets: Vec<Target>,
+    pub targets: Vec<JointTarget>,
     /// RAPID speeddata name, e.g. `"v300"`.
     pub speed: String,
     /// RAPID zonedata name, e.g. `"fine"`.
@@ -139,9 +138,9 @@ pub enum TargetKind {
     },
 }
 
-/// One joint position to visit.
+/// One `CONST jointtarget` of the module: a joint position to visit.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Target {
+pub struct JointTarget {
     /// Cell point or via.
     pub kind: TargetKind,
     /// Controller values of axes 1..6 in degrees.
@@ -326,7 +325,7 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
         ("tool", &program.tool),
     ];
     for (role, name) in roles {
-        names::check_shape(name).map_err(|source| RapidError::InvalidDataName {
+        check_data_name(name).map_err(|source| RapidError::InvalidDataName {
             role,
             name: name.clone(),
             source,

@@ -12,8 +12,8 @@
 //! recursive k -> k+2 shortening (`shorten`) then cuts across the parallelograms.
 
 use super::{add, descend, order_of, Accept, GridPath};
-use crate::cspace::{CSpace, Node};
-use crate::wave::{self, offsets, Connectivity, Wave};
+use crate::plan::cspace::{CSpace, Node};
+use crate::plan::wave::{self, offsets, Connectivity, Wave};
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
 
@@ -137,7 +137,7 @@ pub fn merge_paths(a: &[Node], b: &[Node], accept: &mut Accept<'_>) -> GridPath 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::search::testing::{assert_path, grid};
+    use crate::plan::search::testing::{assert_path, grid};
 
     #[test]
     fn takes_the_diagonal_where_depth_first_fails() {
@@ -145,10 +145,13 @@ mod tests {
         let cs = grid(3, 3, 1, |n| n[0] == n[1]);
         let p = search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true).expect("extensile finds it");
         assert_eq!(p, vec![[0, 0, 0], [1, 1, 0], [2, 2, 0]]);
-        assert!(
-            crate::search::depth_first::search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true)
-                .is_none()
-        );
+        assert!(crate::plan::search::depth_first::search(
+            &cs,
+            [0, 0, 0],
+            [2, 2, 0],
+            &mut |_, _| true
+        )
+        .is_none());
     }
 
     #[test]

@@ -10,8 +10,12 @@
 
 use crate::cell::{Method, JOINT_DECIMALS};
 use crate::collision::{Blocked, CollisionModel};
-use crate::cspace::{CSpace, Node};
-use crate::{merge, search, shorten, wave};
+use crate::plan::cspace::{CSpace, Node};
+pub mod cspace;
+pub mod merge;
+pub mod search;
+pub mod shorten;
+pub mod wave;
 
 /// A cell point with its axes 1..3 resolved (controller values, deg).
 #[derive(Clone, Debug, PartialEq)]
@@ -252,7 +256,7 @@ mod tests {
     //! only the hand-made free nodes steer the search.
     use super::*;
     use crate::collision::Placement;
-    use crate::cspace::Grid;
+    use crate::plan::cspace::Grid;
     use crate::robot::Robot;
 
     fn open_model() -> CollisionModel {
@@ -323,7 +327,7 @@ mod tests {
             let (Some(na), Some(nb_)) = (na, nb_) else {
                 panic!("waypoints on the grid")
             };
-            assert!(crate::shorten::inspected_nodes(na, nb_)
+            assert!(crate::plan::shorten::inspected_nodes(na, nb_)
                 .iter()
                 .all(|&q| cs.is_free(q)));
         }

@@ -26,8 +26,8 @@ pub mod depth_first;
 pub mod extensile;
 pub mod neighboring;
 
-use crate::cspace::Node;
-use crate::wave::Wave;
+use crate::plan::cspace::Node;
+use crate::plan::wave::Wave;
 use std::collections::HashSet;
 
 /// A path of grid nodes from the start node to the end node, each step to a neighbour.
@@ -113,7 +113,7 @@ pub(crate) fn descend(
 
 #[cfg(test)]
 pub(crate) mod testing {
-    use crate::cspace::{CSpace, Grid, Node};
+    use crate::plan::cspace::{CSpace, Grid, Node};
 
     /// A grid of `nx` x `ny` x `nz` nodes at 1 deg, free where `free` says.
     pub fn grid(nx: usize, ny: usize, nz: usize, free: impl Fn(Node) -> bool) -> CSpace {

@@ -877,7 +877,7 @@ fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
     cylinder_clear_of_aabb(c, b, clearance)
 }
 
-impl crate::cspace::Inspector for CollisionModel {
+impl crate::plan::cspace::Inspector for CollisionModel {
     fn inspect_column(&self, a1_deg: f64, a2_deg: f64, a3_deg: &[f64], free: &mut [bool]) {
         CollisionModel::inspect_column(self, a1_deg, a2_deg, a3_deg, free)
     }
@@ -1468,7 +1468,7 @@ mod tests {
     #[test]
     fn a_base_cylinder_below_its_mounting_plane_is_not_exempt() {
         // The same robot with its base cylinder lowered 125 mm into the floor: the floor counts.
-        let text = include_str!("../robots/irb1400.urdf").replace(
+        let text = include_str!("../../robots/irb1400.urdf").replace(
             r#"<origin xyz="0 0 0.325" rpy="0 0 0"/>"#,
             r#"<origin xyz="0 0 0.2" rpy="0 0 0"/>"#,
         );

@@ -1,0 +1,3 @@
+//! The place stage.
+
+pub mod locate;

@@ -1,0 +1,4 @@
+//! Inverse kinematics.
+
+pub mod wrist;
+pub use wrist::*;
