@@ -7,7 +7,7 @@
 //! (the paper's Fig. 8) when the start and end are joined only through diagonal steps; the plan
 //! then reports the leg. Same-direction steps are merged afterwards by `merge`.
 
-use super::{descend, Accept, GridPath};
+use super::{descend, Accept, GridPath, SearchFailure};
 use crate::plan::cspace::{CSpace, Node};
 use crate::plan::wave::{self, offsets, Connectivity, Wave};
 
@@ -23,10 +23,25 @@ fn candidates(w: &Wave, n: Node, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     c
 }
 
-/// The path start -> end by axis steps, or `None` (no axis-step path, or every branch refused).
-pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> Option<GridPath> {
-    let w = wave::expand(cs, start, end, Connectivity::Six)?;
-    descend(&w, &candidates, accept)
+/// The path start -> end by axis steps (none: no axis-step path, or every branch refused).
+/// When the axis-step wave cannot reach the end, a 26-neighbour wave tells whether the free
+/// space joins the nodes only diagonally (the paper's Fig. 8: [`SearchFailure::Exhausted`]) or
+/// not at all ([`SearchFailure::NotConnected`]).
+pub fn search(
+    cs: &CSpace,
+    start: Node,
+    end: Node,
+    accept: &mut Accept<'_>,
+) -> Result<GridPath, SearchFailure> {
+    let Some(w) = wave::expand(cs, start, end, Connectivity::Six) else {
+        return Err(
+            match wave::expand(cs, start, end, Connectivity::TwentySix) {
+                Some(_) => SearchFailure::Exhausted,
+                None => SearchFailure::NotConnected,
+            },
+        );
+    };
+    descend(&w, &candidates, accept).ok_or(SearchFailure::Exhausted)
 }
 
 #[cfg(test)]
@@ -51,6 +66,11 @@ mod tests {
     fn fails_where_only_a_diagonal_joins_the_free_space() {
         // Fig. 8: the free nodes touch only at a corner.
         let cs = grid(3, 3, 1, |n| n[0] == n[1]);
-        assert!(search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true).is_none());
+        let err = search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true);
+        assert_eq!(err, Err(SearchFailure::Exhausted));
+        // Not joined at all: no method could.
+        let cs = grid(3, 3, 1, |n| n[0] != 1);
+        let err = search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true);
+        assert_eq!(err, Err(SearchFailure::NotConnected));
     }
 }

@@ -11,7 +11,7 @@
 //! paths agree it follows them; where they part it crosses between them to keep straight. The
 //! recursive k -> k+2 shortening (`shorten`) then cuts across the parallelograms.
 
-use super::{add, descend, order_of, Accept, GridPath};
+use super::{add, descend, order_of, Accept, GridPath, SearchFailure};
 use crate::plan::cspace::{CSpace, Node};
 use crate::plan::wave::{self, offsets, Connectivity, Wave};
 use std::cmp::Reverse;
@@ -37,7 +37,12 @@ pub fn one_way(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> 
 
 /// Both ways and merged: the path start -> end. The two waves are independent and expand on
 /// two threads; the walks back and the merge run in order, so the result is the same.
-pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> Option<GridPath> {
+pub fn search(
+    cs: &CSpace,
+    start: Node,
+    end: Node,
+    accept: &mut Accept<'_>,
+) -> Result<GridPath, SearchFailure> {
     let (from_start, from_end) = std::thread::scope(|s| {
         let other = s.spawn(|| wave::expand(cs, end, start, Connectivity::TwentySix));
         let here = wave::expand(cs, start, end, Connectivity::TwentySix);
@@ -47,7 +52,8 @@ pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> O
             .unwrap_or_else(|_| wave::expand(cs, end, start, Connectivity::TwentySix));
         (here, there)
     });
-    let forward = descend(&from_start?, &candidates, accept)?;
+    let from_start = from_start.ok_or(SearchFailure::NotConnected)?;
+    let forward = descend(&from_start, &candidates, accept).ok_or(SearchFailure::Exhausted)?;
     // The wave from the end node, walked back from the start node, gives end -> start.
     let backward = from_end
         .and_then(|w| descend(&w, &candidates, accept))
@@ -55,7 +61,7 @@ pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> O
             p.reverse();
             p
         });
-    Some(match backward {
+    Ok(match backward {
         Some(b) => merge_paths(&forward, &b, accept),
         None => forward,
     })
@@ -151,7 +157,7 @@ mod tests {
             [2, 2, 0],
             &mut |_, _| true
         )
-        .is_none());
+        .is_err());
     }
 
     #[test]

@@ -11,7 +11,7 @@
 //! squares along the obstacle's edge: the saw-tooth of the paper's Fig. 6, with many short
 //! moves, which the extensile method's shortening straightens.
 
-use super::{descend, Accept, GridPath};
+use super::{descend, Accept, GridPath, SearchFailure};
 use crate::plan::cspace::{CSpace, Node};
 use crate::plan::wave::{self, offsets, Connectivity, Wave};
 
@@ -31,10 +31,16 @@ fn candidates(w: &Wave, n: Node, _prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     c
 }
 
-/// The path start -> end on the 26-neighbour wave from `start`, or `None`.
-pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> Option<GridPath> {
-    let w = wave::expand(cs, start, end, Connectivity::TwentySix)?;
-    descend(&w, &candidates, accept)
+/// The path start -> end on the 26-neighbour wave from `start`.
+pub fn search(
+    cs: &CSpace,
+    start: Node,
+    end: Node,
+    accept: &mut Accept<'_>,
+) -> Result<GridPath, SearchFailure> {
+    let w =
+        wave::expand(cs, start, end, Connectivity::TwentySix).ok_or(SearchFailure::NotConnected)?;
+    descend(&w, &candidates, accept).ok_or(SearchFailure::Exhausted)
 }
 
 #[cfg(test)]
@@ -102,6 +108,9 @@ mod tests {
         assert_path(&p, [0, 0, 0], [3, 1, 0]);
         assert!(!p.contains(&[2, 0, 0]));
         // Along the diagonal every descending path passes (1,1): refusing it leaves none.
-        assert!(search(&cs, [0, 0, 0], [3, 3, 0], &mut |_, to| to != [1, 1, 0]).is_none());
+        assert_eq!(
+            search(&cs, [0, 0, 0], [3, 3, 0], &mut |_, to| to != [1, 1, 0]),
+            Err(SearchFailure::Exhausted)
+        );
     }
 }
