@@ -1,15 +1,41 @@
 //! gen-rapid: cell YAML -> collision-free joint-space path -> ABB RAPID module.
+//!
+//! The pipeline (`pipeline`), one module per stage, each a function of the previous stages'
+//! typed results (ARCHITECTURE.md has the code map and the invariants):
+//!
+//! ```text
+//! load (cell, robot) -> place -> inspect (collision) -> plan -> time -> render (output)
+//! ```
 
-pub mod cell;
-pub mod cli;
-pub mod collision;
-pub mod error;
+// Leaves, used by any stage.
 pub mod geometry;
 pub mod names;
-pub mod output;
-pub mod pipeline;
-pub mod place;
-pub mod plan;
 pub mod precision;
+
+// The stages, in pipeline order.
+
+// load, part 1: the cell file
+pub mod cell;
+
+// load, part 2: URDF, controller convention, kinematics, IK
 pub mod robot;
+
+// place: where the robot stands, every point on six axes
+pub mod place;
+
+// inspect: the robot among the boxes, nodes and whole moves
+pub mod collision;
+
+// plan: the grid, the wave, the searches, the route
+pub mod plan;
+
+// time: manipulation time per move
 pub mod timing;
+
+// render: the RAPID module, pictures, reports
+pub mod output;
+
+// The order of the stages, the errors, the commands.
+pub mod cli;
+pub mod error;
+pub mod pipeline;

@@ -187,7 +187,7 @@ impl ArmGeometry {
         })
     }
 
-    /// The IRB 1400 lengths of irb1400.md, parallelogram coupling, no q3 restriction.
+    /// The IRB 1400 lengths of `docs/irb1400.md`, parallelogram coupling, no q3 restriction.
     pub fn irb1400_nominal() -> ArmGeometry {
         ArmGeometry {
             d1_mm: 475.0,
