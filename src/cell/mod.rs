@@ -1,7 +1,7 @@
 //! The load stage, part 1: a YAML cell file -> a validated [`Cell`].
 //!
-//! Parsing is two steps: [`raw`] holds serde types close to the file (unknown keys refused,
-//! spans kept), then [`validate`] checks each section and what needs the whole picture (names
+//! Parsing is two steps: `raw.rs` holds serde types close to the file (unknown keys refused,
+//! spans kept), then `validate.rs` checks each section and what needs the whole picture (names
 //! unique in the module's one name space, boxes well formed, values no finer than the module
 //! can state them). Every error carries a [`Loc`] (line:column in the cell file) so the user
 //! sees where the input is at fault. Lengths are millimetres and angles degrees, as in RAPID;

@@ -3,8 +3,8 @@
 //!
 //! The inspect stage's model: [`Robot`] + [`Placement`] + obstacles + clearance ->
 //! [`CollisionModel`], queried by the place stage (are a point's IK solutions usable?), by the
-//! configuration-space grid (node inspection, [`column`]) and by the planner (whole moves,
-//! [`proof`]). Tests in `tests.rs`.
+//! configuration-space grid (node inspection, `column.rs`) and by the planner (whole moves,
+//! `proof.rs`). Tests in `tests.rs`.
 //!
 //! # Node inspection (Ting & Jar 2006, section 3)
 //! The paper marks a configuration -1 when the arm hits an obstacle or is out of range, 0
@@ -13,9 +13,9 @@
 //! when it is in range, the coupled axis-3 range included ([`Robot::check_range3`]), and every
 //! link cylinder keeps MORE than `clearance` mm from every box. [`CollisionModel::inspect_column`]
 //! is the same test for a whole column `[a1, a2, a3[k]]` of the grid, with the work that does not
-//! depend on axis 3 done once per column ([`column`]).
+//! depend on axis 3 done once per column (`column.rs`).
 //!
-//! The whole-move proof ([`proof`]) is the guarantee the paper lacks: every straight joint move
+//! The whole-move proof (`proof.rs`) is the guarantee the paper lacks: every straight joint move
 //! written is proven to keep the clearance at every instant, not only at grid nodes.
 //!
 //! Frames: the robot base frame sits in the cell frame at [`Placement`] (translation, then yaw
@@ -60,7 +60,7 @@ use nalgebra::{Isometry3, Vector3};
 pub const STANDS_ON_TOL_MM: f64 = 1e-6;
 
 /// Boxes are clipped to a cube about the base this much larger than the arm's reach plus the
-/// clearance, mm (see [`clip_to_workspace`]).
+/// clearance, mm (see `clip_to_workspace`).
 pub const CLIP_MARGIN_MM: f64 = 10_000.0;
 
 /// Why a configuration (or a move) is not free.

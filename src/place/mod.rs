@@ -1,7 +1,7 @@
 //! The place stage: [`Cell`] + [`Robot`] -> [`Placed`], where the robot stands and every point
 //! resolved to all six axes. Paper: Ting & Jar (2006) section 2 (robot location, [`locate`]);
 //! beyond it, points given as wrist-centre positions, solved by closed-form inverse kinematics
-//! ([`points`]).
+//! (`points.rs`).
 //!
 //! **The one rule for where the robot stands.** `base: [x, y, z]` is used as given. `base: auto`
 //! stands the robot on the floor (z = [`AUTO_BASE_Z_MM`]) at the first position of the feasible

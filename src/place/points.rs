@@ -22,7 +22,8 @@ use crate::robot::ik::{self, ArmGeometry, IkError};
 use crate::robot::Robot;
 
 /// Resolves every point of `cell` with the robot at `placement`; `check` is the collision model
-/// of that placement. `geom` must be given when the cell has `xyz` points.
+/// of that placement. `geom` is the arm geometry when the caller has it (else it is derived
+/// here, for the first `xyz` point).
 pub(super) fn resolve(
     cell: &Cell,
     robot: &Robot,
@@ -60,11 +61,13 @@ pub(super) fn resolve(
                         loc,
                     }
                 };
-                let Some(geom) = geom else {
-                    return Err(fail(IkError::Structure {
-                        robot: robot.name.clone(),
-                        message: "no arm geometry was derived for it".into(),
-                    }));
+                let derived;
+                let geom = match geom {
+                    Some(g) => g,
+                    None => {
+                        derived = super::geometry(cell, robot)?;
+                        &derived
+                    }
                 };
                 let previous = points.last().map(|w| arm(&w.joints_deg));
                 let usable = |a: [f64; 3]| match check.why_blocked(&quantize_joints(a)) {

@@ -54,7 +54,7 @@
 //!   collision checks, which the IK and the planner apply from the chosen base.
 //!
 //! Files: [`rings`] (one point's reach region), [`region`] (the raster and its best position),
-//! [`diagnose`] (why `R` is empty).
+//! `diagnose.rs` (why `R` is empty).
 
 mod diagnose;
 pub mod region;
