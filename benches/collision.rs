@@ -1,16 +1,15 @@
 //! Timing of the collision model on the trunk-like scene of the paper's section 6: the grid
 //! build's hot path (`inspect_column`, one column of 136 axis-3 values) and the whole-move check.
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use gen_rapid::collision::{CollisionModel, Obstacle, Placement};
+use gen_rapid::cell::Obstacle;
+use gen_rapid::collision::CollisionModel;
 use gen_rapid::geometry::{Aabb, Point};
+use gen_rapid::place::Placement;
 use gen_rapid::robot::Robot;
 use std::hint::black_box;
 
 fn bx(name: &str, min: [f64; 3], max: [f64; 3]) -> Obstacle {
-    Obstacle {
-        name: name.to_string(),
-        aabb: Aabb::new(Point::from(min), Point::from(max)),
-    }
+    Obstacle::new(name, Aabb::new(Point::from(min), Point::from(max)))
 }
 
 /// Robot at (0, -850, 0), yaw 90, before a trunk of 1800 x 900 x 500 mm with a tall box in it.
@@ -66,7 +65,9 @@ fn bench(c: &mut Criterion) {
     eprintln!(
         "long move {from:?} -> {to:?}: safe {}, min clearance >= {:.3} mm",
         model.move_is_safe(&from, &to),
-        model.min_clearance_along(&from, &to, 0.1)
+        model
+            .min_clearance_along(&from, &to, 0.1)
+            .map_or(f64::INFINITY, |c| c.mm)
     );
     g.bench_function("move_is_safe_long", |b| {
         b.iter(|| model.move_is_safe(black_box(&from), black_box(&to)))
@@ -76,7 +77,9 @@ fn bench(c: &mut Criterion) {
     eprintln!(
         "move {from2:?} -> {to2:?}: safe {}, min clearance >= {:.3} mm",
         model.move_is_safe(&from2, &to2),
-        model.min_clearance_along(&from2, &to2, 0.1)
+        model
+            .min_clearance_along(&from2, &to2, 0.1)
+            .map_or(f64::INFINITY, |c| c.mm)
     );
     g.bench_function("move_is_safe_b_to_e", |b| {
         b.iter(|| model.move_is_safe(black_box(&from2), black_box(&to2)))

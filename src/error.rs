@@ -6,11 +6,11 @@
 //! cannot be reached, no path between two points) carry the location of the item they are about.
 
 use crate::cell::{CellError, Loc};
-use crate::ik::IkError;
-use crate::locate::LocateError;
-use crate::picture::PictureError;
+use crate::output::cspace_svg::PictureError;
+use crate::output::rapid::RapidError;
+use crate::place::PlaceError;
 use crate::plan::PlanError;
-use crate::rapid::RapidError;
+use crate::robot::ik::IkError;
 use crate::robot::RobotError;
 use std::path::PathBuf;
 
@@ -33,22 +33,8 @@ pub enum Error {
     Cell(#[from] CellError),
     #[error("{source}")]
     Robot { source: RobotError, loc: Loc },
-    #[error("{source}")]
-    Locate { source: LocateError, loc: Loc },
-    /// The robot's structure does not fit the closed-form inverse kinematics.
-    #[error("{source}")]
-    Arm { source: IkError, loc: Loc },
-    /// A point given as a position has no usable solution from the base it was solved from.
-    #[error("point '{point}' (robot base at [{:.1}, {:.1}, {:.1}] mm, yaw {} deg): {source}{detail}", .base_mm[0], .base_mm[1], .base_mm[2], .yaw_deg)]
-    Ik {
-        point: String,
-        base_mm: [f64; 3],
-        yaw_deg: f64,
-        source: Box<IkError>,
-        /// What blocks the solutions (link and obstacle), when they collide.
-        detail: String,
-        loc: Loc,
-    },
+    #[error(transparent)]
+    Place(#[from] PlaceError),
     #[error("{source}")]
     Plan { source: PlanError, loc: Loc },
     #[error(transparent)]
@@ -68,11 +54,11 @@ pub enum Error {
 impl Error {
     pub fn exit_code(&self) -> u8 {
         match self {
-            Error::Cell(_) | Error::Robot { .. } | Error::Arm { .. } => exit::INPUT,
-            Error::Locate { .. }
-            | Error::Ik { .. }
-            | Error::Plan { .. }
-            | Error::NoMethodSucceeded { .. } => exit::PLANNING,
+            Error::Cell(_) | Error::Robot { .. } => exit::INPUT,
+            Error::Place(e) if e.is_input() => exit::INPUT,
+            Error::Place(_) | Error::Plan { .. } | Error::NoMethodSucceeded { .. } => {
+                exit::PLANNING
+            }
             Error::Rapid(_) | Error::Write { .. } | Error::Picture(_) => exit::OUTPUT,
         }
     }
@@ -81,11 +67,8 @@ impl Error {
     pub fn loc(&self) -> Option<Loc> {
         match self {
             Error::Cell(e) => e.loc(),
-            Error::Robot { loc, .. }
-            | Error::Arm { loc, .. }
-            | Error::Locate { loc, .. }
-            | Error::Ik { loc, .. }
-            | Error::Plan { loc, .. } => Some(*loc),
+            Error::Place(e) => Some(e.loc()),
+            Error::Robot { loc, .. } | Error::Plan { loc, .. } => Some(*loc),
             Error::Rapid(_)
             | Error::Write { .. }
             | Error::Picture(_)
@@ -105,8 +88,8 @@ impl Error {
                 ..
             } => Some("a finer planner.grid or a smaller planner.clearance may open a passage; `gen-rapid --svg FILE` draws the blocked nodes".into()),
             Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
-            Error::Locate { .. } => Some("`gen-rapid locate CELL --svg FILE` draws every point's reach region; move the points closer together or give `base: [x, y, z]`".into()),
-            Error::Ik { source, .. } if matches!(**source, IkError::Unreachable { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `gen-rapid locate CELL` shows which base positions reach every point".into()),
+            Error::Place(PlaceError::Locate { .. }) => Some("`gen-rapid locate CELL --svg FILE` draws every point's reach region; move the points closer together or give `base: [x, y, z]`".into()),
+            Error::Place(PlaceError::Ik { source, .. }) if matches!(**source, IkError::Unreachable { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `gen-rapid locate CELL` shows which base positions reach every point".into()),
             _ => None,
         }
     }
@@ -131,5 +114,21 @@ impl Error {
             out += &format!("help: {h}\n");
         }
         out
+    }
+}
+
+/// A failure with the cell file's name and text, ready to print (the text, when it could be
+/// read, lets the message show the offending line).
+#[derive(Debug)]
+pub struct Failure {
+    /// Boxed: the error is large and a `Result` carrying it should not be.
+    pub error: Box<Error>,
+    pub file: String,
+    pub text: Option<String>,
+}
+
+impl Failure {
+    pub fn render(&self) -> String {
+        self.error.render(&self.file, self.text.as_deref())
     }
 }

@@ -1,27 +1,43 @@
 //! gen-rapid: cell YAML -> collision-free joint-space path -> ABB RAPID module.
 //!
-//! The pipeline, one module per stage (see ARCHITECTURE.md):
-//! `cell` -> `robot` -> (`locate`, `ik`) -> `collision` -> `cspace` -> `wave` -> `search`
-//! -> `shorten` / `merge` -> `plan` -> `program` -> `rapid`; `timing` (manipulation time, paper
-//! section 5) and `picture` (SVG of the search) look at a plan.
+//! The pipeline (`pipeline`), one module per stage, each a function of the previous stages'
+//! typed results (ARCHITECTURE.md has the code map and the invariants):
+//!
+//! ```text
+//! load (cell, robot) -> place -> inspect (collision) -> plan -> time -> render (output)
+//! ```
 
-pub mod cell;
-pub mod cli;
-pub mod collision;
-pub mod cspace;
-pub mod error;
+// Leaves, used by any stage.
 pub mod geometry;
-pub mod ik;
-pub mod locate;
-pub mod merge;
-pub mod picture;
-pub mod pipeline;
-pub mod plan;
-pub mod program;
-pub mod rapid;
+pub mod names;
+pub mod precision;
+/// RAPID's predefined speeddata and zonedata (docs/rapid.md).
 pub mod rapid_data;
+
+// The stages, in pipeline order.
+
+// load, part 1: the cell file
+pub mod cell;
+
+// load, part 2: URDF, controller convention, kinematics, IK
 pub mod robot;
-pub mod search;
-pub mod shorten;
+
+// place: where the robot stands, every point on six axes
+pub mod place;
+
+// inspect: the robot among the boxes, nodes and whole moves
+pub mod collision;
+
+// plan: the grid, the wave, the searches, the route
+pub mod plan;
+
+// time: manipulation time per move
 pub mod timing;
-pub mod wave;
+
+// render: the RAPID module, pictures, reports
+pub mod output;
+
+// The order of the stages, the errors, the commands.
+pub mod cli;
+pub mod error;
+pub mod pipeline;

@@ -2,10 +2,10 @@
 //! the result into an exit status. All work happens in the library (`gen_rapid::cli`).
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use gen_rapid::cell::Method;
 use gen_rapid::cli::compare::{compare, CompareOptions};
 use gen_rapid::cli::locate::{locate, LocateOptions};
 use gen_rapid::cli::run::{run, RunOptions};
+use gen_rapid::plan::Method;
 use std::path::PathBuf;
 use std::process::ExitCode;
 

@@ -7,7 +7,7 @@
 //! `robot::controller`), and all axes start and stop together: the move takes as long as its
 //! slowest axis needs (the *leading* axis), and the others are slowed down (their profiles
 //! stretched in time) to finish with it. All six axes count: axes 4..6 move only on a leg's last
-//! move and only when a cell point gives its own wrist (see `program`), but then they may lead.
+//! move and only when a cell point gives its own wrist (see `plan`), but then they may lead.
 //!
 //! # One axis, one move: the two profiles of Fig. 9
 //!
@@ -34,7 +34,7 @@
 //! # Values
 //!
 //! Speeds: the controller file (IRB 1400: 110 deg/s for axes 1-3, 280 for axes 4-6, from
-//! `shared/irb1400.md`). Accelerations: ABB does not publish them; the IRB 1400 file states
+//! `docs/irb1400.md`). Accelerations: ABB does not publish them; the IRB 1400 file states
 //! 515.625 deg/s^2 (axes 1-3) and 1312.5 deg/s^2 (axes 4-6), i.e. full speed in a 0.4 s ramp,
 //! an *estimate* whose reasoning is in `robots/irb1400.controller.yaml` (the paper's own results
 //! cost ~0.39 s per extra move). An axis without a stated acceleration gets the same 0.4 s ramp
@@ -42,7 +42,7 @@
 //! routes, not a cycle time: the real controller blends, limits torques and plans its own
 //! profiles.
 
-use crate::plan::Plan;
+use crate::plan::{Estimate, Plan};
 use crate::robot::AxisSpec;
 
 /// Ramp time (s) of the quintic speed ramp for speed `v` under peak acceleration `a`.
@@ -97,36 +97,18 @@ pub fn leading_axis(from: &[f64; 6], to: &[f64; 6], axes: &[AxisSpec; 6]) -> usi
     best.0
 }
 
-/// The route's targets with all six axes, in order, as `program::build` writes them: a cell
-/// point carries its own wrist (`wrists_deg[point]`), a leg's intermediate targets the wrist of
-/// the leg's first point.
-pub fn six_axis_targets(plan: &Plan, wrists_deg: &[[f64; 3]]) -> Vec<[f64; 6]> {
-    let wrist = |i: usize| wrists_deg.get(i).copied().unwrap_or([0.0; 3]);
-    let six = |a: [f64; 3], w: [f64; 3]| [a[0], a[1], a[2], w[0], w[1], w[2]];
-    let mut out = Vec::with_capacity(plan.moves() + 1);
-    if let Some(first) = plan.legs.first() {
-        out.push(six(first.waypoints[0], wrist(first.from)));
-    }
-    for leg in &plan.legs {
-        let n = leg.waypoints.len();
-        for (k, w) in leg.waypoints.iter().enumerate().skip(1) {
-            let w6 = if k == n - 1 {
-                wrist(leg.to)
-            } else {
-                wrist(leg.from)
-            };
-            out.push(six(*w, w6));
-        }
-    }
-    out
-}
-
-/// The manipulation time of the route (s): the sum of its moves' times.
-pub fn plan_time_s(plan: &Plan, wrists_deg: &[[f64; 3]], axes: &[AxisSpec; 6]) -> f64 {
-    six_axis_targets(plan, wrists_deg)
+/// The time stage: the manipulation time of every move of the route and their sum (s), each
+/// move from rest to rest over all six axes of its waypoints.
+pub fn estimate(plan: &Plan, axes: &[AxisSpec; 6]) -> Estimate {
+    let move_s: Vec<f64> = plan
+        .waypoints
         .windows(2)
-        .map(|w| move_time_s(&w[0], &w[1], axes))
-        .sum()
+        .map(|w| move_time_s(&w[0].joints_deg, &w[1].joints_deg, axes))
+        .collect();
+    Estimate {
+        total_s: move_s.iter().sum(),
+        move_s,
+    }
 }
 
 #[cfg(test)]
@@ -225,30 +207,37 @@ mod tests {
     }
 
     #[test]
-    fn a_route_sums_its_moves_and_turns_the_wrist_on_the_last_move_of_a_leg() {
-        use crate::cell::Method;
-        use crate::plan::Leg;
+    fn a_route_sums_its_moves_over_all_six_axes() {
+        use crate::plan::{Method, Waypoint, WaypointKind};
+        let w = |kind, joints_deg| Waypoint { kind, joints_deg };
         let plan = Plan {
             method: Method::Extensile,
-            legs: vec![Leg {
-                from: 0,
-                to: 1,
-                grid_path: Vec::new(),
-                waypoints: vec![[0.0, 0.0, 0.0], [10.0, 0.0, 0.0], [10.0, 10.0, 0.0]],
-            }],
+            grid_deg: 1.0,
+            waypoints: vec![
+                w(WaypointKind::CellPoint(0), [0.0, 0.0, 0.0, 0.0, 30.0, 0.0]),
+                w(
+                    WaypointKind::Via { leg: 0, index: 1 },
+                    [10.0, 0.0, 0.0, 0.0, 30.0, 0.0],
+                ),
+                w(
+                    WaypointKind::CellPoint(1),
+                    [10.0, 10.0, 0.0, 0.0, 30.0, 100.0],
+                ),
+            ],
+            legs: Vec::new(),
+            min_clearance: None,
+            estimate: None,
         };
-        let wrists = [[0.0, 30.0, 0.0], [0.0, 30.0, 100.0]];
-        let t = six_axis_targets(&plan, &wrists);
-        assert_eq!(t.len(), 3);
-        assert_eq!(t[1], [10.0, 0.0, 0.0, 0.0, 30.0, 0.0]);
-        assert_eq!(t[2], [10.0, 10.0, 0.0, 0.0, 30.0, 100.0]);
         let mut axes = [axis(110.0, 515.625); 6];
         for a in axes.iter_mut().skip(3) {
             *a = axis(280.0, 1312.5);
         }
         // Move 1: axis 1, 10 deg: 0.334621 s. Move 2: axis 2 10 deg (0.334621 s) and axis 6
         // 100 deg (0.669643 s, above): 0.669643 s. Total 1.004264 s.
-        assert!(close(plan_time_s(&plan, &wrists, &axes), 1.004264, 1e-6));
+        let e = estimate(&plan, &axes);
+        assert_eq!(e.move_s.len(), 2);
+        assert!(close(e.move_s[0], 0.334621, 1e-6) && close(e.move_s[1], 0.669643, 1e-6));
+        assert!(close(e.total_s, 1.004264, 1e-6));
     }
 
     #[test]

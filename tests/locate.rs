@@ -1,10 +1,10 @@
 //! Robot location (`base: auto`), points given as positions (`xyz`), and `gen-rapid locate`,
 //! end to end: through the library pipeline and through the command line.
 
-use gen_rapid::cell::{self, Base, Target};
-use gen_rapid::collision::Placement;
-use gen_rapid::ik;
+use gen_rapid::cell::{Base, Target};
 use gen_rapid::pipeline;
+use gen_rapid::place::Placement;
+use gen_rapid::robot::ik::{self, ArmGeometry};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -87,18 +87,20 @@ fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
 
 #[test]
 fn trunk_auto_region_contains_the_papers_base() {
-    let (cell, _) = cell::load(&manifest().join("cells/trunk-auto.yaml")).expect("cell");
-    assert_eq!(cell.robot.base, Base::Auto);
-    let robot = pipeline::load_robot(&cell).expect("robot");
-    let geom = pipeline::geometry(&cell, &robot).expect("geometry");
-    let loc = pipeline::locate_base(&cell, &robot, &geom).expect("a region");
+    let job = pipeline::load(&manifest().join("cells/trunk-auto.yaml")).expect("cell");
+    assert_eq!(job.cell.robot.base, Base::Auto);
+    let survey = pipeline::survey(&job).expect("a region");
+    let loc = &survey.location;
     let paper = [0.0, -850.0];
     let m = loc.margin_at(paper);
     assert!(m.is_some_and(|m| m > 0.0), "paper's base not in R: {m:?}");
     assert!(loc.region.contains(paper), "raster disagrees");
-    // The chosen base is inside, with the margin reported, and is no worse than the paper's.
-    assert_eq!(loc.margin_at(loc.base_mm), Some(loc.margin_mm));
-    assert!(loc.margin_mm >= m.unwrap_or(f64::INFINITY) - 1e-9);
+    // R's best position is inside, with the margin reported, and is no worse than the paper's.
+    assert_eq!(loc.margin_at(loc.best_mm), Some(loc.best_margin_mm));
+    assert!(loc.best_margin_mm >= m.unwrap_or(f64::INFINITY) - 1e-9);
+    // The base chosen is in R, with its margin.
+    let base = [survey.base_mm[0], survey.base_mm[1]];
+    assert_eq!(loc.margin_at(base), Some(survey.margin_mm));
     // A position under the trunk is not.
     assert!(loc.margin_at([0.0, 0.0]).is_none() && !loc.region.contains([0.0, 0.0]));
 }
@@ -106,27 +108,30 @@ fn trunk_auto_region_contains_the_papers_base() {
 #[test]
 fn trunk_auto_plans_from_the_chosen_base_and_its_points_come_back_by_fk() {
     let path = manifest().join("cells/trunk-auto.yaml");
-    let (cell, _) = cell::load(&path).expect("cell");
-    let prep = pipeline::prepare(cell.clone()).expect("prepared");
-    let loc = prep.location.clone().expect("base: auto located");
+    let job = pipeline::load(&path).expect("cell");
+    let cell = &job.cell;
+    let placed = pipeline::place(&job).expect("placed");
+    let loc = placed.location.clone().expect("base: auto located");
     assert_eq!(
-        prep.placement.base_mm,
-        [loc.base_mm[0], loc.base_mm[1], 0.0]
+        placed.placement.base_mm,
+        [loc.best_mm[0], loc.best_mm[1], 0.0],
+        "R's best position reaches every point here"
     );
     assert_eq!(
-        prep.placement.yaw_deg, cell.robot.yaw_deg,
+        placed.placement.yaw_deg, cell.robot.yaw_deg,
         "yaw kept as given"
     );
-    let cs = pipeline::cspace(&prep, cell.planner.grid_deg);
-    let out = pipeline::plan_and_render(&prep, &cs, cell.planner.method, |_| None).expect("plan");
+    let inspected = pipeline::inspect(&job, &placed, cell.planner.grid_deg);
+    let plan = pipeline::plan(&job, &placed, &inspected, cell.planner.method).expect("plan");
+    let out = pipeline::render(&job, &placed, &plan).expect("render");
     // The header carries exactly the base the joints were computed from.
     let (base, yaw) = header_base(&out.text);
-    assert_eq!(base, prep.placement.base_mm, "{}", out.text);
+    assert_eq!(base, placed.placement.base_mm, "{}", out.text);
     assert_eq!(yaw, 90.0);
     // Every cell point's written joint values give its xyz back within 0.05 mm (FK from the
     // header's placement, read from the text, not from the pipeline's memory).
-    let robot = pipeline::load_robot(&cell).expect("robot");
-    let geom = pipeline::geometry(&cell, &robot).expect("geometry");
+    let robot = &job.robot;
+    let geom = ArmGeometry::from_robot(robot).expect("geometry");
     let placement = Placement {
         base_mm: base,
         yaw_deg: yaw,
@@ -139,7 +144,7 @@ fn trunk_auto_plans_from_the_chosen_base_and_its_points_come_back_by_fk() {
             panic!("trunk-auto gives positions");
         };
         let axes = module_axes(&out.text, &p.name);
-        let back = pipeline::to_cell_frame(ik::forward(&geom, axes), &placement);
+        let back = placement.to_cell_frame(ik::forward(&geom, axes));
         let d = dist(back, wrist_centre_mm);
         assert!(
             d < 0.05,
@@ -147,7 +152,7 @@ fn trunk_auto_plans_from_the_chosen_base_and_its_points_come_back_by_fk() {
             p.name
         );
         assert!(robot.check_range3(&axes).is_ok(), "{} out of range", p.name);
-        assert!(prep.model.is_free(&axes), "{} in collision", p.name);
+        assert!(inspected.model.is_free(&axes), "{} in collision", p.name);
     }
 }
 
@@ -325,12 +330,12 @@ fn branch_forces_the_back_stance_and_bad_branches_point_at_their_line() {
     // Unforced: the first point takes the most upright arm, facing it (axis 1 = 45).
     // (Back stance for (50, 50, 1550): axes -135, -50.0, -61.4, within the ranges.)
     let free = temp_cell(dir.path(), "free.yaml", &branch_cell(""));
-    let (cell, _) = cell::load(&free).expect("cell");
-    let prep = pipeline::prepare(cell).expect("prepared");
+    let job = pipeline::load(&free).expect("cell");
+    let placed = pipeline::place(&job).expect("placed");
     assert!(
-        (prep.points[0].axes_deg[0] - 45.0).abs() < 1e-3,
+        (placed.points[0].joints_deg[0] - 45.0).abs() < 1e-3,
         "{:?}",
-        prep.points[0]
+        placed.points[0]
     );
     // Forced back: axis 1 half a turn round, same wrist centre.
     let back = temp_cell(
@@ -338,13 +343,12 @@ fn branch_forces_the_back_stance_and_bad_branches_point_at_their_line() {
         "back.yaml",
         &branch_cell(", branch: back-elbow-up"),
     );
-    let (cell, _) = cell::load(&back).expect("cell");
-    let prep = pipeline::prepare(cell.clone()).expect("prepared");
-    let a = prep.points[0].axes_deg;
+    let job = pipeline::load(&back).expect("cell");
+    let placed = pipeline::place(&job).expect("placed");
+    let a = placed.points[0].arm_deg();
     assert!((a[0] + 135.0).abs() < 1e-3, "{a:?}");
-    let robot = pipeline::load_robot(&cell).expect("robot");
-    let geom = pipeline::geometry(&cell, &robot).expect("geometry");
-    let w = pipeline::to_cell_frame(ik::forward(&geom, a), &prep.placement);
+    let geom = ArmGeometry::from_robot(&job.robot).expect("geometry");
+    let w = placed.placement.to_cell_frame(ik::forward(&geom, a));
     assert!(dist(w, [50.0, 50.0, 1550.0]) < 0.05, "{w:?}");
     // Elbow down is out of the IRB 1400's coupled range: a planning failure naming the branch.
     let down = temp_cell(
@@ -388,26 +392,26 @@ fn base_auto_skips_positions_from_which_a_point_is_out_of_range() {
         urdf.display()
     );
     let path = temp_cell(dir.path(), "auto1.yaml", &body);
-    let (cell, _) = cell::load(&path).expect("cell");
-    let prep = pipeline::prepare(cell.clone()).expect("a base that reaches every point");
-    let location = prep.location.as_ref().expect("base: auto");
-    assert_eq!(
-        location.base_mm,
-        [prep.placement.base_mm[0], prep.placement.base_mm[1]]
-    );
+    let job = pipeline::load(&path).expect("cell");
+    let cell = &job.cell;
+    let placed = pipeline::place(&job).expect("a base that reaches every point");
+    let location = placed.location.as_ref().expect("base: auto");
+    let chosen = [placed.placement.base_mm[0], placed.placement.base_mm[1]];
     // The chosen position lies in R, and is not the one with the largest margin (which fails).
-    assert!(location.margin_at(location.base_mm).is_some());
+    assert!(location.margin_at(chosen).is_some());
     let mut by_margin = location.candidates();
     by_margin.sort_by(|a, b| b.1.total_cmp(&a.1));
     assert_ne!(
-        by_margin[0].0, location.base_mm,
+        by_margin[0].0, chosen,
         "the largest-margin position should fail here"
     );
-    let robot = pipeline::load_robot(&cell).expect("robot");
-    let geom = pipeline::geometry(&cell, &robot).expect("geometry");
-    for p in &prep.points {
-        robot.check_range3(&p.axes_deg).expect("in range");
-        let w = pipeline::to_cell_frame(ik::forward(&geom, p.axes_deg), &prep.placement);
+    let robot = &job.robot;
+    let geom = ArmGeometry::from_robot(robot).expect("geometry");
+    for p in &placed.points {
+        robot.check_range3(&p.arm_deg()).expect("in range");
+        let w = placed
+            .placement
+            .to_cell_frame(ik::forward(&geom, p.arm_deg()));
         let given = match cell
             .points
             .iter()
@@ -430,8 +434,8 @@ fn base_auto_skips_positions_from_which_a_point_is_out_of_range() {
     assert_eq!(
         chosen,
         Some([
-            Some(prep.placement.base_mm[0]),
-            Some(prep.placement.base_mm[1])
+            Some(placed.placement.base_mm[0]),
+            Some(placed.placement.base_mm[1])
         ]),
         "{j}"
     );

@@ -6,11 +6,13 @@
 mod common;
 use common::dense::check_module;
 use common::root;
-use gen_rapid::cell::{self, Method};
-use gen_rapid::collision::{CollisionModel, Obstacle, Placement};
+use gen_rapid::cell::{self, Obstacle};
+use gen_rapid::collision::CollisionModel;
 use gen_rapid::error::Error;
 use gen_rapid::geometry::Aabb;
-use gen_rapid::pipeline;
+use gen_rapid::pipeline::{self, Loaded};
+use gen_rapid::place::Placement;
+use gen_rapid::plan::Method;
 use gen_rapid::robot::Robot;
 use nalgebra::Point3;
 
@@ -77,10 +79,7 @@ fn random_cell(rng: &mut Rng, robot: &Robot, index: usize) -> Option<RandomCell>
     // result is independent).
     let obstacles = boxes
         .iter()
-        .map(|(n, a, b)| Obstacle {
-            name: n.clone(),
-            aabb: Aabb::new(Point3::from(*a), Point3::from(*b)),
-        })
+        .map(|(n, a, b)| Obstacle::new(n.clone(), Aabb::new(Point3::from(*a), Point3::from(*b))))
         .collect();
     let model = CollisionModel::new(
         robot,
@@ -155,15 +154,21 @@ fn random_cells_plan_safe_modules_or_fail_cleanly() {
         cells += 1;
         let path = root().join(format!("tests/random{index}.yaml"));
         let cell = cell::parse(&path, &rc.yaml).unwrap_or_else(|e| panic!("{e}\n{}", rc.yaml));
-        let prep = pipeline::prepare(cell.clone()).unwrap_or_else(|e| panic!("{e}\n{}", rc.yaml));
-        let cs = pipeline::cspace(&prep, rc.grid_deg);
+        let job = Loaded {
+            cell: cell.clone(),
+            text: rc.yaml.clone(),
+            robot: robot.clone(),
+        };
+        let placed = pipeline::place(&job).unwrap_or_else(|e| panic!("{e}\n{}", rc.yaml));
+        let inspected = pipeline::inspect(&job, &placed, rc.grid_deg);
         for m in Method::ALL {
-            match pipeline::plan_and_render(&prep, &cs, m, |p| {
-                Some(pipeline::manipulation_time_s(&prep, p))
-            }) {
+            let rendered = pipeline::plan(&job, &placed, &inspected, m)
+                .map(|plan| pipeline::time(&job, plan))
+                .and_then(|plan| pipeline::render(&job, &placed, &plan));
+            match rendered {
                 Ok(out) => {
                     let label = format!("random cell {index}, {m}");
-                    let (samples, smallest) = check_module(&cell, &prep.robot, &out.text, &label);
+                    let (samples, smallest) = check_module(&cell, &job.robot, &out.text, &label);
                     assert!(
                         samples > 0 && smallest >= cell.planner.clearance_mm - 1e-6,
                         "{label}"

@@ -1,59 +1,15 @@
-//! The commands behind `gen-rapid`: each reads a cell, runs the stages it needs and writes its
-//! result. `main.rs` only parses the command line and turns the result into an exit status.
+//! The commands behind `gen-rapid`: each runs the pipeline stages it needs (`pipeline`), has
+//! the output side make its text (`output`) and writes it. Only this module writes files (always
+//! atomically) and stdout; `main.rs` only parses the command line and turns the result into an
+//! exit status.
 
 pub mod compare;
 pub mod locate;
 pub mod run;
 
-use crate::cell::{self, Cell};
 use crate::error::Error;
 use std::io::Write;
 use std::path::Path;
-
-/// A cell loaded with its text (kept for pointing at lines in error messages).
-pub struct Loaded {
-    pub cell: Cell,
-    pub text: String,
-}
-
-/// A failure with the cell's name and text, ready to print.
-pub struct Failure {
-    /// Boxed: the error is large and a `Result` carrying it should not be.
-    pub error: Box<Error>,
-    pub file: String,
-    pub text: Option<String>,
-}
-
-impl Failure {
-    pub fn render(&self) -> String {
-        self.error.render(&self.file, self.text.as_deref())
-    }
-}
-
-pub fn load(path: &Path) -> Result<Loaded, Failure> {
-    let file = path.display().to_string();
-    match cell::load(path) {
-        Ok((cell, text)) => Ok(Loaded { cell, text }),
-        Err(e) => {
-            let text = std::fs::read_to_string(path).ok();
-            Err(Failure {
-                error: Box::new(Error::Cell(e)),
-                file,
-                text,
-            })
-        }
-    }
-}
-
-impl Loaded {
-    pub fn fail(&self, error: Error) -> Failure {
-        Failure {
-            error: Box::new(error),
-            file: self.cell.path.display().to_string(),
-            text: Some(self.text.clone()),
-        }
-    }
-}
 
 /// Writes `bytes` to `path` atomically: a temporary file beside it, then a rename, so a failed
 /// run leaves no half-written file and an existing file is replaced whole.

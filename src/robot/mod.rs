@@ -11,6 +11,7 @@
 //! applies the controller's coupling ([`controller`]) to get URDF joint values.
 
 pub mod controller;
+pub mod ik;
 pub mod urdf;
 
 use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
@@ -269,7 +270,7 @@ mod tests {
     }
 
     /// Joint values read in ABB RobotStudio and the tool0 position it reported
-    /// (../shared/irb1400.md, forward-kinematics check data).
+    /// (`docs/irb1400.md`, forward-kinematics check data).
     const ROBOTSTUDIO: [(Axes6, [f64; 3]); 4] = [
         (
             [30.80, -12.13, 15.33, -40.0, 59.80, -28.0],
@@ -332,7 +333,7 @@ mod tests {
         );
     }
 
-    /// The wrist-centre closed form of irb1400.md, an independent computation.
+    /// The wrist-centre closed form of `docs/irb1400.md`, an independent computation.
     fn wrist_closed_form(a: Axes3) -> [f64; 3] {
         let [r1, r2, r3] = a.map(f64::to_radians);
         let r = 150.0 + 600.0 * r2.sin() + 720.0 * r3.cos() + 120.0 * r3.sin();

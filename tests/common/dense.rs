@@ -113,8 +113,8 @@ pub fn boxes_of(cell: &cell::Cell) -> Vec<(Cuboid, Pose)> {
     cell.obstacles
         .iter()
         .map(|o| {
-            let h = [0, 1, 2].map(|k| (o.max_mm[k] - o.min_mm[k]) / 2.0);
-            let c = [0, 1, 2].map(|k| (o.max_mm[k] + o.min_mm[k]) / 2.0);
+            let h = [0, 1, 2].map(|k| (o.aabb.max[k] - o.aabb.min[k]) / 2.0);
+            let c = [0, 1, 2].map(|k| (o.aabb.max[k] + o.aabb.min[k]) / 2.0);
             (
                 Cuboid::new(Vector::new(h[0], h[1], h[2])),
                 Pose::from_translation(Vector::new(c[0], c[1], c[2])),

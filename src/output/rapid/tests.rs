@@ -1,17 +1,18 @@
 //! Tests of [`render`](super::render) (format and names have their own).
 
 use super::*;
+use crate::names::check_identifier;
 
-fn point(name: &str, axes_deg: [f64; 6]) -> Target {
-    Target {
+fn point(name: &str, axes_deg: [f64; 6]) -> JointTarget {
+    JointTarget {
         kind: TargetKind::CellPoint {
             name: name.to_string(),
         },
         axes_deg,
     }
 }
-fn via(leg: usize, index: usize, axes_deg: [f64; 6]) -> Target {
-    Target {
+fn via(leg: usize, index: usize, axes_deg: [f64; 6]) -> JointTarget {
+    JointTarget {
         kind: TargetKind::Via { leg, index },
         axes_deg,
     }

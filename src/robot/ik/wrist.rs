@@ -3,8 +3,8 @@
 //! Stage: a wrist-centre position (robot base frame, mm) -> controller values of axes 1..3
 //! (degrees). Paper: Ting & Jar (2006) lump the arm into its first three links (section 3), so
 //! the planner works on axes 1..3 and needs, for every working point, the axis values that put
-//! the wrist centre there. This module is the closed form of `../shared/irb1400.md`
-//! ("Wrist centre in closed form"), inverted:
+//! the wrist centre there. This module is the closed form of the wrist centre
+//! (`docs/irb1400.md`, "Wrist centre in closed form"), inverted:
 //!
 //! ```text
 //! r = a1 + a2 sin(rax2) + d4 cos(phi) + a3 sin(phi)
@@ -36,11 +36,10 @@
 //!   (front) and that +- 180 (back) when there is a previous pose.
 //! - On the reach boundary the two elbow solutions coincide; both labels are returned.
 
-use crate::robot::{Axes3, Coupling, RangeViolation, Robot};
+use super::{describe_violation, wrap_deg};
+use super::{Branch, IkError, IkSolution};
+use crate::robot::{Axes3, Coupling, Robot};
 use nalgebra::Vector3;
-use serde::{Deserialize, Serialize};
-use std::fmt;
-use std::str::FromStr;
 
 /// Tolerance on joint-origin offsets that must be zero, mm.
 const OFFSET_TOL_MM: f64 = 1e-6;
@@ -188,7 +187,7 @@ impl ArmGeometry {
         })
     }
 
-    /// The IRB 1400 lengths of irb1400.md, parallelogram coupling, no q3 restriction.
+    /// The IRB 1400 lengths of `docs/irb1400.md`, parallelogram coupling, no q3 restriction.
     pub fn irb1400_nominal() -> ArmGeometry {
         ArmGeometry {
             d1_mm: 475.0,
@@ -217,186 +216,6 @@ impl ArmGeometry {
         let rxy = wrist_mm[0].hypot(wrist_mm[1]);
         let v = wrist_mm[2] - self.d1_mm;
         ((rxy - self.a1_mm).hypot(v), (rxy + self.a1_mm).hypot(v))
-    }
-}
-
-/// Which of the (up to) four solutions: axis 1 front/back, elbow up/down (see the module docs).
-/// Deserializes from kebab-case (`front-elbow-up`), as the cell file's `branch:` key.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Branch {
-    FrontElbowUp,
-    FrontElbowDown,
-    BackElbowUp,
-    BackElbowDown,
-}
-
-impl Branch {
-    /// The order [`solve`] returns them in (also the last tie-break of [`choose`]).
-    pub const ALL: [Branch; 4] = [
-        Branch::FrontElbowUp,
-        Branch::FrontElbowDown,
-        Branch::BackElbowUp,
-        Branch::BackElbowDown,
-    ];
-
-    fn of(front: bool, up: bool) -> Branch {
-        match (front, up) {
-            (true, true) => Branch::FrontElbowUp,
-            (true, false) => Branch::FrontElbowDown,
-            (false, true) => Branch::BackElbowUp,
-            (false, false) => Branch::BackElbowDown,
-        }
-    }
-
-    pub fn is_front(self) -> bool {
-        matches!(self, Branch::FrontElbowUp | Branch::FrontElbowDown)
-    }
-
-    pub fn is_elbow_up(self) -> bool {
-        matches!(self, Branch::FrontElbowUp | Branch::BackElbowUp)
-    }
-
-    /// The kebab-case name the cell file uses.
-    pub fn name(self) -> &'static str {
-        match self {
-            Branch::FrontElbowUp => "front-elbow-up",
-            Branch::FrontElbowDown => "front-elbow-down",
-            Branch::BackElbowUp => "back-elbow-up",
-            Branch::BackElbowDown => "back-elbow-down",
-        }
-    }
-
-    fn index(self) -> usize {
-        match self {
-            Branch::FrontElbowUp => 0,
-            Branch::FrontElbowDown => 1,
-            Branch::BackElbowUp => 2,
-            Branch::BackElbowDown => 3,
-        }
-    }
-}
-
-impl fmt::Display for Branch {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for Branch {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Branch, String> {
-        Branch::ALL
-            .into_iter()
-            .find(|b| b.name() == s)
-            .ok_or_else(|| {
-                format!(
-                    "unknown branch `{s}`; expected one of front-elbow-up, front-elbow-down, \
-                     back-elbow-up, back-elbow-down"
-                )
-            })
-    }
-}
-
-/// One solution: controller values of axes 1..3, degrees, each in (-180, 180].
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct IkSolution {
-    pub branch: Branch,
-    pub axes_deg: Axes3,
-}
-
-/// Why no solution was chosen. Positions in the robot base frame, mm.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum IkError {
-    #[error("robot {robot} is not the ABB-like arm the closed-form IK handles: {message}")]
-    Structure { robot: String, message: String },
-    #[error("wrist centre {} is not a finite position", fmt_p(.wrist_mm))]
-    NotFinite { wrist_mm: [f64; 3] },
-    #[error(
-        "wrist centre {} is out of reach: it is {front_mm:.1} mm from the shoulder \
-         ({back_mm:.1} mm with axis 1 turned half a turn); the arm reaches {min_mm:.1} .. \
-         {max_mm:.1} mm",
-        fmt_p(.wrist_mm)
-    )]
-    Unreachable {
-        wrist_mm: [f64; 3],
-        front_mm: f64,
-        back_mm: f64,
-        min_mm: f64,
-        max_mm: f64,
-    },
-    #[error(
-        "no solution for wrist centre {} lies within the axis ranges: {}",
-        fmt_p(.wrist_mm),
-        fmt_violations(.violations)
-    )]
-    OutOfRange {
-        wrist_mm: [f64; 3],
-        violations: Vec<(Branch, RangeViolation)>,
-    },
-    #[error(
-        "every solution for wrist centre {} within the axis ranges collides ({})",
-        fmt_p(.wrist_mm),
-        fmt_branches(.branches)
-    )]
-    InCollision {
-        wrist_mm: [f64; 3],
-        branches: Vec<Branch>,
-    },
-    #[error("wrist centre {}: the required branch {branch} {reason}", fmt_p(.wrist_mm))]
-    ForcedBranch {
-        wrist_mm: [f64; 3],
-        branch: Branch,
-        reason: String,
-    },
-}
-
-/// A position as the messages give it: the frame is named, since a cell gives positions in the
-/// cell frame and these are in the robot's.
-fn fmt_p(p: &[f64; 3]) -> String {
-    format!("({:.1}, {:.1}, {:.1}) mm (robot frame)", p[0], p[1], p[2])
-}
-
-fn fmt_branches(b: &[Branch]) -> String {
-    b.iter().map(|b| b.name()).collect::<Vec<_>>().join(", ")
-}
-
-/// A range violation with values rounded to 0.1 deg.
-pub fn describe_violation(v: &RangeViolation) -> String {
-    match v {
-        RangeViolation::Axis {
-            axis,
-            value_deg,
-            min_deg,
-            max_deg,
-        } => format!("axis {axis} = {value_deg:.1} deg is outside {min_deg} .. {max_deg} deg"),
-        RangeViolation::Coupled {
-            value_deg,
-            min_deg,
-            max_deg,
-        } => format!(
-            "axis 3 - axis 2 = {value_deg:.1} deg is outside the coupled range {min_deg} .. \
-             {max_deg} deg"
-        ),
-    }
-}
-
-fn fmt_violations(v: &[(Branch, RangeViolation)]) -> String {
-    v.iter()
-        .map(|(b, v)| format!("{b}: {}", describe_violation(v)))
-        .collect::<Vec<_>>()
-        .join("; ")
-}
-
-/// Wraps an angle into (-180, 180].
-pub fn wrap_deg(a: f64) -> f64 {
-    let w = a - 360.0 * ((a + 180.0) / 360.0).floor();
-    if w <= -180.0 {
-        w + 360.0
-    } else if w > 180.0 {
-        w - 360.0
-    } else {
-        w
     }
 }
 
@@ -502,7 +321,8 @@ pub fn solve(geom: &ArmGeometry, wrist_mm: [f64; 3]) -> Vec<IkSolution> {
 /// Picks one solution for a wrist centre (robot base frame, mm).
 ///
 /// Keeps the solutions of [`solve`] that are of `branch` (when given), inside the axis ranges
-/// (`robot.check_range3`, the coupled axis-3 range included) and for which `is_free` holds.
+/// (`robot.check_range3`, the coupled axis-3 range included) and that `usable` accepts (the
+/// caller's collision check; its `Err` is the reason, kept in [`IkError::InCollision`]).
 /// Among them:
 /// - with a `previous` pose: the one closest to it in the **max-norm** (axes 1..3 share one
 ///   speed, so the max-norm is the duration of a synchronised joint move), ties broken by the
@@ -520,7 +340,7 @@ pub fn choose(
     wrist_mm: [f64; 3],
     previous: Option<Axes3>,
     branch: Option<Branch>,
-    is_free: impl Fn(Axes3) -> bool,
+    usable: impl Fn(Axes3) -> Result<(), String>,
 ) -> Result<IkSolution, IkError> {
     if !wrist_mm.iter().all(|c| c.is_finite()) {
         return Err(IkError::NotFinite { wrist_mm });
@@ -597,11 +417,14 @@ pub fn choose(
             },
         });
     }
-    let in_range_branches: Vec<Branch> = in_range.iter().map(|s| s.branch).collect();
-    let free: Vec<IkSolution> = in_range
-        .into_iter()
-        .filter(|s| is_free(s.axes_deg))
-        .collect();
+    let mut blocked = Vec::new();
+    let mut free: Vec<IkSolution> = Vec::with_capacity(in_range.len());
+    for s in in_range {
+        match usable(s.axes_deg) {
+            Ok(()) => free.push(s),
+            Err(why) => blocked.push((s.branch, why)),
+        }
+    }
     let key = |s: &IkSolution| -> (f64, f64, usize) {
         let a = s.axes_deg;
         match previous {
@@ -621,10 +444,7 @@ pub fn choose(
                 .then(ka.1.total_cmp(&kb.1))
                 .then(ka.2.cmp(&kb.2))
         })
-        .ok_or(IkError::InCollision {
-            wrist_mm,
-            branches: in_range_branches,
-        })
+        .ok_or(IkError::InCollision { wrist_mm, blocked })
 }
 
 #[cfg(test)]
@@ -671,7 +491,8 @@ mod tests {
             .find(|s| s.axes_deg.iter().all(|a| a.abs() < 1e-9))
             .expect("(0, 0, 0) among the solutions");
         assert_eq!(zero.branch, Branch::FrontElbowUp);
-        let c = choose(&robot, &g, [870.0, 0.0, 1195.0], None, None, |_| true).expect("reachable");
+        let c =
+            choose(&robot, &g, [870.0, 0.0, 1195.0], None, None, |_| Ok(())).expect("reachable");
         assert!(c.axes_deg.iter().all(|a| a.abs() < 1e-9), "{c:?}");
     }
 
@@ -743,7 +564,7 @@ mod tests {
     fn unreachable_point_says_how_far() {
         let (robot, g) = geom();
         // 1612 mm straight ahead of the shoulder (150, 0, 475).
-        let err = choose(&robot, &g, [1762.0, 0.0, 475.0], None, None, |_| true).unwrap_err();
+        let err = choose(&robot, &g, [1762.0, 0.0, 475.0], None, None, |_| Ok(())).unwrap_err();
         let text = err.to_string();
         // 600 + sqrt(120^2 + 720^2) = 1329.93; |600 - 729.93| = 129.93; back: 1762 + 150.
         assert!(text.contains("1612.0 mm from the shoulder"), "{text}");
@@ -783,13 +604,14 @@ mod tests {
         let (robot, g) = geom();
         // Behind and above axis 1: only the back stance is in range (front needs axis 1 = 180).
         let p = [-100.0, 0.0, 1400.0];
-        let back = choose(&robot, &g, p, None, Some(Branch::BackElbowUp), |_| true).expect("back");
+        let back =
+            choose(&robot, &g, p, None, Some(Branch::BackElbowUp), |_| Ok(())).expect("back");
         assert_eq!(back.branch, Branch::BackElbowUp);
         assert!(back.axes_deg[0].abs() < 1e-9, "{back:?}");
         assert!(dist(urdf_wrist(&robot, back.axes_deg), p) < 0.01);
-        let free = choose(&robot, &g, p, None, None, |_| true).expect("some");
+        let free = choose(&robot, &g, p, None, None, |_| Ok(())).expect("some");
         assert_eq!(free.branch, Branch::BackElbowUp);
-        let err = choose(&robot, &g, p, None, Some(Branch::FrontElbowUp), |_| true).unwrap_err();
+        let err = choose(&robot, &g, p, None, Some(Branch::FrontElbowUp), |_| Ok(())).unwrap_err();
         let text = err.to_string();
         assert!(matches!(err, IkError::ForcedBranch { .. }), "{text}");
         assert!(
@@ -797,7 +619,7 @@ mod tests {
             "{text}"
         );
         // Elbow down is never inside the IRB 1400's coupled range.
-        let err = choose(&robot, &g, p, None, Some(Branch::BackElbowDown), |_| true).unwrap_err();
+        let err = choose(&robot, &g, p, None, Some(Branch::BackElbowDown), |_| Ok(())).unwrap_err();
         assert!(err.to_string().contains("back-elbow-down"), "{err}");
     }
 
@@ -805,7 +627,7 @@ mod tests {
     fn out_of_range_names_the_axis() {
         let (robot, g) = geom();
         // Straight below the shoulder, close to the floor: needs axis 2 far beyond 70 deg.
-        let err = choose(&robot, &g, [700.0, 0.0, -300.0], None, None, |_| true).unwrap_err();
+        let err = choose(&robot, &g, [700.0, 0.0, -300.0], None, None, |_| Ok(())).unwrap_err();
         let text = err.to_string();
         assert!(matches!(err, IkError::OutOfRange { .. }), "{text}");
         assert!(text.contains("axis 2") || text.contains("axis 3"), "{text}");
@@ -822,20 +644,27 @@ mod tests {
             .collect();
         let br: Vec<Branch> = in_range.iter().map(|s| s.branch).collect();
         assert_eq!(br, vec![Branch::FrontElbowUp, Branch::BackElbowUp]);
-        let near_front = choose(&robot, &g, p, Some([80.0, -40.0, -40.0]), None, |_| true);
+        let near_front = choose(&robot, &g, p, Some([80.0, -40.0, -40.0]), None, |_| Ok(()));
         assert_eq!(near_front.map(|s| s.branch), Ok(Branch::FrontElbowUp));
-        let near_back = choose(&robot, &g, p, Some([-80.0, -40.0, -40.0]), None, |_| true);
+        let near_back = choose(&robot, &g, p, Some([-80.0, -40.0, -40.0]), None, |_| Ok(()));
         assert_eq!(near_back.map(|s| s.branch), Ok(Branch::BackElbowUp));
         // First point: the front arm is more upright (|a2| + |a3| about 101 vs 112 deg).
-        let first = choose(&robot, &g, p, None, None, |_| true).expect("ok");
+        let first = choose(&robot, &g, p, None, None, |_| Ok(())).expect("ok");
         assert_eq!(first.branch, Branch::FrontElbowUp);
         // A collision test that rejects the front solution leaves the back one.
-        let not_front = choose(&robot, &g, p, None, None, |a| a[0] < 0.0).expect("ok");
+        let not_front = choose(&robot, &g, p, None, None, |a| match a[0] < 0.0 {
+            true => Ok(()),
+            false => Err("front".into()),
+        })
+        .expect("ok");
         assert_eq!(not_front.branch, Branch::BackElbowUp);
-        let err = choose(&robot, &g, p, None, None, |_| false).unwrap_err();
+        let err = choose(&robot, &g, p, None, None, |_| Err("in the way".into())).unwrap_err();
+        // Each solution's reason is kept, in the order of the branches.
         assert!(
-            err.to_string()
-                .contains("collides (front-elbow-up, back-elbow-up)"),
+            err.to_string().contains(
+                "collides (front-elbow-up, back-elbow-up); front-elbow-up: in the way; \
+                 back-elbow-up: in the way"
+            ),
             "{err}"
         );
     }
@@ -851,14 +680,14 @@ mod tests {
         for s in &sols {
             assert!(dist(urdf_wrist(&robot, s.axes_deg), p) < 0.01);
         }
-        let c = choose(&robot, &g, p, Some([42.0, -30.0, -40.0]), None, |_| true).expect("ok");
+        let c = choose(&robot, &g, p, Some([42.0, -30.0, -40.0]), None, |_| Ok(())).expect("ok");
         assert_eq!(c.axes_deg[0], 42.0);
         assert!(dist(urdf_wrist(&robot, c.axes_deg), p) < 0.01);
     }
 
     #[test]
     fn serial_robot_speaks_its_own_controller_values() {
-        let text = include_str!("../robots/irb1400.urdf");
+        let text = include_str!("../../../robots/irb1400.urdf");
         let robot = urdf::robot_from_urdf(Path::new("x.urdf"), text, None).expect("loads");
         let g = ArmGeometry::from_robot(&robot).expect("same structure");
         assert_eq!(g.coupling, Coupling::Serial);
@@ -894,27 +723,5 @@ mod tests {
         r.joints[1].origin.rotation = nalgebra::UnitQuaternion::from_euler_angles(0.0, 0.0, 0.1);
         let err = ArmGeometry::from_robot(&r).unwrap_err().to_string();
         assert!(err.contains("joint 2") && err.contains("rotated"), "{err}");
-    }
-
-    #[test]
-    fn branch_names_parse_from_kebab_case() {
-        #[derive(Deserialize)]
-        struct W {
-            branch: Branch,
-        }
-        let w: W = serde_saphyr::from_str("branch: back-elbow-down\n").expect("parses");
-        assert_eq!(w.branch, Branch::BackElbowDown);
-        assert!(serde_saphyr::from_str::<W>("branch: elbow-up\n").is_err());
-        assert_eq!("front-elbow-up".parse::<Branch>(), Ok(Branch::FrontElbowUp));
-        assert!("FrontElbowUp".parse::<Branch>().is_err());
-    }
-
-    #[test]
-    fn wrap_is_half_open() {
-        assert_eq!(wrap_deg(180.0), 180.0);
-        assert_eq!(wrap_deg(-180.0), 180.0);
-        assert_eq!(wrap_deg(190.0), -170.0);
-        assert_eq!(wrap_deg(-540.0), 180.0);
-        assert_eq!(wrap_deg(359.0), -1.0);
     }
 }

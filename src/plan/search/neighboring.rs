@@ -11,9 +11,9 @@
 //! squares along the obstacle's edge: the saw-tooth of the paper's Fig. 6, with many short
 //! moves, which the extensile method's shortening straightens.
 
-use super::{descend, Accept, GridPath};
-use crate::cspace::{CSpace, Node};
-use crate::wave::{self, offsets, Connectivity, Wave};
+use super::{descend, Accept, GridPath, SearchFailure};
+use crate::plan::cspace::{CSpace, Node};
+use crate::plan::wave::{self, offsets, Connectivity, Wave};
 
 fn candidates(w: &Wave, n: Node, _prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     let mut c: Vec<[i32; 3]> = offsets(Connectivity::TwentySix).to_vec();
@@ -31,16 +31,22 @@ fn candidates(w: &Wave, n: Node, _prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     c
 }
 
-/// The path start -> end on the 26-neighbour wave from `start`, or `None`.
-pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> Option<GridPath> {
-    let w = wave::expand(cs, start, end, Connectivity::TwentySix)?;
-    descend(&w, &candidates, accept)
+/// The path start -> end on the 26-neighbour wave from `start`.
+pub fn search(
+    cs: &CSpace,
+    start: Node,
+    end: Node,
+    accept: &mut Accept<'_>,
+) -> Result<GridPath, SearchFailure> {
+    let w =
+        wave::expand(cs, start, end, Connectivity::TwentySix).ok_or(SearchFailure::NotConnected)?;
+    descend(&w, &candidates, accept).ok_or(SearchFailure::Exhausted)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::search::testing::{assert_path, grid};
+    use crate::plan::search::testing::{assert_path, grid};
 
     #[test]
     fn finds_a_shortest_path_heading_for_the_start() {
@@ -67,8 +73,9 @@ mod tests {
             .windows(3)
             .filter(|w| (0..3).any(|k| w[1][k] - w[0][k] != w[2][k] - w[1][k]))
             .count();
-        let ext = crate::search::extensile::one_way(&cs, [0, 0, 0], [8, 0, 0], &mut |_, _| true)
-            .expect("path");
+        let ext =
+            crate::plan::search::extensile::one_way(&cs, [0, 0, 0], [8, 0, 0], &mut |_, _| true)
+                .expect("path");
         let ext_turns = ext
             .windows(3)
             .filter(|w| (0..3).any(|k| w[1][k] - w[0][k] != w[2][k] - w[1][k]))
@@ -101,6 +108,9 @@ mod tests {
         assert_path(&p, [0, 0, 0], [3, 1, 0]);
         assert!(!p.contains(&[2, 0, 0]));
         // Along the diagonal every descending path passes (1,1): refusing it leaves none.
-        assert!(search(&cs, [0, 0, 0], [3, 3, 0], &mut |_, to| to != [1, 1, 0]).is_none());
+        assert_eq!(
+            search(&cs, [0, 0, 0], [3, 3, 0], &mut |_, to| to != [1, 1, 0]),
+            Err(SearchFailure::Exhausted)
+        );
     }
 }

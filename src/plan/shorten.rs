@@ -10,7 +10,7 @@
 //! nodes, so a shortcut is also taken only when `accept` (the whole-move safety check) holds.
 //! Waypoints off the grid (cell points) have no nodes around them: there `accept` decides alone.
 
-use crate::cspace::{CSpace, Grid, Node};
+use crate::plan::cspace::{CSpace, Grid, Node};
 
 /// The nodes the paper inspects for the segment between two grid nodes.
 pub fn inspected_nodes(a: Node, b: Node) -> Vec<Node> {
@@ -80,7 +80,7 @@ pub fn shorten(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::search::testing::grid;
+    use crate::plan::search::testing::grid;
 
     #[test]
     fn condition_1_diagonal_inspects_the_nodes_on_the_line() {

@@ -1,8 +1,7 @@
-//! RAPID identifiers: validation and the names of the generated `CONST`s.
-
-use std::collections::HashSet;
-
-use super::{RapidError, Target, TargetKind};
+//! The RAPID identifier rule, one for the whole program: what a module, point, speed, zone or
+//! tool name may be. The cell validation applies it to the names a cell gives (an input error at
+//! their line) and the renderer applies it again, as a last guard, to every name it writes. A
+//! leaf: it knows nothing of cells or modules.
 
 /// Longest identifier RAPID accepts, in characters.
 pub const MAX_IDENTIFIER_LEN: usize = 32;
@@ -157,10 +156,11 @@ pub enum IdentifierError {
     },
 }
 
-/// Checks the shape of an identifier and that it is not a reserved word:
-/// ASCII letter first, then ASCII letters, digits or `_`, at most 32 characters.
-/// Predefined names are *allowed* here (used for speed/zone/tool references).
-pub(crate) fn check_shape(name: &str) -> Result<(), IdentifierError> {
+/// Checks a name that refers to RAPID data the module uses but does not declare (the speed,
+/// zone and tool of every move): the shape of an identifier (ASCII letter first, then ASCII
+/// letters, digits or `_`, at most 32 characters) and not a reserved word. Predefined names
+/// (`v300`, `fine`, `tool0`) are *allowed* here: they are what such a name usually is.
+pub fn check_data_name(name: &str) -> Result<(), IdentifierError> {
     let mut chars = name.chars();
     let first = chars.next().ok_or(IdentifierError::Empty)?;
     if !first.is_ascii_alphabetic() {
@@ -201,7 +201,7 @@ fn is_prefix_digits(name: &str, prefix: &str) -> bool {
 /// character, other characters, length, reserved word, predefined name; the
 /// error reports the first rule broken.
 pub fn check_identifier(name: &str) -> Result<(), IdentifierError> {
-    check_shape(name)?;
+    check_data_name(name)?;
     if let Some(p) = PREDEFINED_NAMES
         .iter()
         .find(|p| p.eq_ignore_ascii_case(name))
@@ -220,123 +220,9 @@ pub fn check_identifier(name: &str) -> Result<(), IdentifierError> {
     Ok(())
 }
 
-/// Number of decimal digits of `n` (at least 1).
-fn digits(n: usize) -> usize {
-    n.checked_ilog10().map_or(1, |d| d as usize + 1)
-}
-
-/// The `CONST jointtarget` names for `targets`, in the same order.
-///
-/// - A cell point keeps its name, which must pass [`check_identifier`]
-///   ([`RapidError::InvalidTargetName`] otherwise), must not equal `main`
-///   (the generated `PROC`) and must be unique among cell points ignoring
-///   case ([`RapidError::NameClash`] otherwise).
-/// - A via target is named `via<L>_<I>` with `L = leg + 1` and `I = index`,
-///   both zero-padded to the same width for the whole program: the number of
-///   digits of the largest `leg + 1` (resp. `index`) among the via targets,
-///   but at least 2. Examples: `via01_01`, `via01_12`, `via10_03`.
-/// - If a via name equals (ignoring case) a cell point name or a name given
-///   earlier in the list, the suffix `_x1`, `_x2`, ... is appended, taking the
-///   first that is free. Cell point names are reserved before any via is
-///   named, so the result does not depend on where the clashing point sits.
-/// - Two via targets with the same `(leg, index)` are a [`RapidError::NameClash`]
-///   (an upstream bug), as is a via name that would exceed 32 characters
-///   ([`RapidError::InvalidGeneratedName`]).
-///
-/// The result is a pure function of `targets`: same input, same names.
-pub fn target_names(targets: &[Target]) -> Result<Vec<String>, RapidError> {
-    // 1. Cell points: validate and reserve.
-    let mut taken: HashSet<String> = HashSet::new();
-    let mut owners: Vec<(String, String)> = Vec::new(); // lowercase -> original
-    for (position, target) in targets.iter().enumerate() {
-        if let TargetKind::CellPoint { name } = &target.kind {
-            check_identifier(name).map_err(|source| RapidError::InvalidTargetName {
-                name: name.clone(),
-                position,
-                source,
-            })?;
-            let key = name.to_ascii_lowercase();
-            if key == "main" {
-                return Err(RapidError::NameClash {
-                    name: name.clone(),
-                    other: "PROC main of the generated module".to_string(),
-                });
-            }
-            if let Some((_, first)) = owners.iter().find(|(k, _)| *k == key) {
-                return Err(RapidError::NameClash {
-                    name: name.clone(),
-                    other: format!("cell point `{first}`"),
-                });
-            }
-            owners.push((key.clone(), name.clone()));
-            taken.insert(key);
-        }
-    }
-
-    // 2. Via targets: common padding widths.
-    let (mut max_leg, mut max_index) = (0usize, 0usize);
-    for target in targets {
-        if let TargetKind::Via { leg, index } = target.kind {
-            max_leg = max_leg.max(leg.saturating_add(1));
-            max_index = max_index.max(index);
-        }
-    }
-    let leg_w = digits(max_leg).max(2);
-    let index_w = digits(max_index).max(2);
-
-    // 3. Assign names in order.
-    let mut seen_vias: HashSet<(usize, usize)> = HashSet::new();
-    let mut names = Vec::with_capacity(targets.len());
-    for target in targets {
-        match &target.kind {
-            TargetKind::CellPoint { name } => names.push(name.clone()),
-            &TargetKind::Via { leg, index } => {
-                let base = format!("via{:0leg_w$}_{:0index_w$}", leg as u128 + 1, index);
-                if !seen_vias.insert((leg, index)) {
-                    return Err(RapidError::NameClash {
-                        name: base,
-                        other: format!("another via target with leg {leg} and index {index}"),
-                    });
-                }
-                let mut name = base.clone();
-                let mut n = 0u64;
-                while taken.contains(&name.to_ascii_lowercase()) {
-                    n += 1;
-                    name = format!("{base}_x{n}");
-                }
-                check_identifier(&name).map_err(|source| RapidError::InvalidGeneratedName {
-                    name: name.clone(),
-                    leg,
-                    index,
-                    source,
-                })?;
-                taken.insert(name.to_ascii_lowercase());
-                names.push(name);
-            }
-        }
-    }
-    Ok(names)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn point(name: &str) -> Target {
-        Target {
-            kind: TargetKind::CellPoint {
-                name: name.to_string(),
-            },
-            axes_deg: [0.0; 6],
-        }
-    }
-    fn via(leg: usize, index: usize) -> Target {
-        Target {
-            kind: TargetKind::Via { leg, index },
-            axes_deg: [0.0; 6],
-        }
-    }
-
     #[test]
     fn check_identifier_accepts_valid_names() {
         for ok in [
@@ -526,16 +412,16 @@ mod tests {
     }
 
     #[test]
-    fn check_shape_allows_predefined_but_not_reserved() {
-        assert_eq!(check_shape("v300"), Ok(()));
-        assert_eq!(check_shape("fine"), Ok(()));
-        assert_eq!(check_shape("tool0"), Ok(()));
+    fn check_data_name_allows_predefined_but_not_reserved() {
+        assert_eq!(check_data_name("v300"), Ok(()));
+        assert_eq!(check_data_name("fine"), Ok(()));
+        assert_eq!(check_data_name("tool0"), Ok(()));
         assert_eq!(
-            check_shape("If"),
+            check_data_name("If"),
             Err(IdentifierError::Reserved { word: "IF" })
         );
         assert_eq!(
-            check_shape("9"),
+            check_data_name("9"),
             Err(IdentifierError::BadFirstChar { found: '9' })
         );
     }
@@ -548,127 +434,5 @@ mod tests {
         assert!(msg.contains("33") && msg.contains("32"), "{msg}");
         let msg = check_identifier("tool0").unwrap_err().to_string();
         assert!(msg.contains("predefined"), "{msg}");
-    }
-
-    #[test]
-    fn target_names_keep_cell_points_and_name_vias() {
-        let t = [
-            point("home"),
-            via(0, 1),
-            via(0, 2),
-            point("pick"),
-            via(1, 1),
-            point("place"),
-        ];
-        assert_eq!(
-            target_names(&t).unwrap(),
-            ["home", "via01_01", "via01_02", "pick", "via02_01", "place"]
-        );
-    }
-
-    #[test]
-    fn target_names_pad_consistently_to_widest() {
-        let mut t = vec![point("a")];
-        t.push(via(0, 1));
-        t.push(via(0, 123));
-        t.push(point("b"));
-        t.push(via(9, 7));
-        t.push(point("c"));
-        assert_eq!(
-            target_names(&t).unwrap(),
-            ["a", "via01_001", "via01_123", "b", "via10_007", "c"]
-        );
-    }
-
-    #[test]
-    fn target_names_resolve_clash_with_cell_point_named_like_a_via() {
-        // The clashing cell point comes *after* the via: still reserved first.
-        let t = [
-            point("home"),
-            via(0, 1),
-            via(0, 2),
-            point("VIA01_01"),
-            point("via01_01_x1"),
-        ];
-        let names = target_names(&t).unwrap();
-        assert_eq!(
-            names,
-            ["home", "via01_01_x2", "via01_02", "VIA01_01", "via01_01_x1"]
-        );
-        let lower: HashSet<String> = names.iter().map(|n| n.to_ascii_lowercase()).collect();
-        assert_eq!(lower.len(), names.len());
-        for n in &names {
-            assert_eq!(check_identifier(n), Ok(()), "{n}");
-        }
-    }
-
-    #[test]
-    fn target_names_reject_duplicate_cell_points_ignoring_case() {
-        let t = [point("Home"), via(0, 1), point("HOME")];
-        match target_names(&t) {
-            Err(RapidError::NameClash { name, other }) => {
-                assert_eq!(name, "HOME");
-                assert!(other.contains("Home"), "{other}");
-            }
-            other => panic!("expected NameClash, got {other:?}"),
-        }
-    }
-
-    #[test]
-    fn target_names_reject_cell_point_named_main() {
-        assert!(matches!(
-            target_names(&[point("Main")]),
-            Err(RapidError::NameClash { .. })
-        ));
-    }
-
-    #[test]
-    fn target_names_reject_duplicate_via() {
-        let t = [point("a"), via(0, 1), via(0, 1), point("b")];
-        assert!(matches!(
-            target_names(&t),
-            Err(RapidError::NameClash { .. })
-        ));
-    }
-
-    #[test]
-    fn target_names_report_invalid_cell_point_with_rule() {
-        let t = [point("home"), point("2nd")];
-        match target_names(&t) {
-            Err(e @ RapidError::InvalidTargetName { .. }) => {
-                let msg = e.to_string();
-                assert!(msg.contains("2nd") && msg.contains("start with"), "{msg}");
-                if let RapidError::InvalidTargetName {
-                    position, source, ..
-                } = e
-                {
-                    assert_eq!(position, 1);
-                    assert_eq!(source, IdentifierError::BadFirstChar { found: '2' });
-                }
-            }
-            other => panic!("expected InvalidTargetName, got {other:?}"),
-        }
-        assert!(matches!(
-            target_names(&[point("wobj0")]),
-            Err(RapidError::InvalidTargetName {
-                source: IdentifierError::Predefined { .. },
-                ..
-            })
-        ));
-    }
-
-    #[test]
-    fn target_names_are_deterministic() {
-        let t = [
-            point("p"),
-            via(2, 5),
-            via(0, 1),
-            point("via03_05"),
-            via(1, 1),
-        ];
-        let a = target_names(&t).unwrap();
-        let b = target_names(&t).unwrap();
-        assert_eq!(a, b);
-        assert_eq!(a, ["p", "via03_05_x1", "via01_01", "via03_05", "via02_01"]);
     }
 }

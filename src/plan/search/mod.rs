@@ -26,8 +26,68 @@ pub mod depth_first;
 pub mod extensile;
 pub mod neighboring;
 
-use crate::cspace::Node;
-use crate::wave::Wave;
+/// The three path searches of the paper (section 4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Method {
+    Neighboring,
+    DepthFirst,
+    Extensile,
+}
+
+impl Method {
+    pub const ALL: [Method; 3] = [Method::Neighboring, Method::DepthFirst, Method::Extensile];
+
+    /// The name the cell file and the command line use.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Neighboring => "neighboring",
+            Method::DepthFirst => "depth-first",
+            Method::Extensile => "extensile",
+        }
+    }
+
+    pub fn parse(s: &str) -> Option<Method> {
+        Method::ALL.into_iter().find(|m| m.name() == s)
+    }
+}
+
+impl Method {
+    /// The path `start -> end` by this method on the inspected grid `cs`, every step accepted by
+    /// `accept` (the whole-move check).
+    pub fn search(
+        self,
+        cs: &CSpace,
+        start: Node,
+        end: Node,
+        accept: &mut Accept<'_>,
+    ) -> Result<GridPath, SearchFailure> {
+        match self {
+            Method::Neighboring => neighboring::search(cs, start, end, accept),
+            Method::DepthFirst => depth_first::search(cs, start, end, accept),
+            Method::Extensile => extensile::search(cs, start, end, accept),
+        }
+    }
+}
+
+/// Why a search found no path; the wave of the search's first expansion tells, so nobody
+/// expands a wave again to find out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SearchFailure {
+    /// The free space does not join the two nodes (on the 26-neighbour grid): no method can.
+    NotConnected,
+    /// The nodes are joined, but the method's walk found no way (the depth-first search where
+    /// only diagonals join, or every path refused by the whole-move check).
+    Exhausted,
+}
+
+impl std::fmt::Display for Method {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+use crate::plan::cspace::{CSpace, Node};
+use crate::plan::wave::Wave;
 use std::collections::HashSet;
 
 /// A path of grid nodes from the start node to the end node, each step to a neighbour.
@@ -113,7 +173,7 @@ pub(crate) fn descend(
 
 #[cfg(test)]
 pub(crate) mod testing {
-    use crate::cspace::{CSpace, Grid, Node};
+    use crate::plan::cspace::{CSpace, Grid, Node};
 
     /// A grid of `nx` x `ny` x `nz` nodes at 1 deg, free where `free` says.
     pub fn grid(nx: usize, ny: usize, nz: usize, free: impl Fn(Node) -> bool) -> CSpace {

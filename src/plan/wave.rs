@@ -7,7 +7,7 @@
 //! `search`). It stops once the end node is numbered: every node numbered below n is then final,
 //! and those are the only ones a search back from the end node visits.
 
-use crate::cspace::{CSpace, Node};
+use crate::plan::cspace::{CSpace, Node};
 use std::collections::VecDeque;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -154,7 +154,7 @@ pub fn expand(cs: &CSpace, start: Node, end: Node, connectivity: Connectivity) -
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cspace::Grid;
+    use crate::plan::cspace::Grid;
 
     fn open(n: f64) -> CSpace {
         let g = Grid::over([[0.0, n], [0.0, n], [0.0, n]], 1.0);

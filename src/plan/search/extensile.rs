@@ -11,9 +11,9 @@
 //! paths agree it follows them; where they part it crosses between them to keep straight. The
 //! recursive k -> k+2 shortening (`shorten`) then cuts across the parallelograms.
 
-use super::{add, descend, order_of, Accept, GridPath};
-use crate::cspace::{CSpace, Node};
-use crate::wave::{self, offsets, Connectivity, Wave};
+use super::{add, descend, order_of, Accept, GridPath, SearchFailure};
+use crate::plan::cspace::{CSpace, Node};
+use crate::plan::wave::{self, offsets, Connectivity, Wave};
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
 
@@ -37,7 +37,12 @@ pub fn one_way(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> 
 
 /// Both ways and merged: the path start -> end. The two waves are independent and expand on
 /// two threads; the walks back and the merge run in order, so the result is the same.
-pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> Option<GridPath> {
+pub fn search(
+    cs: &CSpace,
+    start: Node,
+    end: Node,
+    accept: &mut Accept<'_>,
+) -> Result<GridPath, SearchFailure> {
     let (from_start, from_end) = std::thread::scope(|s| {
         let other = s.spawn(|| wave::expand(cs, end, start, Connectivity::TwentySix));
         let here = wave::expand(cs, start, end, Connectivity::TwentySix);
@@ -47,7 +52,8 @@ pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> O
             .unwrap_or_else(|_| wave::expand(cs, end, start, Connectivity::TwentySix));
         (here, there)
     });
-    let forward = descend(&from_start?, &candidates, accept)?;
+    let from_start = from_start.ok_or(SearchFailure::NotConnected)?;
+    let forward = descend(&from_start, &candidates, accept).ok_or(SearchFailure::Exhausted)?;
     // The wave from the end node, walked back from the start node, gives end -> start.
     let backward = from_end
         .and_then(|w| descend(&w, &candidates, accept))
@@ -55,7 +61,7 @@ pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> O
             p.reverse();
             p
         });
-    Some(match backward {
+    Ok(match backward {
         Some(b) => merge_paths(&forward, &b, accept),
         None => forward,
     })
@@ -137,7 +143,7 @@ pub fn merge_paths(a: &[Node], b: &[Node], accept: &mut Accept<'_>) -> GridPath 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::search::testing::{assert_path, grid};
+    use crate::plan::search::testing::{assert_path, grid};
 
     #[test]
     fn takes_the_diagonal_where_depth_first_fails() {
@@ -145,10 +151,13 @@ mod tests {
         let cs = grid(3, 3, 1, |n| n[0] == n[1]);
         let p = search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true).expect("extensile finds it");
         assert_eq!(p, vec![[0, 0, 0], [1, 1, 0], [2, 2, 0]]);
-        assert!(
-            crate::search::depth_first::search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true)
-                .is_none()
-        );
+        assert!(crate::plan::search::depth_first::search(
+            &cs,
+            [0, 0, 0],
+            [2, 2, 0],
+            &mut |_, _| true
+        )
+        .is_err());
     }
 
     #[test]

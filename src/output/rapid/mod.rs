@@ -30,7 +30,8 @@
 //! ENDMODULE
 //! ```
 //!
-//! Axis values are printed with exactly 3 decimals (degrees).
+//! Axis values are printed with exactly 3 decimals (degrees). The decimals come from the one
+//! table of output precisions, [`crate::precision`], which the cell validation reads too.
 //!
 //! # Guarantees of [`render`]
 //!
@@ -42,9 +43,11 @@
 //!   `E` in numeric position is the literal `9E9` RAPID uses for unused
 //!   external axes. Non-finite values are refused ([`RapidError::NonFinite`]).
 //! - The module name and every `CONST` name pass [`check_identifier`]; speed,
-//!   zone and tool names are RAPID identifiers that are not reserved words
-//!   (predefined names such as `v300`, `fine`, `tool0` are of course allowed
-//!   there). All `CONST` names are unique ignoring case and differ from the
+//!   zone and tool names pass [`check_data_name`] (RAPID identifiers that are
+//!   not reserved words; predefined names such as `v300`, `fine`, `tool0` are
+//!   of course allowed there). It is the rule of [`crate::names`], which the
+//!   cell validation applies first, at the cell's lines: here it is a last
+//!   guard. All `CONST` names are unique ignoring case and differ from the
 //!   module name, `main` and the speed/zone/tool names (see [`target_names`]).
 //! - One `CONST` per target and one `MoveAbsJ` per target, in the same order,
 //!   so each name is used by exactly one move.
@@ -53,30 +56,21 @@
 //!   surrounding spaces are trimmed, and empty text becomes `-`.
 
 mod format;
-mod names;
+mod target_names;
 
 pub use format::format_fixed;
-pub use names::{
-    check_identifier, target_names, IdentifierError, MAX_IDENTIFIER_LEN, PREDEFINED_NAMES,
-    RESERVED_WORDS,
+pub use target_names::target_names;
+
+use crate::names::{check_data_name, check_identifier, IdentifierError};
+use crate::precision::{
+    GRID_DECIMALS, JOINT_DECIMALS, LENGTH_DECIMALS, TIME_DECIMALS, YAW_DECIMALS,
 };
 
 use minijinja::{value::Serde, AutoEscape, Environment, UndefinedBehavior};
 use serde::Serialize;
 
 /// The module template, embedded at compile time.
-pub const TEMPLATE: &str = include_str!("../../templates/module.mod.j2");
-
-/// Decimals of joint values in `CONST jointtarget` (degrees).
-pub const AXIS_DECIMALS: usize = 3;
-/// Decimals of the grid step in the header (degrees).
-pub const GRID_DECIMALS: usize = 3;
-/// Decimals of lengths in the header: clearance, base position, min clearance (mm).
-pub const LENGTH_DECIMALS: usize = 1;
-/// Decimals of the base yaw in the header (degrees).
-pub const YAW_DECIMALS: usize = 3;
-/// Decimals of the estimated manipulation time in the header (seconds).
-pub const TIME_DECIMALS: usize = 2;
+pub const TEMPLATE: &str = include_str!("../../../templates/module.mod.j2");
 
 /// Everything the module text needs, already decided by earlier stages.
 #[derive(Debug, Clone, PartialEq)]
@@ -86,7 +80,7 @@ pub struct Program {
     /// Values for the comment header.
     pub header: Header,
     /// Targets in visiting order; target 0 is the first cell point (the start).
-    pub targets: Vec<Target>,
+    pub targets: Vec<JointTarget>,
     /// RAPID speeddata name, e.g. `"v300"`.
     pub speed: String,
     /// RAPID zonedata name, e.g. `"fine"`.
@@ -139,9 +133,9 @@ pub enum TargetKind {
     },
 }
 
-/// One joint position to visit.
+/// One `CONST jointtarget` of the module: a joint position to visit.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Target {
+pub struct JointTarget {
     /// Cell point or via.
     pub kind: TargetKind,
     /// Controller values of axes 1..6 in degrees.
@@ -326,7 +320,7 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
         ("tool", &program.tool),
     ];
     for (role, name) in roles {
-        names::check_shape(name).map_err(|source| RapidError::InvalidDataName {
+        check_data_name(name).map_err(|source| RapidError::InvalidDataName {
             role,
             name: name.clone(),
             source,
@@ -381,7 +375,7 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
         let mut axes = Vec::with_capacity(6);
         for (k, &value) in target.axes_deg.iter().enumerate() {
             let value = finite(format!("axis {} of target `{name}`", k + 1), value)?;
-            axes.push(format_fixed(value, AXIS_DECIMALS));
+            axes.push(format_fixed(value, JOINT_DECIMALS));
         }
         targets.push(TargetCtx {
             name,

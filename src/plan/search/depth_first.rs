@@ -1,15 +1,15 @@
 //! Depth-first search (paper section 4.2): from the end node, only the 6 axis neighbours whose
 //! number is exactly one less, tried depth first, backing up on dead ends. The order is fixed:
 //! the direction of the previous step first (so runs stay straight and merge into one move),
-//! then -axis1, -axis2, -axis3, +axis3, +axis2, +axis1 (the order of [`crate::wave::offsets`]).
+//! then -axis1, -axis2, -axis3, +axis3, +axis2, +axis1 (the order of [`crate::plan::wave::offsets`]).
 //!
 //! It walks axis steps, so the wave it descends is numbered over the 6 axis neighbours. It fails
 //! (the paper's Fig. 8) when the start and end are joined only through diagonal steps; the plan
 //! then reports the leg. Same-direction steps are merged afterwards by `merge`.
 
-use super::{descend, Accept, GridPath};
-use crate::cspace::{CSpace, Node};
-use crate::wave::{self, offsets, Connectivity, Wave};
+use super::{descend, Accept, GridPath, SearchFailure};
+use crate::plan::cspace::{CSpace, Node};
+use crate::plan::wave::{self, offsets, Connectivity, Wave};
 
 fn candidates(w: &Wave, n: Node, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     let want = w.label(n).saturating_sub(1);
@@ -23,16 +23,31 @@ fn candidates(w: &Wave, n: Node, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     c
 }
 
-/// The path start -> end by axis steps, or `None` (no axis-step path, or every branch refused).
-pub fn search(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> Option<GridPath> {
-    let w = wave::expand(cs, start, end, Connectivity::Six)?;
-    descend(&w, &candidates, accept)
+/// The path start -> end by axis steps (none: no axis-step path, or every branch refused).
+/// When the axis-step wave cannot reach the end, a 26-neighbour wave tells whether the free
+/// space joins the nodes only diagonally (the paper's Fig. 8: [`SearchFailure::Exhausted`]) or
+/// not at all ([`SearchFailure::NotConnected`]).
+pub fn search(
+    cs: &CSpace,
+    start: Node,
+    end: Node,
+    accept: &mut Accept<'_>,
+) -> Result<GridPath, SearchFailure> {
+    let Some(w) = wave::expand(cs, start, end, Connectivity::Six) else {
+        return Err(
+            match wave::expand(cs, start, end, Connectivity::TwentySix) {
+                Some(_) => SearchFailure::Exhausted,
+                None => SearchFailure::NotConnected,
+            },
+        );
+    };
+    descend(&w, &candidates, accept).ok_or(SearchFailure::Exhausted)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::search::testing::{assert_path, grid};
+    use crate::plan::search::testing::{assert_path, grid};
 
     #[test]
     fn walks_axis_steps_in_the_fixed_order() {
@@ -51,6 +66,11 @@ mod tests {
     fn fails_where_only_a_diagonal_joins_the_free_space() {
         // Fig. 8: the free nodes touch only at a corner.
         let cs = grid(3, 3, 1, |n| n[0] == n[1]);
-        assert!(search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true).is_none());
+        let err = search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true);
+        assert_eq!(err, Err(SearchFailure::Exhausted));
+        // Not joined at all: no method could.
+        let cs = grid(3, 3, 1, |n| n[0] != 1);
+        let err = search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true);
+        assert_eq!(err, Err(SearchFailure::NotConnected));
     }
 }

@@ -17,9 +17,9 @@
 //! estimate, no font files), so rendering needs nothing beyond the Rust toolchain. The output is
 //! deterministic for the same grid and plans.
 
-use crate::cell::Method;
-use crate::cspace::CSpace;
-use crate::plan::{Plan, Waypoint};
+use crate::place::PlacedPoint;
+use crate::plan::cspace::CSpace;
+use crate::plan::{Method, Plan};
 use plotters::prelude::*;
 
 /// Why a picture could not be drawn.
@@ -86,7 +86,7 @@ fn shade(level: u8) -> RGBColor {
 pub fn render_svg(
     cs: &CSpace,
     in_range: &dyn Fn(&[f64; 3]) -> bool,
-    points: &[Waypoint],
+    points: &[PlacedPoint],
     routes: &[&Plan],
     title: &str,
 ) -> Result<String, PictureError> {
@@ -193,11 +193,9 @@ pub fn render_svg(
             for plan in routes {
                 let c = colour(plan.method);
                 let line: Vec<(f64, f64)> = plan
-                    .legs
+                    .waypoints
                     .iter()
-                    .enumerate()
-                    .flat_map(|(i, l)| l.waypoints.iter().skip(usize::from(i > 0)))
-                    .map(|w| (w[u], w[v]))
+                    .map(|w| (w.joints_deg[u], w.joints_deg[v]))
                     .collect();
                 chart
                     .draw_series(LineSeries::new(line.iter().copied(), c.stroke_width(2)))
@@ -212,7 +210,7 @@ pub fn render_svg(
             }
             chart
                 .draw_series(points.iter().map(|p| {
-                    let at = (p.axes_deg[u], p.axes_deg[v]);
+                    let at = (p.joints_deg[u], p.joints_deg[v]);
                     EmptyElement::at(at)
                         + Circle::new((0, 0), 4, BLACK.filled())
                         + Text::new(
@@ -241,8 +239,10 @@ pub fn render_svg(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cspace::{CSpace, Grid};
-    use crate::plan::Leg;
+    use crate::cell::Loc;
+    use crate::place::Origin;
+    use crate::plan::cspace::{CSpace, Grid};
+    use crate::plan::{Leg, Waypoint, WaypointKind};
 
     #[test]
     fn shades_by_the_blocked_fraction() {
@@ -259,29 +259,42 @@ mod tests {
         // Axis-1 values 4 and 5 blocked for every axis 3 when axis 2 < 3: fully blocked in the
         // axis 1 - axis 2 projection there, partly in the others.
         let cs = CSpace::from_fn(g, |n| !((n[0] == 4 || n[0] == 5) && n[1] < 3));
-        let points = vec![
-            Waypoint {
-                name: "P1".into(),
-                axes_deg: [0.0, 0.0, 0.0],
-            },
-            Waypoint {
-                name: "P2".into(),
-                axes_deg: [9.0, 0.0, 0.0],
-            },
+        let point = |name: &str, a1: f64| PlacedPoint {
+            name: name.into(),
+            joints_deg: [a1, 0.0, 0.0, 0.0, 0.0, 0.0],
+            loc: Loc::default(),
+            origin: Origin::Joints,
+        };
+        let points = vec![point("P1", 0.0), point("P2", 9.0)];
+        let arm = [
+            [0.0, 0.0, 0.0],
+            [3.0, 3.0, 0.0],
+            [6.0, 3.0, 0.0],
+            [9.0, 0.0, 0.0],
         ];
         let plan = Plan {
             method: Method::Extensile,
+            grid_deg: 1.0,
+            waypoints: arm
+                .iter()
+                .enumerate()
+                .map(|(k, a)| Waypoint {
+                    kind: match k {
+                        0 => WaypointKind::CellPoint(0),
+                        3 => WaypointKind::CellPoint(1),
+                        _ => WaypointKind::Via { leg: 0, index: k },
+                    },
+                    joints_deg: [a[0], a[1], a[2], 0.0, 0.0, 0.0],
+                })
+                .collect(),
             legs: vec![Leg {
                 from: 0,
                 to: 1,
                 grid_path: Vec::new(),
-                waypoints: vec![
-                    [0.0, 0.0, 0.0],
-                    [3.0, 3.0, 0.0],
-                    [6.0, 3.0, 0.0],
-                    [9.0, 0.0, 0.0],
-                ],
+                waypoints: 0..4,
             }],
+            min_clearance: None,
+            estimate: None,
         };
         let svg = render_svg(&cs, &|_| true, &points, &[&plan], "test").expect("svg");
         assert!(svg.starts_with("<svg"));

@@ -1,0 +1,215 @@
+//! Tests of the cell stage: defaults, locations, refusals at their line.
+
+use super::*;
+
+const MINIMAL: &str = "module: M\nrobot:\n  urdf: ../robots/r.urdf\n  base: [1, 2, 3]\npoints:\n  - { name: A, joints: [1, 2, 3] }\n  - { name: B, joints: [4, 5, 6, 7, 8, 9] }\n";
+
+fn parse_str(text: &str) -> Result<Cell, CellError> {
+    parse(Path::new("cells/x.yaml"), text)
+}
+
+#[test]
+fn defaults_fill_what_a_cell_leaves_out() {
+    let c = parse_str(MINIMAL).expect("valid");
+    assert_eq!(c.robot.urdf_path, Path::new("cells/../robots/r.urdf"));
+    assert_eq!(c.robot.base, Base::Fixed([1.0, 2.0, 3.0]));
+    assert_eq!((c.robot.yaw_deg, c.robot.wrist_deg), (0.0, [0.0; 3]));
+    assert_eq!(
+        c.planner,
+        Planner {
+            method: Method::Extensile,
+            grid_deg: 1.0,
+            clearance_mm: 10.0
+        }
+    );
+    assert_eq!(
+        (
+            c.motion.speed.as_str(),
+            c.motion.zone.as_str(),
+            c.motion.tool.as_str()
+        ),
+        ("v300", "fine", "tool0")
+    );
+    assert!(c.obstacles.is_empty());
+    assert_eq!(
+        c.points[1].target,
+        Target::Joints {
+            axes_deg: [4.0, 5.0, 6.0],
+            wrist_deg: Some([7.0, 8.0, 9.0])
+        }
+    );
+}
+
+#[test]
+fn points_carry_their_line_and_column() {
+    let c = parse_str(MINIMAL).expect("valid");
+    assert_eq!(c.points[0].loc.line, 6);
+    assert_eq!(c.points[1].loc.line, 7);
+    assert!(c.points[0].loc.column > 0);
+}
+
+#[test]
+fn base_auto_and_xyz_points_with_a_branch() {
+    let text = MINIMAL
+        .replace("base: [1, 2, 3]", "base: auto")
+        .replace(
+            "joints: [1, 2, 3]",
+            "xyz: [900, 0, 1000], branch: back-elbow-up",
+        )
+        .replace("joints: [4, 5, 6, 7, 8, 9]", "xyz: [0, 900, 1000]");
+    let c = parse_str(&text).expect("valid");
+    assert_eq!(c.robot.base, Base::Auto);
+    match &c.points[0].target {
+        Target::Xyz {
+            wrist_centre_mm,
+            branch,
+            branch_loc,
+        } => {
+            assert_eq!(*wrist_centre_mm, [900.0, 0.0, 1000.0]);
+            assert_eq!(*branch, Some(Branch::BackElbowUp));
+            assert_eq!(branch_loc.line, 6);
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn refusals_name_the_key_and_its_place() {
+    let cases = [
+        (
+            MINIMAL.replace("base: [1, 2, 3]", "base: [1, 2]"),
+            "robot.base must have 3 numbers",
+            4,
+        ),
+        (
+            MINIMAL.replace("base: [1, 2, 3]", "base: somewhere"),
+            "auto",
+            4,
+        ),
+        (
+            MINIMAL.replace("base: [1, 2, 3]", "base: [1, 2.25, 3]"),
+            "more than 1 decimal",
+            4,
+        ),
+        (
+            MINIMAL.replace("base: [1, 2, 3]", "base: [1, 2, 3]\n  yaw: 45.0004"),
+            "robot.yaw",
+            5,
+        ),
+        (
+            MINIMAL.replace("joints: [1, 2, 3]", "xyz: [900, 0, 1000], branch: sideways"),
+            "unknown branch",
+            6,
+        ),
+        (
+            MINIMAL.replace("joints: [1, 2, 3]", "joints: [1, 2, 3], xyz: [1, 2, 3]"),
+            "both",
+            6,
+        ),
+        (
+            MINIMAL.replace("{ name: A, joints: [1, 2, 3] }", "{ name: A }"),
+            "neither",
+            6,
+        ),
+        (
+            MINIMAL.replace(
+                "joints: [1, 2, 3]",
+                "joints: [1, 2, 3], branch: front-elbow-up",
+            ),
+            "xyz",
+            6,
+        ),
+        (
+            MINIMAL.replace("module: M", "module: 9lives"),
+            "not a valid RAPID name",
+            1,
+        ),
+        (
+            format!("{MINIMAL}motion:\n  speed: 'v 300'\n"),
+            "motion.speed",
+            9,
+        ),
+        (
+            format!("{MINIMAL}planner:\n  clearance: -1\n"),
+            "clearance",
+            9,
+        ),
+        // The identifier rule of the renderer, applied at the line (was exit 4 at render time).
+        (
+            format!("{MINIMAL}motion:\n  speed: If\n"),
+            "motion.speed 'If' is not a valid RAPID name: \"IF\" is a RAPID reserved word",
+            9,
+        ),
+        (
+            format!("{MINIMAL}motion:\n  zone: fine\n  tool: ENDPROC\n"),
+            "motion.tool 'ENDPROC'",
+            10,
+        ),
+        (
+            format!("{MINIMAL}motion:\n  zone: {}\n", "z".repeat(33)),
+            "at most 32",
+            9,
+        ),
+        // One name space: the module may not take the name of PROC main or of the data it uses.
+        (MINIMAL.replace("module: M", "module: Main"), "PROC main", 1),
+        (
+            format!("{MINIMAL}motion:\n  tool: m\n"),
+            "module name 'M' is already the name of motion.tool",
+            1,
+        ),
+        (
+            MINIMAL.replace("name: B", "name: main"),
+            "point name 'main' is already the name of the module's PROC main",
+            7,
+        ),
+        // `base: auto` needs positions, not joint values.
+        (
+            MINIMAL.replace("base: [1, 2, 3]", "base: auto"),
+            "point 'A' gives joint values, but `base: auto`",
+            6,
+        ),
+    ];
+    for (text, needle, line) in cases {
+        let err = parse_str(&text).expect_err(needle);
+        assert!(err.to_string().contains(needle), "'{err}' lacks '{needle}'");
+        assert_eq!(err.loc().map(|l| l.line), Some(line), "{err}");
+    }
+}
+
+#[test]
+fn joint_values_keep_at_most_three_decimals() {
+    assert!(
+        parse_str(&MINIMAL.replace("joints: [1, 2, 3]", "joints: [1.125, -2.5, 3.001]")).is_ok()
+    );
+    let err = parse_str(&MINIMAL.replace("joints: [1, 2, 3]", "joints: [1.0005, 2, 3]"))
+        .expect_err("4 decimals");
+    assert!(err.help().is_some_and(|h| h.contains("0.001")), "{err}");
+}
+
+#[test]
+fn methods_parse_by_their_names() {
+    for m in Method::ALL {
+        assert_eq!(Method::parse(m.name()), Some(m));
+    }
+    assert_eq!(Method::parse("Extensile"), None);
+    assert!(check_grid(0.25).is_ok() && check_grid(10.0).is_ok());
+    assert!(check_grid(0.2).is_err() && check_grid(f64::NAN).is_err());
+}
+
+#[test]
+fn data_names_may_be_predefined_but_declared_names_may_not() {
+    let c = parse_str(&format!(
+        "{MINIMAL}motion:\n  speed: vmax\n  zone: z200\n  tool: Tool0\n"
+    ))
+    .expect("predefined speed, zone and tool data");
+    assert_eq!(
+        (
+            c.motion.speed.as_str(),
+            c.motion.zone.as_str(),
+            c.motion.tool.as_str()
+        ),
+        ("vmax", "z200", "Tool0")
+    );
+    let err = parse_str(&MINIMAL.replace("name: B", "name: v300")).expect_err("predefined");
+    assert!(err.to_string().contains("predefined"), "{err}");
+}

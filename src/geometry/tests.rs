@@ -1,0 +1,416 @@
+//! Tests of the shapes and distance queries, each fast query held against parry3d.
+
+use super::*;
+use parry3d::math::{Pose, Vector};
+
+use super::testing::Rng;
+
+fn p(x: f64, y: f64, z: f64) -> Point {
+    Point::new(x, y, z)
+}
+
+fn random_box(rng: &mut Rng) -> Aabb {
+    let c = rng.point(600.0, 1400.0);
+    let h = Vector3::new(
+        rng.range(0.0, 400.0),
+        rng.range(0.0, 400.0),
+        rng.range(0.0, 400.0),
+    );
+    Aabb::new(c - h, c + h)
+}
+
+/// Random segment of one of several kinds: generic, degenerate,
+/// parallel to one or two axes, crossing the box, starting on a face.
+fn random_segment(rng: &mut Rng, bx: &Aabb) -> (Point, Point) {
+    let a = rng.point(0.0, 2000.0);
+    match rng.below(6) {
+        0 => (a, a),
+        1 => {
+            let mut b = a;
+            let i = rng.below(3) as usize;
+            b[i] = rng.range(0.0, 2000.0);
+            (a, b)
+        }
+        2 => {
+            let mut b = rng.point(0.0, 2000.0);
+            let i = rng.below(3) as usize;
+            b[i] = a[i];
+            (a, b)
+        }
+        3 => {
+            // Through the box centre, well beyond both sides.
+            let c = bx.center();
+            (a, c + (c - a) * rng.range(0.5, 1.5))
+        }
+        4 => {
+            // Endpoint exactly on a face plane, parallel to it.
+            let i = rng.below(3) as usize;
+            let plane = if rng.below(2) == 0 {
+                bx.min[i]
+            } else {
+                bx.max[i]
+            };
+            let mut a2 = a;
+            a2[i] = plane;
+            let mut b = rng.point(0.0, 2000.0);
+            b[i] = plane;
+            (a2, b)
+        }
+        _ => (a, rng.point(0.0, 2000.0)),
+    }
+}
+
+fn parry_segment_aabb(a: &Point, b: &Point, bx: &Aabb) -> f64 {
+    let c = bx.center();
+    let h = (bx.max - bx.min) * 0.5;
+    let cub = parry3d::shape::Cuboid::new(Vector::new(h.x, h.y, h.z));
+    let (a, b) = (a - c, b - c);
+    let seg = parry3d::shape::Segment::new(Vector::new(a.x, a.y, a.z), Vector::new(b.x, b.y, b.z));
+    parry3d::query::distance(&Pose::identity(), &cub, &Pose::identity(), &seg)
+        .expect("segment-cuboid is supported")
+        .distance as f64
+}
+
+/// Brute-force reference in f64: dense sampling of t then golden-section
+/// refinement of the convex g(t) (an f64 reference besides parry).
+fn reference_segment_aabb(a: &Point, b: &Point, bx: &Aabb) -> f64 {
+    let f = |t: f64| distance_point_aabb(&(a + (b - a) * t), bx);
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    for _ in 0..200 {
+        let m1 = lo + (hi - lo) * 0.381_966;
+        let m2 = hi - (hi - lo) * 0.381_966;
+        if f(m1) <= f(m2) {
+            hi = m2;
+        } else {
+            lo = m1;
+        }
+    }
+    f(0.5 * (lo + hi)).min(f(0.0)).min(f(1.0))
+}
+
+#[test]
+fn aabb_new_sorts_corners() {
+    let b = Aabb::new(p(10.0, 0.0, 5.0), p(0.0, 20.0, -5.0));
+    assert_eq!(b.min, p(0.0, 0.0, -5.0));
+    assert_eq!(b.max, p(10.0, 20.0, 5.0));
+}
+
+#[test]
+fn point_aabb_hand_cases() {
+    let b = Aabb::new(p(0.0, 0.0, 0.0), p(100.0, 200.0, 300.0));
+    // Above the top face.
+    assert_eq!(distance_point_aabb(&p(50.0, 50.0, 310.0), &b), 10.0);
+    // Near the edge x = 100, z = 300: 3-4-5.
+    assert!((distance_point_aabb(&p(103.0, 50.0, 304.0), &b) - 5.0).abs() < 1e-12);
+    // Near the corner (0, 0, 0): 2-3-6 -> 7.
+    assert!((distance_point_aabb(&p(-2.0, -3.0, -6.0), &b) - 7.0).abs() < 1e-12);
+    // Inside and on the boundary.
+    assert_eq!(distance_point_aabb(&p(50.0, 50.0, 50.0), &b), 0.0);
+    assert_eq!(distance_point_aabb(&p(100.0, 200.0, 300.0), &b), 0.0);
+}
+
+#[test]
+fn segment_aabb_hand_cases() {
+    let b = Aabb::new(p(0.0, 0.0, 0.0), p(100.0, 100.0, 100.0));
+    // Parallel to the top face, 10 above, spanning beyond it.
+    assert_eq!(
+        distance_segment_aabb(&p(-50.0, 50.0, 110.0), &p(150.0, 50.0, 110.0), &b),
+        10.0
+    );
+    // Skew over the edge x = 100, z = 100: the closest point is at the
+    // middle of the segment, above the edge at (103, y, 104): 5.
+    let d = distance_segment_aabb(&p(103.0, -50.0, 104.0), &p(103.0, 150.0, 104.0), &b);
+    assert!((d - 5.0).abs() < 1e-12, "{d}");
+    // A diagonal passing the corner (100,100,100): the line
+    // (110 + s, 110 - s, 120) is closest at s = 0 -> sqrt(100+100+400).
+    let d = distance_segment_aabb(&p(100.0, 120.0, 120.0), &p(120.0, 100.0, 120.0), &b);
+    assert!((d - 600f64.sqrt()).abs() < 1e-12, "{d}");
+    // Crossing the box, no endpoint inside.
+    assert_eq!(
+        distance_segment_aabb(&p(-10.0, -10.0, -10.0), &p(110.0, 110.0, 110.0), &b),
+        0.0
+    );
+    // Degenerate segment = point.
+    assert_eq!(
+        distance_segment_aabb(&p(50.0, 50.0, 130.0), &p(50.0, 50.0, 130.0), &b),
+        30.0
+    );
+    // Pointing away: closest point is the start.
+    assert_eq!(
+        distance_segment_aabb(&p(50.0, 50.0, 120.0), &p(50.0, 50.0, 900.0), &b),
+        20.0
+    );
+}
+
+#[test]
+fn segment_aabb_matches_parry_and_reference_on_random_cases() {
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let mut zero = 0;
+    let mut worst = 0.0f64;
+    let mut loose = 0;
+    for k in 0..5000 {
+        let bx = random_box(&mut rng);
+        let (a, b) = random_segment(&mut rng, &bx);
+        let ours = distance_segment_aabb(&a, &b, &bx);
+        let theirs = parry_segment_aabb(&a, &b, &bx);
+        let reference = reference_segment_aabb(&a, &b, &bx);
+        // The f64 reference is a sampled minimum, hence never below the
+        // exact value: ours may be lower only by rounding.
+        assert!(
+            ours <= reference + 1e-9,
+            "case {k}: {ours} > ref {reference}"
+        );
+        assert!(
+            ours >= reference - 1e-6,
+            "case {k}: {ours} < ref {reference}"
+        );
+        // Parry (f64) stops at a relative gap of about 5e-8, from above
+        // (it returns points on the shapes).
+        let tol = 1e-6 + 1e-7 * theirs;
+        assert!(
+            ours <= theirs + 1e-9 && theirs - ours <= tol,
+            "case {k}: ours {ours} parry {theirs} a {a:?} b {b:?} box {bx:?}"
+        );
+        worst = worst.max((ours - theirs).abs());
+        if (ours - theirs).abs() > 1e-5 {
+            loose += 1;
+        }
+        if ours == 0.0 {
+            zero += 1;
+        }
+    }
+    // The generator must exercise both hits and misses.
+    assert!(zero > 300 && zero < 4700, "zero-distance cases: {zero}");
+    eprintln!("segment vs parry: worst {worst} mm, {loose} cases beyond 1e-5 mm");
+    assert!(
+        loose == 0,
+        "{loose} cases beyond 1e-5 mm of parry, worst {worst}"
+    );
+}
+
+fn random_cylinder(rng: &mut Rng, bx: &Aabb) -> Cylinder {
+    let a = rng.point(0.0, 2000.0);
+    let kind = rng.below(4);
+    let b = match kind {
+        0 => {
+            // Short, fat (L < 2r possible).
+            let dir = rng.point(-1.0, 1.0).coords;
+            a + dir * rng.range(1.0, 80.0)
+        }
+        1 => {
+            // Axis-parallel.
+            let mut b = a;
+            let i = rng.below(3) as usize;
+            b[i] += rng.range(-800.0, 800.0);
+            b
+        }
+        2 => {
+            // Pointing at the box.
+            a + (bx.center() - a) * rng.range(0.1, 0.9)
+        }
+        _ => rng.point(0.0, 2000.0),
+    };
+    Cylinder {
+        a,
+        b,
+        radius: rng.range(5.0, 150.0),
+    }
+}
+
+#[test]
+fn capsule_bounds_bracket_exact_cylinder_distance() {
+    let mut rng = Rng(0x1234_5678_9ABC_DEF1);
+    let mut strict = 0;
+    let mut loose = 0;
+    let mut worst_over = 0.0f64;
+    let mut worst_rel = 0.0f64;
+    for k in 0..3000 {
+        let bx = random_box(&mut rng);
+        let c = random_cylinder(&mut rng, &bx);
+        let lo = distance_capsule_aabb(&c, &bx);
+        let hi = distance_inner_capsule_aabb(&c, &bx);
+        let ex = distance_cylinder_aabb_exact(&c, &bx);
+        assert!(lo <= hi + 1e-9, "case {k}: lo {lo} > hi {hi}");
+        // The exact value is clamped into the bounds by construction;
+        // check the raw parry value too, within parry's tolerance.
+        assert!(lo <= ex && ex <= hi + 1e-9, "case {k}: {lo} {ex} {hi}");
+        let d = c.b - c.a;
+        let len = d.norm();
+        let raw = parry_cylinder_aabb(&c, &bx, &(d / len), len, c.radius);
+        // GJK returns points on the shapes: never below the true value
+        // beyond rounding, but above it by up to its stopping gap.
+        assert!(
+            raw >= lo - 1e-6,
+            "case {k}: raw {raw} < lo {lo} ({c:?} {bx:?})"
+        );
+        let over = raw - hi;
+        worst_over = worst_over.max(over);
+        worst_rel = worst_rel.max(over / raw.max(1.0));
+        if over > 1e-4 {
+            loose += 1;
+        }
+        if lo < ex && ex < hi {
+            strict += 1;
+        }
+    }
+    // The band must actually be exercised.
+    assert!(strict > 100, "cases strictly inside the band: {strict}");
+    eprintln!(
+        "parry cylinder above inner bound: worst {worst_over} mm (rel {worst_rel}), {loose} cases beyond 1e-4 mm, {strict} in band"
+    );
+    assert!(
+        worst_over < 1e-4 && loose == 0,
+        "parry exceeded the upper bound by {worst_over} mm; {loose} cases beyond 1e-4 mm"
+    );
+}
+
+#[test]
+fn clear_of_aabb_agrees_with_exact_distance() {
+    let mut rng = Rng(0xDEAD_BEEF_CAFE_F00D);
+    let mut clear = 0;
+    let mut blocked = 0;
+    for k in 0..3000 {
+        let bx = random_box(&mut rng);
+        let c = random_cylinder(&mut rng, &bx);
+        let ex = distance_cylinder_aabb_exact(&c, &bx);
+        // Clearances near the distance, and far from it.
+        let clearance = match k % 3 {
+            0 => ex + rng.range(-5.0, 5.0),
+            1 => rng.range(0.0, 300.0),
+            _ => distance_capsule_aabb(&c, &bx) + rng.range(0.0, 50.0),
+        };
+        let got = cylinder_clear_of_aabb(&c, &bx, clearance);
+        let tol = 1e-5 + 1e-7 * ex;
+        if (ex - clearance).abs() > tol {
+            assert_eq!(
+                got,
+                ex > clearance,
+                "case {k}: exact {ex} clearance {clearance}"
+            );
+        }
+        if got {
+            clear += 1;
+        } else {
+            blocked += 1;
+        }
+        // distance_cylinder_aabb returns the same value, or the (equal
+        // to within BOUNDS_AGREE_TOL) lower bound.
+        let d = distance_cylinder_aabb(&c, &bx);
+        assert!((d - ex).abs() <= BOUNDS_AGREE_TOL, "case {k}: {d} vs {ex}");
+    }
+    assert!(
+        clear > 300 && blocked > 300,
+        "clear {clear} blocked {blocked}"
+    );
+}
+
+#[test]
+fn cylinder_standing_on_box_cap_touching_and_above() {
+    let bx = Aabb::new(p(0.0, 0.0, 0.0), p(500.0, 500.0, 300.0));
+    let c = Cylinder {
+        a: p(250.0, 250.0, 300.0),
+        b: p(250.0, 250.0, 700.0),
+        radius: 60.0,
+    };
+    assert_eq!(distance_cylinder_aabb(&c, &bx), 0.0);
+    assert_eq!(distance_cylinder_aabb_exact(&c, &bx), 0.0);
+    assert!(!cylinder_clear_of_aabb(&c, &bx, 0.0));
+    // Lifted by 7.5: the flat cap is 7.5 above the top face. The capsule
+    // bound is 0 (its end sphere dips into the box); the inner capsule
+    // gives the exact 7.5.
+    let up = Vector3::new(0.0, 0.0, 7.5);
+    let c2 = Cylinder {
+        a: c.a + up,
+        b: c.b + up,
+        ..c
+    };
+    assert_eq!(distance_capsule_aabb(&c2, &bx), 0.0);
+    assert!((distance_inner_capsule_aabb(&c2, &bx) - 7.5).abs() < 1e-12);
+    let d = distance_cylinder_aabb(&c2, &bx);
+    assert!((d - 7.5).abs() < 2e-3, "{d}");
+    assert!(cylinder_clear_of_aabb(&c2, &bx, 7.0));
+    assert!(!cylinder_clear_of_aabb(&c2, &bx, 8.0));
+}
+
+#[test]
+fn cylinder_lying_parallel_to_face_at_known_gap() {
+    let bx = Aabb::new(p(0.0, 0.0, 0.0), p(1000.0, 400.0, 200.0));
+    // Axis along x, above the top face, side 12.25 above it.
+    let c = Cylinder {
+        a: p(100.0, 200.0, 200.0 + 40.0 + 12.25),
+        b: p(900.0, 200.0, 200.0 + 40.0 + 12.25),
+        radius: 40.0,
+    };
+    assert_eq!(distance_capsule_aabb(&c, &bx), 12.25);
+    assert_eq!(distance_inner_capsule_aabb(&c, &bx), 12.25);
+    assert_eq!(distance_cylinder_aabb(&c, &bx), 12.25);
+    let ex = distance_cylinder_aabb_exact(&c, &bx);
+    assert!((ex - 12.25).abs() < 1e-3, "{ex}");
+    assert!(cylinder_clear_of_aabb(&c, &bx, 12.0));
+    assert!(!cylinder_clear_of_aabb(&c, &bx, 12.25));
+}
+
+#[test]
+fn cylinder_rim_near_box_edge() {
+    // Vertical cylinder beside the edge x = 0, z = 100 and above it: the
+    // closest pair is the cap rim point (-10, 50, 110) and the edge.
+    let bx = Aabb::new(p(0.0, 0.0, 0.0), p(100.0, 100.0, 100.0));
+    let c = Cylinder {
+        a: p(-20.0, 50.0, 110.0),
+        b: p(-20.0, 50.0, 200.0),
+        radius: 10.0,
+    };
+    let want = 200f64.sqrt();
+    let lo = distance_capsule_aabb(&c, &bx);
+    let hi = distance_inner_capsule_aabb(&c, &bx);
+    assert!((lo - (500f64.sqrt() - 10.0)).abs() < 1e-12);
+    assert!((hi - (800f64.sqrt() - 10.0)).abs() < 1e-12);
+    let d = distance_cylinder_aabb(&c, &bx);
+    assert!((d - want).abs() < 2e-3 + 1.2e-3 * want, "{d} vs {want}");
+    assert!(cylinder_clear_of_aabb(&c, &bx, 14.0));
+    assert!(!cylinder_clear_of_aabb(&c, &bx, 14.3));
+}
+
+#[test]
+fn degenerate_and_extreme_inputs_do_not_panic() {
+    let bx = Aabb::new(p(0.0, 0.0, 0.0), p(0.0, 0.0, 0.0));
+    let pt = p(3.0, 4.0, 0.0);
+    assert_eq!(distance_segment_aabb(&pt, &pt, &bx), 5.0);
+    // Zero-length axis: ball of radius r around a.
+    let c = Cylinder {
+        a: pt,
+        b: pt,
+        radius: 1.0,
+    };
+    assert_eq!(distance_cylinder_aabb_exact(&c, &bx), 4.0);
+    assert_eq!(distance_cylinder_aabb(&c, &bx), 4.0);
+    // Zero radius: the segment.
+    let c = Cylinder {
+        a: pt,
+        b: p(3.0, 4.0, 9.0),
+        radius: 0.0,
+    };
+    assert_eq!(distance_cylinder_aabb_exact(&c, &bx), 5.0);
+    assert!(cylinder_clear_of_aabb(&c, &bx, 4.9));
+    // Huge coordinates: finite, non-negative.
+    let far = p(1e300, -1e300, 1e300);
+    let d = distance_segment_aabb(&far, &p(-1e300, 1e300, -1e300), &bx);
+    assert!(d.is_finite() && d >= 0.0, "{d}");
+    // Cylinder pointing exactly along -Y (quaternion half-turn branch).
+    let bx = Aabb::new(p(0.0, 0.0, 0.0), p(100.0, 100.0, 100.0));
+    let c = Cylinder {
+        a: p(130.0, 90.0, 50.0),
+        b: p(130.0, -500.0, 50.0),
+        radius: 10.0,
+    };
+    let ex = distance_cylinder_aabb_exact(&c, &bx);
+    assert!((ex - 20.0).abs() < 1e-3, "{ex}");
+    // And capped end pointing at the box along -Y: the cap is 15 away.
+    let c = Cylinder {
+        a: p(50.0, 700.0, 50.0),
+        b: p(50.0, 115.0, 50.0),
+        radius: 30.0,
+    };
+    let ex = distance_cylinder_aabb_exact(&c, &bx);
+    assert!((ex - 15.0).abs() < 1e-3, "{ex}");
+}

@@ -1,0 +1,18 @@
+//! The render stage: what gen-rapid writes, made from the earlier stages' results only (the
+//! cell, the placed job, the plan). Nothing here asks the collision model, the timing or the
+//! searches: everything printed is in [`Plan`](crate::plan::Plan) or
+//! [`Placed`](crate::place::Placed).
+//!
+//! - [`program`]: the plan as a RAPID program, [`rapid`]: its text (template, number format,
+//!   the names of the generated data);
+//! - [`cspace_svg`]: the search over the configuration space (paper Figs. 11-13);
+//! - [`topview_svg`] and [`location`]: the feasible base region, drawn and reported (paper
+//!   section 2, Fig. 1);
+//! - [`comparison`]: the three searches side by side (paper section 6).
+
+pub mod comparison;
+pub mod cspace_svg;
+pub mod location;
+pub mod program;
+pub mod rapid;
+pub mod topview_svg;

@@ -1,0 +1,107 @@
+//! Every cell point resolved to all six axes from one placement.
+//!
+//! - **`joints` points** are used as given (the cell validation has them at the written
+//!   precision); axes 4..6 are the point's own when it gives all six, else `robot.wrist`.
+//! - **`xyz` points** (wrist centre, cell frame, mm) are moved into the robot frame and solved by
+//!   [`ik::choose`] (solution closest to the previous point, or the most upright arm for the
+//!   first; `branch:` forces one of the four), with `robot.wrist` for axes 4..6. The solution is
+//!   rounded to the written precision ([`quantize_joints`]) and it is the *rounded* value that
+//!   must be in range and free of collision and that the plan and the module use. Rounding moves
+//!   each axis by at most 0.0005 deg = 8.7e-6 rad, so the wrist centre moves by at most
+//!   `(r + a2 + L) x 8.7e-6` mm (`r` the wrist's distance from axis 1, `L` the forearm; the
+//!   upper arm's lever is `a2` for a parallelogram robot, at most `a2 + L` for a serial one):
+//!   about 0.025 mm on the IRB 1400 (`r <= 1444`), always under 0.05 mm. A point that cannot be
+//!   solved fails with the point's name, its line, the base used and why each solution was
+//!   refused (out of range by how much, or which link hits which obstacle), as `ik::choose`
+//!   found it.
+
+use super::{Origin, PlaceError, PlacedPoint, Placement, PoseCheck};
+use crate::cell::{Cell, Target};
+use crate::precision::quantize_joints;
+use crate::robot::ik::{self, ArmGeometry, IkError};
+use crate::robot::Robot;
+
+/// Resolves every point of `cell` with the robot at `placement`; `check` is the collision model
+/// of that placement. `geom` is the arm geometry when the caller has it (else it is derived
+/// here, for the first `xyz` point).
+pub(super) fn resolve(
+    cell: &Cell,
+    robot: &Robot,
+    geom: Option<&ArmGeometry>,
+    placement: Placement,
+    check: &impl PoseCheck,
+) -> Result<Vec<PlacedPoint>, PlaceError> {
+    let mut points: Vec<PlacedPoint> = Vec::with_capacity(cell.points.len());
+    for p in &cell.points {
+        let (axes_deg, wrist_deg, origin) = match &p.target {
+            Target::Joints {
+                axes_deg,
+                wrist_deg,
+            } => (
+                *axes_deg,
+                wrist_deg.unwrap_or(cell.robot.wrist_deg),
+                Origin::Joints,
+            ),
+            Target::Xyz {
+                wrist_centre_mm,
+                branch,
+                branch_loc,
+            } => {
+                let local = placement.to_robot_frame(*wrist_centre_mm);
+                let fail = |source: IkError| {
+                    let loc = match source {
+                        IkError::ForcedBranch { .. } => *branch_loc,
+                        _ => p.loc,
+                    };
+                    PlaceError::Ik {
+                        point: p.name.clone(),
+                        base_mm: placement.base_mm,
+                        yaw_deg: placement.yaw_deg,
+                        source: Box::new(source),
+                        loc,
+                    }
+                };
+                let derived;
+                let geom = match geom {
+                    Some(g) => g,
+                    None => {
+                        derived = super::geometry(cell, robot)?;
+                        &derived
+                    }
+                };
+                let previous = points.last().map(|w| arm(&w.joints_deg));
+                let usable = |a: [f64; 3]| match check.why_blocked(&quantize_joints(a)) {
+                    None => Ok(()),
+                    Some(why) => Err(why),
+                };
+                let sol =
+                    ik::choose(robot, geom, local, previous, *branch, usable).map_err(fail)?;
+                (
+                    quantize_joints(sol.axes_deg),
+                    cell.robot.wrist_deg,
+                    Origin::Xyz {
+                        wrist_centre_mm: *wrist_centre_mm,
+                        branch: sol.branch,
+                    },
+                )
+            }
+        };
+        points.push(PlacedPoint {
+            name: p.name.clone(),
+            joints_deg: six(axes_deg, wrist_deg),
+            loc: p.loc,
+            origin,
+        });
+    }
+    Ok(points)
+}
+
+/// Axes 1..3 of six.
+fn arm(j: &[f64; 6]) -> [f64; 3] {
+    [j[0], j[1], j[2]]
+}
+
+/// Six axes from the arm's three and the wrist's three.
+fn six(a: [f64; 3], w: [f64; 3]) -> [f64; 6] {
+    [a[0], a[1], a[2], w[0], w[1], w[2]]
+}

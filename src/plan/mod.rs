@@ -1,0 +1,508 @@
+//! The plan stage: the route through the cell's points, leg by leg (paper section 4, applied to
+//! A -> B -> ... -> F), as the [`Plan`] the output stage prints.
+//!
+//! For each leg: join both points to the grid (a point on a node is that node; a point off the
+//! grid joins the nearest free node whose straight move to it is proven safe); search the grid
+//! with the chosen method ([`search`]), every step accepted only if its straight move is proven
+//! safe; for the extensile method shorten recursively ([`shorten`]); merge collinear moves
+//! ([`merge`]); round to the written precision (0.001 deg) and prove every move again. The route
+//! starts at the first point, visits every point in the cell's order, and each cell point is a
+//! waypoint exactly as given ([`route`]). Then the smallest clearance along the whole route is
+//! certified ([`certify`]).
+//!
+//! Axes 4..6: the planner works on axes 1..3 (the paper's lumped arm); a waypoint carries all six.
+//! A cell point keeps its own wrist ([`PlacedPoint::joints_deg`]); the vias of a leg hold the
+//! wrist of the leg's first point, so the wrist turns (if at all) on the leg's last move. The
+//! wrist does not enter the collision model: the forearm cylinder covers it (paper section 6).
+//!
+//! Files: [`cspace`] (the grid, paper section 3; knows no geometry), [`wave`] (wave expansion),
+//! [`search`] (the three methods, and [`Method`]), [`shorten`], [`merge`].
+
+pub mod cspace;
+pub mod merge;
+pub mod search;
+pub mod shorten;
+pub mod wave;
+
+pub use search::Method;
+
+use crate::collision::{Blocked, Clearance, CollisionModel};
+use crate::place::PlacedPoint;
+use crate::precision::quantize_joints;
+use cspace::{CSpace, Node};
+use search::SearchFailure;
+use std::ops::Range;
+
+/// Tolerance of the certified smallest clearance along the route, mm.
+pub const MIN_CLEARANCE_TOL_MM: f64 = 0.05;
+
+/// What a waypoint is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum WaypointKind {
+    /// A cell point (index into the placed points).
+    CellPoint(usize),
+    /// A via the planner inserted: the `index`-th (from 1) of leg `leg` (from 0; leg `i` runs
+    /// from point `i` to point `i + 1`).
+    Via { leg: usize, index: usize },
+}
+
+/// A waypoint of the route: where a move starts or ends.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Waypoint {
+    pub kind: WaypointKind,
+    /// Controller values of axes 1..6, deg, at the written precision.
+    pub joints_deg: [f64; 6],
+}
+
+impl Waypoint {
+    /// Axes 1..3 (the planning axes), deg.
+    pub fn arm_deg(&self) -> [f64; 3] {
+        [self.joints_deg[0], self.joints_deg[1], self.joints_deg[2]]
+    }
+}
+
+/// One leg: from point `from` to point `to` (indices into the points).
+#[derive(Clone, Debug)]
+pub struct Leg {
+    pub from: usize,
+    pub to: usize,
+    /// The grid path the search returned (before shortening and merging), for pictures.
+    pub grid_path: Vec<Node>,
+    /// Its waypoints in [`Plan::waypoints`], both ends included (a leg shares its first
+    /// waypoint with the previous leg's last).
+    pub waypoints: Range<usize>,
+}
+
+/// The manipulation time of a route (paper section 5), filled by the time stage.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Estimate {
+    /// Per move, s.
+    pub move_s: Vec<f64>,
+    /// The sum, s.
+    pub total_s: f64,
+}
+
+/// The route through all points: everything the output stage prints.
+#[derive(Clone, Debug)]
+pub struct Plan {
+    pub method: Method,
+    /// The grid spacing it was planned on, deg.
+    pub grid_deg: f64,
+    /// Every waypoint in visiting order; the first is the first cell point, the last the last.
+    pub waypoints: Vec<Waypoint>,
+    pub legs: Vec<Leg>,
+    /// The certified smallest clearance along the whole route (within
+    /// [`MIN_CLEARANCE_TOL_MM`], [`certify`]); `None` without obstacles (or before [`certify`]).
+    pub min_clearance: Option<Clearance>,
+    /// The manipulation time, once the time stage has run.
+    pub estimate: Option<Estimate>,
+}
+
+impl Plan {
+    /// Number of straight moves.
+    pub fn moves(&self) -> usize {
+        self.waypoints.len().saturating_sub(1)
+    }
+
+    /// Every straight move on axes 1..3, in order.
+    pub fn segments(&self) -> impl Iterator<Item = ([f64; 3], [f64; 3])> + '_ {
+        self.waypoints
+            .windows(2)
+            .map(|w| (w[0].arm_deg(), w[1].arm_deg()))
+    }
+
+    /// Sum of the moves' lengths in joint space (Euclidean over axes 1..3, deg).
+    pub fn path_length_deg(&self) -> f64 {
+        self.segments()
+            .map(|(a, b)| (0..3).map(|k| (b[k] - a[k]).powi(2)).sum::<f64>().sqrt())
+            .sum()
+    }
+}
+
+/// Why a route could not be planned. Each variant names the point(s) concerned.
+#[derive(Debug, thiserror::Error)]
+pub enum PlanError {
+    #[error("point '{name}' cannot be used: {reason}")]
+    PointBlocked {
+        point: usize,
+        name: String,
+        reason: Blocked,
+    },
+    #[error("point '{name}' is off the grid and no free grid node next to it can be reached by a safe straight move")]
+    NoJoin { point: usize, name: String },
+    #[error("no collision-free path from '{from_name}' to '{to_name}': the free space between them is not connected on a {grid_deg} deg grid with {clearance_mm} mm clearance")]
+    NoPath {
+        from: usize,
+        to: usize,
+        from_name: String,
+        to_name: String,
+        grid_deg: f64,
+        clearance_mm: f64,
+    },
+    #[error("the {method} search found no path from '{from_name}' to '{to_name}'{}", method_hint(*.method))]
+    SearchFailed {
+        from: usize,
+        to: usize,
+        from_name: String,
+        to_name: String,
+        method: Method,
+    },
+    #[error("internal error: the move {from_axes:?} -> {to_axes:?} on the leg '{from_name}' -> '{to_name}' could not be proven safe after rounding")]
+    Unsafe {
+        from: usize,
+        from_name: String,
+        to_name: String,
+        from_axes: [f64; 3],
+        to_axes: [f64; 3],
+    },
+}
+
+fn method_hint(m: Method) -> &'static str {
+    match m {
+        Method::DepthFirst => " (depth-first walks axis steps only and the free space there is joined only diagonally, the paper's Fig. 8; try --planner extensile)",
+        _ => " (every path the wave offers was refused by the whole-move safety check)",
+    }
+}
+
+impl PlanError {
+    /// The cell point an error is about, for pointing at the input.
+    pub fn point(&self) -> usize {
+        match self {
+            PlanError::PointBlocked { point, .. } | PlanError::NoJoin { point, .. } => *point,
+            PlanError::NoPath { to, .. } | PlanError::SearchFailed { to, .. } => *to,
+            PlanError::Unsafe { from, .. } => *from,
+        }
+    }
+}
+
+/// The grid asks the collision model which nodes are free.
+impl cspace::Inspector for CollisionModel {
+    fn inspect_column(&self, a1_deg: f64, a2_deg: f64, a3_deg: &[f64], free: &mut [bool]) {
+        CollisionModel::inspect_column(self, a1_deg, a2_deg, a3_deg, free)
+    }
+}
+
+fn join(cs: &CSpace, model: &CollisionModel, p: &[f64; 3]) -> Option<Node> {
+    if let Some(n) = cs.grid.node_at(p) {
+        return cs.is_free(n).then_some(n);
+    }
+    for rings in 1..=3 {
+        for n in cs.grid.nodes_near(p, rings) {
+            if cs.is_free(n) && model.move_is_safe(p, &cs.grid.axes_deg(n)) {
+                return Some(n);
+            }
+        }
+    }
+    None
+}
+
+/// Plans the route through `points` (at least two), in order, on the inspected grid `cs` of the
+/// collision model `model`, and certifies its smallest clearance: [`route`], then [`certify`].
+pub fn plan(
+    cs: &CSpace,
+    model: &CollisionModel,
+    points: &[PlacedPoint],
+    method: Method,
+) -> Result<Plan, PlanError> {
+    Ok(certify(route(cs, model, points, method)?, model))
+}
+
+/// The smallest clearance along the whole route, certified within [`MIN_CLEARANCE_TOL_MM`]
+/// (`None` without obstacles), into the plan.
+pub fn certify(mut plan: Plan, model: &CollisionModel) -> Plan {
+    plan.min_clearance = plan
+        .segments()
+        .filter_map(|(a, b)| model.min_clearance_along(&a, &b, MIN_CLEARANCE_TOL_MM))
+        .reduce(|least, c| if c.mm < least.mm { c } else { least });
+    plan
+}
+
+/// The route alone (every move proven safe; the smallest clearance not yet certified, which
+/// costs a branch and bound over every move: `compare` does without).
+pub fn route(
+    cs: &CSpace,
+    model: &CollisionModel,
+    points: &[PlacedPoint],
+    method: Method,
+) -> Result<Plan, PlanError> {
+    let mut nodes = Vec::with_capacity(points.len());
+    for (i, p) in points.iter().enumerate() {
+        if let Some(reason) = model.why_blocked(&p.arm_deg()) {
+            return Err(PlanError::PointBlocked {
+                point: i,
+                name: p.name.clone(),
+                reason,
+            });
+        }
+        let n = join(cs, model, &p.arm_deg()).ok_or_else(|| PlanError::NoJoin {
+            point: i,
+            name: p.name.clone(),
+        })?;
+        nodes.push(n);
+    }
+    let grid = &cs.grid;
+    let mut accept_nodes =
+        |a: Node, b: Node| model.move_is_safe(&grid.axes_deg(a), &grid.axes_deg(b));
+    let mut made = Route::default();
+    for i in 0..points.len() - 1 {
+        let (s, g) = (nodes[i], nodes[i + 1]);
+        let (p, q) = (points[i].arm_deg(), points[i + 1].arm_deg());
+        if p == q {
+            // The same axes 1..3 twice (the wrist may differ): one move that stays put.
+            made.add_leg(points, i, vec![s], vec![p, q]);
+            continue;
+        }
+        let grid_path = method
+            .search(cs, s, g, &mut accept_nodes)
+            .map_err(|failure| {
+                let (from_name, to_name) = (points[i].name.clone(), points[i + 1].name.clone());
+                match failure {
+                    SearchFailure::Exhausted => PlanError::SearchFailed {
+                        from: i,
+                        to: i + 1,
+                        from_name,
+                        to_name,
+                        method,
+                    },
+                    SearchFailure::NotConnected => PlanError::NoPath {
+                        from: i,
+                        to: i + 1,
+                        from_name,
+                        to_name,
+                        grid_deg: grid.step_deg,
+                        clearance_mm: model.clearance_mm(),
+                    },
+                }
+            })?;
+        let mut arm = vec![p];
+        arm.extend(grid_path.iter().map(|&n| grid.axes_deg(n)));
+        arm.push(q);
+        arm.dedup();
+        if method == Method::Extensile {
+            shorten::shorten(cs, &mut arm, &mut |a, b| model.move_is_safe(a, b));
+        }
+        let mut arm: Vec<[f64; 3]> = merge::collinear(&arm)
+            .into_iter()
+            .map(quantize_joints)
+            .collect();
+        arm.dedup();
+        if arm.len() == 1 {
+            // The two points coincide: one (empty) move keeps both in the program.
+            arm.push(q);
+        }
+        for w in arm.windows(2) {
+            if !model.move_is_safe(&w[0], &w[1]) {
+                return Err(PlanError::Unsafe {
+                    from: i,
+                    from_name: points[i].name.clone(),
+                    to_name: points[i + 1].name.clone(),
+                    from_axes: w[0],
+                    to_axes: w[1],
+                });
+            }
+        }
+        made.add_leg(points, i, grid_path, arm);
+    }
+    Ok(Plan {
+        method,
+        grid_deg: grid.step_deg,
+        waypoints: made.waypoints,
+        legs: made.legs,
+        min_clearance: None,
+        estimate: None,
+    })
+}
+
+/// The waypoints and legs as they are made.
+#[derive(Default)]
+struct Route {
+    waypoints: Vec<Waypoint>,
+    legs: Vec<Leg>,
+}
+
+impl Route {
+    /// Adds leg `i` (point `i` to point `i + 1`) with its moves on axes 1..3, `arm` (both ends
+    /// included): the wrist rule of the module docs.
+    fn add_leg(
+        &mut self,
+        points: &[PlacedPoint],
+        i: usize,
+        grid_path: Vec<Node>,
+        arm: Vec<[f64; 3]>,
+    ) {
+        let wrist = |p: usize| {
+            let j = points[p].joints_deg;
+            [j[3], j[4], j[5]]
+        };
+        let six = |a: [f64; 3], w: [f64; 3]| [a[0], a[1], a[2], w[0], w[1], w[2]];
+        let start = self.waypoints.len().saturating_sub(1);
+        if self.waypoints.is_empty() {
+            if let Some(&first) = arm.first() {
+                self.waypoints.push(Waypoint {
+                    kind: WaypointKind::CellPoint(i),
+                    joints_deg: six(first, wrist(i)),
+                });
+            }
+        }
+        let n = arm.len();
+        for (k, &a) in arm.iter().enumerate().skip(1) {
+            let (kind, w) = if k == n - 1 {
+                (WaypointKind::CellPoint(i + 1), wrist(i + 1))
+            } else {
+                (WaypointKind::Via { leg: i, index: k }, wrist(i))
+            };
+            self.waypoints.push(Waypoint {
+                kind,
+                joints_deg: six(a, w),
+            });
+        }
+        self.legs.push(Leg {
+            from: i,
+            to: i + 1,
+            grid_path,
+            waypoints: start..self.waypoints.len(),
+        });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The paper's figures through the plan layer: a hand-made grid (`CSpace::from_fn`) with the
+    //! real IRB 1400 model and no obstacles, so every move inside the axis ranges is safe and
+    //! only the hand-made free nodes steer the search.
+    use super::*;
+    use crate::cell::Loc;
+    use crate::place::{Origin, Placement};
+    use crate::plan::cspace::Grid;
+    use crate::robot::Robot;
+
+    fn open_model() -> CollisionModel {
+        let placement = Placement {
+            base_mm: [0.0, 0.0, 0.0],
+            yaw_deg: 0.0,
+        };
+        CollisionModel::new(&Robot::irb1400(), placement, Vec::new(), 0.0)
+    }
+
+    fn point(name: &str, a: [f64; 3], wrist: [f64; 3]) -> PlacedPoint {
+        PlacedPoint {
+            name: name.into(),
+            joints_deg: [a[0], a[1], a[2], wrist[0], wrist[1], wrist[2]],
+            loc: Loc::default(),
+            origin: Origin::Joints,
+        }
+    }
+
+    /// Axes 1..3 of a leg's waypoints.
+    fn leg_arm(p: &Plan, leg: usize) -> Vec<[f64; 3]> {
+        p.waypoints[p.legs[leg].waypoints.clone()]
+            .iter()
+            .map(Waypoint::arm_deg)
+            .collect()
+    }
+
+    #[test]
+    fn fig8_depth_first_fails_with_the_leg_named_and_extensile_takes_the_diagonal() {
+        // 3 x 3 nodes in the axis 1 - axis 2 plane; free only on the diagonal, so the free
+        // nodes touch only at corners (paper Fig. 8).
+        let g = Grid::over([[0.0, 2.0], [0.0, 2.0], [0.0, 0.0]], 1.0);
+        let cs = CSpace::from_fn(g, |n| n[0] == n[1]);
+        let model = open_model();
+        let pts = [
+            point("P", [0.0, 0.0, 0.0], [0.0; 3]),
+            point("Q", [2.0, 2.0, 0.0], [0.0; 3]),
+        ];
+        match plan(&cs, &model, &pts, Method::DepthFirst) {
+            Err(e @ PlanError::SearchFailed { from: 0, to: 1, .. }) => {
+                let msg = e.to_string();
+                assert!(
+                    msg.contains("depth-first search found no path from 'P' to 'Q'"),
+                    "{msg}"
+                );
+                assert_eq!(e.point(), 1);
+            }
+            other => panic!("expected SearchFailed, got {other:?}"),
+        }
+        let p = plan(&cs, &model, &pts, Method::Extensile).expect("extensile plans");
+        assert_eq!(p.moves(), 1);
+        assert_eq!(leg_arm(&p, 0), vec![[0.0, 0.0, 0.0], [2.0, 2.0, 0.0]]);
+        assert_eq!(p.legs[0].grid_path, vec![[0, 0, 0], [1, 1, 0], [2, 2, 0]]);
+        // No obstacles: no clearance to certify.
+        assert_eq!(p.min_clearance, None);
+        // Not joined at all: no path, for every method (one wave tells).
+        let cs = CSpace::from_fn(g, |n| n[0] != 1);
+        for m in Method::ALL {
+            assert!(
+                matches!(plan(&cs, &model, &pts, m), Err(PlanError::NoPath { .. })),
+                "{m}"
+            );
+        }
+    }
+
+    #[test]
+    fn fig6_neighboring_saw_tooth_and_extensile_straightens_it() {
+        // A band of free nodes along axis 2 = axis 1 / 2 (|2 n2 - n1| <= 1), from (0, 0) to
+        // (10, 5). On the 26-neighbour wave node (x, y) carries x + 1. Back from (10, 5) the
+        // neighbouring search takes, among the smaller numbers in the band, the node nearest the
+        // start: (9, 4) (97 against 106 for (9, 5)), then only (8, 4), then (7, 3), ...
+        // a diagonal step and an axis step in turn: ten steps, no two in the same direction, so
+        // ten moves even after the collinear merge (the saw-tooth of Fig. 6).
+        let g = Grid::over([[0.0, 10.0], [0.0, 5.0], [0.0, 0.0]], 1.0);
+        let cs = CSpace::from_fn(g, |n| (2 * n[1] - n[0]).abs() <= 1);
+        let model = open_model();
+        let pts = [
+            point("P", [0.0, 0.0, 0.0], [0.0; 3]),
+            point("Q", [10.0, 5.0, 0.0], [0.0; 3]),
+        ];
+        let nb = plan(&cs, &model, &pts, Method::Neighboring).expect("neighboring plans");
+        assert_eq!(nb.moves(), 10, "{:?}", leg_arm(&nb, 0));
+        assert_eq!(leg_arm(&nb, 0)[1], [1.0, 0.0, 0.0]);
+        assert_eq!(leg_arm(&nb, 0)[2], [2.0, 1.0, 0.0]);
+        // Extensile: search, shorten (k -> k+2 where the inspected nodes are free) and merge.
+        // The straight line (0, 0) -> (10, 5) passes only band nodes (at x = i its axis-2 value
+        // i / 2 rounds into the band), but the shortening cuts k -> k+2 greedily from the start,
+        // so it ends with at most a few pieces and never more than the saw-tooth.
+        let ex = plan(&cs, &model, &pts, Method::Extensile).expect("extensile plans");
+        assert!(ex.moves() <= 2, "{:?}", leg_arm(&ex, 0));
+        assert!(ex.path_length_deg() < nb.path_length_deg());
+        for (a, b) in ex.segments() {
+            let (na, nb_) = (cs.grid.node_at(&a), cs.grid.node_at(&b));
+            let (Some(na), Some(nb_)) = (na, nb_) else {
+                panic!("waypoints on the grid")
+            };
+            assert!(crate::plan::shorten::inspected_nodes(na, nb_)
+                .iter()
+                .all(|&q| cs.is_free(q)));
+        }
+    }
+
+    #[test]
+    fn waypoints_carry_six_axes_and_the_wrist_turns_on_a_legs_last_move() {
+        // Three points on a free grid; the wrist differs at each. Each leg is one diagonal run
+        // merged into one move, so force vias with a band like Fig. 6 on leg 1.
+        let g = Grid::over([[0.0, 10.0], [0.0, 5.0], [0.0, 0.0]], 1.0);
+        let cs = CSpace::from_fn(g, |n| (2 * n[1] - n[0]).abs() <= 1);
+        let model = open_model();
+        let pts = [
+            point("P", [0.0, 0.0, 0.0], [0.0, 30.0, 0.0]),
+            point("Q", [10.0, 5.0, 0.0], [0.0, 30.0, 100.0]),
+            point("R", [10.0, 5.0, 0.0], [5.0, 30.0, 100.0]),
+        ];
+        let p = plan(&cs, &model, &pts, Method::Neighboring).expect("plans");
+        assert_eq!(p.legs.len(), 2);
+        assert_eq!(p.legs[0].waypoints, 0..11);
+        assert_eq!(p.legs[1].waypoints, 10..12, "the same axes 1..3: one move");
+        assert_eq!(p.waypoints[0].kind, WaypointKind::CellPoint(0));
+        assert_eq!(p.waypoints[3].kind, WaypointKind::Via { leg: 0, index: 3 });
+        assert_eq!(p.waypoints[10].kind, WaypointKind::CellPoint(1));
+        assert_eq!(p.waypoints[11].kind, WaypointKind::CellPoint(2));
+        // Vias hold the wrist of their leg's first point; cell points their own.
+        assert_eq!(p.waypoints[9].joints_deg[3..], [0.0, 30.0, 0.0]);
+        assert_eq!(p.waypoints[10].joints_deg[3..], [0.0, 30.0, 100.0]);
+        assert_eq!(
+            p.waypoints[11].joints_deg,
+            [10.0, 5.0, 0.0, 5.0, 30.0, 100.0]
+        );
+        assert_eq!(p.moves(), 11);
+    }
+}
