@@ -1,7 +1,6 @@
 //! The command line end to end: what goes to stdout, stderr and files, and the exit statuses.
 
-mod common;
-use common::gen_rapid;
+use crate::common::gen_rapid;
 
 fn stdout(o: &std::process::Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
@@ -39,7 +38,7 @@ fn the_minimal_cell_in_help_plans_as_printed() {
         .collect();
     assert!(cell.contains("points:"), "{h}");
     // Written where its relative URDF path holds: a directory beside robots/.
-    let dir = common::root().join("target").join("help-cell");
+    let dir = crate::common::root().join("target").join("help-cell");
     std::fs::create_dir_all(&dir).expect("dir");
     let path = dir.join("demo.yaml");
     std::fs::write(&path, cell.replace("../robots/", "../../robots/")).expect("write");
@@ -148,7 +147,7 @@ fn bad_flags_are_usage_errors() {
 fn a_cell_written_anywhere_finds_its_urdf_and_plans_depth_first() {
     // A cell outside the repository, naming the URDF by absolute path, no obstacles.
     let dir = tempfile::tempdir().expect("tempdir");
-    let urdf = common::root().join("robots/irb1400.urdf");
+    let urdf = crate::common::root().join("robots/irb1400.urdf");
     let cell = format!(
         "module: Diag\nrobot:\n  urdf: {}\n  base: [0, 0, 0]\nobstacles: []\npoints:\n  - {{ name: P, joints: [0, 0, 0] }}\n  - {{ name: Q, joints: [10, 10, 0] }}\nplanner:\n  method: depth-first\n  grid: 10\n",
         urdf.display()
@@ -190,7 +189,7 @@ fn a_picture_that_cannot_be_written_leaves_stdout_empty() {
 #[test]
 fn the_same_point_twice_is_one_move_that_stays_put() {
     let dir = tempfile::tempdir().expect("tempdir");
-    let urdf = common::root().join("robots/irb1400.urdf");
+    let urdf = crate::common::root().join("robots/irb1400.urdf");
     let cell = format!(
         "module: Dup\nrobot: {{ urdf: {}, base: [0, 0, 0] }}\nobstacles: []\npoints:\n  - {{ name: P1, joints: [10.5, 3.25, 0.125] }}\n  - {{ name: P2, joints: [10.5, 3.25, 0.125] }}\nplanner: {{ grid: 0.5, method: neighboring }}\n",
         urdf.display()

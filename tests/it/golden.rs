@@ -5,8 +5,7 @@
 //! Refresh after a deliberate change with `GEN_RAPID_BLESS=1 cargo test --release --test golden`
 //! (refused when `CI` is set), then read every changed file before committing it.
 
-mod common;
-use common::{check_golden, files, gen_rapid, root};
+use crate::common::{check_golden, files, gen_rapid, root};
 
 #[test]
 fn every_example_cell_matches_its_golden_module() {

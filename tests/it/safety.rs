@@ -1,9 +1,8 @@
 //! The independent check of every golden module (see `common/dense.rs`), and a check that the
 //! trunk cell really blocks the direct moves it claims to block.
 
-mod common;
-use common::dense::{boxes_of, check_module, min_distance};
-use common::{files, root};
+use crate::common::dense::{boxes_of, check_module, min_distance};
+use crate::common::{files, root};
 use gen_rapid::cell;
 use gen_rapid::robot::Robot;
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};

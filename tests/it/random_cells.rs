@@ -3,9 +3,8 @@
 //! independent dense check of `common/dense.rs`; a method may fail only with a planning error
 //! (no path, a depth-first dead end), never otherwise. Deterministic (fixed seed).
 
-mod common;
-use common::dense::check_module;
-use common::root;
+use crate::common::dense::check_module;
+use crate::common::root;
 use gen_rapid::cell::{self, Method};
 use gen_rapid::collision::{CollisionModel, Obstacle, Placement};
 use gen_rapid::error::Error;
