@@ -1,14 +1,7 @@
 //! The command line end to end: what goes to stdout, stderr and files, and the exit statuses.
 
-mod common;
-use common::gen_rapid;
-
-fn stdout(o: &std::process::Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-fn stderr(o: &std::process::Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use crate::common::module::Module;
+use crate::common::{arg, gen_rapid, read, root, stderr, stdout, METHODS};
 
 #[test]
 fn help_teaches_the_format_examples_and_exit_statuses() {
@@ -25,6 +18,16 @@ fn help_teaches_the_format_examples_and_exit_statuses() {
     ] {
         assert!(h.contains(needle), "--help lacks '{needle}':\n{h}");
     }
+    // The methods it offers are the ones the tests know (`common::METHODS`).
+    let offered: Vec<&str> = h
+        .lines()
+        .skip_while(|l| !l.trim().starts_with("--planner"))
+        .skip_while(|l| !l.trim().starts_with("Possible values:"))
+        .skip(1)
+        .map_while(|l| l.trim().strip_prefix("- "))
+        .map(|l| l.split(':').next().unwrap_or_default())
+        .collect();
+    assert_eq!(offered, METHODS, "{h}");
 }
 
 #[test]
@@ -39,7 +42,7 @@ fn the_minimal_cell_in_help_plans_as_printed() {
         .collect();
     assert!(cell.contains("points:"), "{h}");
     // Written where its relative URDF path holds: a directory beside robots/.
-    let dir = common::root().join("target").join("help-cell");
+    let dir = root().join("target").join("help-cell");
     std::fs::create_dir_all(&dir).expect("dir");
     let path = dir.join("demo.yaml");
     std::fs::write(&path, cell.replace("../robots/", "../../robots/")).expect("write");
@@ -146,18 +149,19 @@ fn bad_flags_are_usage_errors() {
 
 #[test]
 fn a_cell_written_anywhere_finds_its_urdf_and_plans_depth_first() {
-    // A cell outside the repository, naming the URDF by absolute path, no obstacles.
+    // tests/ok/no_obstacles_depth_first.yaml copied outside the repository, naming the URDF by
+    // absolute path: the same module, byte for byte (the header names the file, not its place).
     let dir = tempfile::tempdir().expect("tempdir");
-    let urdf = common::root().join("robots/irb1400.urdf");
-    let cell = format!(
-        "module: Diag\nrobot:\n  urdf: {}\n  base: [0, 0, 0]\nobstacles: []\npoints:\n  - {{ name: P, joints: [0, 0, 0] }}\n  - {{ name: Q, joints: [10, 10, 0] }}\nplanner:\n  method: depth-first\n  grid: 10\n",
-        urdf.display()
-    );
-    let path = dir.path().join("diag.yaml");
+    let urdf = root().join("robots/irb1400.urdf");
+    let cell = read("tests/ok/no_obstacles_depth_first.yaml")
+        .replace("../../robots/irb1400.urdf", &urdf.display().to_string());
+    assert!(cell.contains(&urdf.display().to_string()));
+    let path = dir.path().join("no_obstacles_depth_first.yaml");
     std::fs::write(&path, cell).expect("write");
-    let o = gen_rapid(&[path.to_str().expect("utf-8")]);
+    let o = gen_rapid(&[arg(&path)]);
     assert!(o.status.success(), "{}", stderr(&o));
     let text = stdout(&o);
+    assert_eq!(text, read("tests/ok/no_obstacles_depth_first.mod"));
     assert!(text.contains("! planner: depth-first"));
     assert!(
         text.contains("! min clearance (mm): none (no obstacles)"),
@@ -189,19 +193,12 @@ fn a_picture_that_cannot_be_written_leaves_stdout_empty() {
 
 #[test]
 fn the_same_point_twice_is_one_move_that_stays_put() {
-    let dir = tempfile::tempdir().expect("tempdir");
-    let urdf = common::root().join("robots/irb1400.urdf");
-    let cell = format!(
-        "module: Dup\nrobot: {{ urdf: {}, base: [0, 0, 0] }}\nobstacles: []\npoints:\n  - {{ name: P1, joints: [10.5, 3.25, 0.125] }}\n  - {{ name: P2, joints: [10.5, 3.25, 0.125] }}\nplanner: {{ grid: 0.5, method: neighboring }}\n",
-        urdf.display()
-    );
-    let path = dir.path().join("dup.yaml");
-    std::fs::write(&path, cell).expect("write");
-    let o = gen_rapid(&[path.to_str().expect("utf-8")]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = stdout(&o);
+    // The golden harness holds the module to the output of tests/ok/same_point_twice.yaml.
+    let text = read("tests/ok/same_point_twice.mod");
     assert!(
         text.contains("! moves: 1\n") && !text.contains("via"),
         "{text}"
     );
+    let m = Module::parse(&text).expect("module");
+    assert_eq!(m.target("P1"), m.target("P2"), "{text}");
 }

@@ -1,31 +1,13 @@
 //! The comparison of the three search methods (paper sections 4-6) through the command line:
-//! `gen-rapid compare`, `--svg`, the manipulation time in the module header, the depth-first
-//! failure, and the golden modules of the neighboring and depth-first methods on the trunk cell.
-//!
-//! Goldens: `tests/golden/trunk.<method>.mod`. They are rewritten only when `GEN_RAPID_BLESS=1`
-//! is set, and never when `CI` is set (blessing there is refused, the test fails).
+//! `gen-rapid compare`, `--svg`, the manipulation time in the module header and the depth-first
+//! failure. (The modules of each method on the trunk cell, `tests/golden/trunk.<method>.mod`, are
+//! the golden harness's.)
 
+use crate::common::{gen_rapid, root, stderr, stdout};
 use serde_json::Value;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
 const TRUNK: &str = "cells/trunk.yaml";
-
-fn gen_rapid(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gen-rapid"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("gen-rapid runs")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 fn compare_json(extra: &[&str]) -> Value {
     let mut args = vec!["compare", TRUNK, "--json"];
@@ -182,9 +164,8 @@ fn depth_first_failure_names_the_leg_exits_3_and_writes_nothing() {
 fn no_method_succeeding_prints_the_table_and_exits_3_without_a_picture() {
     // The trunk cell with a 50 mm clearance: point A is then too close to the trunk floor.
     let dir = tempfile::tempdir().expect("tempdir");
-    let text =
-        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(TRUNK)).expect("trunk");
-    let urdf = Path::new(env!("CARGO_MANIFEST_DIR")).join("robots/irb1400.urdf");
+    let text = std::fs::read_to_string(root().join(TRUNK)).expect("trunk");
+    let urdf = root().join("robots/irb1400.urdf");
     let text = text
         .replace("clearance: 10", "clearance: 50")
         .replace("../robots/irb1400.urdf", urdf.to_str().expect("utf-8"));
@@ -268,34 +249,4 @@ fn run_states_the_time_in_the_header_and_draws_its_route() {
     );
     let pic = std::fs::read_to_string(&svg).expect("svg written");
     assert!(pic.contains("extensile (") && !pic.contains("neighboring ("));
-}
-
-fn golden(method: &str) {
-    let path =
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("tests/golden/trunk.{method}.mod"));
-    let o = gen_rapid(&[TRUNK, "--planner", method]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let actual = stdout(&o);
-    if std::env::var_os("GEN_RAPID_BLESS").is_some_and(|v| v == "1") {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "refusing to bless golden files in CI (CI is set)"
-        );
-        std::fs::create_dir_all(path.parent().expect("parent")).expect("golden dir");
-        std::fs::write(&path, &actual).expect("write golden");
-        return;
-    }
-    let expected = std::fs::read_to_string(&path)
-        .unwrap_or_else(|e| panic!("{}: {e} (GEN_RAPID_BLESS=1 creates it)", path.display()));
-    assert!(expected == actual, "{} differs from the output; check it and rerun with GEN_RAPID_BLESS=1\n--- output:\n{actual}", path.display());
-}
-
-#[test]
-fn golden_trunk_neighboring() {
-    golden("neighboring");
-}
-
-#[test]
-fn golden_trunk_depth_first() {
-    golden("depth-first");
 }

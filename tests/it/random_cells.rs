@@ -3,18 +3,9 @@
 //! independent dense check of `common/dense.rs`; a method may fail only with a planning error
 //! (no path, a depth-first dead end), never otherwise. Deterministic (fixed seed).
 
-mod common;
-use common::dense::check_module;
-use common::root;
-use gen_rapid::cell::{self, Obstacle};
-use gen_rapid::collision::CollisionModel;
-use gen_rapid::error::Error;
-use gen_rapid::geometry::Aabb;
-use gen_rapid::pipeline::{self, Loaded};
-use gen_rapid::place::Placement;
-use gen_rapid::plan::Method;
-use gen_rapid::robot::Robot;
-use nalgebra::Point3;
+use crate::common::dense::{check_module, Scene};
+use crate::common::library::{parse_cell, plan_every_method, Planned, Robot};
+use crate::common::root;
 
 struct Rng(u64);
 impl Rng {
@@ -75,21 +66,9 @@ fn random_cell(rng: &mut Rng, robot: &Robot, index: usize) -> Option<RandomCell>
             [c[0] + hx, c[1] + hy, z0 + h],
         ));
     }
-    // Free points, found with the library's model (it only picks inputs here; the check of the
-    // result is independent).
-    let obstacles = boxes
-        .iter()
-        .map(|(n, a, b)| Obstacle::new(n.clone(), Aabb::new(Point3::from(*a), Point3::from(*b))))
-        .collect();
-    let model = CollisionModel::new(
-        robot,
-        Placement {
-            base_mm: base,
-            yaw_deg: yaw,
-        },
-        obstacles,
-        clearance,
-    );
+    // Free points, found with the dense check's own distances (1 mm beyond the clearance, so
+    // that the generator's model agrees that they are free).
+    let scene = Scene::from_boxes(robot, base, yaw, &boxes);
     let mut points = Vec::new();
     for _ in 0..400 {
         let a = [
@@ -98,7 +77,7 @@ fn random_cell(rng: &mut Rng, robot: &Robot, index: usize) -> Option<RandomCell>
             rng.range(-55.0, 60.0),
         ]
         .map(|x| (x * 10.0).round() / 10.0); // one decimal: off a 3 deg grid mostly
-        if model.is_free(&a) {
+        if robot.check_range3(&a).is_ok() && scene.nearest(a).mm > clearance + 1.0 {
             points.push(a);
             if points.len() == 3 {
                 break;
@@ -153,33 +132,19 @@ fn random_cells_plan_safe_modules_or_fail_cleanly() {
         };
         cells += 1;
         let path = root().join(format!("tests/random{index}.yaml"));
-        let cell = cell::parse(&path, &rc.yaml).unwrap_or_else(|e| panic!("{e}\n{}", rc.yaml));
-        let job = Loaded {
-            cell: cell.clone(),
-            text: rc.yaml.clone(),
-            robot: robot.clone(),
-        };
-        let placed = pipeline::place(&job).unwrap_or_else(|e| panic!("{e}\n{}", rc.yaml));
-        let inspected = pipeline::inspect(&job, &placed, rc.grid_deg);
-        for m in Method::ALL {
-            let rendered = pipeline::plan(&job, &placed, &inspected, m)
-                .map(|plan| pipeline::time(&job, plan))
-                .and_then(|plan| pipeline::render(&job, &placed, &plan));
-            match rendered {
-                Ok(out) => {
+        let cell = parse_cell(&path, &rc.yaml).unwrap_or_else(|e| panic!("{e}\n{}", rc.yaml));
+        let results = plan_every_method(&cell, rc.grid_deg)
+            .unwrap_or_else(|e| panic!("random cell {index}: unexpected error {e}\n{}", rc.yaml));
+        for (m, result) in results {
+            match result {
+                Planned::Module(text) => {
                     let label = format!("random cell {index}, {m}");
-                    let (samples, smallest) = check_module(&cell, &job.robot, &out.text, &label);
-                    assert!(
-                        samples > 0 && smallest >= cell.planner.clearance_mm - 1e-6,
-                        "{label}"
-                    );
+                    let report = check_module(&cell, &robot, &text, &label)
+                        .unwrap_or_else(|f| panic!("{}\n{}", f.join("\n"), rc.yaml));
+                    assert_eq!(report.module.planner, m, "{label}");
                     planned += 1;
                 }
-                Err(Error::Plan { .. }) => failed += 1,
-                Err(e) => panic!(
-                    "random cell {index}, {m}: unexpected error {e}\n{}",
-                    rc.yaml
-                ),
+                Planned::PlanningFailed(_) => failed += 1,
             }
         }
     }

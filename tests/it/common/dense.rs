@@ -1,0 +1,363 @@
+//! The independent whole-move check: read a `.mod` as written (targets, moves, the header's base
+//! and yaw), place the robot's link cylinders with the URDF kinematics, and sample every straight
+//! move so densely that no point of the arm moves more than 1 mm between samples, measuring the
+//! exact distance to every box with parry3d's own shapes. It shares no code with `collision` or
+//! `geometry`: only the cell parser and the robot's kinematics (which `robot`'s tests hold
+//! against RobotStudio).
+//!
+//! # What the robot stands on: this check's own reading
+//!
+//! The base cylinder (link 1) starts at the mounting plane, so a floor under the robot touches
+//! it. This check does not take the collision model's rule for that; it reads it from the
+//! geometry it computes itself, pose by pose: a box is not measured against a link-1 cylinder
+//! only when the box lies wholly at or below the mounting plane (the header's base z) *and* the
+//! cylinder, placed by this check's forward kinematics, lies wholly on or above the box's top
+//! (its lowest point, `min(end z) - r sin(tilt)`, is not below the top). Any other contact
+//! counts: a box reaching above the mounting plane, or a base cylinder that dips below the top
+//! of what it would stand on. Links 2 and 3 are measured against every box.
+
+use super::library::{Base, Cell, Robot, Target};
+use super::module::Module;
+use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
+use parry3d::math::{Pose, Vector};
+use parry3d::shape::{Cuboid, Cylinder};
+
+/// Heights closer than this count as equal (mm): the box top and the mounting plane, the
+/// cylinder's lowest point and the box top.
+const STAND_TOL_MM: f64 = 1e-6;
+
+/// No point of the arm is farther than this from any joint axis (IRB 1400: reach 1.44 m plus
+/// the wrist; radius and offsets stay well below 2 m), mm.
+const ARM_RADIUS_MM: f64 = 2000.0;
+
+/// A cell-frame xyz point's written joints must give it back within this, mm (the module's
+/// 0.001 deg moves the wrist centre by less than 0.05 mm).
+const XYZ_TOL_MM: f64 = 0.05;
+
+/// The header states the min clearance to 0.1 mm, as a lower bound within 0.05 mm of the
+/// true minimum (README).
+const HEADER_ROUNDING_MM: f64 = 0.05;
+const HEADER_TOL_MM: f64 = 0.05;
+
+struct Block {
+    name: String,
+    cuboid: Cuboid,
+    pose: Pose,
+    top_z: f64,
+}
+
+/// The robot placed in the cell, with the cell's boxes.
+pub struct Scene<'a> {
+    robot: &'a Robot,
+    cell_from_robot: Isometry3<f64>,
+    blocks: Vec<Block>,
+}
+
+/// The nearest link and box at one pose.
+#[derive(Clone, Debug)]
+pub struct Nearest {
+    pub mm: f64,
+    pub link: String,
+    pub obstacle: String,
+}
+
+impl<'a> Scene<'a> {
+    /// The robot at `base_mm` turned by `yaw_deg` about z, among the cell's boxes.
+    pub fn new(robot: &'a Robot, base_mm: [f64; 3], yaw_deg: f64, cell: &Cell) -> Scene<'a> {
+        let boxes: Vec<_> = cell
+            .obstacles
+            .iter()
+            .map(|o| {
+                (
+                    o.name.clone(),
+                    o.aabb.min.coords.into(),
+                    o.aabb.max.coords.into(),
+                )
+            })
+            .collect();
+        Scene::from_boxes(robot, base_mm, yaw_deg, &boxes)
+    }
+
+    /// The same with the boxes given as (name, min, max), cell frame, mm.
+    pub fn from_boxes(
+        robot: &'a Robot,
+        base_mm: [f64; 3],
+        yaw_deg: f64,
+        boxes: &[(String, [f64; 3], [f64; 3])],
+    ) -> Scene<'a> {
+        let cell_from_robot = Isometry3::from_parts(
+            Translation3::new(base_mm[0], base_mm[1], base_mm[2]),
+            UnitQuaternion::from_axis_angle(&Vector3::z_axis(), yaw_deg.to_radians()),
+        );
+        let blocks = boxes
+            .iter()
+            .map(|(name, min, max)| {
+                let h = [0, 1, 2].map(|k| (max[k] - min[k]) / 2.0);
+                let c = [0, 1, 2].map(|k| (max[k] + min[k]) / 2.0);
+                Block {
+                    name: name.clone(),
+                    cuboid: Cuboid::new(Vector::new(h[0], h[1], h[2])),
+                    pose: Pose::from_translation(Vector::new(c[0], c[1], c[2])),
+                    top_z: max[2],
+                }
+            })
+            .collect();
+        Scene {
+            robot,
+            cell_from_robot,
+            blocks,
+        }
+    }
+
+    /// Height of the mounting plane (the base frame's origin), cell frame, mm.
+    fn mounting_plane_z(&self) -> f64 {
+        self.cell_from_robot.translation.vector.z
+    }
+
+    /// The smallest distance from the link cylinders to the boxes at controller axes 1..3, and
+    /// where; `mm` is infinite when nothing is measured.
+    pub fn nearest(&self, axes: [f64; 3]) -> Nearest {
+        let poses = self.robot.arm_link_poses(&axes);
+        let mut best = Nearest {
+            mm: f64::INFINITY,
+            link: String::new(),
+            obstacle: String::new(),
+        };
+        for c in &self.robot.cylinders {
+            let frame = self.cell_from_robot * poses[c.joint_index];
+            let (a, b) = (frame * c.a, frame * c.b);
+            let axis = b - a;
+            let len = axis.norm();
+            let dir = axis / len;
+            let rot = UnitQuaternion::rotation_between(&Vector3::y(), &dir).unwrap_or_else(|| {
+                UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI)
+            });
+            let q = rot.quaternion();
+            let mid = nalgebra::center(&a, &b);
+            let pose = Pose::from_parts(
+                Vector::new(mid.x, mid.y, mid.z),
+                parry3d::math::Rotation::from_xyzw(q.i, q.j, q.k, q.w),
+            );
+            let cyl = Cylinder::new(len / 2.0, c.radius_mm);
+            let lowest_z = lowest_point_z(a, b, dir, c.radius_mm);
+            for block in &self.blocks {
+                if c.joint_index == 0 && self.stands_on(lowest_z, block) {
+                    continue;
+                }
+                let d = parry3d::query::distance(&pose, &cyl, &block.pose, &block.cuboid)
+                    .expect("convex shapes")
+                    .distance;
+                if d < best.mm {
+                    best = Nearest {
+                        mm: d,
+                        link: c.link.clone(),
+                        obstacle: block.name.clone(),
+                    };
+                }
+            }
+        }
+        best
+    }
+
+    /// Whether a link-1 cylinder whose lowest point is at `lowest_z` stands on `block` (module
+    /// doc): the block wholly at or below the mounting plane, the cylinder wholly on or above
+    /// the block's top.
+    fn stands_on(&self, lowest_z: f64, block: &Block) -> bool {
+        block.top_z <= self.mounting_plane_z() + STAND_TOL_MM
+            && lowest_z >= block.top_z - STAND_TOL_MM
+    }
+
+    /// The wrist centre (origin of the link moved by joint 5) in the cell frame, mm.
+    fn wrist_centre(&self, axes: &[f64; 6]) -> Point3<f64> {
+        self.cell_from_robot * self.robot.wrist_centre(axes)
+    }
+}
+
+/// Height of the lowest point of a cylinder with axis ends `a`, `b` (unit direction `dir`) and
+/// radius `r`: each end disc reaches `r sin(tilt)` below its centre.
+fn lowest_point_z(a: Point3<f64>, b: Point3<f64>, dir: Vector3<f64>, r: f64) -> f64 {
+    a.z.min(b.z) - r * (1.0 - dir.z * dir.z).max(0.0).sqrt()
+}
+
+/// What [`check_module`] measured.
+#[derive(Debug)]
+pub struct Report {
+    pub module: Module,
+    /// Poses measured along the moves.
+    pub samples: usize,
+    /// The nearest approach seen (infinite without boxes).
+    pub smallest: Nearest,
+    /// Cell points given as `xyz` whose written joints were held against them.
+    pub xyz_points: usize,
+}
+
+/// Checks a module written for `cell` by `robot` (see the module doc); `label` names it in
+/// messages. Every failure is collected; `Err` lists them all.
+pub fn check_module(
+    cell: &Cell,
+    robot: &Robot,
+    text: &str,
+    label: &str,
+) -> Result<Report, Vec<String>> {
+    let module = Module::parse(text).map_err(|e| vec![format!("{label}: {e}")])?;
+    let mut failures = Vec::new();
+    let mut fail = |m: String| failures.push(format!("{label}: {m}"));
+
+    // The header: the cell's clearance; the base and yaw as given (`base: auto`: on z = 0,
+    // the yaw as given); one move fewer than targets.
+    if module.clearance_mm != cell.planner.clearance_mm {
+        fail(format!(
+            "header clearance {} mm, the cell says {}",
+            module.clearance_mm, cell.planner.clearance_mm
+        ));
+    }
+    match cell.robot.base {
+        Base::Fixed(b) if module.base_mm != b => fail(format!(
+            "header base {:?}, the cell says {b:?}",
+            module.base_mm
+        )),
+        Base::Auto if module.base_mm[2] != 0.0 => fail(format!(
+            "header base {:?}: base: auto stands on z = 0",
+            module.base_mm
+        )),
+        _ => {}
+    }
+    if module.yaw_deg != cell.robot.yaw_deg {
+        fail(format!(
+            "header yaw {}, the cell says {}",
+            module.yaw_deg, cell.robot.yaw_deg
+        ));
+    }
+    if module.header_moves + 1 != module.moves.len() {
+        fail(format!(
+            "header says {} moves, PROC main has {} MoveAbsJ",
+            module.header_moves,
+            module.moves.len()
+        ));
+    }
+    // Moves name the targets one to one, in order.
+    let names: Vec<&str> = module.targets.iter().map(|t| t.0.as_str()).collect();
+    if names != module.moves.iter().map(String::as_str).collect::<Vec<_>>() {
+        fail(format!(
+            "moves {:?} do not name the targets {names:?} in order",
+            module.moves
+        ));
+    }
+    if names.first().copied() != cell.points.first().map(|p| p.name.as_str())
+        || names.last().copied() != cell.points.last().map(|p| p.name.as_str())
+    {
+        fail("the first and last targets are not the first and last cell points".into());
+    }
+
+    let scene = Scene::new(robot, module.base_mm, module.yaw_deg, cell);
+    // Every cell point appears, in order: joint points exactly as given, xyz points at their
+    // wrist centre by forward kinematics from the header's placement.
+    let mut k = 0;
+    let mut xyz_points = 0;
+    for p in &cell.points {
+        let Some(at) = module.targets[k..].iter().position(|t| t.0 == p.name) else {
+            fail(format!("point {} missing or out of order", p.name));
+            continue;
+        };
+        k += at;
+        let axes = module.targets[k].1;
+        match &p.target {
+            Target::Joints {
+                axes_deg,
+                wrist_deg,
+            } => {
+                let w = wrist_deg.unwrap_or(cell.robot.wrist_deg);
+                if axes[..3] != axes_deg[..] || axes[3..] != w[..] {
+                    fail(format!(
+                        "point {} written as {axes:?}, given as {axes_deg:?} wrist {w:?}",
+                        p.name
+                    ));
+                }
+            }
+            Target::Xyz {
+                wrist_centre_mm, ..
+            } => {
+                xyz_points += 1;
+                let back = scene.wrist_centre(&axes);
+                let off = (back - Point3::from(*wrist_centre_mm)).norm();
+                if off > XYZ_TOL_MM {
+                    fail(format!(
+                        "point {}: its written joints {axes:?} reach {back:?}, {off:.3} mm from the given {wrist_centre_mm:?}",
+                        p.name
+                    ));
+                }
+            }
+        }
+    }
+    for (name, axes) in &module.targets {
+        if let Err(e) = robot.check_range6(axes) {
+            fail(format!("target {name} out of range: {e}"));
+        }
+    }
+
+    let mut samples = 0;
+    let mut smallest = Nearest {
+        mm: f64::INFINITY,
+        link: String::new(),
+        obstacle: String::new(),
+    };
+    for w in module.targets.windows(2) {
+        let (a, b) = (w[0].1, w[1].1);
+        let qa = robot.urdf_joints_deg(&a);
+        let qb = robot.urdf_joints_deg(&b);
+        let turn_rad: f64 = (0..3).map(|k| (qb[k] - qa[k]).abs().to_radians()).sum();
+        let n = (ARM_RADIUS_MM * turn_rad).ceil().max(1.0) as usize;
+        for i in 0..=n {
+            let t = i as f64 / n as f64;
+            let axes = [0, 1, 2].map(|k| a[k] + t * (b[k] - a[k]));
+            let near = scene.nearest(axes);
+            samples += 1;
+            let below = near.mm < cell.planner.clearance_mm - 1e-6;
+            if below {
+                fail(format!(
+                    "move {} -> {} at t = {t:.4} ({axes:?}): {} is {:.3} mm from {}, below the clearance {} mm",
+                    w[0].0, w[1].0, near.link, near.mm, near.obstacle, cell.planner.clearance_mm
+                ));
+            }
+            if near.mm < smallest.mm {
+                smallest = near;
+            }
+            if below {
+                break; // one message per move
+            }
+        }
+    }
+
+    // The header's min clearance is a lower bound within 0.05 mm of the true minimum, which lies
+    // at most 0.5 mm below the smallest sample (1 mm of motion between samples) and not above it.
+    match (module.min_clearance_mm, smallest.mm.is_finite()) {
+        (Some(h), true) => {
+            let (lo, hi) = (
+                smallest.mm - 0.5 - HEADER_TOL_MM - HEADER_ROUNDING_MM,
+                smallest.mm + HEADER_ROUNDING_MM,
+            );
+            if !(lo - 1e-9..=hi + 1e-9).contains(&h) {
+                fail(format!(
+                    "header min clearance {h} mm, but the dense check measures {:.3} mm ({} to {}): expected {lo:.3} .. {hi:.3}",
+                    smallest.mm, smallest.link, smallest.obstacle
+                ));
+            }
+        }
+        (None, false) => {}
+        (h, _) => fail(format!(
+            "header min clearance {h:?}, but the dense check measures {:.3} mm",
+            smallest.mm
+        )),
+    }
+
+    if failures.is_empty() {
+        Ok(Report {
+            module,
+            samples,
+            smallest,
+            xyz_points,
+        })
+    } else {
+        Err(failures)
+    }
+}

@@ -1,0 +1,26 @@
+//! The integration tests: one binary (`cargo test --release --test it`), one module per subject.
+//! Where a new test belongs:
+//!
+//! - `golden`: the one golden harness. A new example cell, a new edge case that plans, or a new
+//!   error needs no code, only files: `cells/<stem>.yaml` + `tests/golden/<stem>.mod` (and
+//!   `tests/golden/<stem>.<method>.mod` for `--planner <method>`), `tests/ok/<stem>.yaml` +
+//!   `.mod`, `tests/err/<stem>.yaml` + `.stderr`. Refresh them all with `GEN_RAPID_BLESS=1`.
+//! - `safety`: the independent dense re-check of every module on file, and of the re-check
+//!   itself (what the base stands on).
+//! - `cli`: the command line as such: stdout, stderr, `-o`, flags, exit statuses, `--help`.
+//! - `compare`: `gen-rapid compare` and the paper's comparison of the three searches.
+//! - `locate`: `base: auto`, `xyz` points and branches, `gen-rapid locate`.
+//! - `random_cells`: generated cells, every method, every module through the dense re-check.
+//! - `common`: helpers: running the binary, temporary cells, reading a module (`module`), the
+//!   fixtures (`fixtures`), the dense re-check (`dense`), and `library`, the only file here that
+//!   names the library's paths.
+//!
+//! A test about the library's internals belongs in the source file it tests, not here.
+
+mod cli;
+mod common;
+mod compare;
+mod golden;
+mod locate;
+mod random_cells;
+mod safety;

@@ -1,0 +1,19 @@
+MODULE Branch
+    ! generator: gen-rapid 0.1.0
+    ! cell: branch_back_elbow_up.yaml
+    ! planner: extensile
+    ! grid (deg): 5.000
+    ! clearance (mm): 10.0
+    ! base: [0.0, 0.0, 0.0] yaw: 0.000
+    ! moves: 1
+    ! min clearance (mm): none (no obstacles)
+    ! estimated time (s): 1.63
+
+    CONST jointtarget P := [[-135.000,-50.038,-61.411,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget Q := [[0.000,3.919,23.221,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+
+    PROC main()
+        MoveAbsJ P\NoEOffs, v300, fine, tool0;
+        MoveAbsJ Q\NoEOffs, v300, fine, tool0;
+    ENDPROC
+ENDMODULE
