@@ -12,6 +12,7 @@ pub mod cspace;
 pub mod error;
 pub mod geometry;
 pub mod ik;
+pub mod ik6;
 pub mod locate;
 pub mod merge;
 pub mod picture;
