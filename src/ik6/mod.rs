@@ -15,7 +15,7 @@
 //! - axes 4, 5 and 6 meet in one point, the wrist centre (within 1e-6 mm), with axis 5
 //!   perpendicular to axes 4 and 6;
 //! - both arm links have a length, and the arm's forward direction and the front side of the
-//!   lower arm can be told at the zero pose (see [`conf`]);
+//!   lower arm can be told at the zero pose (see `conf.rs`);
 //! - the controller's coupling is an integer-linear map (Serial, or the parallelogram's
 //!   `axis 3 = q3 + q2`), read by probing the public `Robot::urdf_joints_deg`, so any axis
 //!   turned by a full turn gives the same pose.
@@ -36,13 +36,17 @@
 //!
 //! That gives up to 8 solutions; each is wrapped into (-180, 180] in controller values and then
 //! repeated by every full turn that keeps its axes in range (IRB 1400 axis 6, +-300 deg, gives
-//! two of each). Values within 1e-9 deg outside a limit are snapped onto it (a target given at a
-//! limit solves). All six ranges and the coupled axis-3 range apply (`Robot::check_range6`).
+//! two of each). Values within 1e-9 deg outside a limit are snapped onto it, the coupled axis-3
+//! range by moving axis 3 (a target given at a limit solves). All six ranges and the coupled
+//! range apply (`Robot::check_range6`); [`SixAxisIk::candidates`] keeps the out-of-range
+//! branches with every limit they break, for messages.
 //!
 //! # Singular poses: deterministic choices
 //! - **Wrist** (axes 4 and 6 in line, `|sin(axis 5)| < 1e-10`): only `q4 + q6` is fixed. Axis 4
 //!   keeps the `previous` pose's axis-4 value (0 without one); axis 6 takes the rest. One wrist
-//!   solution instead of two (the flip is the same joint vector family).
+//!   solution instead of two (the flip is the same joint vector family). Its cf4 is that of the
+//!   kept axis 4, so at an exact wrist singularity a robtarget asking another cf4 is reported
+//!   unreachable (with the confdata that are reachable).
 //! - **Wrist centre on the axis-1 line** (within 1e-9 mm): axis 1 keeps the previous value (0
 //!   without one), and that plus half a turn gives the second stance.
 //! - **Wrist centre on axis 2** (only arms with equal link lengths): axis 2 keeps the previous
@@ -52,9 +56,17 @@
 //! [`ConfData`]: cf1, cf4, cf6 are `floor(axis / 90 deg)` of axes 1, 4, 6; cfx is
 //! `4 * (wrist centre behind axis 1) + 2 * (wrist centre behind the lower arm) + 1 * (axis 5 < 0)`
 //! (RAPID reference manual, `confdata`). "Behind axis 1" is measured from axis 1 itself
-//! ([`CFX_BEHIND_AXIS_1_FROM`]; see [`conf`] for why and for the alternative). With that reading
+//! ([`CFX_BEHIND_AXIS_1_FROM`]; `conf.rs` says why, and keeps the alternative). With that reading
 //! the cfx bits are exactly the three branch choices above, so every solution of a pose has its
 //! own confdata, apart from the singular poses.
+//!
+//! # Choosing one
+//! [`SixAxisIk::choose`] takes the confdata a robtarget asks for, or else orders the solutions
+//! by the time of the joint move from the previous point at the controller's axis speeds, then
+//! the Euclidean joint distance, then the fixed order of [`SixAxisIk::solve`] (`choose.rs`), and
+//! returns the first the caller's predicate (its collision check) accepts, keeping the reasons
+//! of those it refused. [`SixAxisIk::rounding_bound`] bounds how far the TCP moves when the
+//! chosen joints are rounded for the module (`bound.rs`).
 //!
 //! # Why not the `rs-opw-kinematics` crate
 //! It was evaluated (3.0.0 and the nalgebra-based 1.8.20; BSD-3, actively maintained, with a
