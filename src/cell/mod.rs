@@ -77,6 +77,82 @@ impl Obstacle {
     }
 }
 
+/// A frame (pose) as RAPID writes it: a position, mm, and a unit quaternion `[w, x, y, z]`
+/// (normalised when the cell is read). Used for the tool's `tframe` (TCP in the flange frame), the
+/// work object's `uframe` (user frame in the cell frame) and robtarget poses.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Frame {
+    pub pos_mm: [f64; 3],
+    /// `[w, x, y, z]`, unit norm.
+    pub quat_wxyz: [f64; 4],
+}
+
+impl Frame {
+    /// The identity frame.
+    pub const IDENTITY: Frame = Frame {
+        pos_mm: [0.0, 0.0, 0.0],
+        quat_wxyz: [1.0, 0.0, 0.0, 0.0],
+    };
+
+    /// The frame as a rigid transform (mm).
+    pub fn isometry(&self) -> nalgebra::Isometry3<f64> {
+        let [w, x, y, z] = self.quat_wxyz;
+        nalgebra::Isometry3::from_parts(
+            nalgebra::Translation3::new(self.pos_mm[0], self.pos_mm[1], self.pos_mm[2]),
+            nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(w, x, y, z)),
+        )
+    }
+}
+
+/// The geometry of one tool shape, in the flange (tool0) frame, mm.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ToolGeometry {
+    /// A solid cylinder from `from_mm` to `to_mm` (axis end points) of `radius_mm`.
+    Cylinder {
+        from_mm: [f64; 3],
+        to_mm: [f64; 3],
+        radius_mm: f64,
+    },
+    /// A box, axis-aligned in the flange frame.
+    Box { min_mm: [f64; 3], max_mm: [f64; 3] },
+    /// A ball.
+    Sphere { centre_mm: [f64; 3], radius_mm: f64 },
+}
+
+/// One collision volume of the tool, carried by axes 4..6 with the flange.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ToolShape {
+    /// Used in messages ("tool shape 'neck' comes within ...").
+    pub name: String,
+    pub geometry: ToolGeometry,
+    pub loc: Loc,
+}
+
+/// The cell's `tool:` block: the tooldata to declare and the tool's collision volumes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tool {
+    /// tooldata name (a RAPID identifier, not `tool0`).
+    pub name: String,
+    /// The TCP in the flange (tool0) frame.
+    pub tframe: Frame,
+    /// Load, kg (> 0).
+    pub mass_kg: f64,
+    /// Centre of gravity in the flange frame, mm.
+    pub cog_mm: [f64; 3],
+    pub shapes: Vec<ToolShape>,
+    pub loc: Loc,
+}
+
+/// The cell's `wobj:` block: the work object robtarget points are given in.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Wobj {
+    /// wobjdata name (a RAPID identifier, not `wobj0`).
+    pub name: String,
+    /// The user frame in the cell frame.
+    pub uframe: Frame,
+    pub loc: Loc,
+}
+
 /// What a point gives.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Target {
@@ -125,6 +201,10 @@ pub struct Cell {
     pub points: Vec<Point>,
     pub planner: Planner,
     pub motion: Motion,
+    /// The `tool:` block; without it the TCP is tool0 (the flange) and there is no tool volume.
+    pub tool: Option<Tool>,
+    /// The `wobj:` block; without it robtargets are in wobj0, whose frame is the cell frame.
+    pub wobj: Option<Wobj>,
 }
 
 /// Defaults for keys a cell may leave out.

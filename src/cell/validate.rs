@@ -40,6 +40,8 @@ pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
         points,
         planner,
         motion,
+        tool: None,
+        wobj: None,
     })
 }
 

@@ -445,7 +445,8 @@ fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
 
 /// The place stage's question: why an IK solution cannot be used from this placement.
 impl PoseCheck for CollisionModel {
-    fn why_blocked(&self, axes_deg: &[f64; 3]) -> Option<String> {
-        CollisionModel::why_blocked(self, axes_deg).map(|b| b.to_string())
+    fn why_blocked(&self, joints_deg: &[f64; 6]) -> Option<String> {
+        let arm = [joints_deg[0], joints_deg[1], joints_deg[2]];
+        CollisionModel::why_blocked(self, &arm).map(|b| b.to_string())
     }
 }

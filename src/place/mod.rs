@@ -32,11 +32,11 @@ use locate::{LocateError, LocateInput};
 /// Height of the base chosen by `base: auto`: it stands on the floor, mm.
 pub const AUTO_BASE_Z_MM: f64 = 0.0;
 
-/// Why a pose of axes 1..3 (controller values, deg) cannot be used from one placement: out of
-/// range, or a link within the clearance of an obstacle (`None`: usable). Implemented by the
-/// collision model.
+/// Why a pose (controller values of all six axes, deg) cannot be used from one placement: out of
+/// range, or a link or tool shape within the clearance of an obstacle (`None`: usable).
+/// Implemented by the collision model.
 pub trait PoseCheck {
-    fn why_blocked(&self, axes_deg: &[f64; 3]) -> Option<String>;
+    fn why_blocked(&self, joints_deg: &[f64; 6]) -> Option<String>;
 }
 
 /// How a point was given in the cell.

@@ -70,9 +70,14 @@ pub(super) fn resolve(
                     }
                 };
                 let previous = points.last().map(|w| arm(&w.joints_deg));
-                let usable = |a: [f64; 3]| match check.why_blocked(&quantize_joints(a)) {
-                    None => Ok(()),
-                    Some(why) => Err(why),
+                let wrist = cell.robot.wrist_deg;
+                let usable = |a: [f64; 3]| {
+                    let a = quantize_joints(a);
+                    let joints = [a[0], a[1], a[2], wrist[0], wrist[1], wrist[2]];
+                    match check.why_blocked(&joints) {
+                        None => Ok(()),
+                        Some(why) => Err(why),
+                    }
                 };
                 let sol =
                     ik::choose(robot, geom, local, previous, *branch, usable).map_err(fail)?;
