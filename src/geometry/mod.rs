@@ -14,11 +14,17 @@
 //! capsule bounds disagree. Every fast query is checked against parry3d in the
 //! tests of this module.
 //!
+//! The tool's shapes add a ball and an oriented box (`solids.rs`: exact closed forms, held
+//! against parry3d there), and [`Solid`], the one type for any placed part of the robot model.
+//!
 //! Inputs are assumed finite (validated upstream): no function panics on
 //! finite input, and behaviour for NaN is out of scope (it may return NaN or
 //! an arbitrary value, but does not panic).
 
 use nalgebra::{Point3, Vector3};
+
+mod solids;
+pub use solids::{distance_obb_aabb, distance_sphere_aabb, Obb, Solid, Sphere};
 
 /// A point of the cell frame, mm.
 pub type Point = Point3<f64>;
