@@ -26,7 +26,7 @@ fn trunk_model() -> CollisionModel {
         base_mm: [0.0, -850.0, 0.0],
         yaw_deg: 90.0,
     };
-    CollisionModel::new(&Robot::irb1400(), placement, obstacles, 10.0)
+    CollisionModel::new(&Robot::irb1400(), placement, obstacles, 10.0, None)
 }
 
 fn bench(c: &mut Criterion) {
@@ -37,7 +37,9 @@ fn bench(c: &mut Criterion) {
     let columns: Vec<(f64, f64)> = (-17..=17)
         .flat_map(|i| (-7..=7).map(move |j| (i as f64 * 10.0, j as f64 * 10.0)))
         .collect();
-    let mut free = vec![false; a3.len()];
+    let mut codes = vec![0u8; a3.len()];
+    let check = model.grid_check(1.0);
+    let mut column = vec![0u8; check.column_bytes()];
     let mut g = c.benchmark_group("collision");
     g.throughput(Throughput::Elements(a3.len() as u64));
     let mut k = 0usize;
@@ -45,8 +47,14 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             k = (k + 1) % columns.len();
             let (a1, a2) = columns[k];
-            model.inspect_column(black_box(a1), black_box(a2), black_box(&a3), &mut free);
-            free[0]
+            check.inspect_column(
+                black_box(a1),
+                black_box(a2),
+                black_box(&a3),
+                &mut codes,
+                &mut column,
+            );
+            codes[0]
         })
     });
     // The same nodes through is_free, for comparison.
@@ -55,13 +63,16 @@ fn bench(c: &mut Criterion) {
             k = (k + 1) % columns.len();
             let (a1, a2) = columns[k];
             a3.iter()
-                .filter(|&&v| model.is_free(black_box(&[a1, a2, v])))
+                .filter(|&&v| model.arm_is_free(black_box(&[a1, a2, v])))
                 .count()
         })
     });
     g.throughput(Throughput::Elements(1));
     // Paper's A -> F: axis 1 from +90 to -90, the forearm passing over the tower.
-    let (from, to) = ([90.0, 0.0, 0.0], [-90.0, 0.0, 0.0]);
+    let (from, to) = (
+        [90.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+        [-90.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    );
     eprintln!(
         "long move {from:?} -> {to:?}: safe {}, min clearance >= {:.3} mm",
         model.move_is_safe(&from, &to),
@@ -73,7 +84,10 @@ fn bench(c: &mut Criterion) {
         b.iter(|| model.move_is_safe(black_box(&from), black_box(&to)))
     });
     // A long move into the trunk (B -> E of the paper).
-    let (from2, to2) = ([30.0, 20.0, 10.0], [-30.0, 20.0, 10.0]);
+    let (from2, to2) = (
+        [30.0, 20.0, 10.0, 0.0, 0.0, 0.0],
+        [-30.0, 20.0, 10.0, 0.0, 0.0, 0.0],
+    );
     eprintln!(
         "move {from2:?} -> {to2:?}: safe {}, min clearance >= {:.3} mm",
         model.move_is_safe(&from2, &to2),

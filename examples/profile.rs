@@ -1,5 +1,6 @@
 //! Whole-pipeline timing by stage, for benches/README.md: `cargo run --release --example profile -- CELL GRID`.
 use gen_rapid::pipeline;
+use gen_rapid::plan::leg::{LegGraph, WristSchedule};
 use gen_rapid::plan::{wave, Method};
 use std::time::Instant;
 fn main() {
@@ -32,25 +33,26 @@ fn main() {
         .map(|p| cs.grid.node_at(&p.arm_deg()))
         .collect();
     if let [Some(a), Some(b), ..] = nodes[..] {
-        let t = Instant::now();
-        let w = wave::expand(cs, a, b, wave::Connectivity::TwentySix).expect("wave");
-        eprintln!(
-            "one wave leg 1: {:?} ({} numbered)",
-            t.elapsed(),
-            w.numbered()
-        );
-        let t = Instant::now();
-        let mut calls = 0;
-        let _ = Method::Extensile.search(cs, a, b, &mut |x, y| {
-            calls += 1;
-            inspected
-                .model
-                .move_is_safe(&cs.grid.axes_deg(x), &cs.grid.axes_deg(y))
-        });
-        eprintln!(
-            "extensile search leg 1: {:?} ({calls} edge checks)",
-            t.elapsed()
-        );
+        // Leg 1's graph, optimistic (the paper's wave) and eager (accepted steps only).
+        let check = inspected.model.grid_check(cs.grid.step_deg);
+        let schedule =
+            WristSchedule::new(&placed.points[0].joints_deg, &placed.points[1].joints_deg);
+        for eager in [false, true] {
+            let graph = LegGraph {
+                cs,
+                check: &check,
+                schedule: &schedule,
+                eager,
+            };
+            let t = Instant::now();
+            let w = wave::expand(cs, &graph, a, b, wave::Connectivity::TwentySix);
+            eprintln!(
+                "one {} wave leg 1: {:?} ({} numbered)",
+                if eager { "eager" } else { "optimistic" },
+                t.elapsed(),
+                w.map_or(0, |w| w.numbered())
+            );
+        }
     }
     for m in Method::ALL {
         let t = Instant::now();

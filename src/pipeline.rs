@@ -95,7 +95,7 @@ pub fn inspect(job: &Loaded, placed: &Placed, grid_deg: f64) -> Inspected {
     let model = CollisionModel::of_cell(&job.cell, &job.robot, placed.placement);
     let a = &job.robot.controller.axes;
     let ranges = [0, 1, 2].map(|k| [a[k].min_deg, a[k].max_deg]);
-    let cspace = CSpace::build(Grid::over(ranges, grid_deg), &model);
+    let cspace = CSpace::build(Grid::over(ranges, grid_deg), &model.grid_check(grid_deg));
     Inspected { model, cspace }
 }
 

@@ -1,29 +1,42 @@
-//! The robot placed in a cell among box obstacles: which configurations are free, and which
-//! straight joint moves are safe.
+//! The robot placed in a cell among box obstacles, with its tool: which configurations are free,
+//! and which straight joint moves are safe.
 //!
-//! The inspect stage's model: [`Robot`] + [`Placement`] + obstacles + clearance ->
-//! [`CollisionModel`], queried by the place stage (are a point's IK solutions usable?), by the
-//! configuration-space grid (node inspection, `column.rs`) and by the planner (whole moves,
-//! `proof.rs`). Tests in `tests.rs`.
+//! The inspect stage's model: [`Robot`] + [`Placement`] + obstacles + clearance + the cell's tool
+//! -> [`CollisionModel`], queried by the place stage (are a point's IK solutions usable?
+//! [`PoseCheck`]), by the configuration-space grid (node codes, `grid.rs`, `column.rs`) and by
+//! the planner (whole moves, `proof.rs`). The parts of the model ([`Part`]): the link
+//! cylinders of links 1..3 (the paper's lumped arm) and the tool's shapes (cylinder, box in the
+//! flange frame, ball; `parts.rs`), carried by axes 4..6 on the flange (the robot's `tool0`).
+//! Every query takes all six axes, except the grid's node test of the arm. Tests in `tests.rs`
+//! (links, against parry3d and dense sampling) and `tool_tests.rs` (the tool, the grid codes).
 //!
 //! # Node inspection (Ting & Jar 2006, section 3)
 //! The paper marks a configuration -1 when the arm hits an obstacle or is out of range, 0
 //! otherwise, with the arm lumped into the cylinders of its first three links (section 6). Here a
-//! configuration of axes 1..3 (controller values, degrees) is *free* ([`CollisionModel::is_free`])
-//! when it is in range, the coupled axis-3 range included ([`Robot::check_range3`]), and every
-//! link cylinder keeps MORE than `clearance` mm from every box. [`CollisionModel::inspect_column`]
-//! is the same test for a whole column `[a1, a2, a3[k]]` of the grid, with the work that does not
-//! depend on axis 3 done once per column (`column.rs`).
+//! configuration of axes 1..3 (controller values, degrees) is *free* for the arm
+//! ([`CollisionModel::arm_is_free`]) when it is in range, the coupled axis-3 range included
+//! ([`Robot::check_range3`]), and every link cylinder keeps MORE than `clearance` mm from every
+//! box. [`GridCheck::inspect_column`] is the same test for a whole column `[a1, a2, a3[k]]` of the
+//! grid, with the work that does not depend on axis 3 done once per column (`column.rs`); it
+//! also keeps per node how deep in free space the node lies and whether the tool could reach a
+//! box there (`grid.rs`). Beyond the paper, a whole pose ([`CollisionModel::is_free`]) is free
+//! when all six axes are in range and every link cylinder and every tool shape keeps more than
+//! the clearance; the tool's part is [`CollisionModel::tool_is_free`], which the planner asks
+//! per leg, with the leg's wrist, where the grid says the tool could reach a box.
 //!
-//! The whole-move proof (`proof.rs`) is the guarantee the paper lacks: every straight joint move
-//! written is proven to keep the clearance at every instant, not only at grid nodes.
+//! The whole-move proof (`proof.rs`) is the guarantee the paper lacks: every straight six-axis
+//! move written is proven to keep the clearance at every instant, links and tool, not only at
+//! grid nodes.
 //!
 //! Frames: the robot base frame sits in the cell frame at [`Placement`] (translation, then yaw
-//! about z); obstacles are axis-aligned boxes of the cell frame. Units: mm and degrees.
+//! about z); obstacles are axis-aligned boxes of the cell frame; tool shapes are given in the
+//! flange (tool0) frame. Units: mm and degrees.
 //!
-//! Nodes and moves: a node is free when every link keeps *more* than the clearance (a node at
+//! Nodes and moves: a node is free when every part keeps *more* than the clearance (a node at
 //! exactly the clearance counts as blocked, the paper's "comes within"); a move is accepted when
 //! the proven lower bound is *at least* the clearance (the guarantee the module header states).
+//! Messages name the part: links as "link 'link_3' of the robot", tool shapes as "tool shape
+//! 'neck'".
 //!
 //! # What the robot stands on
 //!
@@ -35,25 +48,34 @@
 //! The exemption holds only where it is sound: joint 1 turns about the base's vertical axis and
 //! no point of the link-1 cylinder lies below the mounting plane (else every box counts).
 //!
+//! The tool's shapes are checked against every box: the robot stands on the floor, its tool
+//! does not.
+//!
 //! Boxes are clipped to the robot's workspace (plus a 10 m margin) when the model is built, so
 //! that every distance is computed on cell-sized shapes ([`CLIP_MARGIN_MM`]).
 
 mod column;
+mod grid;
+mod parts;
 mod proof;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+pub(crate) mod tool_tests;
 
+pub use grid::{Ends, GridCheck, CODE_FREE};
 pub use proof::{Clearance, DISTANCE_SLACK_REL, MOVE_FLOOR_MM};
 
-use crate::cell::Cell;
 pub use crate::cell::Obstacle;
+use crate::cell::{Cell, Tool};
 use crate::geometry::{
-    cylinder_clear_of_aabb, distance_capsule_aabb, distance_cylinder_aabb, distance_point_aabb,
-    distance_segment_aabb, Aabb, Cylinder, Point,
+    cylinder_clear_of_aabb, distance_capsule_aabb, distance_point_aabb, distance_segment_aabb,
+    Aabb, Cylinder, Point, Solid,
 };
 use crate::place::{Placement, PoseCheck};
 use crate::robot::{RangeViolation, Robot};
 use nalgebra::{Isometry3, Vector3};
+use parts::ToolData;
 
 /// A box whose top is within this of the base's mounting plane (or below it) counts as what the
 /// robot stands on, mm.
@@ -63,16 +85,34 @@ pub const STANDS_ON_TOL_MM: f64 = 1e-6;
 /// clearance, mm (see `clip_to_workspace`).
 pub const CLIP_MARGIN_MM: f64 = 10_000.0;
 
+/// A part of the robot model, by name: a link cylinder or a tool shape.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Part {
+    /// The collision cylinder of a link (links 1..3), by link name.
+    Link(String),
+    /// A shape of the cell's tool, by its name in the `tool:` block.
+    ToolShape(String),
+}
+
+impl std::fmt::Display for Part {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Part::Link(name) => write!(f, "link '{name}' of the robot"),
+            Part::ToolShape(name) => write!(f, "tool shape '{name}'"),
+        }
+    }
+}
+
 /// Why a configuration (or a move) is not free.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Blocked {
     /// An axis, or the coupled axis-3 range, is violated.
     Range(RangeViolation),
-    /// A link cylinder comes closer than the clearance to a box. `distance_mm` is the distance
-    /// (0 when they touch or overlap); for a move rejected without a witness it is the certified
-    /// lower bound that failed.
+    /// A part (link cylinder or tool shape) comes closer than the clearance to a box.
+    /// `distance_mm` is the distance (0 when they touch or overlap); for a move rejected without
+    /// a witness it is the certified lower bound that failed.
     Contact {
-        link: String,
+        part: Part,
         obstacle: String,
         distance_mm: f64,
     },
@@ -83,20 +123,29 @@ impl std::fmt::Display for Blocked {
         match self {
             Blocked::Range(v) => write!(f, "the robot cannot reach this pose: {v}"),
             Blocked::Contact {
-                link,
+                part,
                 obstacle,
                 distance_mm,
-            } if *distance_mm <= 0.0 => {
-                write!(f, "link '{link}' of the robot hits obstacle '{obstacle}'")
-            }
+            } if *distance_mm <= 0.0 => write!(f, "{part} hits obstacle '{obstacle}'"),
+            // Links keep the wording (and the 0.01 mm) of the messages users know; tool shapes
+            // read as the issue gives them ("tool shape 'neck' comes within 4.2 mm of ...").
             Blocked::Contact {
-                link,
+                part: part @ Part::Link(_),
                 obstacle,
                 distance_mm,
             } => write!(
                 f,
-                "link '{link}' of the robot comes within {distance_mm:.2} mm of obstacle \
-                 '{obstacle}', less than the required clearance"
+                "{part} comes within {distance_mm:.2} mm of obstacle '{obstacle}', less than the \
+                 required clearance"
+            ),
+            Blocked::Contact {
+                part,
+                obstacle,
+                distance_mm,
+            } => write!(
+                f,
+                "{part} comes within {distance_mm:.1} mm of obstacle '{obstacle}', less than the \
+                 required clearance"
             ),
         }
     }
@@ -107,7 +156,8 @@ impl std::fmt::Display for Blocked {
 struct CylData {
     /// Index of the URDF joint whose child link carries the cylinder (0, 1 or 2).
     joint: usize,
-    /// `R[i]` of the module doc for `i <= joint`, 0 beyond: distance bound from joint `i`'s axis.
+    /// `R[i]` of the module doc of `proof.rs` for `i <= joint`, 0 beyond: distance bound from
+    /// joint `i`'s axis.
     reach_mm: [f64; 3],
     /// For cylinders moved by axis 3 (`joint == 2`): the end points split about joint 3's axis
     /// `u` (link frame): `p = par + cos q perp + sin q (u x perp)` after a rotation `q`.
@@ -130,11 +180,28 @@ pub struct CollisionModel {
     obstacles: Vec<Obstacle>,
     clearance_mm: f64,
     cyl: Vec<CylData>,
+    /// The tool's shapes (none: no tool volume).
+    tool: Option<ToolData>,
+}
+
+/// The poses a configuration puts the parts at: links 1..3, and link 6 (the flange) when the
+/// model has a tool; cell frame.
+pub(crate) struct Poses {
+    arm: [Isometry3<f64>; 3],
+    flange: Option<Isometry3<f64>>,
+}
+
+/// Axes 1..3 of six.
+#[inline]
+pub(crate) fn arm_of(six: &[f64; 6]) -> [f64; 3] {
+    [six[0], six[1], six[2]]
 }
 
 impl CollisionModel {
-    /// Places `robot` (cloned) at `placement` among `obstacles` (cell frame, mm); `clearance_mm`
-    /// is the distance every link must keep from every box (0 allowed; negative is taken as 0).
+    /// Places `robot` (cloned) at `placement` among `obstacles` (cell frame, mm), with the
+    /// shapes of `tool` on its flange (`None`, or a tool without shapes: no tool volume);
+    /// `clearance_mm` is the distance every link and tool shape must keep from every box (0
+    /// allowed; negative is taken as 0).
     ///
     /// The robot's cylinders must hang on links 1..3 (`joint_index` 0, 1 or 2), as
     /// [`Robot::load`] guarantees.
@@ -143,8 +210,16 @@ impl CollisionModel {
         placement: Placement,
         obstacles: Vec<Obstacle>,
         clearance_mm: f64,
+        tool: Option<&Tool>,
     ) -> CollisionModel {
-        let obstacles = clip_to_workspace(robot, &placement, obstacles, clearance_mm.max(0.0));
+        let tool = tool.and_then(|t| ToolData::new(robot, t));
+        let obstacles = clip_to_workspace(
+            robot,
+            tool.as_ref(),
+            &placement,
+            obstacles,
+            clearance_mm.max(0.0),
+        );
         let cell_from_robot = placement.cell_from_robot();
         let cyl = robot
             .cylinders
@@ -159,20 +234,7 @@ impl CollisionModel {
                 let j = c.joint_index;
                 let r = c.radius_mm.max(0.0);
                 let far = c.a.coords.norm().max(c.b.coords.norm()) + r;
-                let mut reach_mm = [0.0; 3];
-                for (i, slot) in reach_mm.iter_mut().enumerate().take(j + 1) {
-                    let u = robot.joints[i].axis.into_inner();
-                    let perp = |v: Vector3<f64>| (v - u * u.dot(&v)).norm();
-                    *slot = if i == j {
-                        perp(c.a.coords).max(perp(c.b.coords)) + r
-                    } else {
-                        let first = perp(robot.joints[i + 1].origin.translation.vector);
-                        let rest: f64 = (i + 2..=j)
-                            .map(|k| robot.joints[k].origin.translation.vector.norm())
-                            .sum();
-                        first + rest + far
-                    };
-                }
+                let reach = parts::reach(robot, j, &[c.a, c.b], r);
                 let u = robot.joints[2].axis.into_inner();
                 let split_of = |p: Vector3<f64>| {
                     let par = u * u.dot(&p);
@@ -187,7 +249,7 @@ impl CollisionModel {
                     .collect();
                 CylData {
                     joint: j,
-                    reach_mm,
+                    reach_mm: [reach[0], reach[1], reach[2]],
                     split: [split_of(c.a.coords), split_of(c.b.coords)],
                     sweep_radius_mm: far,
                     axial_mm: [sa.min(sb) - r, sa.max(sb) + r],
@@ -202,16 +264,18 @@ impl CollisionModel {
             obstacles,
             clearance_mm: clearance_mm.max(0.0),
             cyl,
+            tool,
         }
     }
 
-    /// The model of `cell`'s obstacles and clearance with `robot` at `placement`.
+    /// The model of `cell`'s obstacles, clearance and tool with `robot` at `placement`.
     pub fn of_cell(cell: &Cell, robot: &Robot, placement: Placement) -> CollisionModel {
         CollisionModel::new(
             robot,
             placement,
             cell.obstacles.clone(),
             cell.planner.clearance_mm,
+            cell.tool.as_ref(),
         )
     }
 
@@ -225,7 +289,7 @@ impl CollisionModel {
         &self.obstacles
     }
 
-    /// The clearance every link must keep from every box, mm.
+    /// The clearance every link and tool shape must keep from every box, mm.
     pub fn clearance_mm(&self) -> f64 {
         self.clearance_mm
     }
@@ -235,18 +299,30 @@ impl CollisionModel {
         self.placement
     }
 
-    /// The link cylinders in the cell frame for axes 1..3 (controller values, degrees), each with
-    /// its index into `robot().cylinders`.
-    pub fn cylinders(&self, axes: &[f64; 3]) -> Vec<(usize, Cylinder)> {
-        let poses = self.cell_link_poses(axes);
-        (0..self.cyl.len())
-            .map(|i| (i, self.cylinder_in(i, &poses)))
+    /// Whether the model carries tool shapes (then axes 4..6 matter to every check).
+    pub fn has_tool(&self) -> bool {
+        self.tool.is_some()
+    }
+
+    /// The radius about the wrist centre of the ball that holds every tool shape for any wrist
+    /// angles, mm (`parts.rs`); `None` without a tool.
+    pub fn tool_radius_mm(&self) -> Option<f64> {
+        self.tool.as_ref().map(|t| t.radius_mm)
+    }
+
+    /// Every part placed in the cell frame for `axes` (controller values of axes 1..6): the
+    /// link cylinders, then the tool shapes, each with its name.
+    pub fn solids(&self, axes: &[f64; 6]) -> Vec<(Part, Solid)> {
+        let poses = self.poses(axes);
+        (0..self.part_count())
+            .map(|p| (self.part(p), self.solid(p, &poses)))
             .collect()
     }
 
-    /// Node inspection: `true` when the configuration is in range (coupled axis-3 range included)
-    /// and every link cylinder keeps MORE than the clearance from every box.
-    pub fn is_free(&self, axes: &[f64; 3]) -> bool {
+    /// Node inspection of the arm (the paper's node test, axes 1..3): `true` when the
+    /// configuration is in range (coupled axis-3 range included) and every link cylinder keeps
+    /// MORE than the clearance from every box. The tool is not looked at.
+    pub fn arm_is_free(&self, axes: &[f64; 3]) -> bool {
         if self.robot.check_range3(axes).is_err() {
             return false;
         }
@@ -258,50 +334,104 @@ impl CollisionModel {
         })
     }
 
-    /// Why a configuration is not free: the first range violation, else the closest offending
-    /// (link, obstacle) pair; `None` when [`is_free`](Self::is_free) holds.
-    pub fn why_blocked(&self, axes: &[f64; 3]) -> Option<Blocked> {
-        if let Err(v) = self.robot.check_range3(axes) {
+    /// Whether every tool shape keeps MORE than the clearance from every box at `axes` (axes
+    /// 1..6); `true` without a tool. Neither the range nor the links are looked at.
+    pub fn tool_is_free(&self, axes: &[f64; 6]) -> bool {
+        let Some(tool) = &self.tool else {
+            return true;
+        };
+        let flange = self.flange_pose(axes);
+        tool.shapes.iter().all(|s| {
+            let solid = s.local.placed(&flange);
+            self.obstacles
+                .iter()
+                .all(|o| solid_clear_of_box(&solid, &o.aabb, self.clearance_mm))
+        })
+    }
+
+    /// Node test of a whole pose: all six axes in range (the coupled axis-3 range included),
+    /// every link cylinder and every tool shape MORE than the clearance from every box.
+    pub fn is_free(&self, axes: &[f64; 6]) -> bool {
+        self.robot.check_range6(axes).is_ok()
+            && self.arm_is_free(&arm_of(axes))
+            && self.tool_is_free(axes)
+    }
+
+    /// Why a pose is not free: the first range violation, else the closest offending (part,
+    /// obstacle) pair; `None` when [`is_free`](Self::is_free) holds.
+    pub fn why_blocked(&self, axes: &[f64; 6]) -> Option<Blocked> {
+        if let Err(v) = self.robot.check_range6(axes) {
             return Some(Blocked::Range(v));
         }
-        let poses = self.cell_link_poses(axes);
+        let poses = self.poses(axes);
         let mut worst: Option<(usize, usize, f64)> = None;
-        for i in 0..self.cyl.len() {
-            let c = self.cylinder_in(i, &poses);
-            for (k, b) in self.checked_boxes(i) {
-                if !link_clear_of_box(&c, b, self.clearance_mm) {
-                    let d = distance_cylinder_aabb(&c, b);
+        for p in 0..self.part_count() {
+            let solid = self.solid(p, &poses);
+            for (k, b) in self.part_boxes(p) {
+                if !solid_clear_of_box(&solid, b, self.clearance_mm) {
+                    let d = solid.distance_aabb(b);
                     if worst.is_none_or(|(_, _, w)| d < w) {
-                        worst = Some((i, k, d));
+                        worst = Some((p, k, d));
                     }
                 }
             }
         }
-        worst.map(|(i, k, d)| self.contact(i, k, d))
+        worst.map(|(p, k, d)| self.contact(p, k, d))
     }
 
-    /// Smallest distance (mm) between any link cylinder and any box; `f64::INFINITY` without
-    /// obstacles. Geometry only: the range is not checked.
-    pub fn clearance_at(&self, axes: &[f64; 3]) -> f64 {
-        let poses = self.cell_link_poses(axes);
+    /// Smallest distance (mm) between any part (link cylinder or tool shape) and any box;
+    /// `f64::INFINITY` without obstacles. Geometry only: the range is not checked.
+    pub fn clearance_at(&self, axes: &[f64; 6]) -> f64 {
+        let poses = self.poses(axes);
         let mut best = f64::INFINITY;
-        for i in 0..self.cyl.len() {
-            let c = self.cylinder_in(i, &poses);
-            for (_, b) in self.checked_boxes(i) {
-                best = best.min(distance_cylinder_aabb(&c, b));
+        for p in 0..self.part_count() {
+            let solid = self.solid(p, &poses);
+            for (_, b) in self.part_boxes(p) {
+                best = best.min(solid.distance_aabb(b));
             }
         }
         best
     }
 
-    /// The boxes cylinder `i` is checked against, with their indices: every box but those the
+    /// Number of parts: the link cylinders, then the tool shapes.
+    #[inline]
+    fn part_count(&self) -> usize {
+        self.cyl.len() + self.tool.as_ref().map_or(0, |t| t.shapes.len())
+    }
+
+    /// Part `p` by name.
+    fn part(&self, p: usize) -> Part {
+        match p.checked_sub(self.cyl.len()) {
+            None => Part::Link(self.robot.cylinders[p].link.clone()),
+            Some(s) => Part::ToolShape(
+                self.tool
+                    .as_ref()
+                    .map(|t| t.shapes[s].name.clone())
+                    .unwrap_or_default(),
+            ),
+        }
+    }
+
+    /// Whether part `p` is a tool shape.
+    #[inline]
+    fn is_tool_part(&self, p: usize) -> bool {
+        p >= self.cyl.len()
+    }
+
+    /// The boxes part `p` is checked against, with their indices: every box but those the
     /// robot stands on, for link 1 (module doc).
-    fn checked_boxes(&self, i: usize) -> impl Iterator<Item = (usize, &Aabb)> + '_ {
+    fn part_boxes(&self, p: usize) -> impl Iterator<Item = (usize, &Aabb)> + '_ {
+        let exempt = self.cyl.get(p).map(|c| &c.exempt);
         self.obstacles
             .iter()
             .enumerate()
-            .filter(move |(k, _)| !self.cyl[i].exempt[*k])
+            .filter(move |(k, _)| !exempt.is_some_and(|e| e[*k]))
             .map(|(k, o)| (k, &o.aabb))
+    }
+
+    /// The boxes cylinder `i` is checked against, with their indices.
+    fn checked_boxes(&self, i: usize) -> impl Iterator<Item = (usize, &Aabb)> + '_ {
+        self.part_boxes(i)
     }
 
     /// Poses of links 1..3 in the cell frame.
@@ -309,6 +439,53 @@ impl CollisionModel {
         self.robot
             .arm_link_poses(axes)
             .map(|p| self.cell_from_robot * p)
+    }
+
+    /// Pose of link 6 (the flange's link) in the cell frame.
+    fn flange_pose(&self, axes: &[f64; 6]) -> Isometry3<f64> {
+        self.cell_from_robot * self.robot.link_poses(axes)[5]
+    }
+
+    /// The poses every part needs (link 6 only with a tool).
+    pub(crate) fn poses(&self, axes: &[f64; 6]) -> Poses {
+        if self.tool.is_some() {
+            let all = self.robot.link_poses(axes);
+            Poses {
+                arm: [0, 1, 2].map(|i| self.cell_from_robot * all[i]),
+                flange: Some(self.cell_from_robot * all[5]),
+            }
+        } else {
+            Poses {
+                arm: self.cell_link_poses(&arm_of(axes)),
+                flange: None,
+            }
+        }
+    }
+
+    /// Part `p` placed by `poses` (cell frame).
+    #[inline]
+    fn solid(&self, p: usize, poses: &Poses) -> Solid {
+        match (p.checked_sub(self.cyl.len()), &self.tool, &poses.flange) {
+            (None, _, _) => Solid::Cylinder(self.cylinder_in(p, &poses.arm)),
+            (Some(s), Some(t), Some(f)) => t.shapes[s].local.placed(f),
+            // Poses without the flange are made only for models without a tool.
+            (Some(_), _, _) => unreachable!("a tool part needs the flange pose"),
+        }
+    }
+
+    /// `R[i][P]` of part `p` for joints 1..6, mm.
+    #[inline]
+    fn part_reach(&self, p: usize) -> [f64; 6] {
+        match p.checked_sub(self.cyl.len()) {
+            None => {
+                let r = self.cyl[p].reach_mm;
+                [r[0], r[1], r[2], 0.0, 0.0, 0.0]
+            }
+            Some(s) => self
+                .tool
+                .as_ref()
+                .map_or([0.0; 6], |t| t.shapes[s].reach_mm),
+        }
     }
 
     /// Cylinder `i` in the cell frame for the given cell link poses.
@@ -322,9 +499,9 @@ impl CollisionModel {
         }
     }
 
-    fn contact(&self, i: usize, k: usize, d: f64) -> Blocked {
+    fn contact(&self, p: usize, k: usize, d: f64) -> Blocked {
         Blocked::Contact {
-            link: self.robot.cylinders[i].link.clone(),
+            part: self.part(p),
             obstacle: self.obstacles[k].name.clone(),
             distance_mm: d,
         }
@@ -332,7 +509,7 @@ impl CollisionModel {
 }
 
 /// The boxes clipped to a cube about the base of half-size (reach + clearance +
-/// [`CLIP_MARGIN_MM`]), where the reach bounds every point of every link cylinder. Within that
+/// [`CLIP_MARGIN_MM`]), where the reach bounds every point of every link cylinder and tool shape. Within that
 /// cube nothing changes for any pose: a box point nearest to a link within the clearance (plus
 /// the margin) lies inside it. Outside, a box (even one wholly outside, which becomes a flat box
 /// on the cube's face) stays more than the margin away. Why: exact distances come from GJK, whose
@@ -341,6 +518,7 @@ impl CollisionModel {
 /// finite.
 fn clip_to_workspace(
     robot: &Robot,
+    tool: Option<&ToolData>,
     placement: &Placement,
     obstacles: Vec<Obstacle>,
     clearance_mm: f64,
@@ -348,12 +526,8 @@ fn clip_to_workspace(
     let reach: f64 = robot
         .cylinders
         .iter()
-        .map(|c| {
-            let chain: f64 = (0..=c.joint_index)
-                .map(|k| robot.joints[k].origin.translation.vector.norm())
-                .sum();
-            chain + c.a.coords.norm().max(c.b.coords.norm()) + c.radius_mm
-        })
+        .map(|c| parts::extent_from_base(robot, c.joint_index, &[c.a, c.b], c.radius_mm))
+        .chain(tool.map(|t| t.extent_from_base(robot)))
         .fold(0.0, f64::max);
     let half = reach + clearance_mm + CLIP_MARGIN_MM;
     let lo = Point::from(placement.base_mm.map(|v| v - half));
@@ -443,10 +617,21 @@ fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
     cylinder_clear_of_aabb(c, b, clearance)
 }
 
-/// The place stage's question: why an IK solution cannot be used from this placement.
+/// The place stage's question: why a pose (an IK solution, or a point given as joints) cannot be
+/// used from this placement: out of range, or a link or a tool shape within the clearance.
 impl PoseCheck for CollisionModel {
     fn why_blocked(&self, joints_deg: &[f64; 6]) -> Option<String> {
-        let arm = [joints_deg[0], joints_deg[1], joints_deg[2]];
-        CollisionModel::why_blocked(self, &arm).map(|b| b.to_string())
+        CollisionModel::why_blocked(self, joints_deg).map(|b| b.to_string())
+    }
+}
+
+/// The node test for any solid: `true` when it keeps MORE than `clearance` from the box. Link
+/// cylinders go through [`link_clear_of_box`] (fast bounds before parry's GJK), balls and
+/// oriented boxes are measured exactly.
+#[inline]
+fn solid_clear_of_box(s: &Solid, b: &Aabb, clearance: f64) -> bool {
+    match s {
+        Solid::Cylinder(c) => link_clear_of_box(c, b, clearance),
+        _ => s.distance_aabb(b) > clearance,
     }
 }

@@ -2,73 +2,90 @@
 //!
 //! The paper checks grid nodes only; the straight joint moves written to the RAPID module pass
 //! between them. [`CollisionModel::move_is_safe`] proves that every configuration on the straight
-//! joint-space segment keeps at least `clearance` from every box. It is conservative: it may
-//! reject a safe move, it never accepts an unsafe one.
+//! six-axis segment (a `MoveAbsJ` interpolates all six axes linearly) keeps every part of the
+//! model (the link cylinders and the tool's shapes) at least `clearance` from every box. It is
+//! conservative: it may reject a safe move, it never accepts an unsafe one.
 //!
 //! *Range.* The axis ranges and the coupled range `lo <= a3 - a2 <= hi` are convex sets of
 //! controller values, so a segment whose ends are in range stays in range: the ends are checked.
 //!
-//! *Lipschitz bound.* Let cylinder `L` hang on the child link of URDF joint `j_L`. For joint
-//! `i <= j_L`, `R[i][L]` bounds the distance of any point of `L` from joint `i`'s axis, in every
-//! configuration. Joint `i`'s axis passes through the origin of link `i` along `axis_i`, fixed in
-//! link `i`'s frame; write `t_k` for the translation of `joints[k].origin`, `P_i` for the
-//! projection orthogonal to `axis_i` and `a`, `b`, `r` for the cylinder's end points (link frame)
-//! and radius. Then
+//! *Lipschitz bound.* Let part `P` (a link cylinder, or a tool shape on link 6) hang on the
+//! child link of URDF joint `j_P`. For joint `i <= j_P`, `R[i][P]` bounds the distance of any
+//! point of `P` from joint `i`'s axis, in every configuration. Joint `i`'s axis passes through
+//! the origin of link `i` along `axis_i`, fixed in link `i`'s frame; write `t_k` for the
+//! translation of `joints[k].origin`, `P_i` for the projection orthogonal to `axis_i`, and let
+//! the part lie in the convex hull of points `h` of its link's frame grown by `g` (a cylinder:
+//! its end points `a`, `b` and its radius `r`; a ball: its centre and radius; a box: its eight
+//! corners and 0). Then
 //!
 //! ```text
-//! R[i][L] = max(|P_i a|, |P_i b|) + r                                      if i == j_L
-//! R[i][L] = |P_i t_{i+1}| + sum_{k=i+2..=j_L} |t_k| + max(|a|, |b|) + r    if i <  j_L
+//! R[i][P] = max |P_i h| + g                                          if i == j_P
+//! R[i][P] = |P_i t_{i+1}| + sum_{k=i+2..=j_P} |t_k| + max |h| + g    if i <  j_P
 //! ```
 //!
-//! (a point of the cylinder is `a + s (b - a) + w` with `|w| <= r`, and the norm is convex; the
-//! chain from link `i`'s origin to link `j_L`'s origin is `t_{i+1}`, whose component across
-//! `axis_i` is constant in link `i`'s frame, followed by vectors of constant length). A point `p`
-//! of `L` moves with velocity `sum_i qdot_i axis_i x (p - o_i)`, of norm at most
-//! `sum_i R[i][L] |qdot_i|`. A straight move changes URDF joint `i` by `Dq_i` (the controller
+//! (the norm is convex, so its maximum over the hull is at a point `h`; the chain from link
+//! `i`'s origin to link `j_P`'s origin is `t_{i+1}`, whose component across `axis_i` is constant
+//! in link `i`'s frame, followed by vectors of constant length). For a cylinder this is
+//! `max(|P_i a|, |P_i b|) + r` and `... + max(|a|, |b|) + r`. For a tool shape, joints 4 and 5
+//! get the smaller of this and a bound through the wrist centre (`parts.rs`: their axes pass
+//! through the wrist, so no tool point is farther from them than from the wrist centre). A
+//! point `p` of `P` moves with velocity `sum_i qdot_i axis_i x (p - o_i)`, of norm at most
+//! `sum_i R[i][P] |qdot_i|`. A straight move changes URDF joint `i` by `Dq_i` (the controller
 //! coupling is linear, so the move is straight in URDF values too; `Dq` from
-//! [`Robot::urdf_joints_deg`]), hence over a sub-interval of parameter length `h` no point of `L`
-//! moves more than `M_L h`, with `M_L = sum_i R[i][L] |Dq_i| (rad)`. The distance `d(t)` between
-//! `L` and a box is therefore `M_L`-Lipschitz in `t`, and with exact distances `d0`, `d1` at the
-//! ends of the sub-interval,
+//! [`Robot::urdf_joints_deg`], all six joints), hence over a sub-interval of parameter length
+//! `h` no point of `P` moves more than `M_P h`, with `M_P = sum_{i=1..6} R[i][P] |Dq_i|` (rad;
+//! `R[i][P]` = 0 for `i > j_P`, so axes 4..6 never count for a link). The distance `d(t)`
+//! between `P` and a box is therefore `M_P`-Lipschitz in `t`, and with exact distances `d0`,
+//! `d1` at the ends of the sub-interval (or lower bounds of them),
 //!
 //! ```text
-//! d(t) >= max(d0 - M_L (t - t0), d1 - M_L (t1 - t)) >= (d0 + d1 - M_L h) / 2.
+//! d(t) >= max(d0 - M_P (t - t0), d1 - M_P (t1 - t)) >= (d0 + d1 - M_P h) / 2.
 //! ```
 //!
-//! Each (cylinder, box) pair is certified on `[0, 1]` by bisection, left half first: an interval
-//! whose bound is `>= clearance` is done; a midpoint closer than `clearance` proves the move
-//! unsafe; an interval with `M_L h` below [`MOVE_FLOOR_MM`] (a grazing move) is rejected
-//! conservatively. Distances come from [`distance_cylinder_aabb`] (closed-form capsule bounds,
-//! parry3d-f64 GJK only in the narrow band between them) and are lowered by
-//! [`DISTANCE_SLACK_REL`] before use, which covers GJK's relative stopping tolerance (about
-//! `5e-8` in f64) and rounding.
+//! Each (part, box) pair is first tried on cheap lower bounds at the two ends (the capsule of a
+//! cylinder; balls and boxes are exact anyway): where they prove the whole move, no exact
+//! distance is computed. Otherwise it is certified on `[0, 1]` by bisection, left half first: an
+//! interval whose bound is `>= clearance` is done; a midpoint closer than `clearance` proves the
+//! move unsafe; an interval with `M_P h` below [`MOVE_FLOOR_MM`] (a grazing move) is rejected
+//! conservatively. The verdict is the one the bisection alone gives (a pair the lower bounds
+//! prove passes the bisection's first interval, exact distances being no smaller). Distances
+//! come from [`Solid::distance_aabb`](crate::geometry::Solid) (cylinders: closed-form capsule
+//! bounds, parry3d-f64 GJK only in the narrow band between them; balls and oriented boxes:
+//! closed forms) and are lowered by [`DISTANCE_SLACK_REL`] before use, which covers GJK's
+//! relative stopping tolerance (about `5e-8` in f64) and rounding.
 //!
+//! [`Robot::urdf_joints_deg`]: crate::robot::Robot::urdf_joints_deg
 
-use super::{Blocked, CollisionModel};
-use crate::geometry::distance_cylinder_aabb;
+use super::{Blocked, CollisionModel, Part, Poses};
+use crate::geometry::{distance_segment_aabb, Aabb, Solid};
+use std::ops::Range;
 
-/// Bisection of a move stops (and rejects it) when the largest displacement of a link over the
-/// interval, `M_L h`, falls below this, mm.
+/// Bisection of a move stops (and rejects it) when the largest displacement of a part over the
+/// interval, `M_P h`, falls below this, mm.
 pub const MOVE_FLOOR_MM: f64 = 1e-3;
 
 /// Distances used in proofs are lowered by `DISTANCE_SLACK_REL * (1 mm + d)`: parry's GJK stops at
 /// a relative gap of about 5e-8 in f64 and errs from above.
 pub const DISTANCE_SLACK_REL: f64 = 1e-6;
 
-/// Most distance evaluations one (cylinder, box) pair may spend on a move before the move is
+/// Levels of the bisection on cheap lower bounds tried before the exact one
+/// (`certify_pair_on_bounds`).
+const BOUND_LEVELS: usize = 10;
+
+/// Most distance evaluations one (part, box) pair may spend on a move before the move is
 /// rejected (or, in [`CollisionModel::min_clearance_along`], before its bound is returned as is).
 const MAX_EVALS_PER_PAIR: usize = 1 << 20;
 
-/// The smallest clearance along a move (or a route): a certified lower bound, and the link and
-/// obstacle it belongs to.
+/// The smallest clearance along a move (or a route): a certified lower bound, and the part
+/// (link or tool shape) and obstacle it belongs to.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Clearance {
     pub mm: f64,
-    pub link: String,
+    pub part: Part,
     pub obstacle: String,
 }
 
-/// Result of certifying one (cylinder, box) pair along a move.
+/// Result of certifying one (part, box) pair along a move.
 enum PairVerdict {
     Safe,
     /// Fails at parameter `t`, where the distance (or its failing bound) is `d`.
@@ -80,20 +97,54 @@ enum PairVerdict {
 
 impl CollisionModel {
     /// Conservative whole-move check: `true` only if every configuration on the straight
-    /// joint-space segment `from -> to` (controller values, linear interpolation) is in range and
-    /// keeps at least the clearance from every box. May reject a safe move (a grazing one, see
-    /// [`MOVE_FLOOR_MM`]); never accepts an unsafe one. See the module doc for the proof.
-    pub fn move_is_safe(&self, from: &[f64; 3], to: &[f64; 3]) -> bool {
-        if self.robot.check_range3(from).is_err() || self.robot.check_range3(to).is_err() {
-            return false;
+    /// six-axis segment `from -> to` (controller values, linear interpolation) is in range and
+    /// keeps every link cylinder and every tool shape at least the clearance from every box. May
+    /// reject a safe move (a grazing one, see [`MOVE_FLOOR_MM`]); never accepts an unsafe one.
+    /// See the module doc for the proof.
+    pub fn move_is_safe(&self, from: &[f64; 6], to: &[f64; 6]) -> bool {
+        self.robot.check_range6(from).is_ok()
+            && self.robot.check_range6(to).is_ok()
+            && self.parts_are_safe(from, to, 0..self.part_count())
+    }
+
+    /// The whole-move proof for the link cylinders alone (they depend on axes 1..3 only). The
+    /// range is not checked: the caller knows both ends are in range.
+    pub(crate) fn links_move_is_safe(&self, from: &[f64; 6], to: &[f64; 6]) -> bool {
+        self.parts_are_safe(from, to, 0..self.cyl.len())
+    }
+
+    /// The whole-move proof for the tool shapes alone; `true` without a tool. The range is not
+    /// checked.
+    pub(crate) fn tool_move_is_safe(&self, from: &[f64; 6], to: &[f64; 6]) -> bool {
+        self.parts_are_safe(from, to, self.cyl.len()..self.part_count())
+    }
+
+    /// Every (part, box) pair of `parts` certified along the move. A pair whose cheap lower
+    /// bounds at the ends already prove it (the interval bound of the module doc on lower
+    /// bounds: the distance is at least a lower bound) costs no exact distance; the others go
+    /// through the bisection on exact distances, which gives the same verdict it always gave.
+    fn parts_are_safe(&self, from: &[f64; 6], to: &[f64; 6], parts: Range<usize>) -> bool {
+        if parts.is_empty() {
+            return true;
         }
-        let speeds = self.link_speeds(from, to);
-        for (i, &m) in speeds.iter().enumerate() {
-            let d0 = self.pair_distances(i, from);
-            let d1 = self.pair_distances(i, to);
-            for (k, _) in self.checked_boxes(i) {
+        let flange = parts.end > self.cyl.len();
+        let (p0, p1) = (self.poses_for(from, flange), self.poses_for(to, flange));
+        let speeds = self.part_speeds(from, to);
+        for p in parts {
+            let m = speeds[p];
+            let (s0, s1) = (self.solid(p, &p0), self.solid(p, &p1));
+            for (k, b) in self.part_boxes(p) {
+                let (l0, l1) = (s0.lower_bound_aabb(b), s1.lower_bound_aabb(b));
+                if interval_bound(l0, l1, m) >= self.clearance_mm {
+                    continue;
+                }
+                let (l0, l1) = (tight_lower_bound(&s0, b, l0), tight_lower_bound(&s1, b, l1));
+                if self.certify_pair_on_bounds(p, k, from, to, m, l0, l1) {
+                    continue;
+                }
+                let (d0, d1) = (s0.distance_aabb(b), s1.distance_aabb(b));
                 if let PairVerdict::Fails { .. } =
-                    self.certify_pair(i, k, from, to, m, d0[k], d1[k], false)
+                    self.certify_pair(p, k, from, to, m, d0, d1, false)
                 {
                     return false;
                 }
@@ -102,36 +153,84 @@ impl CollisionModel {
         true
     }
 
-    /// A certified lower bound of the smallest distance (mm) between any link cylinder and any
-    /// box along the move `from -> to`, within `tol_mm` of the true minimum (branch and bound on
-    /// the Lipschitz bound of the module doc; `tol_mm` below 1e-6 is raised to it; the bound is
-    /// further lowered by the [`DISTANCE_SLACK_REL`] slack). The (link, obstacle) pair named is
-    /// the witness: the pair seen closest at some instant of the move, within `tol_mm` (plus the
-    /// slack) of the bound. Geometry only: the range is not checked. `None` without obstacles.
+    /// The bisection of [`certify_pair`](Self::certify_pair) on cheap lower bounds (no GJK),
+    /// to [`BOUND_LEVELS`] levels: `true` when it proves the pair. It never proves a pair the
+    /// exact bisection refuses: on every interval the exact distances are no smaller, so the
+    /// exact bisection proves each interval this one proves, at the same level or sooner.
+    #[allow(clippy::too_many_arguments)]
+    fn certify_pair_on_bounds(
+        &self,
+        p: usize,
+        k: usize,
+        from: &[f64; 6],
+        to: &[f64; 6],
+        m: f64,
+        l0: f64,
+        l1: f64,
+    ) -> bool {
+        let c = self.clearance_mm;
+        if lowered(l0) < c || lowered(l1) < c {
+            return false;
+        }
+        let b = &self.obstacles[k].aabb;
+        let mut stack = [(0.0f64, 0.0f64, 0.0f64, 0.0f64, 0u32); BOUND_LEVELS + 2];
+        stack[0] = (0.0, 1.0, l0, l1, 0);
+        let mut top = 1usize;
+        while top > 0 {
+            top -= 1;
+            let (t0, t1, d0, d1, level) = stack[top];
+            let reach = m * (t1 - t0);
+            if interval_bound(d0, d1, reach) >= c {
+                continue;
+            }
+            if level as usize >= BOUND_LEVELS || reach < MOVE_FLOOR_MM {
+                return false;
+            }
+            let tm = 0.5 * (t0 + t1);
+            let axes = lerp(from, to, tm);
+            let solid = self.solid(p, &self.poses_for(&axes, self.is_tool_part(p)));
+            let dm = tight_lower_bound(&solid, b, solid.lower_bound_aabb(b));
+            if lowered(dm) < c {
+                return false;
+            }
+            stack[top] = (tm, t1, dm, d1, level + 1);
+            stack[top + 1] = (t0, tm, d0, dm, level + 1);
+            top += 2;
+        }
+        true
+    }
+
+    /// A certified lower bound of the smallest distance (mm) between any part (link cylinder or
+    /// tool shape) and any box along the six-axis move `from -> to`, within `tol_mm` of the true
+    /// minimum (branch and bound on the Lipschitz bound of the module doc; `tol_mm` below 1e-6
+    /// is raised to it; the bound is further lowered by the [`DISTANCE_SLACK_REL`] slack). The
+    /// (part, obstacle) pair named is the witness: the pair seen closest at some instant of the
+    /// move, within `tol_mm` (plus the slack) of the bound. Geometry only: the range is not
+    /// checked. `None` without obstacles.
     pub fn min_clearance_along(
         &self,
-        from: &[f64; 3],
-        to: &[f64; 3],
+        from: &[f64; 6],
+        to: &[f64; 6],
         tol_mm: f64,
     ) -> Option<Clearance> {
         let tol = if tol_mm >= 1e-6 { tol_mm } else { 1e-6 };
-        let speeds = self.link_speeds(from, to);
-        let ends: Vec<_> = (0..self.cyl.len())
-            .map(|i| (self.pair_distances(i, from), self.pair_distances(i, to)))
+        let speeds = self.part_speeds(from, to);
+        let ends: Vec<_> = (0..self.part_count())
+            .map(|p| (self.pair_distances(p, from), self.pair_distances(p, to)))
             .collect();
         // Best attained distance so far: an upper bound of the minimum, and its pair.
         let mut upper = (f64::INFINITY, None);
-        for (i, (a, b)) in ends.iter().enumerate() {
+        for (p, (a, b)) in ends.iter().enumerate() {
             for (k, &d) in a.iter().chain(b).enumerate() {
                 if d < upper.0 {
-                    upper = (d, Some((i, k % a.len())));
+                    upper = (d, Some((p, k % a.len())));
                 }
             }
         }
         let mut result = f64::INFINITY;
-        for (i, &m) in speeds.iter().enumerate() {
-            for (k, _) in self.checked_boxes(i) {
-                let (d0, d1) = (ends[i].0[k], ends[i].1[k]);
+        for (p, &m) in speeds.iter().enumerate() {
+            for (k, _) in self.part_boxes(p) {
+                let (d0, d1) = (ends[p].0[k], ends[p].1[k]);
                 let mut evals = 0usize;
                 let mut stack = vec![(0.0f64, 1.0f64, d0, d1)];
                 while let Some((t0, t1, d0, d1)) = stack.pop() {
@@ -144,10 +243,10 @@ impl CollisionModel {
                         continue;
                     }
                     let tm = 0.5 * (t0 + t1);
-                    let dm = self.pair_distance_at(i, k, from, to, tm);
+                    let dm = self.pair_distance_at(p, k, from, to, tm);
                     evals += 1;
                     if dm < upper.0 {
-                        upper = (dm, Some((i, k)));
+                        upper = (dm, Some((p, k)));
                     }
                     stack.push((tm, t1, dm, d1));
                     stack.push((t0, tm, d0, dm));
@@ -156,97 +255,102 @@ impl CollisionModel {
         }
         // Every interval was pruned within `tol` of `upper`, so the witness is within `tol` of
         // the bound. Distances are never negative: the slack may have taken the bound below 0.
-        let (i, k) = upper.1?;
+        let (p, k) = upper.1?;
         Some(Clearance {
             mm: result.min(upper.0).max(0.0),
-            link: self.robot.cylinders[i].link.clone(),
+            part: self.part(p),
             obstacle: self.obstacles[k].name.clone(),
         })
     }
 
     /// Where a move fails: `(t, why)`, `t` in `[0, 1]`. An end out of range gives `t` = 0 or 1
-    /// and [`Blocked::Range`]. Otherwise `t` is the earliest point over all (cylinder, box) pairs
+    /// and [`Blocked::Range`]. Otherwise `t` is the earliest point over all (part, box) pairs
     /// where a pair comes closer than the clearance (everything before it certified, to
-    /// [`MOVE_FLOOR_MM`] of link motion), or could not be proven clear (a grazing move; then
+    /// [`MOVE_FLOOR_MM`] of part motion), or could not be proven clear (a grazing move; then
     /// `distance_mm` is the failing lower bound). `None` exactly when
     /// [`move_is_safe`](Self::move_is_safe) holds.
-    pub fn why_move_unsafe(&self, from: &[f64; 3], to: &[f64; 3]) -> Option<(f64, Blocked)> {
-        if let Err(v) = self.robot.check_range3(from) {
+    pub fn why_move_unsafe(&self, from: &[f64; 6], to: &[f64; 6]) -> Option<(f64, Blocked)> {
+        if let Err(v) = self.robot.check_range6(from) {
             return Some((0.0, Blocked::Range(v)));
         }
-        if let Err(v) = self.robot.check_range3(to) {
+        if let Err(v) = self.robot.check_range6(to) {
             return Some((1.0, Blocked::Range(v)));
         }
-        let speeds = self.link_speeds(from, to);
+        let speeds = self.part_speeds(from, to);
         let mut first: Option<(f64, usize, usize, f64)> = None;
-        for (i, &m) in speeds.iter().enumerate() {
-            let d0 = self.pair_distances(i, from);
-            let d1 = self.pair_distances(i, to);
-            for (k, _) in self.checked_boxes(i) {
+        for (p, &m) in speeds.iter().enumerate() {
+            let d0 = self.pair_distances(p, from);
+            let d1 = self.pair_distances(p, to);
+            for (k, _) in self.part_boxes(p) {
                 if let PairVerdict::Fails { t, d } =
-                    self.certify_pair(i, k, from, to, m, d0[k], d1[k], true)
+                    self.certify_pair(p, k, from, to, m, d0[k], d1[k], true)
                 {
                     if first.is_none_or(|(tf, _, _, df)| t < tf || (t == tf && d < df)) {
-                        first = Some((t, i, k, d));
+                        first = Some((t, p, k, d));
                     }
                 }
             }
         }
-        first.map(|(t, i, k, d)| (t, self.contact(i, k, d.max(0.0))))
+        first.map(|(t, p, k, d)| (t, self.contact(p, k, d.max(0.0))))
     }
 
-    /// `M_L` of the module doc for every cylinder: the most any of its points moves over the
-    /// whole move, mm.
-    pub(super) fn link_speeds(&self, from: &[f64; 3], to: &[f64; 3]) -> Vec<f64> {
-        let q0 = self
-            .robot
-            .urdf_joints_deg(&[from[0], from[1], from[2], 0.0, 0.0, 0.0]);
-        let q1 = self
-            .robot
-            .urdf_joints_deg(&[to[0], to[1], to[2], 0.0, 0.0, 0.0]);
-        let dq: [f64; 3] = std::array::from_fn(|i| (q1[i] - q0[i]).abs().to_radians());
-        self.cyl
-            .iter()
-            .map(|cd| (0..3).map(|i| cd.reach_mm[i] * dq[i]).sum())
-            .collect()
-    }
-
-    /// Distances from cylinder `i` to every box at `axes` (`f64::INFINITY` for an exempt pair;
-    /// callers skip those pairs, the slack of `lowered` is not meant for infinities).
-    fn pair_distances(&self, i: usize, axes: &[f64; 3]) -> Vec<f64> {
-        let c = self.cylinder_in(i, &self.cell_link_poses(axes));
-        self.obstacles
-            .iter()
-            .zip(&self.cyl[i].exempt)
-            .map(|(o, &exempt)| {
-                if exempt {
-                    f64::INFINITY
-                } else {
-                    distance_cylinder_aabb(&c, &o.aabb)
-                }
+    /// `M_P` of the module doc for every part: the most any of its points moves over the whole
+    /// six-axis move, mm.
+    pub(crate) fn part_speeds(&self, from: &[f64; 6], to: &[f64; 6]) -> Vec<f64> {
+        let q0 = self.robot.urdf_joints_deg(from);
+        let q1 = self.robot.urdf_joints_deg(to);
+        let dq: [f64; 6] = std::array::from_fn(|i| (q1[i] - q0[i]).abs().to_radians());
+        (0..self.part_count())
+            .map(|p| {
+                let r = self.part_reach(p);
+                (0..6).map(|i| r[i] * dq[i]).sum()
             })
             .collect()
     }
 
-    /// Distance from cylinder `i` to box `k` at parameter `t` of the move.
-    fn pair_distance_at(&self, i: usize, k: usize, from: &[f64; 3], to: &[f64; 3], t: f64) -> f64 {
-        let axes = lerp(from, to, t);
-        let c = self.cylinder_in(i, &self.cell_link_poses(&axes));
-        distance_cylinder_aabb(&c, &self.obstacles[k].aabb)
+    /// The poses of a configuration, with the flange only when asked for (and the model has a
+    /// tool): links alone need three links' poses.
+    pub(crate) fn poses_for(&self, axes: &[f64; 6], flange: bool) -> Poses {
+        if flange {
+            self.poses(axes)
+        } else {
+            Poses {
+                arm: self.cell_link_poses(&super::arm_of(axes)),
+                flange: None,
+            }
+        }
     }
 
-    /// Bisection proof that cylinder `i` keeps the clearance from box `k` along the move; `m` is
-    /// its `M_L`, `d0`, `d1` the distances at the ends. Left-first depth-first bisection: when an
+    /// Distances from part `p` to every box at `axes` (`f64::INFINITY` for an exempt pair;
+    /// callers skip those pairs, the slack of `lowered` is not meant for infinities).
+    fn pair_distances(&self, p: usize, axes: &[f64; 6]) -> Vec<f64> {
+        let solid = self.solid(p, &self.poses_for(axes, self.is_tool_part(p)));
+        let mut out = vec![f64::INFINITY; self.obstacles.len()];
+        for (k, b) in self.part_boxes(p) {
+            out[k] = solid.distance_aabb(b);
+        }
+        out
+    }
+
+    /// Distance from part `p` to box `k` at parameter `t` of the move.
+    fn pair_distance_at(&self, p: usize, k: usize, from: &[f64; 6], to: &[f64; 6], t: f64) -> f64 {
+        let axes = lerp(from, to, t);
+        let solid = self.solid(p, &self.poses_for(&axes, self.is_tool_part(p)));
+        solid.distance_aabb(&self.obstacles[k].aabb)
+    }
+
+    /// Bisection proof that part `p` keeps the clearance from box `k` along the move; `m` is
+    /// its `M_P`, `d0`, `d1` the distances at the ends. Left-first depth-first bisection: when an
     /// interval is examined, everything left of it is certified. Without `earliest` the first
     /// failure found is returned; with it, the search goes on left of each witness, so the
     /// witness returned has everything left of it certified (to [`MOVE_FLOOR_MM`] resolution).
     #[allow(clippy::too_many_arguments)]
     fn certify_pair(
         &self,
-        i: usize,
+        p: usize,
         k: usize,
-        from: &[f64; 3],
-        to: &[f64; 3],
+        from: &[f64; 6],
+        to: &[f64; 6],
         m: f64,
         d0: f64,
         d1: f64,
@@ -290,7 +394,7 @@ impl CollisionModel {
                     PairVerdict::Fails { t: tm, d: lb }
                 };
             }
-            let dm = self.pair_distance_at(i, k, from, to, tm);
+            let dm = self.pair_distance_at(p, k, from, to, tm);
             evals += 1;
             if lowered(dm) < c {
                 if !earliest {
@@ -312,9 +416,32 @@ impl CollisionModel {
     }
 }
 
+/// A lower bound of a solid's distance to a box, better than `capsule` (its cheap bound) where a
+/// flat cap of a cylinder faces the box: capsules about shortened axes that still hold the cap
+/// rims (as `link_clear_of_box` uses them). Closed forms only, no GJK.
+#[inline]
+pub(super) fn tight_lower_bound(s: &Solid, b: &Aabb, capsule: f64) -> f64 {
+    let Solid::Cylinder(c) = s else {
+        return capsule;
+    };
+    let d = c.b - c.a;
+    let len = d.norm();
+    let r = c.radius.max(0.0);
+    let mut best = capsule;
+    if len > 0.0 && r > 0.0 {
+        let u = d / len;
+        for k in [1.0, 2.5, 6.0] {
+            let sh = (k * r).min(0.5 * len);
+            let lb = distance_segment_aabb(&(c.a + u * sh), &(c.b - u * sh), b) - r.hypot(sh);
+            best = best.max(lb);
+        }
+    }
+    best
+}
+
 /// A distance lowered by the slack that covers GJK's tolerance.
 #[inline]
-fn lowered(d: f64) -> f64 {
+pub(super) fn lowered(d: f64) -> f64 {
     if d.is_finite() {
         d - DISTANCE_SLACK_REL * (1.0 + d.abs())
     } else {
@@ -322,16 +449,16 @@ fn lowered(d: f64) -> f64 {
     }
 }
 
-/// Certified lower bound of an `M`-Lipschitz distance on an interval where the link moves at
-/// most `reach` mm, from its raw end values (lowered by the slack here).
+/// Certified lower bound of an `M`-Lipschitz distance on an interval where the part moves at
+/// most `reach` mm, from its raw end values or lower bounds of them (lowered by the slack here).
 #[inline]
-fn interval_bound(d0: f64, d1: f64, reach: f64) -> f64 {
+pub(super) fn interval_bound(d0: f64, d1: f64, reach: f64) -> f64 {
     let (l0, l1) = (lowered(d0), lowered(d1));
     (0.5 * (l0 + l1 - reach)).min(l0).min(l1)
 }
 
 /// Linear interpolation of controller values.
 #[inline]
-pub(super) fn lerp(from: &[f64; 3], to: &[f64; 3], t: f64) -> [f64; 3] {
+pub(super) fn lerp<const N: usize>(from: &[f64; N], to: &[f64; N], t: f64) -> [f64; N] {
     std::array::from_fn(|i| from[i] + t * (to[i] - from[i]))
 }

@@ -9,6 +9,24 @@ use parry3d::math::{Pose, Rotation, Vector};
 
 use crate::geometry::testing::Rng;
 
+/// Six axes from three, the wrist at zero (links do not depend on it).
+fn s6(a: [f64; 3]) -> [f64; 6] {
+    [a[0], a[1], a[2], 0.0, 0.0, 0.0]
+}
+
+fn link(name: &str) -> Part {
+    Part::Link(name.into())
+}
+
+/// The free bits of a column's node codes (the grid's node test).
+fn column_free(model: &CollisionModel, a1: f64, a2: f64, a3: &[f64], len: usize) -> Vec<bool> {
+    let check = model.grid_check(1.0);
+    let mut codes = vec![0xffu8; len];
+    let mut column = vec![0u8; check.column_bytes()];
+    check.inspect_column(a1, a2, a3, &mut codes, &mut column);
+    codes.iter().map(|&c| c & CODE_FREE != 0).collect()
+}
+
 fn bx(name: &str, min: [f64; 3], max: [f64; 3]) -> Obstacle {
     Obstacle::new(name, Aabb::new(Point3::from(min), Point3::from(max)))
 }
@@ -31,7 +49,7 @@ fn trunk() -> Vec<Obstacle> {
 }
 
 fn trunk_model(clearance: f64) -> CollisionModel {
-    CollisionModel::new(&Robot::irb1400(), TRUNK_PLACEMENT, trunk(), clearance)
+    CollisionModel::new(&Robot::irb1400(), TRUNK_PLACEMENT, trunk(), clearance, None)
 }
 
 /// Cylinders in the cell frame computed independently of the model (robot FK + placement).
@@ -81,7 +99,7 @@ fn parry_distance(c: &Cylinder, b: &Aabb) -> f64 {
 /// moves more than 1 mm between samples; also the step count.
 fn dense_min(model: &CollisionModel, from: &[f64; 3], to: &[f64; 3]) -> (f64, usize) {
     let m = model
-        .link_speeds(from, to)
+        .part_speeds(&s6(*from), &s6(*to))
         .into_iter()
         .fold(0.0f64, f64::max);
     let n = (m / 1.0).ceil().max(1.0) as usize;
@@ -106,7 +124,7 @@ fn dense_min_of_pair(
     obstacle: &str,
 ) -> f64 {
     let m = model
-        .link_speeds(from, to)
+        .part_speeds(&s6(*from), &s6(*to))
         .into_iter()
         .fold(0.0f64, f64::max);
     let n = (m / 1.0).ceil().max(1.0) as usize;
@@ -149,13 +167,16 @@ fn random_free_moves(
     let mut out = Vec::new();
     while out.len() < count {
         let from = random_in_range(rng, model);
-        if !model.is_free(&from) {
+        if !model.is_free(&s6(from)) {
             continue;
         }
         let to = [0, 1, 2].map(|i| from[i] + rng.range(-span, span));
         // Two moves in three start near an obstacle, where the check has work to do.
-        let near = model.clearance_at(&from).min(model.clearance_at(&to)) < 150.0;
-        if model.is_free(&to) && (near || out.len() % 3 == 2) {
+        let near = model
+            .clearance_at(&s6(from))
+            .min(model.clearance_at(&s6(to)))
+            < 150.0;
+        if model.is_free(&s6(to)) && (near || out.len() % 3 == 2) {
             out.push((from, to));
         }
     }
@@ -165,19 +186,21 @@ fn random_free_moves(
 #[test]
 fn placement_puts_the_zero_pose_wrist_centre_where_irb1400_md_says() {
     let robot = Robot::irb1400();
-    let model = CollisionModel::new(&robot, TRUNK_PLACEMENT, vec![], 10.0);
+    let model = CollisionModel::new(&robot, TRUNK_PLACEMENT, vec![], 10.0, None);
     let want = Vector3::new(0.0, -850.0 + 870.0, 1195.0);
     let via_frame = model.cell_from_robot * robot.wrist_centre(&[0.0; 6]);
     assert!((via_frame.coords - want).norm() < 1e-9, "{via_frame:?}");
     // The wrist centre lies on the forearm cylinder's axis, 1020 mm from its back end.
-    let cyls = model.cylinders(&[0.0; 3]);
-    let (i, fore) = cyls[2];
-    assert_eq!(robot.cylinders[i].link, "link_3");
+    let solids = model.solids(&[0.0; 6]);
+    let (Solid::Cylinder(base), Solid::Cylinder(fore)) = (solids[0].1, solids[2].1) else {
+        panic!("{solids:?}")
+    };
+    assert_eq!(solids[2].0, Part::Link("link_3".into()));
     let u = (fore.b - fore.a).normalize();
     let on_axis = fore.a + u * 1020.0;
     assert!((on_axis.coords - want).norm() < 1e-9, "{on_axis:?}");
     // The base cylinder stands on the placement point.
-    assert!((cyls[0].1.a.coords - Vector3::new(0.0, -850.0, 0.0)).norm() < 1e-9);
+    assert!((base.a.coords - Vector3::new(0.0, -850.0, 0.0)).norm() < 1e-9);
 }
 
 #[test]
@@ -190,28 +213,28 @@ fn why_blocked_names_the_link_and_the_obstacle() {
     // Zero pose: forearm along x at z = 1195 (r 120); upper arm along z at x = 150 (r 150).
     let front = bx("front", [600.0, -50.0, 1100.0], [700.0, 50.0, 1300.0]);
     let side = bx("side", [305.0, -50.0, 800.0], [400.0, 50.0, 900.0]);
-    let both = CollisionModel::new(&robot, here, vec![side.clone(), front.clone()], 10.0);
-    assert!(!both.is_free(&[0.0; 3]));
-    match both.why_blocked(&[0.0; 3]) {
+    let both = CollisionModel::new(&robot, here, vec![side.clone(), front.clone()], 10.0, None);
+    assert!(!both.is_free(&s6([0.0; 3])));
+    match both.why_blocked(&s6([0.0; 3])) {
         Some(Blocked::Contact {
-            link,
+            part,
             obstacle,
             distance_mm,
         }) => {
-            assert_eq!((link.as_str(), obstacle.as_str()), ("link_3", "front"));
+            assert_eq!((part, obstacle.as_str()), (link("link_3"), "front"));
             assert_eq!(distance_mm, 0.0);
         }
         other => panic!("{other:?}"),
     }
-    let only_side = CollisionModel::new(&robot, here, vec![side], 10.0);
-    let why = only_side.why_blocked(&[0.0; 3]);
+    let only_side = CollisionModel::new(&robot, here, vec![side], 10.0, None);
+    let why = only_side.why_blocked(&s6([0.0; 3]));
     match &why {
         Some(Blocked::Contact {
-            link,
+            part,
             obstacle,
             distance_mm,
         }) => {
-            assert_eq!((link.as_str(), obstacle.as_str()), ("link_2", "side"));
+            assert_eq!((part, obstacle.as_str()), (&link("link_2"), "side"));
             assert!((distance_mm - 5.0).abs() < 1e-9, "{distance_mm}");
         }
         other => panic!("{other:?}"),
@@ -227,12 +250,13 @@ fn why_blocked_names_the_link_and_the_obstacle() {
         here,
         vec![bx("side", [315.0, -50.0, 800.0], [400.0, 50.0, 900.0])],
         10.0,
+        None,
     );
-    assert!(clear.is_free(&[0.0; 3]) && clear.why_blocked(&[0.0; 3]).is_none());
-    assert!((clear.clearance_at(&[0.0; 3]) - 15.0).abs() < 1e-9);
+    assert!(clear.is_free(&s6([0.0; 3])) && clear.why_blocked(&s6([0.0; 3])).is_none());
+    assert!((clear.clearance_at(&s6([0.0; 3])) - 15.0).abs() < 1e-9);
     // Range comes first, the coupled range included.
     assert!(matches!(
-        both.why_blocked(&[0.0, -70.0, 70.0]),
+        both.why_blocked(&s6([0.0, -70.0, 70.0])),
         Some(Blocked::Range(RangeViolation::Coupled { .. }))
     ));
 }
@@ -242,25 +266,25 @@ fn is_free_and_inspect_column_agree_on_a_coarse_grid() {
     let model = trunk_model(10.0);
     // A few values outside the ranges exercise the range checks.
     let a3: Vec<f64> = (-14..=15).map(|k| k as f64 * 5.0).collect();
-    let mut col = vec![false; a3.len()];
     let (mut free, mut blocked, mut range) = (0, 0, 0);
     for i1 in -18..=18 {
         for i2 in -8..=8 {
             let (a1, a2) = (i1 as f64 * 10.0 - 0.5, i2 as f64 * 9.0 + 0.25);
-            model.inspect_column(a1, a2, &a3, &mut col);
+            let col = column_free(&model, a1, a2, &a3, a3.len());
             for (k, &v) in a3.iter().enumerate() {
                 let axes = [a1, a2, v];
-                let want = model.is_free(&axes);
+                let want = model.is_free(&s6(axes));
+                assert_eq!(model.arm_is_free(&axes), want, "{axes:?}");
                 assert_eq!(col[k], want, "{axes:?}");
-                assert_eq!(model.why_blocked(&axes).is_none(), want, "{axes:?}");
+                assert_eq!(model.why_blocked(&s6(axes)).is_none(), want, "{axes:?}");
                 if want {
                     free += 1;
-                    assert!(model.clearance_at(&axes) > 10.0, "{axes:?}");
+                    assert!(model.clearance_at(&s6(axes)) > 10.0, "{axes:?}");
                 } else if model.robot().check_range3(&axes).is_err() {
                     range += 1;
                 } else {
                     blocked += 1;
-                    assert!(model.clearance_at(&axes) <= 10.0 + 1e-6, "{axes:?}");
+                    assert!(model.clearance_at(&s6(axes)) <= 10.0 + 1e-6, "{axes:?}");
                 }
             }
         }
@@ -271,14 +295,13 @@ fn is_free_and_inspect_column_agree_on_a_coarse_grid() {
     );
     // At 1 degree, as the planner fills the grid (exercises the skipping along the column).
     let fine: Vec<f64> = (-65..=70).map(f64::from).collect();
-    let mut col = vec![false; fine.len()];
     let mut rng = Rng(0xF1E1_D000_0000_0001);
     let (mut free, mut blocked) = (0, 0);
     for _ in 0..300 {
         let (a1, a2) = (rng.range(-170.0, 170.0), rng.range(-70.0, 70.0));
-        model.inspect_column(a1, a2, &fine, &mut col);
+        let col = column_free(&model, a1, a2, &fine, fine.len());
         for (k, &v) in fine.iter().enumerate() {
-            assert_eq!(col[k], model.is_free(&[a1, a2, v]), "{:?}", [a1, a2, v]);
+            assert_eq!(col[k], model.is_free(&s6([a1, a2, v])), "{:?}", [a1, a2, v]);
             if col[k] {
                 free += 1;
             } else {
@@ -287,9 +310,8 @@ fn is_free_and_inspect_column_agree_on_a_coarse_grid() {
         }
     }
     assert!(free > 5000 && blocked > 5000, "{free} {blocked}");
-    // A free slice longer than the column is padded with `false`.
-    let mut longer = vec![true; 4];
-    model.inspect_column(0.0, 0.0, &[0.0, -5.0], &mut longer);
+    // A code slice longer than the column is padded with blocked nodes.
+    let longer = column_free(&model, 0.0, 0.0, &[0.0, -5.0], 4);
     assert_eq!(longer, [true, true, false, false]);
 }
 
@@ -364,7 +386,7 @@ fn lipschitz_bound_holds_for_small_random_deltas() {
         let q = random_in_range(&mut rng, &model);
         let d = [0, 1, 2].map(|_| rng.range(-3.0, 3.0));
         let q2 = [q[0] + d[0], q[1] + d[1], q[2] + d[2]];
-        let bound = model.link_speeds(&q, &q2);
+        let bound = model.part_speeds(&s6(q), &s6(q2));
         let (p1, p2) = (model.cell_link_poses(&q), model.cell_link_poses(&q2));
         for (i, c) in robot.cylinders.iter().enumerate() {
             let j = c.joint_index;
@@ -412,12 +434,12 @@ fn accepted_moves_keep_the_clearance_at_dense_samples() {
         [-900.0, -1300.0, 900.0],
         [-500.0, -900.0, 1000.0],
     ));
-    let model = CollisionModel::new(&Robot::irb1400(), TRUNK_PLACEMENT, boxes, 10.0);
+    let model = CollisionModel::new(&Robot::irb1400(), TRUNK_PLACEMENT, boxes, 10.0, None);
     let mut rng = Rng(0x0DDB_A11C_0FFE_E123);
     let moves = random_free_moves(&mut rng, &model, 150, 90.0);
     let (mut accepted, mut roomy, mut roomy_accepted, mut unsafe_seen) = (0, 0, 0, 0);
     for (from, to) in &moves {
-        let safe = model.move_is_safe(from, to);
+        let safe = model.move_is_safe(&s6(*from), &s6(*to));
         let (dmin, n) = dense_min(&model, from, to);
         if safe {
             accepted += 1;
@@ -425,9 +447,9 @@ fn accepted_moves_keep_the_clearance_at_dense_samples() {
                 dmin >= 10.0 - 1e-6,
                 "accepted {from:?} -> {to:?}, dense min {dmin} ({n} samples)"
             );
-            assert!(model.why_move_unsafe(from, to).is_none());
+            assert!(model.why_move_unsafe(&s6(*from), &s6(*to)).is_none());
         } else {
-            let why = model.why_move_unsafe(from, to);
+            let why = model.why_move_unsafe(&s6(*from), &s6(*to));
             assert!(why.is_some(), "{from:?} -> {to:?}");
         }
         if dmin < 10.0 {
@@ -460,13 +482,13 @@ fn min_clearance_along_brackets_the_dense_minimum() {
         base_mm: [0.0, -1000.0, 0.0],
         yaw_deg: 90.0,
     };
-    let model = CollisionModel::new(&Robot::irb1400(), back, trunk(), 10.0);
+    let model = CollisionModel::new(&Robot::irb1400(), back, trunk(), 10.0, None);
     let mut rng = Rng(0xC1EA_4A4C_E000_0001);
     let tol = 0.5;
     let (mut near, mut links) = (0, std::collections::BTreeSet::new());
     for (from, to) in random_free_moves(&mut rng, &model, 40, 40.0) {
         let got = model
-            .min_clearance_along(&from, &to, tol)
+            .min_clearance_along(&s6(from), &s6(to), tol)
             .expect("the trunk has obstacles");
         let (dmin, _) = dense_min(&model, &from, &to);
         // Certified lower bound of the true minimum, itself <= any sample.
@@ -480,12 +502,15 @@ fn min_clearance_along_brackets_the_dense_minimum() {
             "{from:?} -> {to:?}: {got:?} << dense {dmin}"
         );
         // The pair named is a witness: it comes that close itself.
-        let pair = dense_min_of_pair(&model, &from, &to, &got.link, &got.obstacle);
+        let Part::Link(name) = &got.part else {
+            panic!("no tool here: {got:?}")
+        };
+        let pair = dense_min_of_pair(&model, &from, &to, name, &got.obstacle);
         assert!(
             pair <= got.mm + tol + 0.5 + 1e-3,
             "{from:?} -> {to:?}: {got:?}, but that pair keeps {pair}"
         );
-        links.insert(got.link.clone());
+        links.insert(got.part.clone());
         if dmin < 50.0 {
             near += 1;
         }
@@ -510,54 +535,62 @@ fn a_move_through_a_box_is_refused_and_located() {
         here,
         vec![bx("post", [600.0, -50.0, 1000.0], [700.0, 50.0, 1400.0])],
         10.0,
+        None,
     );
     let (from, to) = ([-60.0, 0.0, 0.0], [60.0, 0.0, 0.0]);
-    assert!(model.is_free(&from) && model.is_free(&to));
-    assert!(!model.move_is_safe(&from, &to));
-    let (t, why) = model.why_move_unsafe(&from, &to).expect("unsafe");
+    assert!(model.is_free(&s6(from)) && model.is_free(&s6(to)));
+    assert!(!model.move_is_safe(&s6(from), &s6(to)));
+    let (t, why) = model.why_move_unsafe(&s6(from), &s6(to)).expect("unsafe");
     assert!(
         t > 0.3 && t < 0.5,
         "the forearm reaches the post before axis 1 = 0: t = {t}"
     );
     assert!(
-        matches!(&why, Blocked::Contact { link, obstacle, distance_mm } if link == "link_3" && obstacle == "post" && *distance_mm < 10.0),
+        matches!(&why, Blocked::Contact { part, obstacle, distance_mm } if *part == link("link_3") && obstacle == "post" && *distance_mm < 10.0),
         "{why:?}"
     );
-    let touching = model.min_clearance_along(&from, &to, 0.1).expect("a post");
+    let touching = model
+        .min_clearance_along(&s6(from), &s6(to), 0.1)
+        .expect("a post");
     assert!(touching.mm <= 0.0 + 1e-9, "{touching:?}");
     assert_eq!(
-        (touching.link.as_str(), touching.obstacle.as_str()),
-        ("link_3", "post")
+        (&touching.part, touching.obstacle.as_str()),
+        (&link("link_3"), "post")
     );
     // Lifting the forearm over the post makes the move safe.
     let (up0, up1) = ([-60.0, 0.0, -40.0], [60.0, 0.0, -40.0]);
     assert!(
-        model.move_is_safe(&up0, &up1),
+        model.move_is_safe(&s6(up0), &s6(up1)),
         "{:?}",
-        model.why_move_unsafe(&up0, &up1)
+        model.why_move_unsafe(&s6(up0), &s6(up1))
     );
     // An end out of range is reported at its end.
     let bad = [0.0, 0.0, 75.0];
-    assert!(!model.move_is_safe(&up0, &bad));
-    assert!(matches!(model.why_move_unsafe(&up0, &bad), Some((t, Blocked::Range(_))) if t == 1.0));
+    assert!(!model.move_is_safe(&s6(up0), &s6(bad)));
+    assert!(
+        matches!(model.why_move_unsafe(&s6(up0), &s6(bad)), Some((t, Blocked::Range(_))) if t == 1.0)
+    );
 }
 
 #[test]
 fn no_obstacles_and_zero_clearance_are_fine() {
-    let model = CollisionModel::new(&Robot::irb1400(), TRUNK_PLACEMENT, vec![], 0.0);
-    assert_eq!(model.clearance_at(&[0.0; 3]), f64::INFINITY);
+    let model = CollisionModel::new(&Robot::irb1400(), TRUNK_PLACEMENT, vec![], 0.0, None);
+    assert_eq!(model.clearance_at(&s6([0.0; 3])), f64::INFINITY);
     assert_eq!(
-        model.min_clearance_along(&[0.0; 3], &[90.0, 30.0, 20.0], 0.0),
+        model.min_clearance_along(&s6([0.0; 3]), &s6([90.0, 30.0, 20.0]), 0.0),
         None
     );
-    assert!(model.is_free(&[0.0; 3]) && !model.is_free(&[0.0, 0.0, -70.0]));
-    assert!(model.move_is_safe(&[-170.0, -70.0, -65.0], &[170.0, 70.0, 70.0]));
-    let mut col = [true; 3];
-    model.inspect_column(0.0, 0.0, &[-66.0, 0.0, 71.0], &mut col);
-    assert_eq!(col, [false, true, false]);
-    model.inspect_column(171.0, 0.0, &[0.0, 10.0, 20.0], &mut col);
-    assert_eq!(col, [false; 3]);
-    model.inspect_column(0.0, 0.0, &[], &mut []);
+    assert!(model.is_free(&s6([0.0; 3])) && !model.is_free(&s6([0.0, 0.0, -70.0])));
+    assert!(model.move_is_safe(&s6([-170.0, -70.0, -65.0]), &s6([170.0, 70.0, 70.0])));
+    assert_eq!(
+        column_free(&model, 0.0, 0.0, &[-66.0, 0.0, 71.0], 3),
+        [false, true, false]
+    );
+    assert_eq!(
+        column_free(&model, 171.0, 0.0, &[0.0, 10.0, 20.0], 3),
+        [false; 3]
+    );
+    assert!(column_free(&model, 0.0, 0.0, &[], 0).is_empty());
 }
 
 #[test]
@@ -568,27 +601,27 @@ fn the_robot_stands_on_a_floor_but_the_arm_may_not_touch_it() {
         yaw_deg: 0.0,
     };
     let floor = bx("floor", [-3000.0, -3000.0, -50.0], [3000.0, 3000.0, 0.0]);
-    let m = CollisionModel::new(&robot, on_floor, vec![floor], 10.0);
+    let m = CollisionModel::new(&robot, on_floor, vec![floor], 10.0, None);
     // The base cylinder rests on the floor: not a contact.
-    assert!(m.is_free(&[0.0, 0.0, 0.0]));
-    assert!(m.move_is_safe(&[-90.0, 0.0, 0.0], &[90.0, 0.0, 0.0]));
+    assert!(m.is_free(&s6([0.0, 0.0, 0.0])));
+    assert!(m.move_is_safe(&s6([-90.0, 0.0, 0.0]), &s6([90.0, 0.0, 0.0])));
     // Nearest to the floor: the upper arm's bottom cap, at axis 2's height of 475 mm.
     let d = m
-        .min_clearance_along(&[-90.0, 0.0, 0.0], &[90.0, 0.0, 0.0], 0.1)
+        .min_clearance_along(&s6([-90.0, 0.0, 0.0]), &s6([90.0, 0.0, 0.0]), 0.1)
         .map_or(f64::NAN, |c| c.mm);
     assert!((474.8..=475.0).contains(&d), "{d}");
     // The forearm reaching down to the floor is a contact (wrist centre at z = 44 mm).
-    match m.why_blocked(&[0.0, 70.0, 70.0]) {
-        Some(Blocked::Contact { link, obstacle, .. }) => {
-            assert_eq!((link.as_str(), obstacle.as_str()), ("link_3", "floor"))
+    match m.why_blocked(&s6([0.0, 70.0, 70.0])) {
+        Some(Blocked::Contact { part, obstacle, .. }) => {
+            assert_eq!((part, obstacle.as_str()), (link("link_3"), "floor"))
         }
         other => panic!("expected a contact, got {other:?}"),
     }
     // A box reaching 1 mm above the mounting plane is no floor: the base touches it.
     let mat = bx("mat", [-3000.0, -3000.0, -50.0], [3000.0, 3000.0, 1.0]);
-    let m = CollisionModel::new(&robot, on_floor, vec![mat], 10.0);
+    let m = CollisionModel::new(&robot, on_floor, vec![mat], 10.0, None);
     assert!(
-        matches!(m.why_blocked(&[0.0, 0.0, 0.0]), Some(Blocked::Contact { ref link, .. }) if link == "link_1")
+        matches!(m.why_blocked(&s6([0.0, 0.0, 0.0])), Some(Blocked::Contact { ref part, .. }) if *part == link("link_1"))
     );
     // On a 400 mm pedestal the pedestal is what it stands on; the floor below still counts
     // for the arm.
@@ -597,8 +630,8 @@ fn the_robot_stands_on_a_floor_but_the_arm_may_not_touch_it() {
         yaw_deg: 0.0,
     };
     let pedestal = bx("pedestal", [-400.0, -400.0, 0.0], [400.0, 400.0, 400.0]);
-    let m = CollisionModel::new(&robot, raised, vec![pedestal], 10.0);
-    assert!(m.is_free(&[0.0, 0.0, 0.0]));
+    let m = CollisionModel::new(&robot, raised, vec![pedestal], 10.0, None);
+    assert!(m.is_free(&s6([0.0, 0.0, 0.0])));
 }
 
 #[test]
@@ -612,12 +645,13 @@ fn a_huge_box_is_measured_as_exactly_as_a_cell_sized_one() {
     };
     let q = [0.0, 63.0, 68.1];
     let floor = |s: f64| bx("floor", [-s, -s, -1000.0], [s, s, 0.0]);
-    let small = CollisionModel::new(&robot, at, vec![floor(5000.0)], 0.0).clearance_at(&q);
-    let huge = CollisionModel::new(&robot, at, vec![floor(1e6)], 0.0).clearance_at(&q);
+    let small =
+        CollisionModel::new(&robot, at, vec![floor(5000.0)], 0.0, None).clearance_at(&s6(q));
+    let huge = CollisionModel::new(&robot, at, vec![floor(1e6)], 0.0, None).clearance_at(&s6(q));
     assert!((small - huge).abs() < 1e-9, "{small} vs {huge}");
     let c = small + 1e-5; // just above the true distance: the pose is not free
-    let m = CollisionModel::new(&robot, at, vec![floor(1e6)], c);
-    assert!(!m.is_free(&q) && !m.move_is_safe(&q, &q));
+    let m = CollisionModel::new(&robot, at, vec![floor(1e6)], c, None);
+    assert!(!m.is_free(&s6(q)) && !m.move_is_safe(&s6(q), &s6(q)));
 }
 
 #[test]
@@ -627,11 +661,17 @@ fn a_box_far_away_blocks_nothing() {
         base_mm: [0.0, 0.0, 0.0],
         yaw_deg: 0.0,
     };
-    let m = CollisionModel::new(&robot, at, vec![bx("far", [1e160; 3], [2e160; 3])], 10.0);
-    assert!(m.is_free(&[0.0, 0.0, 0.0]));
-    assert!(m.move_is_safe(&[0.0, 0.0, 0.0], &[10.0, 0.0, 0.0]));
+    let m = CollisionModel::new(
+        &robot,
+        at,
+        vec![bx("far", [1e160; 3], [2e160; 3])],
+        10.0,
+        None,
+    );
+    assert!(m.is_free(&s6([0.0, 0.0, 0.0])));
+    assert!(m.move_is_safe(&s6([0.0, 0.0, 0.0]), &s6([10.0, 0.0, 0.0])));
     let d = m
-        .min_clearance_along(&[0.0, 0.0, 0.0], &[10.0, 0.0, 0.0], 0.1)
+        .min_clearance_along(&s6([0.0, 0.0, 0.0]), &s6([10.0, 0.0, 0.0]), 0.1)
         .map_or(f64::NAN, |c| c.mm);
     assert!(d.is_finite() && d > CLIP_MARGIN_MM, "{d}");
 }
@@ -650,12 +690,13 @@ fn a_base_cylinder_below_its_mounting_plane_is_not_exempt() {
         yaw_deg: 0.0,
     };
     let floor = bx("floor", [-3000.0, -3000.0, -50.0], [3000.0, 3000.0, 0.0]);
-    let m = CollisionModel::new(&robot, at, vec![floor.clone()], 10.0);
+    let m = CollisionModel::new(&robot, at, vec![floor.clone()], 10.0, None);
     assert!(
-        matches!(m.why_blocked(&[0.0, 0.0, 0.0]), Some(Blocked::Contact { ref link, .. }) if link == "link_1")
+        matches!(m.why_blocked(&s6([0.0, 0.0, 0.0])), Some(Blocked::Contact { ref part, .. }) if *part == link("link_1"))
     );
     // The bundled robot stands on the same floor.
     assert!(
-        CollisionModel::new(&Robot::irb1400(), at, vec![floor], 10.0).is_free(&[0.0, 0.0, 0.0])
+        CollisionModel::new(&Robot::irb1400(), at, vec![floor], 10.0, None)
+            .is_free(&s6([0.0, 0.0, 0.0]))
     );
 }

@@ -5,6 +5,12 @@
 //! included, or a link cylinder within the clearance of a box). Which nodes are free is asked of
 //! an [`Inspector`]; this module knows no geometry. The grid is filled once per cell, in parallel
 //! over axis-1 slices; the result does not depend on the number of threads.
+//!
+//! Each node holds one byte, its *code*: bit 7 ([`FREE`]) is the paper's free/blocked; the other
+//! bits belong to the inspector (the collision model keeps there how deep in free space the node
+//! lies, which its step check reads, `collision::grid`). A blocked node's code is 0. Each column
+//! (fixed axes 1 and 2) also holds a few bytes of the inspector's own ([`Inspector::column_bytes`]:
+//! what does not depend on axis 3).
 
 /// A grid node: indices along axes 1..3 (0-based within the grid).
 pub type Node = [i32; 3];
@@ -128,26 +134,53 @@ impl Grid {
     }
 }
 
-/// Answers "is this node free?" for a whole column of axis-3 values at once, so an
-/// implementation can hoist the work that does not depend on axis 3.
+/// The code bit of a free node; the other bits of a code are the inspector's.
+pub const FREE: u8 = 0x80;
+
+/// Answers "is this node free?" (and whatever else it keeps in a node's code) for a whole column
+/// of axis-3 values at once, so an implementation can hoist the work that does not depend on
+/// axis 3. A blocked node's code must be 0; a free node's has [`FREE`] set.
 pub trait Inspector: Sync {
-    fn inspect_column(&self, a1_deg: f64, a2_deg: f64, a3_deg: &[f64], free: &mut [bool]);
+    /// How many bytes of its own the inspector keeps per column (0 by default).
+    fn column_bytes(&self) -> usize {
+        0
+    }
+    /// The codes of the column `[a1, a2, a3[k]]` into `code[k]`, and the column's own bytes
+    /// into `column` ([`column_bytes`](Self::column_bytes) of them).
+    fn inspect_column(
+        &self,
+        a1_deg: f64,
+        a2_deg: f64,
+        a3_deg: &[f64],
+        code: &mut [u8],
+        column: &mut [u8],
+    );
 }
 
 /// The inspected grid.
 #[derive(Clone, Debug)]
 pub struct CSpace {
     pub grid: Grid,
-    free: Vec<bool>,
+    code: Vec<u8>,
+    /// The inspector's bytes per column, `column_bytes` each, columns in index order.
+    column: Vec<u8>,
+    column_bytes: usize,
 }
 
 impl CSpace {
     /// Inspects every node, axis-1 slices spread over the available cores.
     pub fn build(grid: Grid, inspector: &dyn Inspector) -> CSpace {
-        let mut free = vec![false; grid.len()];
+        let mut code = vec![0u8; grid.len()];
+        let width = inspector.column_bytes();
+        let mut column = vec![0u8; grid.dims[0] * grid.dims[1] * width];
         let slice = grid.dims[1] * grid.dims[2];
         if slice == 0 {
-            return CSpace { grid, free };
+            return CSpace {
+                grid,
+                code,
+                column,
+                column_bytes: width,
+            };
         }
         let threads = std::thread::available_parallelism()
             .map(|n| n.get())
@@ -155,40 +188,90 @@ impl CSpace {
             .min(grid.dims[0].max(1));
         let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
         let slices_per_thread = grid.dims[0].div_ceil(threads);
+        // Per-column bytes in chunks that match the code chunks (never empty, for `zip`).
+        let col_slice = (grid.dims[1] * width).max(1);
+        let mut spare = vec![0u8; col_slice * grid.dims[0]];
+        let columns: &mut [u8] = if width > 0 { &mut column } else { &mut spare };
         std::thread::scope(|s| {
-            for (t, chunk) in free.chunks_mut(slices_per_thread * slice).enumerate() {
+            for (t, (chunk, cols)) in code
+                .chunks_mut(slices_per_thread * slice)
+                .zip(columns.chunks_mut(slices_per_thread * col_slice))
+                .enumerate()
+            {
                 let a3 = &a3;
                 s.spawn(move || {
-                    for (j, slab) in chunk.chunks_mut(slice).enumerate() {
+                    for (j, (slab, colslab)) in chunk
+                        .chunks_mut(slice)
+                        .zip(cols.chunks_mut(col_slice))
+                        .enumerate()
+                    {
                         let a1 = grid.value(0, (t * slices_per_thread + j) as i64);
-                        for (i2, column) in slab.chunks_mut(grid.dims[2]).enumerate() {
-                            inspector.inspect_column(a1, grid.value(1, i2 as i64), a3, column);
+                        for (i2, codes) in slab.chunks_mut(grid.dims[2]).enumerate() {
+                            let own = &mut colslab[(i2 * width).min(col_slice)..][..width];
+                            inspector.inspect_column(a1, grid.value(1, i2 as i64), a3, codes, own);
                         }
                     }
                 });
             }
         });
-        CSpace { grid, free }
+        CSpace {
+            grid,
+            code,
+            column,
+            column_bytes: width,
+        }
     }
 
-    /// A grid from explicit node states (tests and hand-made examples).
+    /// A grid from explicit node states (tests and hand-made examples): free nodes get the code
+    /// [`FREE`] alone (nothing else known about them).
     pub fn from_fn(grid: Grid, is_free: impl Fn(Node) -> bool) -> CSpace {
-        let free = (0..grid.len()).map(|i| is_free(grid.node(i))).collect();
-        CSpace { grid, free }
+        let code = (0..grid.len())
+            .map(|i| if is_free(grid.node(i)) { FREE } else { 0 })
+            .collect();
+        CSpace {
+            grid,
+            code,
+            column: Vec::new(),
+            column_bytes: 0,
+        }
+    }
+
+    /// The inspector's bytes of the column holding node `n` (empty when it keeps none).
+    #[inline]
+    pub fn column(&self, n: Node) -> &[u8] {
+        let w = self.column_bytes;
+        let i = (n[0] as usize * self.grid.dims[1] + n[1] as usize) * w;
+        &self.column[i..i + w]
     }
 
     #[inline]
     pub fn is_free(&self, n: Node) -> bool {
-        self.grid.contains(n) && self.free[self.grid.index(n)]
+        self.grid.contains(n) && self.code[self.grid.index(n)] & FREE != 0
     }
 
     #[inline]
     pub fn is_free_index(&self, i: usize) -> bool {
-        self.free[i]
+        self.code[i] & FREE != 0
+    }
+
+    /// The code of node `n` (0 outside the grid).
+    #[inline]
+    pub fn code(&self, n: Node) -> u8 {
+        if self.grid.contains(n) {
+            self.code[self.grid.index(n)]
+        } else {
+            0
+        }
+    }
+
+    /// The code of the node with linear index `i`.
+    #[inline]
+    pub fn code_index(&self, i: usize) -> u8 {
+        self.code[i]
     }
 
     pub fn free_count(&self) -> usize {
-        self.free.iter().filter(|&&f| f).count()
+        self.code.iter().filter(|&&c| c & FREE != 0).count()
     }
 }
 
@@ -229,9 +312,13 @@ mod tests {
 
     struct Ball;
     impl Inspector for Ball {
-        fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], free: &mut [bool]) {
-            for (f, &c) in free.iter_mut().zip(a3) {
-                *f = a1 * a1 + a2 * a2 + c * c > 25.0;
+        fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], code: &mut [u8], _: &mut [u8]) {
+            for (f, &c) in code.iter_mut().zip(a3) {
+                *f = if a1 * a1 + a2 * a2 + c * c > 25.0 {
+                    FREE
+                } else {
+                    0
+                };
             }
         }
     }
@@ -244,7 +331,7 @@ mod tests {
             let v = g.axes_deg(n);
             v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > 25.0
         });
-        assert_eq!(built.free, direct.free);
+        assert_eq!(built.code, direct.code);
         assert!(built.free_count() < g.len());
     }
 }

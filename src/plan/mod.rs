@@ -1,24 +1,28 @@
 //! The plan stage: the route through the cell's points, leg by leg (paper section 4, applied to
 //! A -> B -> ... -> F), as the [`Plan`] the output stage prints.
 //!
-//! For each leg: join both points to the grid (a point on a node is that node; a point off the
-//! grid joins the nearest free node whose straight move to it is proven safe); search the grid
-//! with the chosen method ([`search`]), every step accepted only if its straight move is proven
-//! safe; for the extensile method shorten recursively ([`shorten`]); merge collinear moves
-//! ([`merge`]); round to the written precision (0.001 deg) and prove every move again. The route
-//! starts at the first point, visits every point in the cell's order, and each cell point is a
-//! waypoint exactly as given ([`route`]). Then the smallest clearance along the whole route is
-//! certified ([`certify`]).
+//! For each leg ([`leg`]): join both points to the grid (a point on a node is that node; a point
+//! off the grid joins the nearest usable node whose straight move to it is proven safe); search
+//! the leg's graph with the chosen method ([`search`]): its nodes are the free grid nodes where
+//! the tool (if any) is clear at the leg's wrist, its steps the neighbour steps whose straight
+//! six-axis move is proven safe, and the wave numbers nodes over those steps only, so the search
+//! never runs out of steps (complete on its grid); for the extensile method shorten recursively
+//! ([`shorten`]); merge collinear moves ([`merge`]); round to the written precision (0.001 deg)
+//! and prove every move again. The route starts at the first point, visits every point in the
+//! cell's order, and each cell point is a waypoint exactly as given ([`route`]). Then the
+//! smallest clearance along the whole route is certified ([`certify`]).
 //!
-//! Axes 4..6: the planner works on axes 1..3 (the paper's lumped arm); a waypoint carries all six.
-//! A cell point keeps its own wrist ([`PlacedPoint::joints_deg`]); the vias of a leg hold the
-//! wrist of the leg's first point, so the wrist turns (if at all) on the leg's last move. The
-//! wrist does not enter the collision model: the forearm cylinder covers it (paper section 6).
+//! Axes 4..6: the grid is over axes 1..3 (the paper's lumped arm); a waypoint carries all six. A
+//! cell point keeps its own wrist ([`PlacedPoint::joints_deg`]); a via gets the leg's wrist
+//! schedule: the wrist turns in proportion to the leg's progress along axes 1..3
+//! ([`leg::WristSchedule`]). Every move is proven on all six axes, links and tool shapes.
 //!
 //! Files: [`cspace`] (the grid, paper section 3; knows no geometry), [`wave`] (wave expansion),
-//! [`search`] (the three methods, and [`Method`]), [`shorten`], [`merge`].
+//! [`search`] (the three methods, and [`Method`]), [`leg`] (one leg, the wrist schedule, the
+//! leg's graph), [`shorten`], [`merge`].
 
 pub mod cspace;
+pub mod leg;
 pub mod merge;
 pub mod search;
 pub mod shorten;
@@ -26,12 +30,15 @@ pub mod wave;
 
 pub use search::Method;
 
-use crate::collision::{Blocked, Clearance, CollisionModel};
+use crate::collision::{Blocked, Clearance, CollisionModel, GridCheck};
 use crate::place::PlacedPoint;
-use crate::precision::quantize_joints;
 use cspace::{CSpace, Node};
+use leg::LegFailure;
 use search::SearchFailure;
 use std::ops::Range;
+
+/// The collision model's node codes mark a free node with the bit the grid reads.
+const _: () = assert!(crate::collision::CODE_FREE == cspace::FREE);
 
 /// Tolerance of the certified smallest clearance along the route, mm.
 pub const MIN_CLEARANCE_TOL_MM: f64 = 0.05;
@@ -111,6 +118,13 @@ impl Plan {
             .map(|w| (w[0].arm_deg(), w[1].arm_deg()))
     }
 
+    /// Every straight move on all six axes, in order: what the module's `MoveAbsJ`s do.
+    pub fn moves6(&self) -> impl Iterator<Item = ([f64; 6], [f64; 6])> + '_ {
+        self.waypoints
+            .windows(2)
+            .map(|w| (w[0].joints_deg, w[1].joints_deg))
+    }
+
     /// Sum of the moves' lengths in joint space (Euclidean over axes 1..3, deg).
     pub fn path_length_deg(&self) -> f64 {
         self.segments()
@@ -152,15 +166,18 @@ pub enum PlanError {
         from: usize,
         from_name: String,
         to_name: String,
-        from_axes: [f64; 3],
-        to_axes: [f64; 3],
+        from_axes: Box<[f64; 6]>,
+        to_axes: Box<[f64; 6]>,
     },
 }
 
+/// Why the search failed: for depth-first, the paper's Fig. 8 (the grid's safe steps join the two
+/// points, but not through axis steps); for the others a defect, since the walk back only takes
+/// steps the wave took (`search`).
 fn method_hint(m: Method) -> &'static str {
     match m {
         Method::DepthFirst => " (depth-first walks axis steps only and the free space there is joined only diagonally, the paper's Fig. 8; try --planner extensile)",
-        _ => " (every path the wave offers was refused by the whole-move safety check)",
+        _ => " (internal error: the walk back found no step the wave had taken)",
     }
 }
 
@@ -175,25 +192,21 @@ impl PlanError {
     }
 }
 
-/// The grid asks the collision model which nodes are free.
-impl cspace::Inspector for CollisionModel {
-    fn inspect_column(&self, a1_deg: f64, a2_deg: f64, a3_deg: &[f64], free: &mut [bool]) {
-        CollisionModel::inspect_column(self, a1_deg, a2_deg, a3_deg, free)
+/// The grid asks the collision model, on its spacing, which nodes are free and how deep.
+impl cspace::Inspector for GridCheck<'_> {
+    fn column_bytes(&self) -> usize {
+        GridCheck::column_bytes(self)
     }
-}
-
-fn join(cs: &CSpace, model: &CollisionModel, p: &[f64; 3]) -> Option<Node> {
-    if let Some(n) = cs.grid.node_at(p) {
-        return cs.is_free(n).then_some(n);
+    fn inspect_column(
+        &self,
+        a1_deg: f64,
+        a2_deg: f64,
+        a3_deg: &[f64],
+        code: &mut [u8],
+        column: &mut [u8],
+    ) {
+        GridCheck::inspect_column(self, a1_deg, a2_deg, a3_deg, code, column)
     }
-    for rings in 1..=3 {
-        for n in cs.grid.nodes_near(p, rings) {
-            if cs.is_free(n) && model.move_is_safe(p, &cs.grid.axes_deg(n)) {
-                return Some(n);
-            }
-        }
-    }
-    None
 }
 
 /// Plans the route through `points` (at least two), in order, on the inspected grid `cs` of the
@@ -211,7 +224,7 @@ pub fn plan(
 /// (`None` without obstacles), into the plan.
 pub fn certify(mut plan: Plan, model: &CollisionModel) -> Plan {
     plan.min_clearance = plan
-        .segments()
+        .moves6()
         .filter_map(|(a, b)| model.min_clearance_along(&a, &b, MIN_CLEARANCE_TOL_MM))
         .reduce(|least, c| if c.mm < least.mm { c } else { least });
     plan
@@ -225,83 +238,71 @@ pub fn route(
     points: &[PlacedPoint],
     method: Method,
 ) -> Result<Plan, PlanError> {
-    let mut nodes = Vec::with_capacity(points.len());
     for (i, p) in points.iter().enumerate() {
-        if let Some(reason) = model.why_blocked(&p.arm_deg()) {
+        if let Some(reason) = model.why_blocked(&p.joints_deg) {
             return Err(PlanError::PointBlocked {
                 point: i,
                 name: p.name.clone(),
                 reason,
             });
         }
-        let n = join(cs, model, &p.arm_deg()).ok_or_else(|| PlanError::NoJoin {
-            point: i,
-            name: p.name.clone(),
-        })?;
-        nodes.push(n);
     }
     let grid = &cs.grid;
-    let mut accept_nodes =
-        |a: Node, b: Node| model.move_is_safe(&grid.axes_deg(a), &grid.axes_deg(b));
+    let check = model.grid_check(grid.step_deg);
     let mut made = Route::default();
     for i in 0..points.len() - 1 {
-        let (s, g) = (nodes[i], nodes[i + 1]);
-        let (p, q) = (points[i].arm_deg(), points[i + 1].arm_deg());
-        if p == q {
-            // The same axes 1..3 twice (the wrist may differ): one move that stays put.
-            made.add_leg(points, i, vec![s], vec![p, q]);
+        let (from, to) = (&points[i], &points[i + 1]);
+        if from.arm_deg() == to.arm_deg() {
+            // The same axes 1..3 twice (the wrist may differ): one move that stays put, proven
+            // like any other (the tool turns).
+            let (a, b) = (from.joints_deg, to.joints_deg);
+            if !model.move_is_safe(&a, &b) {
+                return Err(PlanError::Unsafe {
+                    from: i,
+                    from_name: from.name.clone(),
+                    to_name: to.name.clone(),
+                    from_axes: Box::new(a),
+                    to_axes: Box::new(b),
+                });
+            }
+            made.add_leg(i, Vec::new(), vec![a, b]);
             continue;
         }
-        let grid_path = method
-            .search(cs, s, g, &mut accept_nodes)
-            .map_err(|failure| {
-                let (from_name, to_name) = (points[i].name.clone(), points[i + 1].name.clone());
-                match failure {
-                    SearchFailure::Exhausted => PlanError::SearchFailed {
+        let names = || (from.name.clone(), to.name.clone());
+        let planned = leg::plan_leg(cs, &check, from, to, method).map_err(|failure| {
+            let (from_name, to_name) = names();
+            match failure {
+                LegFailure::NoJoin { last } => PlanError::NoJoin {
+                    point: i + usize::from(last),
+                    name: if last { to_name } else { from_name },
+                },
+                LegFailure::Search(SearchFailure::NotConnected) => PlanError::NoPath {
+                    from: i,
+                    to: i + 1,
+                    from_name,
+                    to_name,
+                    grid_deg: grid.step_deg,
+                    clearance_mm: model.clearance_mm(),
+                },
+                LegFailure::Search(SearchFailure::OnlyDiagonal | SearchFailure::WalkFailed) => {
+                    PlanError::SearchFailed {
                         from: i,
                         to: i + 1,
                         from_name,
                         to_name,
                         method,
-                    },
-                    SearchFailure::NotConnected => PlanError::NoPath {
-                        from: i,
-                        to: i + 1,
-                        from_name,
-                        to_name,
-                        grid_deg: grid.step_deg,
-                        clearance_mm: model.clearance_mm(),
-                    },
+                    }
                 }
-            })?;
-        let mut arm = vec![p];
-        arm.extend(grid_path.iter().map(|&n| grid.axes_deg(n)));
-        arm.push(q);
-        arm.dedup();
-        if method == Method::Extensile {
-            shorten::shorten(cs, &mut arm, &mut |a, b| model.move_is_safe(a, b));
-        }
-        let mut arm: Vec<[f64; 3]> = merge::collinear(&arm)
-            .into_iter()
-            .map(quantize_joints)
-            .collect();
-        arm.dedup();
-        if arm.len() == 1 {
-            // The two points coincide: one (empty) move keeps both in the program.
-            arm.push(q);
-        }
-        for w in arm.windows(2) {
-            if !model.move_is_safe(&w[0], &w[1]) {
-                return Err(PlanError::Unsafe {
+                LegFailure::Unsafe { from: a, to: b } => PlanError::Unsafe {
                     from: i,
-                    from_name: points[i].name.clone(),
-                    to_name: points[i + 1].name.clone(),
-                    from_axes: w[0],
-                    to_axes: w[1],
-                });
+                    from_name,
+                    to_name,
+                    from_axes: Box::new(a),
+                    to_axes: Box::new(b),
+                },
             }
-        }
-        made.add_leg(points, i, grid_path, arm);
+        })?;
+        made.add_leg(i, planned.grid_path, planned.waypoints);
     }
     Ok(Plan {
         method,
@@ -321,40 +322,26 @@ struct Route {
 }
 
 impl Route {
-    /// Adds leg `i` (point `i` to point `i + 1`) with its moves on axes 1..3, `arm` (both ends
-    /// included): the wrist rule of the module docs.
-    fn add_leg(
-        &mut self,
-        points: &[PlacedPoint],
-        i: usize,
-        grid_path: Vec<Node>,
-        arm: Vec<[f64; 3]>,
-    ) {
-        let wrist = |p: usize| {
-            let j = points[p].joints_deg;
-            [j[3], j[4], j[5]]
-        };
-        let six = |a: [f64; 3], w: [f64; 3]| [a[0], a[1], a[2], w[0], w[1], w[2]];
+    /// Adds leg `i` (point `i` to point `i + 1`) with its six-axis waypoints (both ends
+    /// included, the ends the points as given).
+    fn add_leg(&mut self, i: usize, grid_path: Vec<Node>, six: Vec<[f64; 6]>) {
         let start = self.waypoints.len().saturating_sub(1);
         if self.waypoints.is_empty() {
-            if let Some(&first) = arm.first() {
+            if let Some(&first) = six.first() {
                 self.waypoints.push(Waypoint {
                     kind: WaypointKind::CellPoint(i),
-                    joints_deg: six(first, wrist(i)),
+                    joints_deg: first,
                 });
             }
         }
-        let n = arm.len();
-        for (k, &a) in arm.iter().enumerate().skip(1) {
-            let (kind, w) = if k == n - 1 {
-                (WaypointKind::CellPoint(i + 1), wrist(i + 1))
+        let n = six.len();
+        for (k, &joints_deg) in six.iter().enumerate().skip(1) {
+            let kind = if k == n - 1 {
+                WaypointKind::CellPoint(i + 1)
             } else {
-                (WaypointKind::Via { leg: i, index: k }, wrist(i))
+                WaypointKind::Via { leg: i, index: k }
             };
-            self.waypoints.push(Waypoint {
-                kind,
-                joints_deg: six(a, w),
-            });
+            self.waypoints.push(Waypoint { kind, joints_deg });
         }
         self.legs.push(Leg {
             from: i,
@@ -381,7 +368,7 @@ mod tests {
             base_mm: [0.0, 0.0, 0.0],
             yaw_deg: 0.0,
         };
-        CollisionModel::new(&Robot::irb1400(), placement, Vec::new(), 0.0)
+        CollisionModel::new(&Robot::irb1400(), placement, Vec::new(), 0.0, None)
     }
 
     fn point(name: &str, a: [f64; 3], wrist: [f64; 3]) -> PlacedPoint {
@@ -477,7 +464,7 @@ mod tests {
     }
 
     #[test]
-    fn waypoints_carry_six_axes_and_the_wrist_turns_on_a_legs_last_move() {
+    fn waypoints_carry_six_axes_and_the_wrist_turns_with_the_legs_progress() {
         // Three points on a free grid; the wrist differs at each. Each leg is one diagonal run
         // merged into one move, so force vias with a band like Fig. 6 on leg 1.
         let g = Grid::over([[0.0, 10.0], [0.0, 5.0], [0.0, 0.0]], 1.0);
@@ -496,9 +483,17 @@ mod tests {
         assert_eq!(p.waypoints[3].kind, WaypointKind::Via { leg: 0, index: 3 });
         assert_eq!(p.waypoints[10].kind, WaypointKind::CellPoint(1));
         assert_eq!(p.waypoints[11].kind, WaypointKind::CellPoint(2));
-        // Vias hold the wrist of their leg's first point; cell points their own.
-        assert_eq!(p.waypoints[9].joints_deg[3..], [0.0, 30.0, 0.0]);
+        // Vias get the wrist schedule: the saw-tooth runs (0,0) (1,0) (2,1) (3,1) ... (9,4)
+        // (10,5); a via at (x, y) projects onto the leg's line (10, 5) at s = (10 x + 5 y) / 125
+        // and axis 6 turns to 100 s: (3,1) at s = 0.28, (9,4) at s = 0.88. Cell points keep
+        // their own wrists.
+        assert_eq!(p.waypoints[3].joints_deg, [3.0, 1.0, 0.0, 0.0, 30.0, 28.0]);
+        assert_eq!(p.waypoints[9].joints_deg, [9.0, 4.0, 0.0, 0.0, 30.0, 88.0]);
         assert_eq!(p.waypoints[10].joints_deg[3..], [0.0, 30.0, 100.0]);
+        // Every move interpolates all six axes: the moves the plan proved.
+        for (a, b) in p.moves6() {
+            assert!(model.move_is_safe(&a, &b));
+        }
         assert_eq!(
             p.waypoints[11].joints_deg,
             [10.0, 5.0, 0.0, 5.0, 30.0, 100.0]

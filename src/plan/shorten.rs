@@ -7,8 +7,10 @@
 //! axis take the line's position on the two minor axes and inspect every node at the floor and
 //! the ceiling of each (1 node when both are whole: condition 1; 2 when one is: condition 2; 4
 //! otherwise: condition 3). Node inspection alone does not prove the straight move safe between
-//! nodes, so a shortcut is also taken only when `accept` (the whole-move safety check) holds.
-//! Waypoints off the grid (cell points) have no nodes around them: there `accept` decides alone.
+//! nodes, so a shortcut is also taken only when `accept` (the whole-move safety check, on all
+//! six axes with the leg's wrist schedule) holds. A node counts as free when the leg may use it
+//! (`usable`: free on the grid, and the tool clear at the leg's wrist there). Waypoints off the
+//! grid (cell points) have no nodes around them: there `accept` decides alone.
 
 use crate::plan::cspace::{CSpace, Grid, Node};
 
@@ -48,11 +50,13 @@ fn on_grid(grid: &Grid, p: &[f64; 3]) -> Option<Node> {
     grid.node_at(p)
 }
 
-/// Shortens a path of waypoints (controller values, deg) in place, recursively, keeping the
-/// first and last waypoint. `accept(from, to)` is the whole-move safety check.
+/// Shortens a path of waypoints (controller values of axes 1..3, deg) in place, recursively,
+/// keeping the first and last waypoint. `usable(node)` says whether an inspected node is free for
+/// the leg; `accept(from, to)` is the whole-move safety check.
 pub fn shorten(
     cs: &CSpace,
     path: &mut Vec<[f64; 3]>,
+    usable: &dyn Fn(Node) -> bool,
     accept: &mut dyn FnMut(&[f64; 3], &[f64; 3]) -> bool,
 ) {
     loop {
@@ -61,7 +65,7 @@ pub fn shorten(
         while k + 2 < path.len() {
             let (a, b) = (path[k], path[k + 2]);
             let inspected = match (on_grid(&cs.grid, &a), on_grid(&cs.grid, &b)) {
-                (Some(na), Some(nb)) => inspected_nodes(na, nb).into_iter().all(|q| cs.is_free(q)),
+                (Some(na), Some(nb)) => inspected_nodes(na, nb).into_iter().all(usable),
                 _ => true,
             };
             if inspected && accept(&a, &b) {
@@ -154,7 +158,7 @@ mod tests {
             [5, 3, 0],
             [6, 3, 0],
         ]);
-        shorten(&cs, &mut p, &mut |_, _| true);
+        shorten(&cs, &mut p, &|n| cs.is_free(n), &mut |_, _| true);
         assert_eq!(p, nodes(&[[0, 0, 0], [6, 3, 0]]));
     }
 
@@ -163,7 +167,12 @@ mod tests {
         // (1,1) blocked: the path (0,0) (1,0) (2,0) (2,1) (2,2) may cut to (2,0)->... but not across (1,1).
         let cs = grid(4, 4, 1, |n| n != [1, 1, 0]);
         let mut p = nodes(&[[0, 0, 0], [1, 0, 0], [2, 0, 0], [2, 1, 0], [2, 2, 0]]);
-        shorten(&cs, &mut p, &mut |_, _| true);
+        shorten(&cs, &mut p, &|n| cs.is_free(n), &mut |_, _| true);
+        assert_eq!(p, nodes(&[[0, 0, 0], [2, 0, 0], [2, 2, 0]]));
+        // A node the leg may not use (the tool at its wrist) counts as blocked too.
+        let cs = grid(4, 4, 1, |_| true);
+        let mut p = nodes(&[[0, 0, 0], [1, 0, 0], [2, 0, 0], [2, 1, 0], [2, 2, 0]]);
+        shorten(&cs, &mut p, &|n| n != [1, 1, 0], &mut |_, _| true);
         assert_eq!(p, nodes(&[[0, 0, 0], [2, 0, 0], [2, 2, 0]]));
     }
 
@@ -171,7 +180,9 @@ mod tests {
     fn a_refused_move_is_never_taken() {
         let cs = grid(10, 10, 1, |_| true);
         let mut p = nodes(&[[0, 0, 0], [1, 0, 0], [2, 0, 0], [2, 1, 0]]);
-        shorten(&cs, &mut p, &mut |a, b| !(a[0] == 0.0 && b[1] > 0.0));
+        shorten(&cs, &mut p, &|n| cs.is_free(n), &mut |a, b| {
+            !(a[0] == 0.0 && b[1] > 0.0)
+        });
         assert_eq!(p, nodes(&[[0, 0, 0], [2, 0, 0], [2, 1, 0]]));
     }
 }

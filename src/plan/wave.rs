@@ -6,9 +6,61 @@
 //! (axis neighbours only) serves the depth-first search, which walks axis steps (see
 //! `search`). It stops once the end node is numbered: every node numbered below n is then final,
 //! and those are the only ones a search back from the end node visits.
+//!
+//! Beyond the paper: the wave runs on a [`Graph`], whose nodes are the grid's free nodes that the
+//! graph accepts (a leg's tool at its wrist) and whose edges are the neighbour steps it accepts
+//! (the whole-move check). So the numbers count accepted steps, and every numbered node but the
+//! start has a neighbour one number lower joined to it by an accepted step: a walk back over
+//! accepted steps from the end node always reaches the start node (`search`). More: an accepted
+//! step never joins two nodes whose numbers differ by more than one (when the lower one was
+//! expanded, the step numbered the other), so every accepted step down from a node numbered `l`
+//! leads to `l - 1`.
 
 use crate::plan::cspace::{CSpace, Node};
 use std::collections::VecDeque;
+
+/// What a wave and a search walk on: which free nodes of the grid they may use and which
+/// neighbour steps between them exist.
+pub trait Graph: Sync {
+    /// Whether a node free on the grid may be used. A wave asks at most once per node.
+    fn node_ok(&self, n: Node) -> bool;
+    /// Whether the step between two neighbouring usable nodes exists. Must be symmetric.
+    fn step_ok(&self, a: Node, b: Node) -> bool;
+    /// The steps the wave numbers over: [`step_ok`](Self::step_ok) (the default), or, for an
+    /// optimistic wave, any step that might exist (every step `step_ok` accepts must be
+    /// accepted here too). A walk back always asks `step_ok`.
+    fn wave_step_ok(&self, a: Node, b: Node) -> bool {
+        self.step_ok(a, b)
+    }
+}
+
+/// The grid's own graph: every free node, every step between free neighbours (the paper's).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Open;
+
+impl Graph for Open {
+    fn node_ok(&self, _: Node) -> bool {
+        true
+    }
+    fn step_ok(&self, _: Node, _: Node) -> bool {
+        true
+    }
+}
+
+/// Every free node, and the steps a (symmetric) predicate accepts: hand-made graphs in tests.
+impl<F: Fn(Node, Node) -> bool + Sync> Graph for F {
+    fn node_ok(&self, _: Node) -> bool {
+        true
+    }
+    fn step_ok(&self, a: Node, b: Node) -> bool {
+        self(a, b)
+    }
+}
+
+/// A label: the node was looked at and may not be used.
+const BLOCKED: u32 = u32::MAX;
+/// A label: the node may be used but no accepted step has reached it yet.
+const CHECKED: u32 = u32::MAX - 1;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Connectivity {
@@ -70,8 +122,13 @@ impl Wave {
     #[inline]
     pub fn label(&self, n: Node) -> u32 {
         if (0..3).all(|k| n[k] >= 0 && (n[k] as usize) < self.dims[k]) {
-            self.labels
-                [(n[0] as usize * self.dims[1] + n[1] as usize) * self.dims[2] + n[2] as usize]
+            let l = self.labels
+                [(n[0] as usize * self.dims[1] + n[1] as usize) * self.dims[2] + n[2] as usize];
+            if l >= CHECKED {
+                0
+            } else {
+                l
+            }
         } else {
             0
         }
@@ -84,15 +141,24 @@ impl Wave {
 
     /// How many nodes were numbered.
     pub fn numbered(&self) -> usize {
-        self.labels.iter().filter(|&&l| l > 0).count()
+        self.labels
+            .iter()
+            .filter(|&&l| l > 0 && l < CHECKED)
+            .count()
     }
 }
 
-/// Numbers the free nodes from `start` (1) outward until `end` is numbered; `None` when `end`
-/// cannot be reached through free nodes. Both nodes must be free.
-pub fn expand(cs: &CSpace, start: Node, end: Node, connectivity: Connectivity) -> Option<Wave> {
+/// Numbers the nodes of `graph` from `start` (1) outward over its steps until `end` is numbered;
+/// `None` when `end` cannot be reached. Both nodes must be free and usable.
+pub fn expand<G: Graph + ?Sized>(
+    cs: &CSpace,
+    graph: &G,
+    start: Node,
+    end: Node,
+    connectivity: Connectivity,
+) -> Option<Wave> {
     let g = &cs.grid;
-    if !cs.is_free(start) || !cs.is_free(end) {
+    if !cs.is_free(start) || !cs.is_free(end) || !graph.node_ok(start) || !graph.node_ok(end) {
         return None;
     }
     let mut labels = vec![0u32; g.len()];
@@ -132,14 +198,30 @@ pub fn expand(cs: &CSpace, start: Node, end: Node, connectivity: Connectivity) -
                 }
                 g.index(m)
             };
-            if labels[i] == 0 && cs.is_free_index(i) {
-                labels[i] = next;
-                if i == end_index {
-                    found = true;
-                    break;
-                }
-                queue.push_back([n[0] + o[0], n[1] + o[1], n[2] + o[2]]);
+            let l = labels[i];
+            if l != 0 && l != CHECKED {
+                continue; // numbered, or not usable
             }
+            let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
+            if l == 0 {
+                if !cs.is_free_index(i) {
+                    continue;
+                }
+                if !graph.node_ok(m) {
+                    labels[i] = BLOCKED;
+                    continue;
+                }
+            }
+            if !graph.wave_step_ok(n, m) {
+                labels[i] = CHECKED;
+                continue;
+            }
+            labels[i] = next;
+            if i == end_index {
+                found = true;
+                break;
+            }
+            queue.push_back(m);
         }
     }
     found.then_some(Wave {
@@ -164,7 +246,8 @@ mod tests {
     #[test]
     fn numbers_are_chebyshev_steps_in_free_space() {
         let cs = open(10.0);
-        let w = expand(&cs, [0, 0, 0], [7, 3, 5], Connectivity::TwentySix).expect("reachable");
+        let w =
+            expand(&cs, &Open, [0, 0, 0], [7, 3, 5], Connectivity::TwentySix).expect("reachable");
         assert_eq!(w.n(), 8); // 7 steps, numbered from 1
         assert_eq!(w.label([3, 3, 3]), 4);
         assert_eq!(w.label([1, 0, 1]), 2);
@@ -173,7 +256,7 @@ mod tests {
     #[test]
     fn six_neighbour_numbers_are_manhattan_steps() {
         let cs = open(10.0);
-        let w = expand(&cs, [0, 0, 0], [3, 2, 1], Connectivity::Six).expect("reachable");
+        let w = expand(&cs, &Open, [0, 0, 0], [3, 2, 1], Connectivity::Six).expect("reachable");
         assert_eq!(w.n(), 7);
         assert_eq!(w.label([1, 1, 0]), 3);
     }
@@ -183,19 +266,27 @@ mod tests {
         // A wall at x = 5 with a hole at (5, 9, *).
         let g = Grid::over([[0.0, 10.0], [0.0, 10.0], [0.0, 0.0]], 1.0);
         let cs = CSpace::from_fn(g, |n| n[0] != 5 || n[1] == 9);
-        let w =
-            expand(&cs, [0, 0, 0], [10, 0, 0], Connectivity::TwentySix).expect("through the hole");
+        let w = expand(&cs, &Open, [0, 0, 0], [10, 0, 0], Connectivity::TwentySix)
+            .expect("through the hole");
         // Out to y = 9 and back: 9 steps up (x rising to 5 on the way), then 5 + ... at least 18 steps.
         assert_eq!(w.n(), 19);
         let closed = CSpace::from_fn(g, |n| n[0] != 5);
-        assert!(expand(&closed, [0, 0, 0], [10, 0, 0], Connectivity::TwentySix).is_none());
+        assert!(expand(
+            &closed,
+            &Open,
+            [0, 0, 0],
+            [10, 0, 0],
+            Connectivity::TwentySix
+        )
+        .is_none());
     }
 
     #[test]
     fn every_numbered_node_below_n_has_a_predecessor() {
         let g = Grid::over([[0.0, 12.0], [0.0, 12.0], [0.0, 6.0]], 1.0);
         let cs = CSpace::from_fn(g, |n| (n[0] != 6 || n[1] >= 10) && (n[1] != 4 || n[2] != 3));
-        let w = expand(&cs, [0, 0, 0], [12, 0, 6], Connectivity::TwentySix).expect("reachable");
+        let w =
+            expand(&cs, &Open, [0, 0, 0], [12, 0, 6], Connectivity::TwentySix).expect("reachable");
         for i in 0..g.len() {
             let n = g.node(i);
             let l = w.label(n);

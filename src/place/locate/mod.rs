@@ -34,6 +34,16 @@
 //!   radius plus the clearance (a rounded rectangle, the exact Minkowski sum) is removed: a base
 //!   exactly at that distance is allowed. Obstacles that could hit the arm, not the base, are the
 //!   planner's business, not this stage's.
+//! - **The tool.** `R` is the same with or without a tool, and that is what is sound: the
+//!   footprint test is about the base cylinder, which no tool shape is part of (the tool hangs on
+//!   the flange), and whether the tool keeps the clearance at a point depends on the joint
+//!   solution taken there, which `R` does not know. Removing base positions for the tool would
+//!   need a claim about every solution from every position, which this stage cannot make; so `R`
+//!   stays an outer bound and the tool is checked where the solutions are known: the place stage
+//!   takes `R`'s positions in their ranking and keeps the first from which every point has a
+//!   solution whose links *and tool shapes* keep the clearance (`PoseCheck`, the collision model
+//!   with the cell's tool on the flange). A position where only the tool hits is passed over
+//!   there, not cut out of `R`; `gen-rapid locate` draws `R` as this stage finds it.
 //! - **Raster.** `R` is sampled on square cells of `cell_mm` (default [`DEFAULT_CELL_MM`] =
 //!   10 mm) over the intersection of the points' outer discs' bounding boxes (which contains
 //!   `R`); a cell is in `R` iff its centre is (exact test, [`Location::margin_at`]). Area = cells x cell^2.

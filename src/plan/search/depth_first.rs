@@ -3,13 +3,14 @@
 //! the direction of the previous step first (so runs stay straight and merge into one move),
 //! then -axis1, -axis2, -axis3, +axis3, +axis2, +axis1 (the order of [`crate::plan::wave::offsets`]).
 //!
-//! It walks axis steps, so the wave it descends is numbered over the 6 axis neighbours. It fails
-//! (the paper's Fig. 8) when the start and end are joined only through diagonal steps; the plan
-//! then reports the leg. Same-direction steps are merged afterwards by `merge`.
+//! It walks axis steps, so the wave it descends is numbered over the 6 axis neighbours (the
+//! graph's axis steps: those the whole-move check accepts). It fails (the paper's Fig. 8) when
+//! the start and end are joined only through diagonal steps; the plan then reports the leg.
+//! Same-direction steps are merged afterwards by `merge`.
 
-use super::{descend, Accept, GridPath, SearchFailure};
+use super::{descend, GridPath, SearchFailure};
 use crate::plan::cspace::{CSpace, Node};
-use crate::plan::wave::{self, offsets, Connectivity, Wave};
+use crate::plan::wave::{self, offsets, Connectivity, Graph, Wave};
 
 fn candidates(w: &Wave, n: Node, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     let want = w.label(n).saturating_sub(1);
@@ -23,36 +24,37 @@ fn candidates(w: &Wave, n: Node, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     c
 }
 
-/// The path start -> end by axis steps (none: no axis-step path, or every branch refused).
-/// When the axis-step wave cannot reach the end, a 26-neighbour wave tells whether the free
-/// space joins the nodes only diagonally (the paper's Fig. 8: [`SearchFailure::Exhausted`]) or
-/// not at all ([`SearchFailure::NotConnected`]).
-pub fn search(
+/// The path start -> end by axis steps of `graph`. When the axis-step wave cannot reach the
+/// end, a 26-neighbour wave tells whether the graph joins the nodes only through diagonal steps
+/// (the paper's Fig. 8: [`SearchFailure::OnlyDiagonal`]) or not at all
+/// ([`SearchFailure::NotConnected`]).
+pub fn search<G: Graph>(
     cs: &CSpace,
     start: Node,
     end: Node,
-    accept: &mut Accept<'_>,
+    graph: &G,
 ) -> Result<GridPath, SearchFailure> {
-    let Some(w) = wave::expand(cs, start, end, Connectivity::Six) else {
+    let Some(w) = wave::expand(cs, graph, start, end, Connectivity::Six) else {
         return Err(
-            match wave::expand(cs, start, end, Connectivity::TwentySix) {
-                Some(_) => SearchFailure::Exhausted,
+            match wave::expand(cs, graph, start, end, Connectivity::TwentySix) {
+                Some(_) => SearchFailure::OnlyDiagonal,
                 None => SearchFailure::NotConnected,
             },
         );
     };
-    descend(&w, &candidates, accept).ok_or(SearchFailure::Exhausted)
+    descend(&w, &candidates, graph).ok_or(SearchFailure::WalkFailed)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::plan::search::testing::{assert_path, grid};
+    use crate::plan::wave::Open;
 
     #[test]
     fn walks_axis_steps_in_the_fixed_order() {
         let cs = grid(5, 5, 5, |_| true);
-        let p = search(&cs, [0, 0, 0], [2, 1, 1], &mut |_, _| true).expect("path");
+        let p = search(&cs, [0, 0, 0], [2, 1, 1], &Open).expect("path");
         assert_path(&p, [0, 0, 0], [2, 1, 1]);
         assert_eq!(p.len(), 5, "4 axis steps");
         // Back from the end: -axis1 twice first, then -axis2, then -axis3.
@@ -66,11 +68,11 @@ mod tests {
     fn fails_where_only_a_diagonal_joins_the_free_space() {
         // Fig. 8: the free nodes touch only at a corner.
         let cs = grid(3, 3, 1, |n| n[0] == n[1]);
-        let err = search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true);
-        assert_eq!(err, Err(SearchFailure::Exhausted));
+        let err = search(&cs, [0, 0, 0], [2, 2, 0], &Open);
+        assert_eq!(err, Err(SearchFailure::OnlyDiagonal));
         // Not joined at all: no method could.
         let cs = grid(3, 3, 1, |n| n[0] != 1);
-        let err = search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true);
+        let err = search(&cs, [0, 0, 0], [2, 2, 0], &Open);
         assert_eq!(err, Err(SearchFailure::NotConnected));
     }
 }

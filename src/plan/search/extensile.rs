@@ -11,9 +11,9 @@
 //! paths agree it follows them; where they part it crosses between them to keep straight. The
 //! recursive k -> k+2 shortening (`shorten`) then cuts across the parallelograms.
 
-use super::{add, descend, order_of, Accept, GridPath, SearchFailure};
+use super::{add, descend, order_of, GridPath, SearchFailure};
 use crate::plan::cspace::{CSpace, Node};
-use crate::plan::wave::{self, offsets, Connectivity, Wave};
+use crate::plan::wave::{self, offsets, Connectivity, Graph, Wave};
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
 
@@ -29,46 +29,46 @@ fn candidates(w: &Wave, n: Node, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     c
 }
 
-/// One walk back on the wave from `start` to `end`: the path start -> end.
-pub fn one_way(cs: &CSpace, start: Node, end: Node, accept: &mut Accept<'_>) -> Option<GridPath> {
-    let w = wave::expand(cs, start, end, Connectivity::TwentySix)?;
-    descend(&w, &candidates, accept)
+/// One walk back on the wave of `graph` from `start` to `end`: the path start -> end.
+pub fn one_way<G: Graph>(cs: &CSpace, start: Node, end: Node, graph: &G) -> Option<GridPath> {
+    let w = wave::expand(cs, graph, start, end, Connectivity::TwentySix)?;
+    descend(&w, &candidates, graph)
 }
 
 /// Both ways and merged: the path start -> end. The two waves are independent and expand on
 /// two threads; the walks back and the merge run in order, so the result is the same.
-pub fn search(
+pub fn search<G: Graph>(
     cs: &CSpace,
     start: Node,
     end: Node,
-    accept: &mut Accept<'_>,
+    graph: &G,
 ) -> Result<GridPath, SearchFailure> {
     let (from_start, from_end) = std::thread::scope(|s| {
-        let other = s.spawn(|| wave::expand(cs, end, start, Connectivity::TwentySix));
-        let here = wave::expand(cs, start, end, Connectivity::TwentySix);
+        let other = s.spawn(|| wave::expand(cs, graph, end, start, Connectivity::TwentySix));
+        let here = wave::expand(cs, graph, start, end, Connectivity::TwentySix);
         // A panic in the other wave is a defect; fall back to computing it here.
         let there = other
             .join()
-            .unwrap_or_else(|_| wave::expand(cs, end, start, Connectivity::TwentySix));
+            .unwrap_or_else(|_| wave::expand(cs, graph, end, start, Connectivity::TwentySix));
         (here, there)
     });
     let from_start = from_start.ok_or(SearchFailure::NotConnected)?;
-    let forward = descend(&from_start, &candidates, accept).ok_or(SearchFailure::Exhausted)?;
+    let forward = descend(&from_start, &candidates, graph).ok_or(SearchFailure::WalkFailed)?;
     // The wave from the end node, walked back from the start node, gives end -> start.
     let backward = from_end
-        .and_then(|w| descend(&w, &candidates, accept))
+        .and_then(|w| descend(&w, &candidates, graph))
         .map(|mut p| {
             p.reverse();
             p
         });
     Ok(match backward {
-        Some(b) => merge_paths(&forward, &b, accept),
+        Some(b) => merge_paths(&forward, &b, graph),
         None => forward,
     })
 }
 
 /// The merge of Fig. 5 (see the module doc). Both paths run start -> end.
-pub fn merge_paths(a: &[Node], b: &[Node], accept: &mut Accept<'_>) -> GridPath {
+pub fn merge_paths<G: Graph + ?Sized>(a: &[Node], b: &[Node], graph: &G) -> GridPath {
     let (Some(&start), Some(&end)) = (a.first(), a.last()) else {
         return b.to_vec();
     };
@@ -89,7 +89,7 @@ pub fn merge_paths(a: &[Node], b: &[Node], accept: &mut Accept<'_>) -> GridPath 
             if let Some(&j) = id.get(&m) {
                 if on_path(a, n, m)
                     || on_path(b, n, m)
-                    || (i < j && accept(n, m))
+                    || (i < j && graph.step_ok(n, m))
                     || (i > j && edges[j].iter().any(|&(k, _)| k == i))
                 {
                     edges[i].push((j, o));
@@ -144,26 +144,23 @@ pub fn merge_paths(a: &[Node], b: &[Node], accept: &mut Accept<'_>) -> GridPath 
 mod tests {
     use super::*;
     use crate::plan::search::testing::{assert_path, grid};
+    use crate::plan::wave::Open;
 
     #[test]
     fn takes_the_diagonal_where_depth_first_fails() {
         // Fig. 8: free nodes joined only at corners.
         let cs = grid(3, 3, 1, |n| n[0] == n[1]);
-        let p = search(&cs, [0, 0, 0], [2, 2, 0], &mut |_, _| true).expect("extensile finds it");
+        let p = search(&cs, [0, 0, 0], [2, 2, 0], &Open).expect("extensile finds it");
         assert_eq!(p, vec![[0, 0, 0], [1, 1, 0], [2, 2, 0]]);
-        assert!(crate::plan::search::depth_first::search(
-            &cs,
-            [0, 0, 0],
-            [2, 2, 0],
-            &mut |_, _| true
-        )
-        .is_err());
+        assert!(
+            crate::plan::search::depth_first::search(&cs, [0, 0, 0], [2, 2, 0], &Open).is_err()
+        );
     }
 
     #[test]
     fn keeps_its_direction_in_open_space() {
         let cs = grid(8, 8, 8, |_| true);
-        let p = one_way(&cs, [0, 0, 0], [6, 2, 0], &mut |_, _| true).expect("path");
+        let p = one_way(&cs, [0, 0, 0], [6, 2, 0], &Open).expect("path");
         assert_path(&p, [0, 0, 0], [6, 2, 0]);
         // Back from the end: axis steps along -axis1 while they keep the numbers falling
         // (4 of them), then the diagonal: two straight pieces, one turn.
@@ -179,10 +176,10 @@ mod tests {
         // Two staircases around a free square; the straight diagonal is in the union.
         let a = vec![[0, 0, 0], [1, 0, 0], [2, 1, 0], [2, 2, 0]];
         let b = vec![[0, 0, 0], [1, 1, 0], [1, 2, 0], [2, 2, 0]];
-        let m = merge_paths(&a, &b, &mut |_, _| true);
+        let m = merge_paths(&a, &b, &Open);
         assert_eq!(m, vec![[0, 0, 0], [1, 1, 0], [2, 2, 0]]);
         // Refuse the cross moves: it stays on one of the given paths.
-        let m = merge_paths(&a, &b, &mut |_, _| false);
+        let m = merge_paths(&a, &b, &|_: Node, _: Node| false);
         assert!(m == a || m == b, "{m:?}");
     }
 }

@@ -19,8 +19,15 @@
 //!   previous direction when it can, searches both ways (waves from either end) and merges the
 //!   two paths (Fig. 4-5); `shorten` then straightens it.
 //!
-//! Every step is taken only if `accept(from, to)` holds: the plan passes the whole-move safety
-//! check, so every edge of a returned path is a proven-safe straight move.
+//! The searches run on a [`Graph`] (`wave`): its steps are the ones the whole-move check
+//! accepts, and the wave numbers nodes over accepted steps only. Every step of a walk is again
+//! a step of the graph, so every edge of a returned path is a proven-safe straight move; and
+//! since every numbered node has an accepted step one number down, the walk never runs out
+//! (**complete on its grid**, beyond the paper): if the graph joins the two nodes, the
+//! neighboring and extensile searches find a path. The only failure left to them is
+//! [`SearchFailure::NotConnected`]. The depth-first search lives on the graph's axis steps; it
+//! fails, as in the paper's Fig. 8, where the graph joins the nodes only through diagonal steps
+//! ([`SearchFailure::OnlyDiagonal`]).
 
 pub mod depth_first;
 pub mod extensile;
@@ -52,19 +59,19 @@ impl Method {
 }
 
 impl Method {
-    /// The path `start -> end` by this method on the inspected grid `cs`, every step accepted by
-    /// `accept` (the whole-move check).
-    pub fn search(
+    /// The path `start -> end` by this method on the inspected grid `cs`, over the nodes and
+    /// steps of `graph` (the whole-move check decides which steps exist).
+    pub fn search<G: Graph>(
         self,
         cs: &CSpace,
         start: Node,
         end: Node,
-        accept: &mut Accept<'_>,
+        graph: &G,
     ) -> Result<GridPath, SearchFailure> {
         match self {
-            Method::Neighboring => neighboring::search(cs, start, end, accept),
-            Method::DepthFirst => depth_first::search(cs, start, end, accept),
-            Method::Extensile => extensile::search(cs, start, end, accept),
+            Method::Neighboring => neighboring::search(cs, start, end, graph),
+            Method::DepthFirst => depth_first::search(cs, start, end, graph),
+            Method::Extensile => extensile::search(cs, start, end, graph),
         }
     }
 }
@@ -73,11 +80,15 @@ impl Method {
 /// expands a wave again to find out.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SearchFailure {
-    /// The free space does not join the two nodes (on the 26-neighbour grid): no method can.
+    /// The graph (free nodes, accepted steps, 26 neighbours) does not join the two nodes: no
+    /// method can.
     NotConnected,
-    /// The nodes are joined, but the method's walk found no way (the depth-first search where
-    /// only diagonals join, or every path refused by the whole-move check).
-    Exhausted,
+    /// The depth-first search: the graph joins the nodes, but not through axis steps (the
+    /// paper's Fig. 8).
+    OnlyDiagonal,
+    /// The walk back found no step: impossible on a wave of the same graph (module doc); a
+    /// defect if it happens.
+    WalkFailed,
 }
 
 impl std::fmt::Display for Method {
@@ -87,7 +98,7 @@ impl std::fmt::Display for Method {
 }
 
 use crate::plan::cspace::{CSpace, Node};
-use crate::plan::wave::Wave;
+use crate::plan::wave::{Graph, Wave};
 use std::collections::HashSet;
 
 /// A path of grid nodes from the start node to the end node, each step to a neighbour.
@@ -96,9 +107,6 @@ pub type GridPath = Vec<Node>;
 /// A method's neighbour order: the offsets to try from `node`, best first, given the offset of
 /// the step that led there.
 pub(crate) type Candidates = dyn Fn(&Wave, Node, Option<[i32; 3]>) -> Vec<[i32; 3]>;
-
-/// Edge acceptance: is the straight move between two neighbouring nodes safe?
-pub type Accept<'a> = dyn FnMut(Node, Node) -> bool + 'a;
 
 #[inline]
 pub(crate) fn add(n: Node, o: [i32; 3]) -> Node {
@@ -112,12 +120,13 @@ pub(crate) fn order_of(o: [i32; 3]) -> usize {
 }
 
 /// The shared walk. `candidates(node, previous_offset)` lists the neighbours to try, best
-/// first; only those with a number strictly between 0 and the current node's are taken.
-/// Returns the path from the wave's start to its end, or `None` when every branch dead-ends.
-pub(crate) fn descend(
+/// first; only those with a number strictly between 0 and the current node's and a step of
+/// `graph` are taken. Returns the path from the wave's start to its end, or `None` when every
+/// branch dead-ends (never, on a wave of the same graph: module doc).
+pub(crate) fn descend<G: Graph + ?Sized>(
     wave: &Wave,
     candidates: &Candidates,
-    accept: &mut Accept<'_>,
+    graph: &G,
 ) -> Option<GridPath> {
     struct Frame {
         node: Node,
@@ -148,7 +157,7 @@ pub(crate) fn descend(
             if l == 0 || l >= label || dead.contains(&m) {
                 continue;
             }
-            if accept(here, m) {
+            if graph.step_ok(here, m) {
                 chosen = Some((m, o));
                 break;
             }

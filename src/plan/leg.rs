@@ -1,0 +1,314 @@
+//! One leg of the route, from one cell point to the next, on all six axes (beyond the paper,
+//! whose planner moves axes 1..3 and holds the wrist).
+//!
+//! # The wrist schedule
+//!
+//! Axes 4..6 turn with the leg's progress ([`WristSchedule`]): a waypoint at axes-1..3 position
+//! `q` gets the wrist `w_from + s (w_to - w_from)`, `s` the projection of `q` onto the leg's
+//! straight line in axes 1..3, `p_from -> p_to`, clamped to `[0, 1]`, rounded to the written
+//! 0.001 deg. The cell points keep their own wrists (`s` is 0 and 1 there). Every `MoveAbsJ`
+//! interpolates all six axes linearly, so the moves proven are the six-axis straight segments
+//! between consecutive waypoints, with these (rounded) wrists: what is proven is what is
+//! written, and what the robot does.
+//!
+//! # The leg's graph
+//!
+//! The grid of axes 1..3 is inspected once for the arm (`collision::grid`). A leg's nodes are the
+//! arm-free nodes whose tool, at the leg's wrist there, is also free; the tool is looked at only
+//! where the node's code says it could reach a box (the wrist centre within the tool's radius
+//! plus the clearance of one), and only when the wave gets there. Its steps are the neighbour
+//! steps whose six-axis move the step check accepts (`GridCheck::step_is_safe`: node depths
+//! first, the whole-move proof where they do not suffice), asked with the two ends in index order
+//! so the answer is symmetric. Without a tool this costs nothing beyond the step check.
+//!
+//! # The leg
+//!
+//! Join both points to the grid (a point on a node is that node; a point off the grid joins the
+//! nearest usable node whose six-axis move to it is proven), search the leg's graph with the
+//! method, shorten (extensile), merge collinear moves, round to the written precision, and prove
+//! every move again.
+
+use super::merge;
+use super::search::{Method, SearchFailure};
+use super::shorten;
+use super::wave::Graph;
+use crate::collision::{Ends, GridCheck};
+use crate::place::PlacedPoint;
+use crate::plan::cspace::{CSpace, Node};
+use crate::precision::quantize_joints;
+
+/// The wrist schedule of a leg (module doc).
+#[derive(Clone, Debug, PartialEq)]
+pub struct WristSchedule {
+    from: [f64; 3],
+    dir: [f64; 3],
+    len2: f64,
+    w_from: [f64; 3],
+    w_to: [f64; 3],
+}
+
+impl WristSchedule {
+    /// The schedule from one six-axis point to the next (controller values, deg).
+    pub fn new(from: &[f64; 6], to: &[f64; 6]) -> WristSchedule {
+        let dir = [to[0] - from[0], to[1] - from[1], to[2] - from[2]];
+        WristSchedule {
+            from: [from[0], from[1], from[2]],
+            dir,
+            len2: dir.iter().map(|d| d * d).sum(),
+            w_from: [from[3], from[4], from[5]],
+            w_to: [to[3], to[4], to[5]],
+        }
+    }
+
+    /// `s` of the module doc for axes-1..3 position `q`: 0 for a leg that does not move axes
+    /// 1..3.
+    pub fn progress(&self, q: &[f64; 3]) -> f64 {
+        if self.len2 <= 0.0 {
+            return 0.0;
+        }
+        let dot: f64 = (0..3).map(|k| (q[k] - self.from[k]) * self.dir[k]).sum();
+        (dot / self.len2).clamp(0.0, 1.0)
+    }
+
+    /// The wrist at `q`, rounded to the written precision.
+    pub fn wrist_at(&self, q: &[f64; 3]) -> [f64; 3] {
+        let s = self.progress(q);
+        quantize_joints(std::array::from_fn(|k| {
+            self.w_from[k] + s * (self.w_to[k] - self.w_from[k])
+        }))
+    }
+
+    /// All six axes at `q`.
+    pub fn six(&self, q: &[f64; 3]) -> [f64; 6] {
+        let w = self.wrist_at(q);
+        [q[0], q[1], q[2], w[0], w[1], w[2]]
+    }
+}
+
+/// The leg's graph on the inspected grid (module doc).
+pub struct LegGraph<'a> {
+    pub cs: &'a CSpace,
+    pub check: &'a GridCheck<'a>,
+    pub schedule: &'a WristSchedule,
+    /// Whether the wave numbers over accepted steps only (else over every step between usable
+    /// nodes, the optimistic first try of [`search`]).
+    pub eager: bool,
+}
+
+impl LegGraph<'_> {
+    /// Node `n` on all six axes, the wrist as the leg schedules it.
+    pub fn six(&self, n: Node) -> [f64; 6] {
+        self.schedule.six(&self.cs.grid.axes_deg(n))
+    }
+
+    /// What the grid keeps of node `n` for the step check.
+    #[inline]
+    fn ends(&self, n: Node) -> Ends<'_> {
+        Ends {
+            code: self.cs.code(n),
+            column: self.cs.column(n),
+        }
+    }
+
+    /// Whether the leg may use node `n`: free on the grid, and the tool clear at its wrist.
+    pub fn usable(&self, n: Node) -> bool {
+        self.cs.is_free(n) && self.node_ok(n)
+    }
+}
+
+impl Graph for LegGraph<'_> {
+    fn node_ok(&self, n: Node) -> bool {
+        !GridCheck::tool_near(self.cs.code(n)) || self.check.model().tool_is_free(&self.six(n))
+    }
+
+    fn wave_step_ok(&self, a: Node, b: Node) -> bool {
+        !self.eager || self.step_ok(a, b)
+    }
+
+    #[inline]
+    fn step_ok(&self, a: Node, b: Node) -> bool {
+        let g = &self.cs.grid;
+        let (a, b) = if g.index(a) <= g.index(b) {
+            (a, b)
+        } else {
+            (b, a)
+        };
+        let (ca, cb) = (self.ends(a), self.ends(b));
+        let o = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+        if let (true, true) = self.check.proven_by_codes(ca, cb, o) {
+            return true;
+        }
+        self.check
+            .step_is_safe(&self.six(a), ca, &self.six(b), cb, o)
+    }
+}
+
+/// Why a leg could not be planned.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LegFailure {
+    /// The leg's first (`false`) or last (`true`) point joins no usable node by a proven move.
+    NoJoin { last: bool },
+    /// The search failed.
+    Search(SearchFailure),
+    /// A move could not be proven after rounding (a defect: every move was proven before).
+    Unsafe { from: [f64; 6], to: [f64; 6] },
+}
+
+/// A planned leg: the grid path the search returned (for pictures) and the six-axis waypoints,
+/// both points included, at the written precision, every move proven.
+pub struct PlannedLeg {
+    pub grid_path: Vec<Node>,
+    pub waypoints: Vec<[f64; 6]>,
+}
+
+/// Plans the leg `from -> to` (two placed points whose axes 1..3 differ) with `method` on the
+/// inspected grid `cs` (module doc for the steps).
+pub fn plan_leg(
+    cs: &CSpace,
+    check: &GridCheck<'_>,
+    from: &PlacedPoint,
+    to: &PlacedPoint,
+    method: Method,
+) -> Result<PlannedLeg, LegFailure> {
+    let model = check.model();
+    let schedule = WristSchedule::new(&from.joints_deg, &to.joints_deg);
+    let graph = LegGraph {
+        cs,
+        check,
+        schedule: &schedule,
+        eager: false,
+    };
+    let s = join(&graph, &from.joints_deg).ok_or(LegFailure::NoJoin { last: false })?;
+    let g = join(&graph, &to.joints_deg).ok_or(LegFailure::NoJoin { last: true })?;
+    let grid_path = search(&graph, method, s, g).map_err(LegFailure::Search)?;
+    let (p, q) = (from.arm_deg(), to.arm_deg());
+    let mut arm = vec![p];
+    arm.extend(grid_path.iter().map(|&n| cs.grid.axes_deg(n)));
+    arm.push(q);
+    arm.dedup();
+    let mut prove = |a: &[f64; 6], b: &[f64; 6]| model.move_is_safe(a, b);
+    if method == Method::Extensile {
+        shorten::shorten(cs, &mut arm, &|n| graph.usable(n), &mut |a, b| {
+            prove(&schedule.six(a), &schedule.six(b))
+        });
+    }
+    // Six axes: the points as given, the vias by the schedule.
+    let last = arm.len() - 1;
+    let six: Vec<[f64; 6]> = arm
+        .iter()
+        .enumerate()
+        .map(|(k, a)| match k {
+            0 => from.joints_deg,
+            k if k == last => to.joints_deg,
+            _ => schedule.six(a),
+        })
+        .collect();
+    let mut waypoints: Vec<[f64; 6]> = merge::collinear_proven(&six, &mut prove)
+        .into_iter()
+        .map(quantize6)
+        .collect();
+    waypoints.dedup();
+    if waypoints.len() == 1 {
+        // The two points coincide: one (empty) move keeps both in the program.
+        waypoints.push(to.joints_deg);
+    }
+    for w in waypoints.windows(2) {
+        if !model.move_is_safe(&w[0], &w[1]) {
+            return Err(LegFailure::Unsafe {
+                from: w[0],
+                to: w[1],
+            });
+        }
+    }
+    Ok(PlannedLeg {
+        grid_path,
+        waypoints,
+    })
+}
+
+/// The leg's search, complete on its grid (module doc): first on the optimistic wave (numbered
+/// over every step between usable nodes, as the paper's wave is), walking back over accepted
+/// steps only; where that walk runs out, on the eager wave (numbered over accepted steps only),
+/// whose walk cannot run out. The optimistic wave's graph holds the true one, so where it does
+/// not join the nodes, nothing does.
+fn search(
+    graph: &LegGraph<'_>,
+    method: Method,
+    s: Node,
+    g: Node,
+) -> Result<Vec<Node>, SearchFailure> {
+    match method.search(graph.cs, s, g, graph) {
+        Err(SearchFailure::OnlyDiagonal | SearchFailure::WalkFailed) => {
+            let eager = LegGraph {
+                eager: true,
+                ..*graph
+            };
+            method.search(graph.cs, s, g, &eager)
+        }
+        other => other,
+    }
+}
+
+/// The node a point joins: the node it sits on (if the leg may use it), else the nearest usable
+/// node within three rings whose six-axis move to the point is proven.
+fn join(graph: &LegGraph<'_>, p: &[f64; 6]) -> Option<Node> {
+    let grid = &graph.cs.grid;
+    let arm = [p[0], p[1], p[2]];
+    if let Some(n) = grid.node_at(&arm) {
+        return graph.usable(n).then_some(n);
+    }
+    let model = graph.check.model();
+    for rings in 1..=3 {
+        for n in grid.nodes_near(&arm, rings) {
+            if graph.usable(n) && model.move_is_safe(p, &graph.six(n)) {
+                return Some(n);
+            }
+        }
+    }
+    None
+}
+
+/// Six controller values rounded to the written precision.
+fn quantize6(j: [f64; 6]) -> [f64; 6] {
+    let a = quantize_joints([j[0], j[1], j[2]]);
+    let w = quantize_joints([j[3], j[4], j[5]]);
+    [a[0], a[1], a[2], w[0], w[1], w[2]]
+}
+
+#[cfg(test)]
+#[path = "leg_tests.rs"]
+mod leg_tests;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_wrist_follows_the_projection_clamped_and_rounded() {
+        let from = [0.0, 0.0, 0.0, 0.0, 30.0, -90.0];
+        let to = [10.0, 0.0, 0.0, 90.0, 30.0, 90.0];
+        let s = WristSchedule::new(&from, &to);
+        // On the line: in proportion.
+        assert_eq!(s.wrist_at(&[5.0, 0.0, 0.0]), [45.0, 30.0, 0.0]);
+        assert_eq!(s.wrist_at(&[2.5, 0.0, 0.0]), [22.5, 30.0, -45.0]);
+        // Off the line: the projection decides (axis 2 and 3 are across the line).
+        assert_eq!(s.wrist_at(&[2.5, 7.0, -3.0]), [22.5, 30.0, -45.0]);
+        // Behind the start and beyond the end: clamped.
+        assert_eq!(s.wrist_at(&[-4.0, 1.0, 0.0]), [0.0, 30.0, -90.0]);
+        assert_eq!(s.wrist_at(&[13.0, 0.0, 0.0]), [90.0, 30.0, 90.0]);
+        // The ends are the points' own wrists, exactly.
+        assert_eq!(s.six(&[0.0, 0.0, 0.0]), from);
+        assert_eq!(s.six(&[10.0, 0.0, 0.0]), to);
+        // Rounded to 0.001 deg: a third of the way gives 30 deg, 1/3 of 100 gives 33.333.
+        let t = WristSchedule::new(
+            &[0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+            &[3.0, 3.0, 3.0, 100.0, -100.0, 1.0],
+        );
+        assert_eq!(t.wrist_at(&[1.0, 1.0, 1.0]), [33.333, -33.333, 0.333]);
+        // Along a diagonal leg a point off it projects onto it.
+        assert_eq!(t.progress(&[3.0, 0.0, 0.0]), 1.0 / 3.0);
+        // A leg that does not move axes 1..3 keeps the first wrist.
+        let still = WristSchedule::new(&from, &[0.0, 0.0, 0.0, 9.0, 9.0, 9.0]);
+        assert_eq!(still.wrist_at(&[0.0, 0.0, 0.0]), [0.0, 30.0, -90.0]);
+    }
+}

@@ -1,0 +1,265 @@
+//! The leg's graph against brute force on small grids: the per-leg tool inspection (lazy, only
+//! where the node codes say the tool may reach a box) against the six-axis node test at every
+//! node, and the complete search against a breadth-first search over every accepted step.
+
+use super::*;
+use crate::cell::{Loc, Obstacle};
+use crate::collision::tool_tests::torch;
+use crate::collision::CollisionModel;
+use crate::geometry::{Aabb, Point};
+use crate::place::{Origin, Placement};
+use crate::plan::cspace::Grid;
+use crate::plan::search::{add, testing::grid};
+use crate::plan::wave::{offsets, Connectivity};
+use crate::robot::Robot;
+use std::collections::VecDeque;
+
+fn bx(name: &str, min: [f64; 3], max: [f64; 3]) -> Obstacle {
+    Obstacle::new(name, Aabb::new(Point::from(min), Point::from(max)))
+}
+
+/// The robot at the origin among a few boxes in front of it, with the torch or without; with
+/// `split`, walls in the x-z plane in front of and behind the robot, too high to pass over,
+/// cut its free space in two halves (y > 0 and y < 0).
+fn model(with_torch: bool, split: bool) -> CollisionModel {
+    let tool = torch();
+    let mut boxes = vec![
+        bx("table", [600.0, -900.0, 0.0], [1500.0, 900.0, 500.0]),
+        bx("post", [900.0, 200.0, 500.0], [1050.0, 360.0, 1250.0]),
+        bx("beam", [500.0, -900.0, 1500.0], [1400.0, -600.0, 1600.0]),
+    ];
+    if split {
+        boxes.push(bx("front", [380.0, -20.0, 0.0], [2500.0, 20.0, 3000.0]));
+        boxes.push(bx("back", [-2500.0, -20.0, 0.0], [-380.0, 20.0, 3000.0]));
+    }
+    CollisionModel::new(
+        &Robot::irb1400(),
+        Placement {
+            base_mm: [0.0, 0.0, 0.0],
+            yaw_deg: 0.0,
+        },
+        boxes,
+        10.0,
+        with_torch.then_some(&tool),
+    )
+}
+
+fn point(name: &str, joints_deg: [f64; 6]) -> PlacedPoint {
+    PlacedPoint {
+        name: name.into(),
+        joints_deg,
+        loc: Loc::default(),
+        origin: Origin::Joints,
+    }
+}
+
+/// A small grid in front of the robot, 3 deg.
+fn small_grid() -> Grid {
+    Grid::over([[-45.0, 45.0], [-30.0, 51.0], [-30.0, 60.0]], 3.0)
+}
+
+#[test]
+fn per_leg_inspection_is_the_six_axis_node_test_at_every_node() {
+    let m = model(true, false);
+    // The robot's whole range at 6 deg.
+    let g = Grid::over([[-170.0, 170.0], [-70.0, 70.0], [-65.0, 70.0]], 6.0);
+    let check = m.grid_check(g.step_deg);
+    let cs = CSpace::build(g, &check);
+    // A leg that turns the wrist a long way: the torch points up at the start, down at the end.
+    let schedule = WristSchedule::new(
+        &[-40.0, 0.0, 10.0, 0.0, -80.0, 0.0],
+        &[40.0, 30.0, 30.0, 90.0, 80.0, 180.0],
+    );
+    let graph = LegGraph {
+        cs: &cs,
+        check: &check,
+        schedule: &schedule,
+        eager: true,
+    };
+    let (mut arm_free, mut looked, mut tool_blocked) = (0, 0, 0);
+    for i in 0..g.len() {
+        let n = g.node(i);
+        let six = graph.six(n);
+        assert_eq!(graph.usable(n), m.is_free(&six), "{six:?}");
+        if cs.is_free(n) {
+            arm_free += 1;
+            if GridCheck::tool_near(cs.code(n)) {
+                looked += 1;
+            }
+            if !m.is_free(&six) {
+                tool_blocked += 1;
+            }
+        }
+    }
+    // The tool blocks some nodes the arm leaves free, and most nodes need no look at it.
+    assert!(
+        tool_blocked > 20,
+        "{tool_blocked} nodes blocked by the tool"
+    );
+    assert!(
+        looked > tool_blocked && looked * 2 < arm_free,
+        "{looked} looked at of {arm_free} arm-free nodes"
+    );
+    // Without a tool no node asks for a look.
+    let bare = model(false, false);
+    let check = bare.grid_check(g.step_deg);
+    let cs = CSpace::build(g, &check);
+    assert!((0..g.len()).all(|i| !GridCheck::tool_near(cs.code_index(i))));
+}
+
+/// Breadth-first search over the leg's graph, every step asked of `step_ok`: whether `s` and `g`
+/// are joined with the given neighbourhood.
+fn joined(graph: &LegGraph<'_>, s: Node, g: Node, c: Connectivity) -> bool {
+    let grid = &graph.cs.grid;
+    let mut seen = vec![false; grid.len()];
+    let mut queue = VecDeque::from([s]);
+    seen[grid.index(s)] = true;
+    while let Some(n) = queue.pop_front() {
+        if n == g {
+            return true;
+        }
+        for &o in offsets(c) {
+            let m = add(n, o);
+            if grid.contains(m) && !seen[grid.index(m)] && graph.usable(m) && graph.step_ok(n, m) {
+                seen[grid.index(m)] = true;
+                queue.push_back(m);
+            }
+        }
+    }
+    false
+}
+
+#[test]
+fn the_search_finds_a_path_exactly_where_the_accepted_steps_join_the_points() {
+    let m = model(true, true);
+    let g = small_grid();
+    let check = m.grid_check(g.step_deg);
+    let cs = CSpace::build(g, &check);
+    let mut rng = crate::geometry::testing::Rng(0x1E6_C0DE);
+    let (mut joined_legs, mut apart_legs, mut diagonal_only) = (0, 0, 0);
+    let mut legs = 0;
+    while legs < 16 {
+        let pick = |rng: &mut crate::geometry::testing::Rng| {
+            let n = [
+                rng.below(g.dims[0] as u64) as i32,
+                rng.below(g.dims[1] as u64) as i32,
+                rng.below(g.dims[2] as u64) as i32,
+            ];
+            let w = [
+                rng.range(-120.0, 120.0),
+                rng.range(-100.0, 100.0),
+                rng.range(-200.0, 200.0),
+            ];
+            let a = g.axes_deg(n);
+            (n, [a[0], a[1], a[2], w[0], w[1], w[2]])
+        };
+        let ((s, from), (e, to)) = (pick(&mut rng), pick(&mut rng));
+        if s == e || !m.is_free(&from) || !m.is_free(&to) {
+            continue;
+        }
+        legs += 1;
+        let schedule = WristSchedule::new(&from, &to);
+        let graph = LegGraph {
+            cs: &cs,
+            check: &check,
+            schedule: &schedule,
+            eager: false,
+        };
+        let (j26, j6) = (
+            joined(&graph, s, e, Connectivity::TwentySix),
+            joined(&graph, s, e, Connectivity::Six),
+        );
+        if j26 {
+            joined_legs += 1;
+        } else {
+            apart_legs += 1;
+        }
+        if j26 && !j6 {
+            diagonal_only += 1;
+        }
+        for method in Method::ALL {
+            let got = search(&graph, method, s, e);
+            let want_path = if method == Method::DepthFirst {
+                j6
+            } else {
+                j26
+            };
+            match got {
+                Ok(path) => {
+                    assert!(want_path, "{method}: a path where brute force finds none");
+                    assert_eq!((path.first(), path.last()), (Some(&s), Some(&e)));
+                    for w in path.windows(2) {
+                        assert!(graph.usable(w[1]) && graph.step_ok(w[0], w[1]), "{w:?}");
+                    }
+                }
+                Err(SearchFailure::NotConnected) => assert!(!j26, "{method}: gave up"),
+                Err(SearchFailure::OnlyDiagonal) => {
+                    assert!(method == Method::DepthFirst && j26 && !j6, "{method}")
+                }
+                Err(SearchFailure::WalkFailed) => panic!("{method}: the walk ran out"),
+            }
+        }
+        // The whole leg: every move proven on six axes.
+        let p = plan_leg(
+            &cs,
+            &check,
+            &point("P", from),
+            &point("Q", to),
+            Method::Extensile,
+        );
+        match p {
+            Ok(leg) => {
+                assert!(j26);
+                for w in leg.waypoints.windows(2) {
+                    assert!(m.move_is_safe(&w[0], &w[1]));
+                }
+            }
+            Err(f) => assert!(!j26 || matches!(f, LegFailure::NoJoin { .. }), "{f:?}"),
+        }
+    }
+    assert!(
+        joined_legs >= 4 && apart_legs >= 1,
+        "{joined_legs} joined, {apart_legs} apart"
+    );
+    eprintln!(
+        "{legs} legs: {joined_legs} joined, {apart_legs} apart, {diagonal_only} only diagonally"
+    );
+}
+
+/// A graph whose wave numbers over every step (the paper's wave) while its walk asks `F`.
+struct Optimistic<F>(F);
+
+impl<F: Fn(Node, Node) -> bool + Sync> Graph for Optimistic<F> {
+    fn node_ok(&self, _: Node) -> bool {
+        true
+    }
+    fn step_ok(&self, a: Node, b: Node) -> bool {
+        (self.0)(a, b)
+    }
+    fn wave_step_ok(&self, _: Node, _: Node) -> bool {
+        true
+    }
+}
+
+#[test]
+fn where_the_optimistic_walk_runs_out_the_eager_wave_finds_the_way() {
+    // 9 x 5 nodes, every node free; no step crosses between axis-1 index 3 and 4 except in the
+    // top row (axis-2 index 4). The paper's wave numbers straight across; every path down its
+    // numbers crosses where no step exists. Over accepted steps the wave goes round by the top.
+    let cs = grid(9, 5, 1, |_| true);
+    let crosses = |a: Node, b: Node| (a[0] <= 3) != (b[0] <= 3);
+    let step = move |a: Node, b: Node| !crosses(a, b) || (a[1] == 4 && b[1] == 4);
+    let (s, e) = ([0, 0, 0], [8, 0, 0]);
+    for method in Method::ALL {
+        assert_eq!(
+            method.search(&cs, s, e, &Optimistic(step)),
+            Err(SearchFailure::WalkFailed),
+            "{method}"
+        );
+        let path = method.search(&cs, s, e, &step).expect("round by the top");
+        assert!(path.iter().any(|n| n[1] == 4), "{method}: {path:?}");
+        for w in path.windows(2) {
+            assert!(step(w[0], w[1]), "{method}: {w:?}");
+        }
+    }
+}
