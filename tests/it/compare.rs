@@ -3,14 +3,23 @@
 //! failure. (The modules of each method on the trunk cell, `tests/golden/trunk.<method>.mod`, are
 //! the golden harness's.)
 
+use crate::common::dense::check_module;
+use crate::common::library::{load_cell, load_robot};
 use crate::common::{gen_rapid, root, stderr, stdout};
 use serde_json::Value;
 use std::process::Output;
 
 const TRUNK: &str = "cells/trunk.yaml";
+/// A cell whose free space joins its two points only through diagonal steps (the paper's
+/// Fig. 8); its error fixture is the depth-first run.
+const FIG8: &str = "tests/err/depth_first_fig8.yaml";
 
 fn compare_json(extra: &[&str]) -> Value {
-    let mut args = vec!["compare", TRUNK, "--json"];
+    compare_json_of(TRUNK, extra)
+}
+
+fn compare_json_of(cell: &str, extra: &[&str]) -> Value {
+    let mut args = vec!["compare", cell, "--json"];
     args.extend_from_slice(extra);
     let o = gen_rapid(&args);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
@@ -105,9 +114,9 @@ fn compare_is_deterministic_except_the_planning_time() {
 
 #[test]
 fn a_failing_method_is_a_row_and_the_others_still_count() {
-    // On a 4 deg grid the trunk cell's A -> B is joined only diagonally somewhere along every
-    // axis-step route: depth-first fails (Fig. 8), the others plan.
-    let o = gen_rapid(&["compare", TRUNK, "--grid", "4"]);
+    // The free space joins P0 and P1 only through diagonal steps: depth-first fails (Fig. 8),
+    // the others plan.
+    let o = gen_rapid(&["compare", FIG8]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let out = stdout(&o);
     let df = out
@@ -115,18 +124,33 @@ fn a_failing_method_is_a_row_and_the_others_still_count() {
         .find(|l| l.starts_with("depth-first"))
         .expect("depth-first row");
     assert!(
-        df.contains("failed: the depth-first search found no path from 'A' to 'B'"),
+        df.contains("failed: the depth-first search found no path from 'P0' to 'P1'"),
         "{out}"
     );
-    assert!(
-        out.lines()
-            .any(|l| l.starts_with("extensile") && !l.contains("failed")),
-        "{out}"
-    );
-    let j = compare_json(&["--grid", "4"]);
+    for m in ["extensile", "neighboring"] {
+        assert!(
+            out.lines()
+                .any(|l| l.starts_with(m) && !l.contains("failed")),
+            "{out}"
+        );
+    }
+    let j = compare_json_of(FIG8, &[]);
     assert_eq!(row(&j, "depth-first")["ok"], false);
     assert!(row(&j, "depth-first")["moves"].is_null());
     assert_eq!(row(&j, "extensile")["ok"], true);
+}
+
+#[test]
+fn depth_first_no_longer_gives_up_where_its_axis_steps_have_a_way() {
+    // The trunk on a 4 deg grid: the axis-step walk once ran out of steps the whole-move check
+    // accepted and gave up with the Fig. 8 message, though the grid's safe axis steps join A
+    // and B (issue 8); the complete search plans it, and the dense check holds the module.
+    let o = gen_rapid(&[TRUNK, "--planner", "depth-first", "--grid", "4"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let cell = load_cell(&root().join(TRUNK));
+    let robot = load_robot(&cell);
+    check_module(&cell, &robot, &stdout(&o), "trunk depth-first 4 deg")
+        .unwrap_or_else(|f| panic!("{}", f.join("\n")));
 }
 
 #[test]
@@ -134,11 +158,7 @@ fn depth_first_failure_names_the_leg_exits_3_and_writes_nothing() {
     let dir = tempfile::tempdir().expect("tempdir");
     let (module, svg) = (dir.path().join("out.mod"), dir.path().join("out.svg"));
     let o = gen_rapid(&[
-        TRUNK,
-        "--planner",
-        "depth-first",
-        "--grid",
-        "4",
+        FIG8,
         "-o",
         module.to_str().expect("utf-8"),
         "--svg",
@@ -147,13 +167,13 @@ fn depth_first_failure_names_the_leg_exits_3_and_writes_nothing() {
     assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
     let err = stderr(&o);
     assert!(
-        err.contains("error: the depth-first search found no path from 'A' to 'B'"),
+        err.contains("error: the depth-first search found no path from 'P0' to 'P1'"),
         "{err}"
     );
     assert!(err.contains("try --planner extensile"), "{err}");
-    // Points at point B in the cell.
+    // Points at point P1 in the cell.
     assert!(
-        err.contains(&format!("--> {TRUNK}:")) && err.contains("name: B"),
+        err.contains(&format!("--> {FIG8}:")) && err.contains("name: P1"),
         "{err}"
     );
     assert!(o.stdout.is_empty());

@@ -1,10 +1,17 @@
 //! Cells nobody wrote by hand: random boxes around a randomly placed and turned robot, random
-//! free points, random clearances, sometimes a floor. Every method's module is held to the
-//! independent dense check of `common/dense.rs`; a method may fail only with a planning error
-//! (no path, a depth-first dead end), never otherwise. Deterministic (fixed seed).
+//! free points, random clearances, sometimes a floor, and (in the second test) a random torch on
+//! the flange and points with their own wrists. Every method's module is held to the
+//! independent dense check of `common/dense.rs` (arm and tool, every via's wrist on the
+//! schedule); a method may fail only with a planning error, never otherwise. The searches are
+//! complete on their grid, so the neighboring and extensile searches (one graph: the grid's
+//! free nodes, the steps the whole-move check accepts, 26 neighbours) plan exactly the same
+//! cells, and a cell the depth-first search plans (its axis steps) they plan too: the second
+//! method shows the first one's cells solvable. Deterministic (fixed seeds).
 
 use crate::common::dense::{check_module, Scene};
-use crate::common::library::{parse_cell, plan_every_method, Planned, Robot};
+use crate::common::library::{
+    parse_cell, plan_every_method, Cell, Frame, Loc, Planned, Robot, Tool, ToolGeometry, ToolShape,
+};
 use crate::common::root;
 
 struct Rng(u64);
@@ -26,9 +33,71 @@ impl Rng {
 struct RandomCell {
     yaml: String,
     grid_deg: f64,
+    tool: Option<Tool>,
+}
+
+/// A random torch or gripper on the flange (tool0 frame, mm): a neck along z, sometimes a body
+/// box at the flange and a ball at the tip, off the axis.
+fn random_tool(rng: &mut Rng) -> Tool {
+    let shape = |name: &str, geometry| ToolShape {
+        name: name.into(),
+        geometry,
+        loc: Loc::default(),
+    };
+    let len = rng.range(80.0, 350.0).round();
+    let bend = rng.range(-120.0, 120.0).round();
+    let mut shapes = vec![shape(
+        "neck",
+        ToolGeometry::Cylinder {
+            from_mm: [0.0, 0.0, 0.0],
+            to_mm: [bend, 0.0, len],
+            radius_mm: rng.range(10.0, 40.0).round(),
+        },
+    )];
+    if rng.int(0, 1) == 1 {
+        let h = rng.range(20.0, 60.0).round();
+        shapes.push(shape(
+            "body",
+            ToolGeometry::Box {
+                min_mm: [-h, -h, 0.0],
+                max_mm: [h, h, rng.range(30.0, 120.0).round()],
+            },
+        ));
+    }
+    if rng.int(0, 1) == 1 {
+        shapes.push(shape(
+            "tip",
+            ToolGeometry::Sphere {
+                centre_mm: [bend, 0.0, len],
+                radius_mm: rng.range(5.0, 30.0).round(),
+            },
+        ));
+    }
+    Tool {
+        name: "tRandom".into(),
+        tframe: Frame {
+            pos_mm: [bend, 0.0, len],
+            quat_wxyz: [1.0, 0.0, 0.0, 0.0],
+        },
+        mass_kg: 1.0,
+        cog_mm: [0.0, 0.0, len / 2.0],
+        shapes,
+        loc: Loc::default(),
+    }
 }
 
 fn random_cell(rng: &mut Rng, robot: &Robot, index: usize) -> Option<RandomCell> {
+    random_cell_with(rng, robot, index, None)
+}
+
+/// A random cell; with `tool`, the points give all six axes (random wrists) and are free with
+/// the tool on (by the dense check's own measure).
+fn random_cell_with(
+    rng: &mut Rng,
+    robot: &Robot,
+    index: usize,
+    tool: Option<Tool>,
+) -> Option<RandomCell> {
     let base = [rng.int(-500, 500) as f64, rng.int(-500, 500) as f64, 0.0];
     let yaw = rng.int(-180, 180) as f64;
     let clearance = [0.0, 5.0, 10.0, 25.0][rng.int(0, 3) as usize];
@@ -68,16 +137,26 @@ fn random_cell(rng: &mut Rng, robot: &Robot, index: usize) -> Option<RandomCell>
     }
     // Free points, found with the dense check's own distances (1 mm beyond the clearance, so
     // that the generator's model agrees that they are free).
-    let scene = Scene::from_boxes(robot, base, yaw, &boxes);
-    let mut points = Vec::new();
+    let scene = Scene::from_boxes(robot, base, yaw, &boxes).with_tool(tool.as_ref());
+    let mut points: Vec<[f64; 6]> = Vec::new();
     for _ in 0..400 {
-        let a = [
+        let arm = [
             rng.range(-150.0, 150.0),
             rng.range(-60.0, 60.0),
             rng.range(-55.0, 60.0),
-        ]
-        .map(|x| (x * 10.0).round() / 10.0); // one decimal: off a 3 deg grid mostly
-        if robot.check_range3(&a).is_ok() && scene.nearest(a).mm > clearance + 1.0 {
+        ];
+        let wrist = match tool {
+            Some(_) => [
+                rng.range(-150.0, 150.0),
+                rng.range(-115.0, 115.0),
+                rng.range(-300.0, 300.0),
+            ],
+            None => [0.0; 3],
+        };
+        // One decimal: off a 3 deg grid mostly.
+        let a = [arm[0], arm[1], arm[2], wrist[0], wrist[1], wrist[2]]
+            .map(|x| (x * 10.0).round() / 10.0);
+        if robot.check_range6(&a).is_ok() && scene.nearest(a).mm > clearance + 1.0 {
             points.push(a);
             if points.len() == 3 {
                 break;
@@ -106,16 +185,60 @@ fn random_cell(rng: &mut Rng, robot: &Robot, index: usize) -> Option<RandomCell>
     }
     yaml += "points:\n";
     for (i, p) in points.iter().enumerate() {
-        yaml += &format!(
-            "  - {{ name: P{i}, joints: [{}, {}, {}] }}\n",
-            p[0], p[1], p[2]
-        );
+        yaml += &match tool {
+            Some(_) => format!(
+                "  - {{ name: P{i}, joints: [{}, {}, {}, {}, {}, {}] }}\n",
+                p[0], p[1], p[2], p[3], p[4], p[5]
+            ),
+            None => format!(
+                "  - {{ name: P{i}, joints: [{}, {}, {}] }}\n",
+                p[0], p[1], p[2]
+            ),
+        };
     }
     yaml += &format!("planner:\n  clearance: {clearance}\n");
     Some(RandomCell {
         yaml,
         grid_deg: 3.0,
+        tool,
     })
+}
+
+/// The cell of a random cell: its YAML, and its tool set on the cell (the YAML keys for tools
+/// are the cell format's, not yet read).
+fn cell_of(rc: &RandomCell, index: usize) -> Cell {
+    let path = root().join(format!("tests/random{index}.yaml"));
+    let mut cell = parse_cell(&path, &rc.yaml).unwrap_or_else(|e| panic!("{e}\n{}", rc.yaml));
+    cell.tool = rc.tool.clone();
+    cell
+}
+
+/// The complete searches agree (module doc): neighboring and extensile plan the same cells, a
+/// cell depth-first plans they plan too, and the only failures are "not connected" and
+/// depth-first's Fig. 8.
+fn assert_searches_agree(results: &[(String, Planned)], what: &str) {
+    let ok = |m: &str| {
+        results
+            .iter()
+            .any(|(name, r)| name == m && matches!(r, Planned::Module(_)))
+    };
+    assert_eq!(
+        ok("neighboring"),
+        ok("extensile"),
+        "the 26-neighbour searches disagree: {what}"
+    );
+    if ok("depth-first") {
+        assert!(ok("extensile"), "depth-first plans, extensile not: {what}");
+    }
+    for (m, r) in results {
+        if let Planned::PlanningFailed(msg) = r {
+            assert!(
+                msg.contains("is not connected")
+                    || (m == "depth-first" && msg.contains("only diagonally")),
+                "{m}: {msg}: {what}"
+            );
+        }
+    }
 }
 
 #[test]
@@ -131,10 +254,10 @@ fn random_cells_plan_safe_modules_or_fail_cleanly() {
             continue;
         };
         cells += 1;
-        let path = root().join(format!("tests/random{index}.yaml"));
-        let cell = parse_cell(&path, &rc.yaml).unwrap_or_else(|e| panic!("{e}\n{}", rc.yaml));
+        let cell = cell_of(&rc, index);
         let results = plan_every_method(&cell, rc.grid_deg)
             .unwrap_or_else(|e| panic!("random cell {index}: unexpected error {e}\n{}", rc.yaml));
+        assert_searches_agree(&results, &format!("random cell {index}\n{}", rc.yaml));
         for (m, result) in results {
             match result {
                 Planned::Module(text) => {
@@ -153,5 +276,58 @@ fn random_cells_plan_safe_modules_or_fail_cleanly() {
         planned >= 15,
         "too few successes to mean anything: {planned} of {}",
         3 * cells
+    );
+}
+
+/// Random cells with a random tool and random wrists at the points: every method's module keeps
+/// the clearance for the arm and the tool (dense check), the vias follow the wrist schedule, and
+/// the complete searches agree on which cells they plan.
+#[test]
+fn random_tool_cells_plan_safe_modules_and_the_searches_agree() {
+    let robot = Robot::irb1400();
+    let mut rng = Rng(0x7001_C311_5EED_0042);
+    let (mut cells, mut planned, mut no_path) = (0, 0, 0);
+    let mut tool_closest = 0;
+    let mut index = 100;
+    while cells < 12 {
+        index += 1;
+        assert!(index < 400, "could not make enough random tool cells");
+        let tool = random_tool(&mut rng);
+        let Some(rc) = random_cell_with(&mut rng, &robot, index, Some(tool)) else {
+            continue;
+        };
+        cells += 1;
+        let cell = cell_of(&rc, index);
+        let results = plan_every_method(&cell, rc.grid_deg).unwrap_or_else(|e| {
+            panic!(
+                "random tool cell {index}: unexpected error {e}\n{}",
+                rc.yaml
+            )
+        });
+        assert_searches_agree(&results, &format!("random tool cell {index}\n{}", rc.yaml));
+        for (m, result) in results {
+            match result {
+                Planned::Module(text) => {
+                    let label = format!("random tool cell {index}, {m}");
+                    let report = check_module(&cell, &robot, &text, &label)
+                        .unwrap_or_else(|f| panic!("{}\n{}", f.join("\n"), rc.yaml));
+                    if report.smallest.link.starts_with("tool shape") {
+                        tool_closest += 1;
+                    }
+                    planned += 1;
+                }
+                Planned::PlanningFailed(_) => no_path += 1,
+            }
+        }
+    }
+    eprintln!("{cells} random tool cells: {planned} modules planned and checked, {no_path} not connected, tool closest in {tool_closest}");
+    assert!(
+        planned >= 18,
+        "too few successes: {planned} of {}",
+        3 * cells
+    );
+    assert!(
+        tool_closest >= 3,
+        "the tool came closest in only {tool_closest} modules"
     );
 }

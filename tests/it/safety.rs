@@ -72,7 +72,8 @@ fn the_trunk_cells_direct_moves_are_blocked_so_planning_matters() {
     };
     for (from, to) in [("A", "B"), ("C", "D"), ("E", "F")] {
         let (a, b) = (joints(from), joints(to));
-        let d_ends = scene.nearest(a).mm.min(scene.nearest(b).mm);
+        let six = |x: [f64; 3]| [x[0], x[1], x[2], 0.0, 0.0, 0.0];
+        let d_ends = scene.nearest(six(a)).mm.min(scene.nearest(six(b)).mm);
         assert!(
             d_ends > cell.planner.clearance_mm,
             "{from} and {to} are free"
@@ -81,7 +82,7 @@ fn the_trunk_cells_direct_moves_are_blocked_so_planning_matters() {
             .map(|i| {
                 let t = i as f64 / 200.0;
                 scene
-                    .nearest([0, 1, 2].map(|k| a[k] + t * (b[k] - a[k])))
+                    .nearest(six([0, 1, 2].map(|k| a[k] + t * (b[k] - a[k]))))
                     .mm
             })
             .fold(f64::INFINITY, f64::min);

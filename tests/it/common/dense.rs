@@ -1,9 +1,12 @@
 //! The independent whole-move check: read a `.mod` as written (targets, moves, the header's base
-//! and yaw), place the robot's link cylinders with the URDF kinematics, and sample every straight
-//! move so densely that no point of the arm moves more than 1 mm between samples, measuring the
-//! exact distance to every box with parry3d's own shapes. It shares no code with `collision` or
-//! `geometry`: only the cell parser and the robot's kinematics (which `robot`'s tests hold
-//! against RobotStudio).
+//! and yaw), place the robot's link cylinders and the cell's tool shapes (`Cell::tool`, carried
+//! by the flange: the robot's `tool0`) with the URDF kinematics, and sample every straight
+//! six-axis move so densely that no point of the arm or the tool moves more than 1 mm between
+//! samples, measuring the exact distance to every box with parry3d's own shapes. It shares no
+//! code with `collision` or `geometry`: only the cell types and parser and the robot's
+//! kinematics (which `robot`'s tests hold against RobotStudio). It also holds every via's wrist
+//! to the wrist schedule (the leg's wrists in proportion to the via's projection onto the leg's
+//! line in axes 1..3, clamped, rounded to 0.001 deg), computed here again.
 //!
 //! # What the robot stands on: this check's own reading
 //!
@@ -16,11 +19,11 @@
 //! counts: a box reaching above the mounting plane, or a base cylinder that dips below the top
 //! of what it would stand on. Links 2 and 3 are measured against every box.
 
-use super::library::{Base, Cell, Robot, Target};
+use super::library::{Base, Cell, Robot, Target, Tool, ToolGeometry};
 use super::module::Module;
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use parry3d::math::{Pose, Vector};
-use parry3d::shape::{Cuboid, Cylinder};
+use parry3d::shape::{Ball, Cuboid, Cylinder, Shape};
 
 /// Heights closer than this count as equal (mm): the box top and the mounting plane, the
 /// cylinder's lowest point and the box top.
@@ -46,11 +49,22 @@ struct Block {
     top_z: f64,
 }
 
-/// The robot placed in the cell, with the cell's boxes.
+/// A tool shape as this check places it: its name, its pose in the tool0 frame and its parry
+/// shape.
+struct ToolPiece {
+    name: String,
+    in_tool0: Isometry3<f64>,
+    shape: Box<dyn Shape>,
+}
+
+/// The robot placed in the cell, with the cell's boxes and tool.
 pub struct Scene<'a> {
     robot: &'a Robot,
     cell_from_robot: Isometry3<f64>,
     blocks: Vec<Block>,
+    tool: Vec<ToolPiece>,
+    /// How far any point of the tool lies from the tool0 origin, mm.
+    tool_extent_mm: f64,
 }
 
 /// The nearest link and box at one pose.
@@ -62,7 +76,8 @@ pub struct Nearest {
 }
 
 impl<'a> Scene<'a> {
-    /// The robot at `base_mm` turned by `yaw_deg` about z, among the cell's boxes.
+    /// The robot at `base_mm` turned by `yaw_deg` about z, among the cell's boxes, with the
+    /// cell's tool.
     pub fn new(robot: &'a Robot, base_mm: [f64; 3], yaw_deg: f64, cell: &Cell) -> Scene<'a> {
         let boxes: Vec<_> = cell
             .obstacles
@@ -75,7 +90,64 @@ impl<'a> Scene<'a> {
                 )
             })
             .collect();
-        Scene::from_boxes(robot, base_mm, yaw_deg, &boxes)
+        Scene::from_boxes(robot, base_mm, yaw_deg, &boxes).with_tool(cell.tool.as_ref())
+    }
+
+    /// The same scene carrying `tool`'s shapes on the flange (none: no tool volume).
+    pub fn with_tool(mut self, tool: Option<&Tool>) -> Scene<'a> {
+        self.tool.clear();
+        self.tool_extent_mm = 0.0;
+        for s in tool.map(|t| t.shapes.as_slice()).unwrap_or_default() {
+            let (in_tool0, shape, extent): (Isometry3<f64>, Box<dyn Shape>, f64) = match s.geometry
+            {
+                ToolGeometry::Cylinder {
+                    from_mm,
+                    to_mm,
+                    radius_mm,
+                } => {
+                    let (a, b) = (Point3::from(from_mm), Point3::from(to_mm));
+                    let rot = UnitQuaternion::rotation_between(&Vector3::y(), &(b - a))
+                        .unwrap_or_else(|| {
+                            UnitQuaternion::from_axis_angle(
+                                &Vector3::x_axis(),
+                                std::f64::consts::PI,
+                            )
+                        });
+                    (
+                        Isometry3::from_parts(nalgebra::center(&a, &b).coords.into(), rot),
+                        Box::new(Cylinder::new((b - a).norm() / 2.0, radius_mm)),
+                        a.coords.norm().max(b.coords.norm()) + radius_mm,
+                    )
+                }
+                ToolGeometry::Box { min_mm, max_mm } => {
+                    let c = Vector3::from_fn(|k, _| (min_mm[k] + max_mm[k]) / 2.0);
+                    let h = Vector3::from_fn(|k, _| (max_mm[k] - min_mm[k]).abs() / 2.0);
+                    (
+                        Isometry3::from_parts(c.into(), UnitQuaternion::identity()),
+                        Box::new(Cuboid::new(Vector::new(h.x, h.y, h.z))),
+                        c.norm() + h.norm(),
+                    )
+                }
+                ToolGeometry::Sphere {
+                    centre_mm,
+                    radius_mm,
+                } => (
+                    Isometry3::from_parts(
+                        Vector3::from(centre_mm).into(),
+                        UnitQuaternion::identity(),
+                    ),
+                    Box::new(Ball::new(radius_mm)),
+                    Vector3::from(centre_mm).norm() + radius_mm,
+                ),
+            };
+            self.tool_extent_mm = self.tool_extent_mm.max(extent);
+            self.tool.push(ToolPiece {
+                name: s.name.clone(),
+                in_tool0,
+                shape,
+            });
+        }
+        self
     }
 
     /// The same with the boxes given as (name, min, max), cell frame, mm.
@@ -106,7 +178,15 @@ impl<'a> Scene<'a> {
             robot,
             cell_from_robot,
             blocks,
+            tool: Vec::new(),
+            tool_extent_mm: 0.0,
         }
+    }
+
+    /// The most any point of the arm or the tool can move per radian of any joint, mm: the arm
+    /// radius plus the tool's extent beyond the flange.
+    pub fn radius_mm(&self) -> f64 {
+        ARM_RADIUS_MM + self.tool_extent_mm
     }
 
     /// Height of the mounting plane (the base frame's origin), cell frame, mm.
@@ -114,10 +194,11 @@ impl<'a> Scene<'a> {
         self.cell_from_robot.translation.vector.z
     }
 
-    /// The smallest distance from the link cylinders to the boxes at controller axes 1..3, and
-    /// where; `mm` is infinite when nothing is measured.
-    pub fn nearest(&self, axes: [f64; 3]) -> Nearest {
-        let poses = self.robot.arm_link_poses(&axes);
+    /// The smallest distance from the link cylinders and the tool's shapes to the boxes at
+    /// controller axes 1..6, and where (a link by name, a tool shape as `tool shape 'name'`);
+    /// `mm` is infinite when nothing is measured.
+    pub fn nearest(&self, axes: [f64; 6]) -> Nearest {
+        let poses = self.robot.arm_link_poses(&[axes[0], axes[1], axes[2]]);
         let mut best = Nearest {
             mm: f64::INFINITY,
             link: String::new(),
@@ -156,6 +237,35 @@ impl<'a> Scene<'a> {
                 }
             }
         }
+        if !self.tool.is_empty() {
+            let flange = self.cell_from_robot * self.robot.tool0(&axes);
+            for piece in &self.tool {
+                let iso = flange * piece.in_tool0;
+                let t = iso.translation.vector;
+                let q = iso.rotation.quaternion();
+                let pose = Pose::from_parts(
+                    Vector::new(t.x, t.y, t.z),
+                    parry3d::math::Rotation::from_xyzw(q.i, q.j, q.k, q.w),
+                );
+                for block in &self.blocks {
+                    let d = parry3d::query::distance(
+                        &pose,
+                        piece.shape.as_ref(),
+                        &block.pose,
+                        &block.cuboid,
+                    )
+                    .expect("convex shapes")
+                    .distance;
+                    if d < best.mm {
+                        best = Nearest {
+                            mm: d,
+                            link: format!("tool shape '{}'", piece.name),
+                            obstacle: block.name.clone(),
+                        };
+                    }
+                }
+            }
+        }
         best
     }
 
@@ -171,6 +281,46 @@ impl<'a> Scene<'a> {
     fn wrist_centre(&self, axes: &[f64; 6]) -> Point3<f64> {
         self.cell_from_robot * self.robot.wrist_centre(axes)
     }
+}
+
+/// Every via whose wrist is not the leg's wrist schedule: between two consecutive cell points
+/// (six axes `p`, `q` as written), a via at axes 1..3 `v` has axes 4..6
+/// `round(w_p + s (w_q - w_p), 0.001)` with `s` the projection of `v - p` onto `q - p` in axes
+/// 1..3, clamped to [0, 1] (the module rounds, so a value 1e-6 off a rounding boundary may go
+/// either way: 0.0011 deg is allowed).
+pub fn wrist_schedule_errors(cell: &Cell, module: &Module) -> Vec<String> {
+    let names: Vec<&str> = cell.points.iter().map(|p| p.name.as_str()).collect();
+    let marks: Vec<usize> = module
+        .targets
+        .iter()
+        .enumerate()
+        .filter(|(_, t)| names.contains(&t.0.as_str()))
+        .map(|(i, _)| i)
+        .collect();
+    let mut out = Vec::new();
+    for leg in marks.windows(2) {
+        let (p, q) = (module.targets[leg[0]].1, module.targets[leg[1]].1);
+        let d: Vec<f64> = (0..3).map(|k| q[k] - p[k]).collect();
+        let len2: f64 = d.iter().map(|x| x * x).sum();
+        for (name, v) in &module.targets[leg[0] + 1..leg[1]] {
+            let s = if len2 > 0.0 {
+                ((0..3).map(|k| (v[k] - p[k]) * d[k]).sum::<f64>() / len2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            for k in 3..6 {
+                let want = ((p[k] + s * (q[k] - p[k])) * 1000.0).round() / 1000.0;
+                if (v[k] - want).abs() > 0.0011 {
+                    out.push(format!(
+                        "via {name}: axis {} = {}, the wrist schedule gives {want} (s = {s:.5})",
+                        k + 1,
+                        v[k]
+                    ));
+                }
+            }
+        }
+    }
+    out
 }
 
 /// Height of the lowest point of a cylinder with axis ends `a`, `b` (unit direction `dir`) and
@@ -294,6 +444,9 @@ pub fn check_module(
             fail(format!("target {name} out of range: {e}"));
         }
     }
+    for m in wrist_schedule_errors(cell, &module) {
+        fail(m);
+    }
 
     let mut samples = 0;
     let mut smallest = Nearest {
@@ -305,11 +458,13 @@ pub fn check_module(
         let (a, b) = (w[0].1, w[1].1);
         let qa = robot.urdf_joints_deg(&a);
         let qb = robot.urdf_joints_deg(&b);
-        let turn_rad: f64 = (0..3).map(|k| (qb[k] - qa[k]).abs().to_radians()).sum();
-        let n = (ARM_RADIUS_MM * turn_rad).ceil().max(1.0) as usize;
+        // Every point lies within `radius_mm` of every joint axis, so it moves at most that much
+        // per radian of each joint (the wrist axes move only the tool and the wrist).
+        let turn_rad: f64 = (0..6).map(|k| (qb[k] - qa[k]).abs().to_radians()).sum();
+        let n = (scene.radius_mm() * turn_rad).ceil().max(1.0) as usize;
         for i in 0..=n {
             let t = i as f64 / n as f64;
-            let axes = [0, 1, 2].map(|k| a[k] + t * (b[k] - a[k]));
+            let axes: [f64; 6] = std::array::from_fn(|k| a[k] + t * (b[k] - a[k]));
             let near = scene.nearest(axes);
             samples += 1;
             let below = near.mm < cell.planner.clearance_mm - 1e-6;
