@@ -87,6 +87,10 @@ impl Error {
                 source: PlanError::NoPath { .. },
                 ..
             } => Some("a finer planner.grid or a smaller planner.clearance may open a passage; `gen-rapid --svg FILE` draws the blocked nodes".into()),
+            Error::Plan {
+                source: PlanError::WristTurn { .. },
+                ..
+            } => Some("only axes 4..6 move between these two points; add a point between them whose axes 1..3 take the tool away from the obstacle, or give the second point a wrist the tool can turn to".into()),
             Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
             Error::Place(PlaceError::Locate { .. }) => Some("`gen-rapid locate CELL --svg FILE` draws every point's reach region; move the points closer together or give `base: [x, y, z]`".into()),
             Error::Place(PlaceError::Ik { source, .. }) if matches!(**source, IkError::Unreachable { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `gen-rapid locate CELL` shows which base positions reach every point".into()),

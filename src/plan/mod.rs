@@ -161,6 +161,14 @@ pub enum PlanError {
         to_name: String,
         method: Method,
     },
+    #[error("the robot cannot go from '{from_name}' to '{to_name}': the two points share axes 1..3, so the wrist turns in place, and on the way {reason}")]
+    WristTurn {
+        from: usize,
+        to: usize,
+        from_name: String,
+        to_name: String,
+        reason: Blocked,
+    },
     #[error("internal error: the move {from_axes:?} -> {to_axes:?} on the leg '{from_name}' -> '{to_name}' could not be proven safe after rounding")]
     Unsafe {
         from: usize,
@@ -186,7 +194,9 @@ impl PlanError {
     pub fn point(&self) -> usize {
         match self {
             PlanError::PointBlocked { point, .. } | PlanError::NoJoin { point, .. } => *point,
-            PlanError::NoPath { to, .. } | PlanError::SearchFailed { to, .. } => *to,
+            PlanError::NoPath { to, .. }
+            | PlanError::SearchFailed { to, .. }
+            | PlanError::WristTurn { to, .. } => *to,
             PlanError::Unsafe { from, .. } => *from,
         }
     }
@@ -256,13 +266,13 @@ pub fn route(
             // The same axes 1..3 twice (the wrist may differ): one move that stays put, proven
             // like any other (the tool turns).
             let (a, b) = (from.joints_deg, to.joints_deg);
-            if !model.move_is_safe(&a, &b) {
-                return Err(PlanError::Unsafe {
+            if let Some((_, reason)) = model.why_move_unsafe(&a, &b) {
+                return Err(PlanError::WristTurn {
                     from: i,
+                    to: i + 1,
                     from_name: from.name.clone(),
                     to_name: to.name.clone(),
-                    from_axes: Box::new(a),
-                    to_axes: Box::new(b),
+                    reason,
                 });
             }
             made.add_leg(i, Vec::new(), vec![a, b]);
@@ -499,5 +509,54 @@ mod tests {
             [10.0, 5.0, 0.0, 5.0, 30.0, 100.0]
         );
         assert_eq!(p.moves(), 11);
+    }
+
+    #[test]
+    fn a_wrist_turn_in_place_through_a_box_is_refused_naming_the_tool_shape() {
+        use crate::cell::Obstacle;
+        use crate::geometry::{Aabb, Point};
+        let tool = crate::collision::tool_tests::torch();
+        // The flange faces +x at the zero pose; the torch pointing ahead goes into the post,
+        // tilted 60 deg up or down it clears it.
+        let post = Obstacle::new(
+            "post",
+            Aabb::new(
+                Point::new(1150.0, -20.0, 1100.0),
+                Point::new(1250.0, 20.0, 1300.0),
+            ),
+        );
+        let placement = Placement {
+            base_mm: [0.0, 0.0, 0.0],
+            yaw_deg: 0.0,
+        };
+        let model =
+            CollisionModel::new(&Robot::irb1400(), placement, vec![post], 10.0, Some(&tool));
+        let g = Grid::over([[-2.0, 2.0], [-2.0, 2.0], [-2.0, 2.0]], 1.0);
+        let cs = CSpace::build(g, &model.grid_check(1.0));
+        let pts = [
+            point("Up", [0.0, 0.0, 0.0], [0.0, -60.0, 0.0]),
+            point("Down", [0.0, 0.0, 0.0], [0.0, 60.0, 0.0]),
+        ];
+        assert!(pts.iter().all(|p| model.is_free(&p.joints_deg)));
+        match plan(&cs, &model, &pts, Method::Extensile) {
+            Err(e @ PlanError::WristTurn { from: 0, to: 1, .. }) => {
+                let msg = e.to_string();
+                assert!(
+                    msg.contains("from 'Up' to 'Down'")
+                        && msg.contains("tool shape")
+                        && msg.contains("obstacle 'post'"),
+                    "{msg}"
+                );
+                assert_eq!(e.point(), 1);
+            }
+            other => panic!("{other:?}"),
+        }
+        // Turning about axis 6 instead keeps the torch up: one move.
+        let pts = [
+            point("Up", [0.0, 0.0, 0.0], [0.0, -60.0, 0.0]),
+            point("Turned", [0.0, 0.0, 0.0], [0.0, -60.0, 90.0]),
+        ];
+        let p = plan(&cs, &model, &pts, Method::Extensile).expect("the wrist turns up there");
+        assert_eq!(p.moves(), 1);
     }
 }

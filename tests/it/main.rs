@@ -10,7 +10,9 @@
 //! - `cli`: the command line as such: stdout, stderr, `-o`, flags, exit statuses, `--help`.
 //! - `compare`: `gen-rapid compare` and the paper's comparison of the three searches.
 //! - `locate`: `base: auto`, `xyz` points and branches, `gen-rapid locate`.
-//! - `random_cells`: generated cells, every method, every module through the dense re-check.
+//! - `random_cells`: generated cells (with and without a tool), every method, every module
+//!   through the dense re-check.
+//! - `tool_cells`: example cells with a tool set in code (until the cell format reads `tool:`).
 //! - `common`: helpers: running the binary, temporary cells, reading a module (`module`), the
 //!   fixtures (`fixtures`), the dense re-check (`dense`), and `library`, the only file here that
 //!   names the library's paths.
@@ -24,3 +26,4 @@ mod golden;
 mod locate;
 mod random_cells;
 mod safety;
+mod tool_cells;
