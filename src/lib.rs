@@ -17,6 +17,7 @@ pub mod merge;
 pub mod picture;
 pub mod pipeline;
 pub mod plan;
+pub mod preview;
 pub mod program;
 pub mod rapid;
 pub mod robot;
