@@ -52,6 +52,38 @@
   var FOV_Y = 40 * Math.PI / 180;
 
   var scene = JSON.parse(document.getElementById("scene").textContent);
+
+  // ---- panels (text only: filled before WebGL is needed, so they show without it) ----
+  document.title = scene.title || document.title;
+  document.getElementById("title").textContent = scene.title;
+  var facts = ["module " + scene.module, "cell " + scene.cell_file];
+  var cellCount = scene.waypoints.filter(function (w) { return w.kind === "cell"; }).length;
+  if (scene.waypoints.length) {
+    facts.push(scene.waypoints.length + " waypoints (" + cellCount + " cell points), " +
+      Math.max(0, scene.waypoints.length - 1) + " moves");
+  }
+  if (scene.total_time_s != null) {
+    facts.push("estimated time " + scene.total_time_s.toFixed(2) + " s");
+  }
+  if (scene.clearance) {
+    facts.push("min clearance " + scene.clearance.distance_mm.toFixed(1) + " mm");
+  }
+  document.getElementById("facts").textContent = facts.join(" \u00b7 ");
+  var legend = document.getElementById("legend");
+  [["obstacle", COLOURS.obstacle], ["link", COLOURS.link], ["tool", COLOURS.tool],
+    ["TCP trace", COLOURS.trace], ["clearance", COLOURS.clearance]].forEach(function (e) {
+    var s = document.createElement("span");
+    s.textContent = e[0];
+    var rgb = e[1].slice(0, 3).map(function (c) { return Math.round(c * 255); });
+    s.style.setProperty("--c", "rgb(" + rgb.join(",") + ")");
+    legend.appendChild(s);
+  });
+  if (scene.failure) {
+    var box = document.getElementById("failure");
+    box.hidden = false;
+    box.textContent = "Planning failed\n\n" + scene.failure.message;
+  }
+
   var canvas = document.getElementById("view");
   // An opaque canvas (alpha: false): translucent boxes must not make the page show through.
   // preserveDrawingBuffer keeps the last frame for screenshots.
@@ -59,7 +91,8 @@
     { alpha: false, antialias: true, preserveDrawingBuffer: true }) ||
     canvas.getContext("experimental-webgl", { alpha: false, preserveDrawingBuffer: true });
   if (!gl) {
-    throw new Error("WebGL is not available in this browser; the preview needs it");
+    throw new Error("WebGL is not available in this browser; the preview needs it " +
+      "(the text above still holds)");
   }
 
   // ---- small matrix library: 4x4 column-major Float32Array ----
@@ -387,35 +420,6 @@
       setTime(clearance.time_s != null ? clearance.time_s : w ? w.time_s : 0);
       setPlaying(false);
     });
-  }
-
-  // ---- panels ----
-  document.title = scene.title || document.title;
-  document.getElementById("title").textContent = scene.title;
-  var facts = ["module " + scene.module, "cell " + scene.cell_file];
-  var cellCount = scene.waypoints.filter(function (w) { return w.kind === "cell"; }).length;
-  if (scene.waypoints.length) {
-    facts.push(scene.waypoints.length + " waypoints (" + cellCount + " cell points), " +
-      Math.max(0, scene.waypoints.length - 1) + " moves");
-  }
-  if (scene.total_time_s != null) {
-    facts.push("estimated time " + scene.total_time_s.toFixed(2) + " s");
-  }
-  if (clearance) facts.push("min clearance " + clearance.distance_mm.toFixed(1) + " mm");
-  document.getElementById("facts").textContent = facts.join(" \u00b7 ");
-  var legend = document.getElementById("legend");
-  [["obstacle", COLOURS.obstacle], ["link", COLOURS.link], ["tool", COLOURS.tool],
-    ["TCP trace", COLOURS.trace], ["clearance", COLOURS.clearance]].forEach(function (e) {
-    var s = document.createElement("span");
-    s.textContent = e[0];
-    var rgb = e[1].slice(0, 3).map(function (c) { return Math.round(c * 255); });
-    s.style.setProperty("--c", "rgb(" + rgb.join(",") + ")");
-    legend.appendChild(s);
-  });
-  if (scene.failure) {
-    var box = document.getElementById("failure");
-    box.hidden = false;
-    box.textContent = "Planning failed\n\n" + scene.failure.message;
   }
 
   // ---- time: interpolation between keyframes ----
