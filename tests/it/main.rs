@@ -10,6 +10,8 @@
 //! - `cli`: the command line as such: stdout, stderr, `-o`, flags, exit statuses, `--help`.
 //! - `compare`: `gen-rapid compare` and the paper's comparison of the three searches.
 //! - `locate`: `base: auto`, `xyz` points and branches, `gen-rapid locate`.
+//! - `preview_browser`: the `--html` preview page in headless Chromium (skipped, saying so,
+//!   where no Chromium is installed).
 //! - `random_cells`: generated cells, every method, every module through the dense re-check.
 //! - `common`: helpers: running the binary, temporary cells, reading a module (`module`), the
 //!   fixtures (`fixtures`), the dense re-check (`dense`), and `library`, the only file here that
@@ -22,5 +24,6 @@ mod common;
 mod compare;
 mod golden;
 mod locate;
+mod preview_browser;
 mod random_cells;
 mod safety;
