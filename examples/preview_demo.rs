@@ -14,7 +14,7 @@
 //! move; the smallest clearance is found by sampling points of each shape (a demo value, not
 //! the planner's certified one).
 
-use gen_rapid::preview::{
+use gen_rapid::output::preview::{
     render_html, Keyframe, Scene, SceneBase, SceneClearance, SceneObstacle, ScenePose,
     SceneWaypoint, ShapeDef, ShapeGeometry, ShapeKind, WaypointKind,
 };
