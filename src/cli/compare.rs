@@ -98,10 +98,13 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
     if plans.is_empty() {
         return Err(job.fail(Error::NoMethodSucceeded { failures }));
     }
-    Ok(format!(
-        "gen-rapid compare: {}: {} of 3 methods found a route, {:.2} s",
-        opts.cell.display(),
-        plans.len(),
-        started.elapsed().as_secs_f64()
+    Ok(super::summary(
+        &job,
+        format!(
+            "gen-rapid compare: {}: {} of 3 methods found a route, {:.2} s",
+            opts.cell.display(),
+            plans.len(),
+            started.elapsed().as_secs_f64()
+        ),
     ))
 }

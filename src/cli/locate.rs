@@ -51,15 +51,18 @@ pub fn locate(opts: &LocateOptions) -> Result<String, Failure> {
         write_atomically(path, svg.as_bytes()).map_err(|e| job.fail(e))?;
     }
     emit(None, out.as_bytes()).map_err(|e| job.fail(e))?;
-    Ok(format!(
-        "gen-rapid locate: {}: R {:.3} m^2, {} points{}, {:.2} s",
-        opts.cell.display(),
-        rep.area_m2,
-        rep.points,
-        opts.svg
-            .as_ref()
-            .map(|p| format!(", drawn to {}", p.display()))
-            .unwrap_or_default(),
-        started.elapsed().as_secs_f64()
+    Ok(super::summary(
+        &job,
+        format!(
+            "gen-rapid locate: {}: R {:.3} m^2, {} points{}, {:.2} s",
+            opts.cell.display(),
+            rep.area_m2,
+            rep.points,
+            opts.svg
+                .as_ref()
+                .map(|p| format!(", drawn to {}", p.display()))
+                .unwrap_or_default(),
+            started.elapsed().as_secs_f64()
+        ),
     ))
 }

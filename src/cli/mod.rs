@@ -8,8 +8,20 @@ pub mod locate;
 pub mod run;
 
 use crate::error::Error;
+use crate::pipeline::Loaded;
 use std::io::Write;
 use std::path::Path;
+
+/// The text for stderr after a successful command: the job's warnings (a robot without a
+/// controller file, ...), one per line, then the summary line. Never on stdout.
+pub fn summary(job: &Loaded, line: String) -> String {
+    let mut out = String::new();
+    for w in job.warnings() {
+        out += &w;
+        out.push('\n');
+    }
+    out + &line
+}
 
 /// Writes `bytes` to `path` atomically: a temporary file beside it, then a rename, so a failed
 /// run leaves no half-written file and an existing file is replaced whole.

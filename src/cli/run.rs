@@ -62,14 +62,17 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
         None => String::new(),
     };
     let moves = out.plan.moves();
-    Ok(format!(
-        "gen-rapid: {}: {} move{}{time}, {}, {} on a {} deg grid, {:.2} s",
-        opts.cell.display(),
-        moves,
-        if moves == 1 { "" } else { "s" },
-        clearance,
-        method,
-        grid_deg,
-        started.elapsed().as_secs_f64()
+    Ok(super::summary(
+        &job,
+        format!(
+            "gen-rapid: {}: {} move{}{time}, {}, {} on a {} deg grid, {:.2} s",
+            opts.cell.display(),
+            moves,
+            if moves == 1 { "" } else { "s" },
+            clearance,
+            method,
+            grid_deg,
+            started.elapsed().as_secs_f64()
+        ),
     ))
 }

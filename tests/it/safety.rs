@@ -41,8 +41,13 @@ fn every_move_of_every_module_on_file_keeps_the_clearance() {
                     false => "no boxes".into(),
                 };
                 eprintln!(
-                    "{}: {} samples, {smallest}, {} xyz points",
-                    case.expected, r.samples, r.xyz_points
+                    "{}: {} samples, {smallest}, {} xyz points, {} robtarget points (TCP within {:.4} mm, {:.5} deg)",
+                    case.expected,
+                    r.samples,
+                    r.xyz_points,
+                    r.tcp.points,
+                    r.tcp.worst_mm,
+                    r.tcp.worst_deg
                 );
             }
             Err(f) => failures.extend(f),
