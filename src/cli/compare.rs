@@ -32,6 +32,7 @@ pub struct CompareOptions {
 pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
     let started = Instant::now();
     let job = pipeline::load(&opts.cell)?;
+    super::warn(&job);
     let grid_deg = opts.grid_deg.unwrap_or(job.cell.planner.grid_deg);
     let placed = pipeline::place(&job).map_err(|e| job.fail(e))?;
     let inspected = pipeline::inspect(&job, &placed, grid_deg);
@@ -98,13 +99,10 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
     if plans.is_empty() {
         return Err(job.fail(Error::NoMethodSucceeded { failures }));
     }
-    Ok(super::summary(
-        &job,
-        format!(
-            "gen-rapid compare: {}: {} of 3 methods found a route, {:.2} s",
-            opts.cell.display(),
-            plans.len(),
-            started.elapsed().as_secs_f64()
-        ),
+    Ok(format!(
+        "gen-rapid compare: {}: {} of 3 methods found a route, {:.2} s",
+        opts.cell.display(),
+        plans.len(),
+        started.elapsed().as_secs_f64()
     ))
 }

@@ -34,6 +34,7 @@ pub struct LocateOptions {
 pub fn locate(opts: &LocateOptions) -> Result<String, Failure> {
     let started = Instant::now();
     let job = pipeline::load(&opts.cell)?;
+    super::warn(&job);
     let survey = pipeline::survey(&job).map_err(|e| job.fail(e))?;
     let rep: Report = location::report(&job.cell, &survey);
     let out = if opts.json {
@@ -51,18 +52,15 @@ pub fn locate(opts: &LocateOptions) -> Result<String, Failure> {
         write_atomically(path, svg.as_bytes()).map_err(|e| job.fail(e))?;
     }
     emit(None, out.as_bytes()).map_err(|e| job.fail(e))?;
-    Ok(super::summary(
-        &job,
-        format!(
-            "gen-rapid locate: {}: R {:.3} m^2, {} points{}, {:.2} s",
-            opts.cell.display(),
-            rep.area_m2,
-            rep.points,
-            opts.svg
-                .as_ref()
-                .map(|p| format!(", drawn to {}", p.display()))
-                .unwrap_or_default(),
-            started.elapsed().as_secs_f64()
-        ),
+    Ok(format!(
+        "gen-rapid locate: {}: R {:.3} m^2, {} points{}, {:.2} s",
+        opts.cell.display(),
+        rep.area_m2,
+        rep.points,
+        opts.svg
+            .as_ref()
+            .map(|p| format!(", drawn to {}", p.display()))
+            .unwrap_or_default(),
+        started.elapsed().as_secs_f64()
     ))
 }

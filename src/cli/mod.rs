@@ -12,15 +12,13 @@ use crate::pipeline::Loaded;
 use std::io::Write;
 use std::path::Path;
 
-/// The text for stderr after a successful command: the job's warnings (a robot without a
-/// controller file, ...), one per line, then the summary line. Never on stdout.
-pub fn summary(job: &Loaded, line: String) -> String {
-    let mut out = String::new();
+/// Prints the job's warnings (a robot without a controller file, ...) to stderr, one per line,
+/// right after loading: before the summary line on success, before the error on failure.
+/// Never on stdout.
+pub fn warn(job: &Loaded) {
     for w in job.warnings() {
-        out += &w;
-        out.push('\n');
+        eprintln!("{w}");
     }
-    out + &line
 }
 
 /// Writes `bytes` to `path` atomically: a temporary file beside it, then a rename, so a failed

@@ -24,6 +24,7 @@ pub struct RunOptions {
 pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     let started = Instant::now();
     let job = pipeline::load(&opts.cell)?;
+    super::warn(&job);
     let method = opts.planner.unwrap_or(job.cell.planner.method);
     let grid_deg = opts.grid_deg.unwrap_or(job.cell.planner.grid_deg);
     let out = pipeline::run(&job, method, grid_deg).map_err(|e| job.fail(e))?;
@@ -62,17 +63,14 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
         None => String::new(),
     };
     let moves = out.plan.moves();
-    Ok(super::summary(
-        &job,
-        format!(
-            "gen-rapid: {}: {} move{}{time}, {}, {} on a {} deg grid, {:.2} s",
-            opts.cell.display(),
-            moves,
-            if moves == 1 { "" } else { "s" },
-            clearance,
-            method,
-            grid_deg,
-            started.elapsed().as_secs_f64()
-        ),
+    Ok(format!(
+        "gen-rapid: {}: {} move{}{time}, {}, {} on a {} deg grid, {:.2} s",
+        opts.cell.display(),
+        moves,
+        if moves == 1 { "" } else { "s" },
+        clearance,
+        method,
+        grid_deg,
+        started.elapsed().as_secs_f64()
     ))
 }

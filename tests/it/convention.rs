@@ -81,6 +81,27 @@ fn a_renamed_urdf_warns_and_says_so_and_robot_controller_keeps_its_convention() 
         .replace("! cell: no_obstacles_depth_first.yaml", "! cell: cell.yaml");
     assert_eq!(stdout(&o), expected);
 
+    // On failure too, before the error.
+    let path = cell_with(dir.path(), "copy.urdf", "");
+    let text = std::fs::read_to_string(&path)
+        .expect("cell")
+        .replace("joints: [10, 10, 0]", "joints: [175, 10, 0]");
+    assert!(text.contains("[175, 10, 0]"));
+    std::fs::write(&path, text).expect("write");
+    let o = gen_rapid(&[arg(&path)]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.starts_with("warning: ")
+            && err.contains("\nerror: point 'Q' is out of range: axis 1 = 175 deg"),
+        "{err}"
+    );
+    assert!(
+        err.contains("(ranges from the joint limits of copy.urdf (no controller file))"),
+        "{err}"
+    );
+    assert!(stdout(&o).is_empty());
+
     // compare and locate warn too.
     let path = cell_with(dir.path(), "copy.urdf", "");
     for cmd in ["compare", "locate"] {
