@@ -209,10 +209,15 @@ pub struct Planner {
     pub clearance_mm: f64,
 }
 
+/// The cell's `motion:` defaults.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Motion {
+    /// speeddata of a move into a point without its own `speed`.
     pub speed: String,
+    /// zonedata of a move into a point without its own `zone`.
     pub zone: String,
+    /// The tooldata every move uses: the `tool:` block's name when there is one, else
+    /// `motion.tool`.
     pub tool: String,
 }
 

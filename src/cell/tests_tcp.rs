@@ -40,6 +40,8 @@ fn the_tool_the_work_object_and_robtargets_are_read_as_given() {
         Some(Path::new("cells/../robots/r.controller.yaml"))
     );
     assert_eq!(c.robot.controller_loc.line, 5);
+    // Every move uses the tool block's tooldata.
+    assert_eq!(c.motion.tool, "tTorch");
     let t = c.tool.expect("tool");
     assert_eq!(
         (t.name.as_str(), t.mass_kg, t.cog_mm),

@@ -71,18 +71,12 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
         .file_name()
         .map(|f| f.to_string_lossy().into_owned())
         .unwrap_or_default();
-    let (tool, tooldata) = match &cell.tool {
-        Some(t) => (
-            t.name.clone(),
-            Some(ToolData {
-                tframe: pose(&t.tframe),
-                mass_kg: t.mass_kg,
-                cog_mm: t.cog_mm,
-                shapes: t.shapes.iter().map(|s| s.name.clone()).collect(),
-            }),
-        ),
-        None => (cell.motion.tool.clone(), None),
-    };
+    let tooldata = cell.tool.as_ref().map(|t| ToolData {
+        tframe: pose(&t.tframe),
+        mass_kg: t.mass_kg,
+        cog_mm: t.cog_mm,
+        shapes: t.shapes.iter().map(|s| s.name.clone()).collect(),
+    });
     Program {
         module: cell.module.clone(),
         header: Header {
@@ -101,7 +95,8 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             estimated_time_s: plan.estimate.as_ref().map(|e| e.total_s),
         },
         targets,
-        tool,
+        // The tool block's name when there is one (the cell validation sees to it).
+        tool: cell.motion.tool.clone(),
         tooldata,
         wobj: cell.wobj.as_ref().map(|w| WobjData {
             name: w.name.clone(),

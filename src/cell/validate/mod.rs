@@ -35,10 +35,13 @@ pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
     let points = points::points(&raw.points)?;
     let planner = planner(raw.planner.as_ref().map(|p| &p.value))?;
     let raw_motion = raw.motion.as_ref().map(|m| &m.value);
-    let motion = motion(raw_motion)?;
+    let mut motion = motion(raw_motion)?;
     let tool = raw.tool.as_ref().map(tool::tool).transpose()?;
     let wobj = raw.wobj.as_ref().map(tool::wobj).transpose()?;
     tool_and_motion(tool.as_ref(), raw_motion, &points)?;
+    if let Some(t) = &tool {
+        motion.tool = t.name.clone();
+    }
     one_name_space(
         &module,
         loc(&raw.module),
