@@ -16,10 +16,12 @@
 //! wrist does not enter the collision model: the forearm cylinder covers it (paper section 6).
 //!
 //! Files: [`cspace`] (the grid, paper section 3; knows no geometry), [`wave`] (wave expansion),
-//! [`search`] (the three methods, and [`Method`]), [`shorten`], [`merge`].
+//! [`search`] (the three methods, and [`Method`]), [`shorten`], [`merge`]; [`motion`] the speed
+//! and zone of each move.
 
 pub mod cspace;
 pub mod merge;
+pub mod motion;
 pub mod search;
 pub mod shorten;
 pub mod wave;
@@ -390,6 +392,10 @@ mod tests {
             joints_deg: [a[0], a[1], a[2], wrist[0], wrist[1], wrist[2]],
             loc: Loc::default(),
             origin: Origin::Joints,
+            motion: crate::place::MoveMotion {
+                speed: "v300".into(),
+                zone: "fine".into(),
+            },
         }
     }
 

@@ -8,6 +8,7 @@
 //! - `safety`: the independent dense re-check of every module on file, and of the re-check
 //!   itself (what the base stands on).
 //! - `cli`: the command line as such: stdout, stderr, `-o`, flags, exit statuses, `--help`.
+//! - `convention`: the robot convention stated (header lines, the warning, `robot.controller`).
 //! - `compare`: `gen-rapid compare` and the paper's comparison of the three searches.
 //! - `locate`: `base: auto`, `xyz` points and branches, `gen-rapid locate`.
 //! - `preview_browser`: the `--html` preview page in headless Chromium (skipped, saying so,
@@ -22,6 +23,7 @@
 mod cli;
 mod common;
 mod compare;
+mod convention;
 mod golden;
 mod locate;
 mod preview_browser;

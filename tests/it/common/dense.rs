@@ -3,7 +3,9 @@
 //! move so densely that no point of the arm moves more than 1 mm between samples, measuring the
 //! exact distance to every box with parry3d's own shapes. It shares no code with `collision` or
 //! `geometry`: only the cell parser and the robot's kinematics (which `robot`'s tests hold
-//! against RobotStudio).
+//! against RobotStudio). Robtarget points, the tool, the work object and each move's speed and
+//! zone are checked in `tcp.rs`. (The tool's shapes are not in this check yet: they enter the
+//! planner's collision model with the engine work of issue 9.)
 //!
 //! # What the robot stands on: this check's own reading
 //!
@@ -18,6 +20,7 @@
 
 use super::library::{Base, Cell, Robot, Target};
 use super::module::Module;
+use super::tcp::{check_tcp, TcpReport};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use parry3d::math::{Pose, Vector};
 use parry3d::shape::{Cuboid, Cylinder};
@@ -189,6 +192,8 @@ pub struct Report {
     pub smallest: Nearest,
     /// Cell points given as `xyz` whose written joints were held against them.
     pub xyz_points: usize,
+    /// The robtarget points, tooldata, wobjdata and moves (`tcp.rs`).
+    pub tcp: TcpReport,
 }
 
 /// Checks a module written for `cell` by `robot` (see the module doc); `label` names it in
@@ -287,6 +292,8 @@ pub fn check_module(
                     ));
                 }
             }
+            // Reached by its jointtarget: `tcp::check_tcp` below.
+            Target::Robtarget { .. } => {}
         }
     }
     for (name, axes) in &module.targets {
@@ -350,12 +357,20 @@ pub fn check_module(
         )),
     }
 
+    let tcp = match check_tcp(cell, robot, &module, &scene.cell_from_robot) {
+        Ok(r) => r,
+        Err(f) => {
+            failures.extend(f.into_iter().map(|m| format!("{label}: {m}")));
+            TcpReport::default()
+        }
+    };
     if failures.is_empty() {
         Ok(Report {
             module,
             samples,
             smallest,
             xyz_points,
+            tcp,
         })
     } else {
         Err(failures)
