@@ -91,7 +91,14 @@ impl Error {
                 source: PlanError::WristTurn { .. },
                 ..
             } => Some("only axes 4..6 move between these two points; add a point between them whose axes 1..3 take the tool away from the obstacle, or give the second point a wrist the tool can turn to".into()),
+            Error::Robot {
+                source: RobotError::ReadController { .. } | RobotError::Controller { .. },
+                ..
+            } => Some("robot.controller is resolved relative to the cell file; without it, the <stem>.controller.yaml beside the URDF is read if there is one".into()),
             Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
+            Error::Place(PlaceError::Range { .. }) => Some("joint values are controller values (what a jointtarget holds) and must lie in the robot's ranges, all six axes; a point without axes 4..6 takes robot.wrist".into()),
+            Error::Place(PlaceError::Robtarget { .. }) => Some("a robtarget is the TCP pose [[x, y, z], [q1, q2, q3, q4]] in the work object's frame (mm, quaternion [w, x, y, z]) of the tool's TCP (tool.tframe); confdata [cf1, cf4, cf6, cfx] picks one of the arm's solutions, without it the one nearest the previous point is taken".into()),
+            Error::Rapid(RapidError::OutOfRange { .. }) => Some("this is a bug in gen-rapid: an earlier stage let an out-of-range value through; please report it with the cell file".into()),
             Error::Place(PlaceError::Locate { .. }) => Some("`gen-rapid locate CELL --svg FILE` draws every point's reach region; move the points closer together or give `base: [x, y, z]`".into()),
             Error::Place(PlaceError::Ik { source, .. }) if matches!(**source, IkError::Unreachable { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `gen-rapid locate CELL` shows which base positions reach every point".into()),
             _ => None,

@@ -26,9 +26,25 @@ A minimal cell (mm and degrees; joint values are the controller's, as in a joint
   points:
     - { name: P1, joints: [-30, 0, 0] }
     - { name: P2, joints: [30, 0, 0] }
-Optional: robot.yaw, robot.wrist, points as xyz (wrist centre), base: auto, planner.method
-(extensile), planner.grid (1 deg), planner.clearance (10 mm), motion.speed/zone/tool
-(v300, fine, tool0). README.md describes every key.
+Optional: robot.yaw, robot.wrist, robot.controller (a controller file for the URDF), points as
+xyz (wrist centre), base: auto, planner.method (extensile), planner.grid (1 deg),
+planner.clearance (10 mm), motion.speed/zone/tool (v300, fine, tool0).
+
+A tool, a work object and points as TCP poses (robtargets; quaternions [w, x, y, z]):
+  tool:                                  # the tooldata to declare, with its collision volumes
+    name: tTorch
+    tframe: [[0, 0, 350], [0.9238795, 0, 0.3826834, 0]]   # TCP in the flange frame (mm, quat)
+    mass: 2.5                            # kg, default 1; cog: [x, y, z] mm, default [0, 0, 0]
+    shapes:                              # flange frame; end them short of the TCP
+      - { name: neck, cylinder: { from: [0, 0, 0], to: [0, 0, 300], radius: 25 } }
+      - { name: body, box: { min: [-45, -45, 0], max: [45, 45, 110] } }
+      - { name: cup, sphere: { centre: [0, 0, 320], radius: 15 } }
+  wobj: { name: wobjDoor, uframe: [[400, 0, 500], [1, 0, 0, 0]] }   # user frame in the cell
+  points:
+    - { name: W1, robtarget: [[600, -100, 300], [0, 0, 1, 0]] }     # TCP pose in the wobj
+    - { name: W2, robtarget: [[600, 100, 300], [0, 0, 1, 0], [0, -1, 0, 0]], speed: v100 }
+A robtarget point may give its confdata [cf1, cf4, cf6, cfx]; speed and zone set the move into
+a point. With a tool block, leave out motion.tool. README.md describes every key.
 
 The module goes to stdout (or -o FILE); one summary line goes to stderr. On error nothing is
 written to stdout and no FILE is made.

@@ -1,7 +1,8 @@
-//! The RAPID identifier rule, one for the whole program: what a module, point, speed, zone or
-//! tool name may be. The cell validation applies it to the names a cell gives (an input error at
-//! their line) and the renderer applies it again, as a last guard, to every name it writes. A
-//! leaf: it knows nothing of cells or modules.
+//! The RAPID identifier rule, one for the whole program: what a module, point, speed, zone,
+//! tool or work-object name may be, and the one name the module derives from a cell name (the
+//! `CONST robtarget` of a robtarget point, [`robtarget_name`]). The cell validation applies it to
+//! the names a cell gives (an input error at their line) and the renderer applies it again, as a
+//! last guard, to every name it writes. A leaf: it knows nothing of cells or modules.
 
 /// Longest identifier RAPID accepts, in characters.
 pub const MAX_IDENTIFIER_LEN: usize = 32;
@@ -113,6 +114,19 @@ pub const PREDEFINED_NAMES: &[&str] = &[
     "MoveC",
     "MoveExtJ",
 ];
+
+/// What the module appends to a robtarget point's name for its `CONST robtarget` (the point's
+/// own name stays its `CONST jointtarget`, the target of the move).
+pub const ROBTARGET_SUFFIX: &str = "_rt";
+
+/// The name of the `CONST robtarget` written for the robtarget point `point`: `<point>_rt`
+/// (`W1` -> `W1_rt`). It cannot take a via's name (`via<L>_<I>`, possibly `_x<N>`: none ends in
+/// `_rt`); the cell validation refuses a cell where it would take another name of the module
+/// (a point called `W1_rt` beside a robtarget point `W1`) or break the identifier rule (a point
+/// name longer than 29 characters).
+pub fn robtarget_name(point: &str) -> String {
+    format!("{point}{ROBTARGET_SUFFIX}")
+}
 
 /// Why a string is not a usable RAPID identifier.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]

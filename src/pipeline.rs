@@ -12,11 +12,12 @@
 use crate::cell::{self, Cell};
 use crate::collision::CollisionModel;
 use crate::error::{Error, Failure};
-use crate::output::{program, rapid};
+use crate::output::program::{self, RobotFacts};
+use crate::output::rapid::{self, AxisRanges};
 use crate::place::{self, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
 use crate::plan::{self, Method, Plan};
-use crate::robot::Robot;
+use crate::robot::{Coupling, Robot, RobotError};
 use crate::timing;
 use std::path::Path;
 use std::time::Instant;
@@ -29,6 +30,41 @@ pub struct Loaded {
 }
 
 impl Loaded {
+    /// What the module states about the robot files (file names, like the cell's: the module
+    /// names the files, not where they lie, so a cell moved elsewhere gives the same bytes).
+    pub fn robot_facts(&self) -> RobotFacts {
+        let shown = |p: &Path| {
+            p.file_name()
+                .map(|f| f.to_string_lossy().into_owned())
+                .unwrap_or_default()
+        };
+        let c = &self.robot.controller;
+        RobotFacts {
+            urdf: shown(&self.robot.urdf_path),
+            controller: c.source.as_deref().map(shown),
+            parallelogram: c.coupling == Coupling::Parallelogram,
+            ranges: AxisRanges {
+                axes_deg: c.axes.map(|a| [a.min_deg, a.max_deg]),
+                coupled_axis3_deg: c.coupled_axis3_deg,
+            },
+        }
+    }
+
+    /// Warnings for stderr: the robot convention is never silent (issue 8).
+    pub fn warnings(&self) -> Vec<String> {
+        match &self.robot.controller.source {
+            Some(_) => Vec::new(),
+            None => vec![format!(
+                "warning: {} has no controller file beside it ({}): the robot is taken as a serial arm with the URDF's joint limits and speeds; name one with robot.controller if this robot has another convention",
+                self.robot.urdf_path.display(),
+                crate::robot::controller::path_beside(&self.robot.urdf_path)
+                    .file_name()
+                    .map(|f| f.to_string_lossy().into_owned())
+                    .unwrap_or_default()
+            )],
+        }
+    }
+
     /// A later stage's error, with the cell file's name and text for the message.
     pub fn fail(&self, error: Error) -> Failure {
         Failure {
@@ -64,10 +100,17 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
         Ok(c) => c,
         Err(e) => return Err(fail(e.into(), Some(text))),
     };
-    match Robot::load(&cell.robot.urdf_path) {
+    match Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref()) {
         Ok(robot) => Ok(Loaded { cell, text, robot }),
         Err(source) => {
-            let loc = cell.robot.urdf_loc;
+            let loc = match source {
+                RobotError::ReadController { .. } | RobotError::Controller { .. }
+                    if cell.robot.controller_path.is_some() =>
+                {
+                    cell.robot.controller_loc
+                }
+                _ => cell.robot.urdf_loc,
+            };
             Err(fail(Error::Robot { source, loc }, Some(text)))
         }
     }
@@ -125,7 +168,7 @@ pub fn time(job: &Loaded, mut plan: Plan) -> Plan {
 
 /// Render: the RAPID module of a plan.
 pub fn render(job: &Loaded, placed: &Placed, plan: &Plan) -> Result<Rendered, Error> {
-    let program = program::build(&job.cell, placed, plan);
+    let program = program::build(&job.cell, placed, plan, &job.robot_facts());
     let text = rapid::render(&program)?;
     Ok(Rendered { program, text })
 }

@@ -1,8 +1,9 @@
 //! The one table of output precisions: how many decimals each kind of number has in the RAPID
-//! module. The cell validation refuses input finer than what the module can state (so every
-//! cell value appears in the module exactly as given), the planner rounds computed joint values
-//! to it before proving them (so what is proven is what is written), and the renderer formats
-//! with it. A leaf: it knows nothing of cells, plans or text.
+//! module (joint values, header figures, the poses of robtargets, tooldata and wobjdata). The
+//! cell validation refuses input finer than what the module can state (so every cell value
+//! appears in the module exactly as given; quaternions excepted, which are normalised), the
+//! planner rounds computed joint values to it before proving them (so what is proven is what is
+//! written), and the renderer formats with it. A leaf: it knows nothing of cells, plans or text.
 
 /// Joint values in `CONST jointtarget` (deg); also the cell's joint values and `robot.wrist`.
 pub const JOINT_DECIMALS: usize = 3;
@@ -14,6 +15,15 @@ pub const GRID_DECIMALS: usize = 3;
 pub const YAW_DECIMALS: usize = 3;
 /// The estimated manipulation time in the header (s).
 pub const TIME_DECIMALS: usize = 2;
+/// Positions in `CONST robtarget`, `PERS tooldata` (tframe, cog) and `PERS wobjdata` (uframe),
+/// mm; also the cell's robtarget positions, `tool.tframe`, `tool.cog` and `wobj.uframe`.
+pub const POSITION_DECIMALS: usize = 3;
+/// Quaternion components `[q1, q2, q3, q4]` in the module. The cell's quaternions are
+/// normalised when read (any number of decimals); the module writes the normalised values to
+/// this many decimals, as RobotStudio does, so their norm is 1 within 2e-9.
+pub const QUATERNION_DECIMALS: usize = 9;
+/// The tool's mass in `PERS tooldata` (kg); also the cell's `tool.mass`.
+pub const MASS_DECIMALS: usize = 3;
 
 /// `10^decimals`, the scale of the rounding.
 fn scale(decimals: usize) -> f64 {
@@ -34,7 +44,7 @@ pub fn exceeds(v: f64, decimals: usize) -> bool {
 
 /// Joint values rounded to the written precision ([`JOINT_DECIMALS`]), never `-0.0`: the values
 /// the planner proves and the module states.
-pub fn quantize_joints(a: [f64; 3]) -> [f64; 3] {
+pub fn quantize_joints<const N: usize>(a: [f64; N]) -> [f64; N] {
     a.map(|x| {
         let r = round(x, JOINT_DECIMALS);
         if r == 0.0 {

@@ -6,13 +6,23 @@
 //! can state them). Every error carries a [`Loc`] (line:column in the cell file) so the user
 //! sees where the input is at fault. Lengths are millimetres and angles degrees, as in RAPID;
 //! paths are relative to the cell file. This module knows nothing of URDF or planning; it names
-//! two types of later stages, the IK [`Branch`] a point may force and the search [`Method`].
+//! three types of later stages: the IK [`Branch`] an `xyz` point may force, the [`ConfData`] a
+//! robtarget may ask for, and the search [`Method`].
+//!
+//! What the cell says about the tool and the TCP (issue 9): a `tool:` block ([`Tool`]: tooldata
+//! name, TCP frame in the flange frame, load, collision shapes), a `wobj:` block ([`Wobj`]: the
+//! user frame robtargets are given in; without it wobj0, whose frame is the cell frame), points
+//! as robtargets ([`Target::Robtarget`]: the TCP pose in the work object, with or without
+//! confdata), and per-point `speed`/`zone` (the move into the point). Quaternions are
+//! `[w, x, y, z]` (RAPID's `[q1, q2, q3, q4]`), normalised when read; a norm off by more than
+//! [`QUATERNION_NORM_TOL`] is refused as a typo.
 
 mod raw;
 mod validate;
 
 use crate::geometry::Aabb;
 use crate::plan::search::Method;
+use crate::robot::ik::six::ConfData;
 use crate::robot::ik::Branch;
 use serde_saphyr::Location;
 use std::path::{Path, PathBuf};
@@ -42,16 +52,25 @@ pub enum Base {
     Auto,
 }
 
+/// How far a quaternion's norm may be off 1 before it is refused (issue 9's contract).
+pub const QUATERNION_NORM_TOL: f64 = 1e-3;
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct RobotSpec {
     /// Resolved against the cell file's directory.
     pub urdf_path: PathBuf,
     pub urdf_loc: Loc,
+    /// `robot.controller`: the controller file named explicitly, resolved against the cell
+    /// file's directory. `None`: the `<stem>.controller.yaml` beside the URDF, if there is one.
+    pub controller_path: Option<PathBuf>,
+    pub controller_loc: Loc,
     pub base: Base,
     pub base_loc: Loc,
     pub yaw_deg: f64,
     /// Axes 4..6 held during the moves, deg.
     pub wrist_deg: [f64; 3],
+    /// Where `robot.wrist` is given (`None`: the default).
+    pub wrist_loc: Option<Loc>,
 }
 
 /// A box obstacle of the cell: THE obstacle type (the collision model and the location stage
@@ -167,12 +186,19 @@ pub enum Target {
         branch: Option<Branch>,
         branch_loc: Loc,
     },
+    /// A robtarget: the TCP pose in the work object's frame (mm, normalised quaternion), and the
+    /// configuration asked for, if any.
+    Robtarget { pose: Frame, conf: Option<ConfData> },
 }
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct Point {
     pub name: String,
     pub target: Target,
+    /// The speeddata of the move into this point (`None`: `motion.speed`).
+    pub speed: Option<String>,
+    /// The zonedata of the move into this point (`None`: `motion.zone`).
+    pub zone: Option<String>,
     pub loc: Loc,
 }
 
@@ -183,10 +209,15 @@ pub struct Planner {
     pub clearance_mm: f64,
 }
 
+/// The cell's `motion:` defaults.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Motion {
+    /// speeddata of a move into a point without its own `speed`.
     pub speed: String,
+    /// zonedata of a move into a point without its own `zone`.
     pub zone: String,
+    /// The tooldata every move uses: the `tool:` block's name when there is one, else
+    /// `motion.tool`.
     pub tool: String,
 }
 
@@ -215,6 +246,8 @@ pub mod defaults {
     pub const SPEED: &str = "v300";
     pub const ZONE: &str = "fine";
     pub const TOOL: &str = "tool0";
+    /// The load of a `tool:` block that states no `mass`, kg.
+    pub const TOOL_MASS_KG: f64 = 1.0;
     /// Finest grid accepted (deg): 0.25 deg over the IRB 1400's ranges is ~400 M nodes.
     pub const MIN_GRID_DEG: f64 = 0.25;
     pub const MAX_GRID_DEG: f64 = 10.0;
@@ -318,3 +351,6 @@ pub fn check_grid(g: f64) -> Result<f64, String> {
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod tests_tcp;

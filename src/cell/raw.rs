@@ -17,6 +17,10 @@ pub struct RawCell {
     pub planner: Option<Spanned<RawPlanner>>,
     #[serde(default)]
     pub motion: Option<Spanned<RawMotion>>,
+    #[serde(default)]
+    pub tool: Option<Spanned<RawTool>>,
+    #[serde(default)]
+    pub wobj: Option<Spanned<RawWobj>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -28,6 +32,8 @@ pub struct RawRobot {
     pub yaw: Option<Spanned<f64>>,
     #[serde(default)]
     pub wrist: Option<Spanned<Vec<f64>>>,
+    #[serde(default)]
+    pub controller: Option<Spanned<String>>,
 }
 
 /// `base: [x, y, z]` or `base: auto`.
@@ -89,6 +95,13 @@ pub struct RawPoint {
     pub xyz: Option<Spanned<Vec<f64>>>,
     #[serde(default)]
     pub branch: Option<Spanned<String>>,
+    /// `[[x, y, z], [q1, q2, q3, q4]]` or `[[x, y, z], [q1, q2, q3, q4], [cf1, cf4, cf6, cfx]]`.
+    #[serde(default)]
+    pub robtarget: Option<Spanned<Vec<Spanned<Vec<f64>>>>>,
+    #[serde(default)]
+    pub speed: Option<Spanned<String>>,
+    #[serde(default)]
+    pub zone: Option<Spanned<String>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -111,4 +124,55 @@ pub struct RawMotion {
     pub zone: Option<Spanned<String>>,
     #[serde(default)]
     pub tool: Option<Spanned<String>>,
+}
+
+/// A pose as RAPID writes it, `[[x, y, z], [q1, q2, q3, q4]]`.
+pub type RawPose = Spanned<Vec<Spanned<Vec<f64>>>>;
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawTool {
+    pub name: Spanned<String>,
+    pub tframe: RawPose,
+    #[serde(default)]
+    pub mass: Option<Spanned<f64>>,
+    #[serde(default)]
+    pub cog: Option<Spanned<Vec<f64>>>,
+    #[serde(default)]
+    pub shapes: Vec<Spanned<RawShape>>,
+}
+
+/// One tool shape: a name and exactly one of `cylinder`, `box`, `sphere`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawShape {
+    pub name: Spanned<String>,
+    #[serde(default)]
+    pub cylinder: Option<Spanned<RawCylinder>>,
+    #[serde(default, rename = "box")]
+    pub aabb: Option<Spanned<RawBox>>,
+    #[serde(default)]
+    pub sphere: Option<Spanned<RawSphere>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCylinder {
+    pub from: Spanned<Vec<f64>>,
+    pub to: Spanned<Vec<f64>>,
+    pub radius: Spanned<f64>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSphere {
+    pub centre: Spanned<Vec<f64>>,
+    pub radius: Spanned<f64>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawWobj {
+    pub name: Spanned<String>,
+    pub uframe: RawPose,
 }

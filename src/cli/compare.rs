@@ -32,6 +32,7 @@ pub struct CompareOptions {
 pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
     let started = Instant::now();
     let job = pipeline::load(&opts.cell)?;
+    super::warn(&job);
     let grid_deg = opts.grid_deg.unwrap_or(job.cell.planner.grid_deg);
     let placed = pipeline::place(&job).map_err(|e| job.fail(e))?;
     let inspected = pipeline::inspect(&job, &placed, grid_deg);

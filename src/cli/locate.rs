@@ -34,6 +34,7 @@ pub struct LocateOptions {
 pub fn locate(opts: &LocateOptions) -> Result<String, Failure> {
     let started = Instant::now();
     let job = pipeline::load(&opts.cell)?;
+    super::warn(&job);
     let survey = pipeline::survey(&job).map_err(|e| job.fail(e))?;
     let rep: Report = location::report(&job.cell, &survey);
     let out = if opts.json {

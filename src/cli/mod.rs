@@ -8,8 +8,18 @@ pub mod locate;
 pub mod run;
 
 use crate::error::Error;
+use crate::pipeline::Loaded;
 use std::io::Write;
 use std::path::Path;
+
+/// Prints the job's warnings (a robot without a controller file, ...) to stderr, one per line,
+/// right after loading: before the summary line on success, before the error on failure.
+/// Never on stdout.
+pub fn warn(job: &Loaded) {
+    for w in job.warnings() {
+        eprintln!("{w}");
+    }
+}
 
 /// Writes `bytes` to `path` atomically: a temporary file beside it, then a rename, so a failed
 /// run leaves no half-written file and an existing file is replaced whole.

@@ -24,6 +24,7 @@ pub struct RunOptions {
 pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     let started = Instant::now();
     let job = pipeline::load(&opts.cell)?;
+    super::warn(&job);
     let method = opts.planner.unwrap_or(job.cell.planner.method);
     let grid_deg = opts.grid_deg.unwrap_or(job.cell.planner.grid_deg);
     let out = pipeline::run(&job, method, grid_deg).map_err(|e| job.fail(e))?;

@@ -264,6 +264,10 @@ mod tests {
             joints_deg: [a1, 0.0, 0.0, 0.0, 0.0, 0.0],
             loc: Loc::default(),
             origin: Origin::Joints,
+            motion: crate::place::MoveMotion {
+                speed: "v300".into(),
+                zone: "fine".into(),
+            },
         };
         let points = vec![point("P1", 0.0), point("P2", 9.0)];
         let arm = [

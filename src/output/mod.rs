@@ -8,11 +8,13 @@
 //! - [`cspace_svg`]: the search over the configuration space (paper Figs. 11-13);
 //! - [`topview_svg`] and [`location`]: the feasible base region, drawn and reported (paper
 //!   section 2, Fig. 1);
-//! - [`comparison`]: the three searches side by side (paper section 6).
+//! - [`comparison`]: the three searches side by side (paper section 6);
+//! - [`preview`]: the self-contained 3D preview page (HTML + WebGL) of the cell and the motion.
 
 pub mod comparison;
 pub mod cspace_svg;
 pub mod location;
+pub mod preview;
 pub mod program;
 pub mod rapid;
 pub mod topview_svg;

@@ -1,32 +1,69 @@
-//! [`Plan`] -> [`rapid::Program`](Program): the targets in visiting order with all six axes,
-//! the header facts (the cell file, the planner and grid, the clearance asked for, the base
-//! used, the moves, the certified smallest clearance, the time estimate), and the cell's speed,
-//! zone and tool. Everything comes from the cell, the placed job and the plan; no text is
-//! produced here (`rapid` does).
+//! [`Plan`] -> [`rapid::Program`](Program): the targets in visiting order with all six axes and
+//! the speed and zone of the move into each (`Plan::motion_into`), the robtarget written beside
+//! each robtarget point, the tooldata and wobjdata the cell declares, the header facts (the cell
+//! file, the robot files and their convention, the planner and grid, the clearance asked for,
+//! the base used, the moves, the certified smallest clearance, the time estimate) and the
+//! robot's ranges for the renderer's last guard. Everything comes from the cell, the placed job,
+//! the plan and the [`RobotFacts`] the pipeline hands over; no text is produced here (`rapid`
+//! does).
 
-use super::rapid::{Header, JointTarget, Program, TargetKind};
-use crate::cell::Cell;
-use crate::place::Placed;
+use super::rapid::{
+    AxisRanges, Header, JointTarget, Pose, Program, RobTarget, TargetKind, ToolData, WobjData,
+};
+use crate::cell::{Cell, Frame};
+use crate::place::{Origin, Placed};
 use crate::plan::{Plan, WaypointKind};
 
-/// The module's content for a plan of `cell`, placed as `placed`.
-pub fn build(cell: &Cell, placed: &Placed, plan: &Plan) -> Program {
-    let name = |i: usize| {
-        placed
-            .points
-            .get(i)
-            .map(|p| p.name.clone())
-            .unwrap_or_default()
-    };
+/// What the module states about the robot and checks against it, from the robot files (the
+/// pipeline fills it, so the output stage reads no robot model).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RobotFacts {
+    /// The URDF's file name.
+    pub urdf: String,
+    /// The controller file's name, `None` when there is none (serial arm, URDF limits).
+    pub controller: Option<String>,
+    /// Axis 3 coupled to axis 2 (parallelogram).
+    pub parallelogram: bool,
+    pub ranges: AxisRanges,
+}
+
+fn pose(f: &Frame) -> Pose {
+    Pose {
+        pos_mm: f.pos_mm,
+        quat_wxyz: f.quat_wxyz,
+    }
+}
+
+/// The module's content for a plan of `cell`, placed as `placed`, on the robot of `robot`.
+pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> Program {
     let targets = plan
         .waypoints
         .iter()
-        .map(|w| JointTarget {
-            kind: match w.kind {
-                WaypointKind::CellPoint(i) => TargetKind::CellPoint { name: name(i) },
-                WaypointKind::Via { leg, index } => TargetKind::Via { leg, index },
-            },
-            axes_deg: w.joints_deg,
+        .enumerate()
+        .map(|(k, w)| {
+            let motion = plan.motion_into(k, &placed.points);
+            let (kind, robtarget) = match w.kind {
+                WaypointKind::CellPoint(i) => {
+                    let p = placed.points.get(i);
+                    let robtarget = match p.map(|p| &p.origin) {
+                        Some(Origin::Robtarget { pose: f, conf }) => Some(RobTarget {
+                            pose: pose(f),
+                            conf: conf.to_array(),
+                        }),
+                        _ => None,
+                    };
+                    let name = p.map(|p| p.name.clone()).unwrap_or_default();
+                    (TargetKind::CellPoint { name }, robtarget)
+                }
+                WaypointKind::Via { leg, index } => (TargetKind::Via { leg, index }, None),
+            };
+            JointTarget {
+                kind,
+                axes_deg: w.joints_deg,
+                speed: motion.speed,
+                zone: motion.zone,
+                robtarget,
+            }
         })
         .collect();
     let cell_file = cell
@@ -34,11 +71,20 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan) -> Program {
         .file_name()
         .map(|f| f.to_string_lossy().into_owned())
         .unwrap_or_default();
+    let tooldata = cell.tool.as_ref().map(|t| ToolData {
+        tframe: pose(&t.tframe),
+        mass_kg: t.mass_kg,
+        cog_mm: t.cog_mm,
+        shapes: t.shapes.iter().map(|s| s.name.clone()).collect(),
+    });
     Program {
         module: cell.module.clone(),
         header: Header {
             generator: format!("gen-rapid {}", env!("CARGO_PKG_VERSION")),
             cell_file,
+            urdf: robot.urdf.clone(),
+            controller: robot.controller.clone(),
+            parallelogram: robot.parallelogram,
             planner: plan.method.name().to_string(),
             grid_deg: plan.grid_deg,
             clearance_mm: cell.planner.clearance_mm,
@@ -49,8 +95,13 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan) -> Program {
             estimated_time_s: plan.estimate.as_ref().map(|e| e.total_s),
         },
         targets,
-        speed: cell.motion.speed.clone(),
-        zone: cell.motion.zone.clone(),
+        // The tool block's name when there is one (the cell validation sees to it).
         tool: cell.motion.tool.clone(),
+        tooldata,
+        wobj: cell.wobj.as_ref().map(|w| WobjData {
+            name: w.name.clone(),
+            uframe: pose(&w.uframe),
+        }),
+        ranges: robot.ranges,
     }
 }

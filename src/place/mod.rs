@@ -1,7 +1,18 @@
 //! The place stage: [`Cell`] + [`Robot`] -> [`Placed`], where the robot stands and every point
 //! resolved to all six axes. Paper: Ting & Jar (2006) section 2 (robot location, [`locate`]);
 //! beyond it, points given as wrist-centre positions, solved by closed-form inverse kinematics
-//! (`points.rs`).
+//! (`points.rs`), and points given as robtargets (TCP poses in a work object, with a tool),
+//! solved by the six-axis inverse kinematics (`robtarget.rs`).
+//!
+//! **Every value in range** (issue 8): a cell's own values (a `joints` point, `robot.wrist`)
+//! outside the controller's ranges (the URDF's limits without a controller file; all six axes
+//! and the coupled axis-3 range) are an input error at their line ([`PlaceError::Range`]); a
+//! computed one (IK) is never chosen, and a point without an in-range solution is a planning
+//! error naming it.
+//!
+//! **The motion of each move** ([`MoveMotion`]): every placed point carries the speed and zone
+//! of the move into it (its own `speed`/`zone`, else `motion.speed`/`motion.zone`); the plan
+//! derives the vias' from them (`Plan::motion_into`).
 //!
 //! **The one rule for where the robot stands.** `base: [x, y, z]` is used as given. `base: auto`
 //! stands the robot on the floor (z = [`AUTO_BASE_Z_MM`]) at the first position of the feasible
@@ -24,10 +35,16 @@ mod points;
 pub use frames::Placement;
 pub use locate::Location;
 
-use crate::cell::{Base, Cell, Loc, Target};
+mod robtarget;
+
+pub use robtarget::{pose_error, ANGLE_TOL_DEG, POSITION_TOL_MM};
+
+use crate::cell::{Base, Cell, Frame, Loc, Target};
+use crate::robot::ik::six::{ChooseError, ConfData, SixAxisError};
 use crate::robot::ik::{self, ArmGeometry, Branch, IkError};
-use crate::robot::Robot;
+use crate::robot::{RangeViolation, Robot};
 use locate::{LocateError, LocateInput};
+use robtarget::Tcp;
 
 /// Height of the base chosen by `base: auto`: it stands on the floor, mm.
 pub const AUTO_BASE_Z_MM: f64 = 0.0;
@@ -49,6 +66,16 @@ pub enum Origin {
         wrist_centre_mm: [f64; 3],
         branch: Branch,
     },
+    /// As a robtarget: the TCP pose in the work object (as given, normalised) and the confdata
+    /// of the written joint values (the one asked for, or the chosen solution's).
+    Robtarget { pose: Frame, conf: ConfData },
+}
+
+/// The speeddata and zonedata of one move (RAPID names).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct MoveMotion {
+    pub speed: String,
+    pub zone: String,
 }
 
 /// A cell point resolved to all six axes.
@@ -60,6 +87,8 @@ pub struct PlacedPoint {
     /// Where the cell file gives the point.
     pub loc: Loc,
     pub origin: Origin,
+    /// The motion of the move into this point (module docs).
+    pub motion: MoveMotion,
 }
 
 impl PlacedPoint {
@@ -97,6 +126,29 @@ pub enum PlaceError {
     /// No base position reaches every point (paper section 2).
     #[error("{source}")]
     Locate { source: LocateError, loc: Loc },
+    /// A value the cell gives lies outside the robot's ranges (an input error).
+    #[error("{what} is out of range: {violation} (ranges from {ranges})")]
+    Range {
+        /// "point 'P2'", "robot.wrist".
+        what: String,
+        violation: RangeViolation,
+        /// Where the ranges come from: the controller file, or the URDF's limits.
+        ranges: String,
+        loc: Loc,
+    },
+    /// The robot's structure does not fit the six-axis inverse kinematics (an input error:
+    /// `robot.urdf`).
+    #[error("{source}")]
+    SixAxis { source: SixAxisError, loc: Loc },
+    /// A robtarget point has no usable solution from the base it was solved from.
+    #[error("point '{point}' (robot base at [{:.1}, {:.1}, {:.1}] mm, yaw {} deg): {source}", .base_mm[0], .base_mm[1], .base_mm[2], .yaw_deg)]
+    Robtarget {
+        point: String,
+        base_mm: [f64; 3],
+        yaw_deg: f64,
+        source: Box<ChooseError<String>>,
+        loc: Loc,
+    },
 }
 
 impl PlaceError {
@@ -105,13 +157,24 @@ impl PlaceError {
         match self {
             PlaceError::Arm { loc, .. }
             | PlaceError::Ik { loc, .. }
-            | PlaceError::Locate { loc, .. } => *loc,
+            | PlaceError::Locate { loc, .. }
+            | PlaceError::Range { loc, .. }
+            | PlaceError::SixAxis { loc, .. }
+            | PlaceError::Robtarget { loc, .. } => *loc,
         }
     }
 
     /// Whether the input is at fault (rather than the cell being impossible to plan).
     pub fn is_input(&self) -> bool {
-        matches!(self, PlaceError::Arm { .. })
+        matches!(
+            self,
+            PlaceError::Arm { .. } | PlaceError::Range { .. } | PlaceError::SixAxis { .. }
+        )
+    }
+
+    /// Whether another base might do (`base: auto` tries the next position of R).
+    fn is_from_this_base(&self) -> bool {
+        matches!(self, PlaceError::Ik { .. } | PlaceError::Robtarget { .. })
     }
 }
 
@@ -122,6 +185,16 @@ pub fn place<C: PoseCheck>(
     robot: &Robot,
     check_at: impl Fn(Placement) -> C,
 ) -> Result<Placed, PlaceError> {
+    if let Some(loc) = cell.robot.wrist_loc {
+        robot
+            .check_wrist(&cell.robot.wrist_deg)
+            .map_err(|violation| PlaceError::Range {
+                what: "robot.wrist".into(),
+                violation,
+                ranges: ranges_source(robot),
+                loc,
+            })?;
+    }
     match &cell.robot.base {
         Base::Fixed(b) => {
             let placement = Placement {
@@ -183,7 +256,7 @@ pub fn survey<C: PoseCheck>(
         Base::Auto => {
             let chosen = choose_base(cell, robot, &geom, check_at)?;
             return Ok(Survey {
-                points: xyz_points(cell),
+                points: positions(cell, robot)?,
                 base_mm: chosen.placement.base_mm,
                 margin_mm: chosen.margin_mm,
                 location: chosen.location,
@@ -195,19 +268,21 @@ pub fn survey<C: PoseCheck>(
         base_mm: base,
         yaw_deg: cell.robot.yaw_deg,
     };
+    let tcp = needs_tcp(cell).then(|| Tcp::of(cell, robot)).transpose()?;
     let points: Vec<(String, [f64; 3])> = cell
         .points
         .iter()
-        .map(|p| {
+        .filter_map(|p| {
             let xyz = match &p.target {
                 Target::Xyz {
                     wrist_centre_mm, ..
-                } => *wrist_centre_mm,
+                } => Some(*wrist_centre_mm),
                 Target::Joints { axes_deg, .. } => {
-                    placement.to_cell_frame(ik::forward(&geom, *axes_deg))
+                    Some(placement.to_cell_frame(ik::forward(&geom, *axes_deg)))
                 }
+                Target::Robtarget { pose, .. } => tcp.as_ref().map(|t| t.wrist_centre(pose)),
             };
-            (p.name.clone(), xyz)
+            xyz.map(|x| (p.name.clone(), x))
         })
         .collect();
     let location = locate_points(cell, robot, &geom, &points, base[2])?;
@@ -244,7 +319,7 @@ fn choose_base<C: PoseCheck>(
     geom: &ArmGeometry,
     check_at: impl Fn(Placement) -> C,
 ) -> Result<Chosen, PlaceError> {
-    let location = locate_points(cell, robot, geom, &xyz_points(cell), AUTO_BASE_Z_MM)?;
+    let location = locate_points(cell, robot, geom, &positions(cell, robot)?, AUTO_BASE_Z_MM)?;
     let candidates = location.candidates();
     let mut first_failure: Option<(PlaceError, [f64; 2])> = None;
     for (xy, margin_mm) in &candidates {
@@ -261,7 +336,7 @@ fn choose_base<C: PoseCheck>(
                     points,
                 })
             }
-            Err(e @ PlaceError::Ik { .. }) => {
+            Err(e) if e.is_from_this_base() => {
                 first_failure.get_or_insert((e, *xy));
             }
             Err(e) => return Err(e),
@@ -280,18 +355,50 @@ fn choose_base<C: PoseCheck>(
     })
 }
 
-/// The `xyz` points of a cell by name (all of a `base: auto` cell's points, as the cell
-/// validation requires).
-fn xyz_points(cell: &Cell) -> Vec<(String, [f64; 3])> {
+/// The points of a `base: auto` cell as wrist-centre positions by name (cell frame, mm): `xyz`
+/// points as given, robtargets by their pose and the tool (`robtarget.rs`). The cell validation
+/// refuses `joints` points there.
+fn positions(cell: &Cell, robot: &Robot) -> Result<Vec<(String, [f64; 3])>, PlaceError> {
+    let tcp = needs_tcp(cell).then(|| Tcp::of(cell, robot)).transpose()?;
+    Ok(cell
+        .points
+        .iter()
+        .filter_map(|p| match (&p.target, &tcp) {
+            (
+                Target::Xyz {
+                    wrist_centre_mm, ..
+                },
+                _,
+            ) => Some((p.name.clone(), *wrist_centre_mm)),
+            (Target::Robtarget { pose, .. }, Some(tcp)) => {
+                Some((p.name.clone(), tcp.wrist_centre(pose)))
+            }
+            _ => None,
+        })
+        .collect())
+}
+
+/// Whether the cell has robtarget points (and so needs the six-axis IK).
+fn needs_tcp(cell: &Cell) -> bool {
     cell.points
         .iter()
-        .filter_map(|p| match &p.target {
-            Target::Xyz {
-                wrist_centre_mm, ..
-            } => Some((p.name.clone(), *wrist_centre_mm)),
-            Target::Joints { .. } => None,
-        })
-        .collect()
+        .any(|p| matches!(p.target, Target::Robtarget { .. }))
+}
+
+/// Where a robot's ranges come from, for messages: its controller file, or the URDF.
+fn ranges_source(robot: &Robot) -> String {
+    let name = |p: &std::path::Path| {
+        p.file_name()
+            .map(|f| f.to_string_lossy().into_owned())
+            .unwrap_or_default()
+    };
+    match &robot.controller.source {
+        Some(path) => name(path),
+        None => format!(
+            "the joint limits of {} (no controller file)",
+            name(&robot.urdf_path)
+        ),
+    }
 }
 
 /// R for `points` with the base mounting plane at `base_z_mm`; an empty R fails pointing at
@@ -319,3 +426,6 @@ fn locate_points(
         loc: cell.robot.base_loc,
     })
 }
+
+#[cfg(test)]
+mod tests;

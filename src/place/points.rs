@@ -14,12 +14,18 @@
 //!   solved fails with the point's name, its line, the base used and why each solution was
 //!   refused (out of range by how much, or which link hits which obstacle), as `ik::choose`
 //!   found it.
+//! - **`robtarget` points** (TCP pose in the work object) are solved on all six axes by
+//!   `robtarget.rs`, nearest the previous point unless the point gives its confdata.
+//!
+//! A `joints` point outside the robot's ranges (all six axes, its own wrist or `robot.wrist`) is
+//! an input error at its line. Every point also gets the motion of the move into it.
 
-use super::{Origin, PlaceError, PlacedPoint, Placement, PoseCheck};
+use super::robtarget::Tcp;
+use super::{ranges_source, MoveMotion, Origin, PlaceError, PlacedPoint, Placement, PoseCheck};
 use crate::cell::{Cell, Target};
 use crate::precision::quantize_joints;
 use crate::robot::ik::{self, ArmGeometry, IkError};
-use crate::robot::Robot;
+use crate::robot::{RangeViolation, Robot};
 
 /// Resolves every point of `cell` with the robot at `placement`; `check` is the collision model
 /// of that placement. `geom` is the arm geometry when the caller has it (else it is derived
@@ -31,17 +37,49 @@ pub(super) fn resolve(
     placement: Placement,
     check: &impl PoseCheck,
 ) -> Result<Vec<PlacedPoint>, PlaceError> {
+    let tcp = super::needs_tcp(cell)
+        .then(|| Tcp::of(cell, robot))
+        .transpose()?;
     let mut points: Vec<PlacedPoint> = Vec::with_capacity(cell.points.len());
     for p in &cell.points {
         let (axes_deg, wrist_deg, origin) = match &p.target {
             Target::Joints {
                 axes_deg,
                 wrist_deg,
-            } => (
-                *axes_deg,
-                wrist_deg.unwrap_or(cell.robot.wrist_deg),
-                Origin::Joints,
-            ),
+            } => {
+                let wrist = wrist_deg.unwrap_or(cell.robot.wrist_deg);
+                robot
+                    .check_range6(&six(*axes_deg, wrist))
+                    .map_err(|violation| PlaceError::Range {
+                        what: match (wrist_deg, &violation) {
+                            (None, RangeViolation::Axis { axis: 4.., .. }) => {
+                                format!("point '{}' (axes 4..6 from robot.wrist)", p.name)
+                            }
+                            _ => format!("point '{}'", p.name),
+                        },
+                        violation,
+                        ranges: ranges_source(robot),
+                        loc: p.loc,
+                    })?;
+                (*axes_deg, wrist, Origin::Joints)
+            }
+            Target::Robtarget { pose, conf } => {
+                let derived;
+                let tcp = match &tcp {
+                    Some(t) => t,
+                    None => {
+                        derived = Tcp::of(cell, robot)?;
+                        &derived
+                    }
+                };
+                let previous = points.last().map(|w| w.joints_deg);
+                let (q, conf) = tcp.solve(p, pose, *conf, placement, previous.as_ref(), check)?;
+                (
+                    arm(&q),
+                    [q[3], q[4], q[5]],
+                    Origin::Robtarget { pose: *pose, conf },
+                )
+            }
             Target::Xyz {
                 wrist_centre_mm,
                 branch,
@@ -96,6 +134,10 @@ pub(super) fn resolve(
             joints_deg: six(axes_deg, wrist_deg),
             loc: p.loc,
             origin,
+            motion: MoveMotion {
+                speed: p.speed.clone().unwrap_or_else(|| cell.motion.speed.clone()),
+                zone: p.zone.clone().unwrap_or_else(|| cell.motion.zone.clone()),
+            },
         });
     }
     Ok(points)

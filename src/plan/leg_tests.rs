@@ -50,6 +50,10 @@ fn point(name: &str, joints_deg: [f64; 6]) -> PlacedPoint {
         joints_deg,
         loc: Loc::default(),
         origin: Origin::Joints,
+        motion: crate::place::MoveMotion {
+            speed: "v300".into(),
+            zone: "fine".into(),
+        },
     }
 }
 

@@ -19,11 +19,12 @@
 //!
 //! Files: [`cspace`] (the grid, paper section 3; knows no geometry), [`wave`] (wave expansion),
 //! [`search`] (the three methods, and [`Method`]), [`leg`] (one leg, the wrist schedule, the
-//! leg's graph), [`shorten`], [`merge`].
+//! leg's graph), [`shorten`], [`merge`]; [`motion`] the speed and zone of each move.
 
 pub mod cspace;
 pub mod leg;
 pub mod merge;
+pub mod motion;
 pub mod search;
 pub mod shorten;
 pub mod wave;
@@ -267,6 +268,21 @@ pub fn route(
             // like any other (the tool turns).
             let (a, b) = (from.joints_deg, to.joints_deg);
             if let Some((_, reason)) = model.why_move_unsafe(&a, &b) {
+                // Name the closest approach along the turn (not where it first comes within
+                // the clearance).
+                let reason = match (
+                    reason,
+                    model.min_clearance_along(&a, &b, MIN_CLEARANCE_TOL_MM),
+                ) {
+                    (Blocked::Contact { .. }, Some(c)) if c.mm < model.clearance_mm() => {
+                        Blocked::Contact {
+                            part: c.part,
+                            obstacle: c.obstacle,
+                            distance_mm: c.mm.max(0.0),
+                        }
+                    }
+                    (reason, _) => reason,
+                };
                 return Err(PlanError::WristTurn {
                     from: i,
                     to: i + 1,
@@ -387,6 +403,10 @@ mod tests {
             joints_deg: [a[0], a[1], a[2], wrist[0], wrist[1], wrist[2]],
             loc: Loc::default(),
             origin: Origin::Joints,
+            motion: crate::place::MoveMotion {
+                speed: "v300".into(),
+                zone: "fine".into(),
+            },
         }
     }
 

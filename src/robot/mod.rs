@@ -126,16 +126,20 @@ impl std::fmt::Display for RangeViolation {
 }
 
 impl Robot {
-    /// Reads a URDF and, if present, the controller file beside it (`<stem>.controller.yaml`).
-    pub fn load(urdf_path: &Path) -> Result<Robot, RobotError> {
+    /// Reads a URDF and its controller file: `controller` when given (it must exist), else the
+    /// one beside the URDF (`<stem>.controller.yaml`) if there is one. Without a controller file
+    /// the robot is a serial arm with the URDF's limits (`controller.source` is `None`).
+    pub fn load(urdf_path: &Path, controller: Option<&Path>) -> Result<Robot, RobotError> {
         let text = std::fs::read_to_string(urdf_path).map_err(|source| RobotError::ReadUrdf {
             path: urdf_path.to_path_buf(),
             source,
         })?;
-        let controller_path = controller::path_beside(urdf_path);
+        let controller_path = controller
+            .map(Path::to_path_buf)
+            .unwrap_or_else(|| controller::path_beside(urdf_path));
         let controller_text = match std::fs::read_to_string(&controller_path) {
             Ok(t) => Some(t),
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound && controller.is_none() => None,
             Err(source) => {
                 return Err(RobotError::ReadController {
                     path: controller_path,
@@ -198,6 +202,22 @@ impl Robot {
                     value_deg: v,
                     min_deg: lo,
                     max_deg: hi,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// Checks axes 4..6 alone against the controller ranges (`robot.wrist`).
+    pub fn check_wrist(&self, wrist_deg: &[f64; 3]) -> Result<(), RangeViolation> {
+        for (k, &v) in wrist_deg.iter().enumerate() {
+            let spec = &self.controller.axes[3 + k];
+            if v < spec.min_deg || v > spec.max_deg {
+                return Err(RangeViolation::Axis {
+                    axis: 4 + k,
+                    value_deg: v,
+                    min_deg: spec.min_deg,
+                    max_deg: spec.max_deg,
                 });
             }
         }

@@ -1,6 +1,9 @@
 MODULE ConveyorPick
     ! generator: gen-rapid 0.1.0
     ! cell: conveyor.yaml
+    ! urdf: irb1400.urdf
+    ! controller: irb1400.controller.yaml
+    ! coupling: parallelogram (axis 3 = URDF joint 3 + joint 2)
     ! planner: depth-first
     ! grid (deg): 2.000
     ! clearance (mm): 25.0

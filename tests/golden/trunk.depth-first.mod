@@ -1,6 +1,9 @@
 MODULE TrunkWeld
     ! generator: gen-rapid 0.1.0
     ! cell: trunk.yaml
+    ! urdf: irb1400.urdf
+    ! controller: irb1400.controller.yaml
+    ! coupling: parallelogram (axis 3 = URDF joint 3 + joint 2)
     ! planner: depth-first
     ! grid (deg): 1.000
     ! clearance (mm): 10.0

@@ -202,3 +202,47 @@ fn the_same_point_twice_is_one_move_that_stays_put() {
     let m = Module::parse(&text).expect("module");
     assert_eq!(m.target("P1"), m.target("P2"), "{text}");
 }
+
+#[test]
+fn the_tool_example_in_help_plans_as_printed() {
+    // The minimal cell's module, robot and obstacles with --help's tool, work object and points.
+    let h = stdout(&gen_rapid(&["--help"]));
+    let block = |first: &str| -> String {
+        h.lines()
+            .skip_while(|l| !l.starts_with(first))
+            .skip(1)
+            .take_while(|l| l.starts_with("  "))
+            .map(|l| format!("{}\n", &l[2..]))
+            .collect()
+    };
+    let minimal = block("A minimal cell");
+    let tcp = block("A tool, a work object");
+    for key in [
+        "tool:",
+        "tframe:",
+        "shapes:",
+        "wobj:",
+        "robtarget:",
+        "speed:",
+    ] {
+        assert!(tcp.contains(key), "--help's tool example lacks {key}:\n{h}");
+    }
+    let head = &minimal[..minimal.find("points:").expect("points")];
+    let dir = root().join("target").join("help-cell");
+    std::fs::create_dir_all(&dir).expect("dir");
+    let path = dir.join("tcp.yaml");
+    std::fs::write(
+        &path,
+        format!("{head}{tcp}").replace("../robots/", "../../robots/"),
+    )
+    .expect("write");
+    let o = gen_rapid(&[path.to_str().expect("utf-8")]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    assert!(text.contains("PERS tooldata tTorch := [TRUE,"), "{text}");
+    assert!(text.contains("CONST robtarget W2_rt := "), "{text}");
+    assert!(
+        text.contains("MoveAbsJ W2\\NoEOffs, v100, fine, tTorch\\WObj:=wobjDoor;"),
+        "{text}"
+    );
+}

@@ -8,11 +8,14 @@
 //! - `safety`: the independent dense re-check of every module on file, and of the re-check
 //!   itself (what the base stands on).
 //! - `cli`: the command line as such: stdout, stderr, `-o`, flags, exit statuses, `--help`.
+//! - `convention`: the robot convention stated (header lines, the warning, `robot.controller`).
 //! - `compare`: `gen-rapid compare` and the paper's comparison of the three searches.
 //! - `locate`: `base: auto`, `xyz` points and branches, `gen-rapid locate`.
+//! - `preview_browser`: the `--html` preview page in headless Chromium (skipped, saying so,
+//!   where no Chromium is installed).
 //! - `random_cells`: generated cells (with and without a tool), every method, every module
 //!   through the dense re-check.
-//! - `tool_cells`: example cells with a tool set in code (until the cell format reads `tool:`).
+//! - `tool_cells`: the example cells with a tool, every method, and the tool's volume at work.
 //! - `common`: helpers: running the binary, temporary cells, reading a module (`module`), the
 //!   fixtures (`fixtures`), the dense re-check (`dense`), and `library`, the only file here that
 //!   names the library's paths.
@@ -22,8 +25,10 @@
 mod cli;
 mod common;
 mod compare;
+mod convention;
 mod golden;
 mod locate;
+mod preview_browser;
 mod random_cells;
 mod safety;
 mod tool_cells;

@@ -9,9 +9,7 @@
 //! method shows the first one's cells solvable. Deterministic (fixed seeds).
 
 use crate::common::dense::{check_module, Scene};
-use crate::common::library::{
-    parse_cell, plan_every_method, Cell, Frame, Loc, Planned, Robot, Tool, ToolGeometry, ToolShape,
-};
+use crate::common::library::{parse_cell, plan_every_method, Cell, Planned, Robot};
 use crate::common::root;
 
 struct Rng(u64);
@@ -33,70 +31,49 @@ impl Rng {
 struct RandomCell {
     yaml: String,
     grid_deg: f64,
-    tool: Option<Tool>,
 }
 
-/// A random torch or gripper on the flange (tool0 frame, mm): a neck along z, sometimes a body
-/// box at the flange and a ball at the tip, off the axis.
-fn random_tool(rng: &mut Rng) -> Tool {
-    let shape = |name: &str, geometry| ToolShape {
-        name: name.into(),
-        geometry,
-        loc: Loc::default(),
-    };
+/// A random torch or gripper on the flange, as the cell's `tool:` block (tool0 frame, mm): a
+/// neck along z, sometimes a body box at the flange and a ball at the tip, off the axis.
+fn random_tool(rng: &mut Rng) -> String {
     let len = rng.range(80.0, 350.0).round();
     let bend = rng.range(-120.0, 120.0).round();
-    let mut shapes = vec![shape(
-        "neck",
-        ToolGeometry::Cylinder {
-            from_mm: [0.0, 0.0, 0.0],
-            to_mm: [bend, 0.0, len],
-            radius_mm: rng.range(10.0, 40.0).round(),
-        },
-    )];
+    let mut yaml = format!(
+        "tool:\n  name: tRandom\n  tframe: [[{bend}, 0, {len}], [1, 0, 0, 0]]\n  mass: 1\n  cog: [0, 0, {}]\n  shapes:\n",
+        (len / 2.0).round()
+    );
+    yaml += &format!(
+        "    - {{ name: neck, cylinder: {{ from: [0, 0, 0], to: [{bend}, 0, {len}], radius: {} }} }}\n",
+        rng.range(10.0, 40.0).round()
+    );
     if rng.int(0, 1) == 1 {
         let h = rng.range(20.0, 60.0).round();
-        shapes.push(shape(
-            "body",
-            ToolGeometry::Box {
-                min_mm: [-h, -h, 0.0],
-                max_mm: [h, h, rng.range(30.0, 120.0).round()],
-            },
-        ));
+        yaml += &format!(
+            "    - {{ name: body, box: {{ min: [-{h}, -{h}, 0], max: [{h}, {h}, {}] }} }}\n",
+            rng.range(30.0, 120.0).round()
+        );
     }
     if rng.int(0, 1) == 1 {
-        shapes.push(shape(
-            "tip",
-            ToolGeometry::Sphere {
-                centre_mm: [bend, 0.0, len],
-                radius_mm: rng.range(5.0, 30.0).round(),
-            },
-        ));
+        yaml += &format!(
+            "    - {{ name: tip, sphere: {{ centre: [{bend}, 0, {len}], radius: {} }} }}\n",
+            rng.range(5.0, 30.0).round()
+        );
     }
-    Tool {
-        name: "tRandom".into(),
-        tframe: Frame {
-            pos_mm: [bend, 0.0, len],
-            quat_wxyz: [1.0, 0.0, 0.0, 0.0],
-        },
-        mass_kg: 1.0,
-        cog_mm: [0.0, 0.0, len / 2.0],
-        shapes,
-        loc: Loc::default(),
-    }
+    yaml
 }
 
 fn random_cell(rng: &mut Rng, robot: &Robot, index: usize) -> Option<RandomCell> {
     random_cell_with(rng, robot, index, None)
 }
 
-/// A random cell; with `tool`, the points give all six axes (random wrists) and are free with
-/// the tool on (by the dense check's own measure).
+/// A random cell; with `tool` (a `tool:` block), the points give all six axes (random wrists)
+/// and are free with the tool on (by the dense check's own measure, the tool as the cell file
+/// gives it).
 fn random_cell_with(
     rng: &mut Rng,
     robot: &Robot,
     index: usize,
-    tool: Option<Tool>,
+    tool: Option<String>,
 ) -> Option<RandomCell> {
     let base = [rng.int(-500, 500) as f64, rng.int(-500, 500) as f64, 0.0];
     let yaw = rng.int(-180, 180) as f64;
@@ -135,9 +112,36 @@ fn random_cell_with(
             [c[0] + hx, c[1] + hy, z0 + h],
         ));
     }
+    let urdf = root().join("robots/irb1400.urdf");
+    let mut yaml = format!(
+        "module: Random{index}\nrobot:\n  urdf: {}\n  base: [{}, {}, {}]\n  yaw: {yaw}\n",
+        urdf.display(),
+        base[0],
+        base[1],
+        base[2]
+    );
+    yaml += tool.as_deref().unwrap_or_default();
+    if !boxes.is_empty() {
+        yaml += "obstacles:\n";
+    }
+    for (n, a, b) in &boxes {
+        yaml += &format!(
+            "  - {{ name: {n}, box: {{ min: [{}, {}, {}], max: [{}, {}, {}] }} }}\n",
+            a[0], a[1], a[2], b[0], b[1], b[2]
+        );
+    }
+    if boxes.is_empty() {
+        yaml += "obstacles: []\n";
+    }
+    // The scene with the cell's tool as the cell file gives it (two stand-in points make it a
+    // cell).
+    let stub = format!(
+        "{yaml}points:\n  - {{ name: S0, joints: [0, 0, 0] }}\n  - {{ name: S1, joints: [1, 0, 0] }}\n"
+    );
+    let stub = cell_of(&stub, index);
+    let scene = Scene::new(robot, base, yaw, &stub);
     // Free points, found with the dense check's own distances (1 mm beyond the clearance, so
     // that the generator's model agrees that they are free).
-    let scene = Scene::from_boxes(robot, base, yaw, &boxes).with_tool(tool.as_ref());
     let mut points: Vec<[f64; 6]> = Vec::new();
     for _ in 0..400 {
         let arm = [
@@ -166,26 +170,9 @@ fn random_cell_with(
     if points.len() < 3 {
         return None;
     }
-    let urdf = root().join("robots/irb1400.urdf");
-    let mut yaml = format!(
-        "module: Random{index}\nrobot:\n  urdf: {}\n  base: [{}, {}, {}]\n  yaw: {yaw}\nobstacles:\n",
-        urdf.display(),
-        base[0],
-        base[1],
-        base[2]
-    );
-    for (n, a, b) in &boxes {
-        yaml += &format!(
-            "  - {{ name: {n}, box: {{ min: [{}, {}, {}], max: [{}, {}, {}] }} }}\n",
-            a[0], a[1], a[2], b[0], b[1], b[2]
-        );
-    }
-    if boxes.is_empty() {
-        yaml = yaml.replace("obstacles:\n", "obstacles: []\n");
-    }
     yaml += "points:\n";
     for (i, p) in points.iter().enumerate() {
-        yaml += &match tool {
+        yaml += &match &tool {
             Some(_) => format!(
                 "  - {{ name: P{i}, joints: [{}, {}, {}, {}, {}, {}] }}\n",
                 p[0], p[1], p[2], p[3], p[4], p[5]
@@ -200,17 +187,13 @@ fn random_cell_with(
     Some(RandomCell {
         yaml,
         grid_deg: 3.0,
-        tool,
     })
 }
 
-/// The cell of a random cell: its YAML, and its tool set on the cell (the YAML keys for tools
-/// are the cell format's, not yet read).
-fn cell_of(rc: &RandomCell, index: usize) -> Cell {
+/// The cell of a random cell's YAML.
+fn cell_of(yaml: &str, index: usize) -> Cell {
     let path = root().join(format!("tests/random{index}.yaml"));
-    let mut cell = parse_cell(&path, &rc.yaml).unwrap_or_else(|e| panic!("{e}\n{}", rc.yaml));
-    cell.tool = rc.tool.clone();
-    cell
+    parse_cell(&path, yaml).unwrap_or_else(|e| panic!("{e}\n{yaml}"))
 }
 
 /// The complete searches agree (module doc): neighboring and extensile plan the same cells, a
@@ -254,7 +237,7 @@ fn random_cells_plan_safe_modules_or_fail_cleanly() {
             continue;
         };
         cells += 1;
-        let cell = cell_of(&rc, index);
+        let cell = cell_of(&rc.yaml, index);
         let results = plan_every_method(&cell, rc.grid_deg)
             .unwrap_or_else(|e| panic!("random cell {index}: unexpected error {e}\n{}", rc.yaml));
         assert_searches_agree(&results, &format!("random cell {index}\n{}", rc.yaml));
@@ -297,7 +280,7 @@ fn random_tool_cells_plan_safe_modules_and_the_searches_agree() {
             continue;
         };
         cells += 1;
-        let cell = cell_of(&rc, index);
+        let cell = cell_of(&rc.yaml, index);
         let results = plan_every_method(&cell, rc.grid_deg).unwrap_or_else(|e| {
             panic!(
                 "random tool cell {index}: unexpected error {e}\n{}",

@@ -41,8 +41,13 @@ fn every_move_of_every_module_on_file_keeps_the_clearance() {
                     false => "no boxes".into(),
                 };
                 eprintln!(
-                    "{}: {} samples, {smallest}, {} xyz points",
-                    case.expected, r.samples, r.xyz_points
+                    "{}: {} samples, {smallest}, {} xyz points, {} robtarget points (TCP within {:.4} mm, {:.5} deg)",
+                    case.expected,
+                    r.samples,
+                    r.xyz_points,
+                    r.tcp.points,
+                    r.tcp.worst_mm,
+                    r.tcp.worst_deg
                 );
             }
             Err(f) => failures.extend(f),
@@ -210,4 +215,69 @@ fn the_dense_check_reads_what_the_base_stands_on_from_the_geometry() {
         "{}",
         stderr(&o)
     );
+}
+
+#[test]
+fn the_tcp_check_sees_a_robtarget_its_jointtarget_misses() {
+    // tests/ok/tool_wobj_robtargets.mod passes; each edit below makes a module the controller
+    // would read differently from the cell, and the check must say so.
+    let case = "tests/ok/tool_wobj_robtargets";
+    let cell = load_cell(&root().join(format!("{case}.yaml")));
+    let robot = load_robot(&cell);
+    let text = std::fs::read_to_string(root().join(format!("{case}.mod"))).expect("module");
+    let r = check_module(&cell, &robot, &text, case).unwrap_or_else(|f| panic!("{f:#?}"));
+    assert_eq!(r.tcp.points, 2);
+    assert!(
+        r.tcp.worst_mm < 0.1 && r.tcp.worst_deg < 0.01,
+        "{:?}",
+        r.tcp
+    );
+    let w1 = text
+        .lines()
+        .find(|l| l.contains("CONST jointtarget W1 :="))
+        .expect("W1")
+        .to_string();
+    // A jointtarget 0.02 deg off on axis 1 puts the TCP ~0.3 mm away.
+    let a1: f64 = w1
+        .split("[[")
+        .nth(1)
+        .and_then(|s| s.split(',').next())
+        .and_then(|s| s.parse().ok())
+        .expect("axis 1");
+    let moved = w1.replacen(&format!("[[{a1:.3},"), &format!("[[{:.3},", a1 + 0.02), 1);
+    for (edit, needle) in [
+        ((w1.as_str(), moved.as_str()), "puts the TCP"),
+        (
+            ("[[100.000,200.000,150.000]", "[[100.000,200.200,150.000]"),
+            "the cell says",
+        ),
+        (("[0,-1,0,0],[9E9", "[0,-1,0,1],[9E9"), "confdata"),
+        (
+            ("[[0.000,0.000,250.000]", "[[0.000,0.000,250.500]"),
+            "tooldata tframe",
+        ),
+        (
+            ("[[700.000,-200.000,400.000]", "[[700.000,-200.000,401.000]"),
+            "wobjdata uframe",
+        ),
+        (
+            (
+                "MoveAbsJ W2\\NoEOffs, v100, z5,",
+                "MoveAbsJ W2\\NoEOffs, v100, fine,",
+            ),
+            "expected v100, z5",
+        ),
+        (
+            (
+                "tTorch\\WObj:=wobjTable;\n    ENDPROC",
+                "tTorch;\n    ENDPROC",
+            ),
+            "the cell names tTorch",
+        ),
+    ] {
+        assert!(text.contains(edit.0), "{needle}: {}", edit.0);
+        let bad = text.replacen(edit.0, edit.1, 1);
+        let f = check_module(&cell, &robot, &bad, case).expect_err(needle);
+        assert!(f.iter().any(|m| m.contains(needle)), "{needle}: {f:#?}");
+    }
 }

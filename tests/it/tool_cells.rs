@@ -1,90 +1,104 @@
-//! Cells with a tool, built in code from the example cells (the cell format's `tool:` block is
-//! read by another branch; the cell type's `tool` field is what the planner and the dense
-//! re-check read): the trunk welded with a bent torch. Every module is held to the independent
-//! dense re-check, which places the torch's shapes itself.
+//! The example cells with a tool, read from their files as the binary reads them
+//! (`cells/torch-trunk.yaml`, `cells/gripper-pick.yaml`): every method's route keeps the
+//! clearance for the arm and the tool's shapes (the independent dense re-check, which places the
+//! shapes itself from the cell's `tool:` block), and the tool's volume matters: the torch cell
+//! with its `shapes:` left out (the same TCP, no volume) plans a route that drags the torch
+//! within the clearance of a box.
 
 use crate::common::dense::check_module;
-use crate::common::library::{
-    load_cell, plan_every_method, Cell, Frame, Loc, Planned, Robot, Tool, ToolGeometry, ToolShape,
-};
+use crate::common::library::{load_cell, parse_cell, plan_every_method, Cell, Planned, Robot};
 use crate::common::root;
 
-/// A bent torch (tool0 frame, mm): a neck reaching 180 mm out, a body at the flange, a cup at
-/// the tip bent 60 mm off the axis.
-fn torch() -> Tool {
-    let shape = |name: &str, geometry| ToolShape {
-        name: name.into(),
-        geometry,
-        loc: Loc::default(),
-    };
-    Tool {
-        name: "tTorch".into(),
-        tframe: Frame {
-            pos_mm: [60.0, 0.0, 200.0],
-            quat_wxyz: [1.0, 0.0, 0.0, 0.0],
-        },
-        mass_kg: 2.5,
-        cog_mm: [0.0, 0.0, 90.0],
-        shapes: vec![
-            shape(
-                "neck",
-                ToolGeometry::Cylinder {
-                    from_mm: [0.0, 0.0, 0.0],
-                    to_mm: [60.0, 0.0, 320.0],
-                    radius_mm: 20.0,
-                },
-            ),
-            shape(
-                "body",
-                ToolGeometry::Box {
-                    min_mm: [-40.0, -40.0, 0.0],
-                    max_mm: [40.0, 40.0, 80.0],
-                },
-            ),
-            shape(
-                "cup",
-                ToolGeometry::Sphere {
-                    centre_mm: [60.0, 0.0, 330.0],
-                    radius_mm: 12.0,
-                },
-            ),
-        ],
-        loc: Loc::default(),
-    }
-}
-
-fn modules(cell: &Cell, grid_deg: f64) -> Vec<(String, String)> {
+fn modules(cell: &Cell, grid_deg: f64, what: &str) -> Vec<(String, String)> {
     plan_every_method(cell, grid_deg)
-        .unwrap_or_else(|e| panic!("{e}"))
+        .unwrap_or_else(|e| panic!("{what}: {e}"))
         .into_iter()
         .filter_map(|(m, r)| match r {
             Planned::Module(text) => Some((m, text)),
-            Planned::PlanningFailed(e) => panic!("{m}: {e}"),
+            // Depth-first may meet the paper's Fig. 8; the others are complete on their grid.
+            Planned::PlanningFailed(e) if m == "depth-first" && e.contains("only diagonally") => {
+                None
+            }
+            Planned::PlanningFailed(e) => panic!("{what}, {m}: {e}"),
         })
         .collect()
 }
 
+/// The cell text without the tool's `shapes:` list (its lines up to the next top-level key).
+fn without_shapes(text: &str) -> String {
+    let mut out = String::new();
+    let mut skipping = false;
+    for line in text.lines() {
+        if line.trim_start().starts_with("shapes:") {
+            skipping = true;
+            continue;
+        }
+        if skipping && !line.starts_with(' ') && !line.is_empty() {
+            skipping = false;
+        }
+        if !skipping {
+            out += line;
+            out += "\n";
+        }
+    }
+    out
+}
+
 #[test]
-fn the_trunk_with_a_torch_plans_routes_the_dense_check_holds_for_arm_and_torch() {
-    let bare = load_cell(&root().join("cells/trunk.yaml"));
-    let mut cell = bare.clone();
-    cell.tool = Some(torch());
-    let robot = Robot::load(&cell.robot.urdf_path).expect("robot");
-    let with = modules(&cell, 2.0);
-    let without = modules(&bare, 2.0);
-    assert_eq!(with.len(), 3);
-    for (m, text) in &with {
-        let report = check_module(&cell, &robot, text, &format!("trunk with torch, {m}"))
-            .unwrap_or_else(|f| panic!("{}", f.join("\n")));
-        eprintln!("trunk with torch, {m}: closest {:?}", report.smallest);
+fn the_tool_cells_plan_with_every_method_and_the_dense_check_holds_arm_and_tool() {
+    for (stem, grid_deg) in [("torch-trunk", 2.0), ("gripper-pick", 2.0)] {
+        let path = root().join(format!("cells/{stem}.yaml"));
+        let cell = load_cell(&path);
+        assert!(
+            cell.tool.as_ref().is_some_and(|t| !t.shapes.is_empty()),
+            "{stem} has a tool with shapes"
+        );
+        let robot = Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref())
+            .expect("robot");
+        let planned = modules(&cell, grid_deg, stem);
+        assert!(
+            planned.iter().any(|(m, _)| m == "extensile") && planned.len() >= 2,
+            "{stem}: {:?}",
+            planned.iter().map(|(m, _)| m).collect::<Vec<_>>()
+        );
+        for (m, text) in &planned {
+            let label = format!("{stem}, {m}, {grid_deg} deg");
+            let report = check_module(&cell, &robot, text, &label)
+                .unwrap_or_else(|f| panic!("{}", f.join("\n")));
+            eprintln!(
+                "{label}: {} samples, closest {:.2} mm ({} to {})",
+                report.samples, report.smallest.mm, report.smallest.link, report.smallest.obstacle
+            );
+        }
     }
-    // The torch matters: the routes planned without it, checked with it on, bring it within
-    // the clearance of a box (the forearm's cylinder does not cover a 340 mm torch); the routes
-    // planned with it differ and keep it clear.
+}
+
+#[test]
+fn the_torch_without_its_volume_plans_a_route_that_drags_it_through_a_box() {
+    let path = root().join("cells/torch-trunk.yaml");
+    let text = std::fs::read_to_string(&path).expect("cell");
+    let cell = load_cell(&path);
+    let bare_text = without_shapes(&text);
+    assert_ne!(bare_text, text);
+    let bare = parse_cell(&path, &bare_text).unwrap_or_else(|e| panic!("{e}\n{bare_text}"));
+    assert!(bare.tool.as_ref().is_some_and(|t| t.shapes.is_empty()));
+    let robot =
+        Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref()).expect("robot");
+    let with = modules(&cell, 2.0, "torch-trunk");
+    let without = modules(&bare, 2.0, "torch-trunk without shapes");
+    // The routes planned without the torch's volume, checked with it: the forearm's cylinder
+    // does not cover a torch reaching 336 mm beyond the flange.
+    let mut dragged = 0;
     for (m, text) in &without {
-        let f = check_module(&cell, &robot, text, m)
-            .expect_err("a tool-less route happens to clear the torch");
-        assert!(f.iter().any(|l| l.contains("tool shape")), "{m}: {f:?}");
+        check_module(&bare, &robot, text, m).unwrap_or_else(|f| panic!("{}", f.join("\n")));
+        if let Err(f) = check_module(&cell, &robot, text, m) {
+            assert!(f.iter().any(|l| l.contains("tool shape")), "{m}: {f:?}");
+            dragged += 1;
+        }
     }
+    assert!(
+        dragged >= 1,
+        "no tool-less route brings the torch near a box"
+    );
     assert_ne!(with, without);
 }

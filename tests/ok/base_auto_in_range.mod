@@ -1,6 +1,9 @@
 MODULE Auto1
     ! generator: gen-rapid 0.1.0
     ! cell: base_auto_in_range.yaml
+    ! urdf: irb1400.urdf
+    ! controller: irb1400.controller.yaml
+    ! coupling: parallelogram (axis 3 = URDF joint 3 + joint 2)
     ! planner: extensile
     ! grid (deg): 5.000
     ! clearance (mm): 10.0

@@ -1,6 +1,9 @@
 MODULE Diag
     ! generator: gen-rapid 0.1.0
     ! cell: no_obstacles_depth_first.yaml
+    ! urdf: irb1400.urdf
+    ! controller: irb1400.controller.yaml
+    ! coupling: parallelogram (axis 3 = URDF joint 3 + joint 2)
     ! planner: depth-first
     ! grid (deg): 10.000
     ! clearance (mm): 10.0

@@ -1,6 +1,9 @@
 MODULE Dup
     ! generator: gen-rapid 0.1.0
     ! cell: same_point_twice.yaml
+    ! urdf: irb1400.urdf
+    ! controller: irb1400.controller.yaml
+    ! coupling: parallelogram (axis 3 = URDF joint 3 + joint 2)
     ! planner: neighboring
     ! grid (deg): 0.500
     ! clearance (mm): 10.0

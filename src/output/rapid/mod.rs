@@ -14,24 +14,37 @@
 //! MODULE <module>
 //!     ! generator: <generator>
 //!     ! cell: <cell_file>
+//!     ! urdf: <the URDF's file name>
+//!     ! controller: <the controller file's name, or `none: serial arm, the URDF's limits`>
+//!     ! coupling: <parallelogram (axis 3 = URDF joint 3 + joint 2) | serial (...)>
 //!     ! planner: <planner>
 //!     ! grid (deg): <grid_deg, 3 decimals>
 //!     ! clearance (mm): <clearance_mm, 1 decimal>
 //!     ! base: [<x>, <y>, <z>] yaw: <yaw_deg>      (x, y, z 1 decimal in mm; yaw 3 decimals in deg)
+//!     ! tool: <tool> (...)        \
+//!     ! wobj: <wobj> (...)         > only with a tool or wobj block or robtarget points
+//!     ! frames: ...               /
 //!     ! moves: <moves>
 //!     ! min clearance (mm): <min_clearance_mm, 1 decimal, or `none (no obstacles)`>
 //!     ! estimated time (s): <estimated_time_s, 2 decimals>   (only when known)
 //!
+//!     PERS tooldata <tool> := [TRUE,[[x,y,z],[q1,q2,q3,q4]],[mass,[cx,cy,cz],[1,0,0,0],0,0,0]];
+//!     PERS wobjdata <wobj> := [FALSE,TRUE,"",[[x,y,z],[q1,q2,q3,q4]],[[0,0,0],[1,0,0,0]]];
+//!                                                     (each only when declared, then a blank line)
 //!     CONST jointtarget <name> := [[a1,a2,a3,a4,a5,a6],[9E9,9E9,9E9,9E9,9E9,9E9]];   (one per target)
+//!     CONST robtarget <name>_rt := [[x,y,z],[q1,q2,q3,q4],[cf1,cf4,cf6,cfx],[9E9,...]];
+//!                                                     (after a robtarget point's jointtarget)
 //!
 //!     PROC main()
-//!         MoveAbsJ <name>\NoEOffs, <speed>, <zone>, <tool>;   (one per target, same order)
+//!         MoveAbsJ <name>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>];   (one per target)
 //!     ENDPROC
 //! ENDMODULE
 //! ```
 //!
-//! Axis values are printed with exactly 3 decimals (degrees). The decimals come from the one
-//! table of output precisions, [`crate::precision`], which the cell validation reads too.
+//! Axis values are printed with exactly 3 decimals (degrees), positions with 3 (mm),
+//! quaternions with 9, the mass with 3. The decimals come from the one table of output
+//! precisions, [`crate::precision`], which the cell validation reads too. Each target carries
+//! the speed and zone of the move into it.
 //!
 //! # Guarantees of [`render`]
 //!
@@ -42,29 +55,38 @@
 //! - Numbers in fixed notation only: no exponent, never `-0.000`; the only
 //!   `E` in numeric position is the literal `9E9` RAPID uses for unused
 //!   external axes. Non-finite values are refused ([`RapidError::NonFinite`]).
-//! - The module name and every `CONST` name pass [`check_identifier`]; speed,
-//!   zone and tool names pass [`check_data_name`] (RAPID identifiers that are
-//!   not reserved words; predefined names such as `v300`, `fine`, `tool0` are
-//!   of course allowed there). It is the rule of [`crate::names`], which the
-//!   cell validation applies first, at the cell's lines: here it is a last
-//!   guard. All `CONST` names are unique ignoring case and differ from the
-//!   module name, `main` and the speed/zone/tool names (see [`target_names`]).
-//! - One `CONST` per target and one `MoveAbsJ` per target, in the same order,
-//!   so each name is used by exactly one move.
-//! - Free text in the header (`generator`, `cell_file`, `planner`) is made
-//!   printable ASCII: each character outside `' '..='~'` becomes `?`,
+//! - Every joint value lies in the robot's ranges ([`Program::ranges`], all six
+//!   axes and the coupled axis-3 range): a last guard, the earlier stages
+//!   never produce another ([`RapidError::OutOfRange`], an internal error).
+//! - The module name and every declared name (`CONST`s, the tool and work
+//!   object when declared) pass [`check_identifier`]; speed, zone and tool
+//!   names pass [`check_data_name`] (RAPID identifiers that are not reserved
+//!   words; predefined names such as `v300`, `fine`, `tool0` are of course
+//!   allowed there). It is the rule of [`crate::names`], which the cell
+//!   validation applies first, at the cell's lines: here it is a last guard.
+//!   All declared names are unique ignoring case and differ from the module
+//!   name, `main` and every speed and zone name (see [`target_names`]).
+//! - One `CONST jointtarget` per target and one `MoveAbsJ` per target, in the
+//!   same order, so each name is used by exactly one move.
+//! - Free text in the header (`generator`, `cell_file`, paths, `planner`) is
+//!   made printable ASCII: each character outside `' '..='~'` becomes `?`,
 //!   surrounding spaces are trimmed, and empty text becomes `-`.
 
+mod data;
 mod format;
+mod header;
 mod target_names;
 
+pub use data::{AxisRanges, Pose, RobTarget, ToolData, WobjData, NO_EXTERNAL_AXES};
 pub use format::format_fixed;
+pub use header::{Header, NO_CONTROLLER};
 pub use target_names::target_names;
 
-use crate::names::{check_data_name, check_identifier, IdentifierError};
-use crate::precision::{
-    GRID_DECIMALS, JOINT_DECIMALS, LENGTH_DECIMALS, TIME_DECIMALS, YAW_DECIMALS,
-};
+use crate::names::{check_data_name, check_identifier, robtarget_name, IdentifierError};
+use crate::precision::JOINT_DECIMALS;
+#[cfg(test)]
+use header::comment_text;
+use header::header_lines;
 
 use minijinja::{value::Serde, AutoEscape, Environment, UndefinedBehavior};
 use serde::Serialize;
@@ -81,39 +103,15 @@ pub struct Program {
     pub header: Header,
     /// Targets in visiting order; target 0 is the first cell point (the start).
     pub targets: Vec<JointTarget>,
-    /// RAPID speeddata name, e.g. `"v300"`.
-    pub speed: String,
-    /// RAPID zonedata name, e.g. `"fine"`.
-    pub zone: String,
-    /// RAPID tooldata name, e.g. `"tool0"`.
+    /// RAPID tooldata every move uses, e.g. `"tool0"` (declared by the module when
+    /// [`tooldata`](Self::tooldata) is given).
     pub tool: String,
-}
-
-/// Values printed as comments at the top of the module.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Header {
-    /// Generator name and version, e.g. `"gen-rapid 0.1.0"`.
-    pub generator: String,
-    /// Cell file name only (no directory), e.g. `"trunk.yaml"`.
-    pub cell_file: String,
-    /// Planner used: `"extensile"`, `"neighboring"` or `"depth-first"`.
-    pub planner: String,
-    /// Grid step in degrees (printed with 3 decimals).
-    pub grid_deg: f64,
-    /// Required clearance in mm (printed with 1 decimal).
-    pub clearance_mm: f64,
-    /// Robot base position in mm (printed with 1 decimal each).
-    pub base_mm: [f64; 3],
-    /// Robot base yaw in degrees (printed with 3 decimals).
-    pub yaw_deg: f64,
-    /// Number of `MoveAbsJ` after the first (the straight moves); must equal
-    /// `targets.len() - 1` (0 for no targets).
-    pub moves: usize,
-    /// Smallest clearance along the whole path in mm (printed with 1 decimal).
-    /// None when the cell has no obstacles (the header then says so).
-    pub min_clearance_mm: Option<f64>,
-    /// Manipulation time estimate in seconds, when known (printed with 2 decimals).
-    pub estimated_time_s: Option<f64>,
+    /// The tooldata the module declares under the name [`tool`](Self::tool), if any.
+    pub tooldata: Option<ToolData>,
+    /// The work object the module declares and every move names (`\WObj:=`), if any.
+    pub wobj: Option<WobjData>,
+    /// The robot's axis ranges: no joint value outside them is written.
+    pub ranges: AxisRanges,
 }
 
 /// What a target is: a named cell point or an intermediate via point.
@@ -133,13 +131,20 @@ pub enum TargetKind {
     },
 }
 
-/// One `CONST jointtarget` of the module: a joint position to visit.
+/// One `CONST jointtarget` of the module (a joint position to visit) and the move into it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct JointTarget {
     /// Cell point or via.
     pub kind: TargetKind,
     /// Controller values of axes 1..6 in degrees.
     pub axes_deg: [f64; 6],
+    /// RAPID speeddata of the move into it, e.g. `"v300"`.
+    pub speed: String,
+    /// RAPID zonedata of the move into it, e.g. `"fine"`.
+    pub zone: String,
+    /// For a cell point given as a robtarget: the `CONST robtarget` written beside it (named
+    /// by [`robtarget_name`]).
+    pub robtarget: Option<RobTarget>,
 }
 
 /// Why a module could not be rendered.
@@ -163,24 +168,20 @@ pub enum RapidError {
         /// The rule it breaks.
         source: IdentifierError,
     },
-    /// A generated via name is not a valid RAPID identifier (e.g. too long).
-    #[error(
-        "generated name `{name}` for via {index} of leg {leg} is not a valid RAPID name: {source}"
-    )]
+    /// A generated name (a via's, a robtarget's) is not a valid RAPID identifier (too long).
+    #[error("generated name `{name}` for {what} is not a valid RAPID name: {source}")]
     InvalidGeneratedName {
         /// The generated name.
         name: String,
-        /// Leg of the via target (0-based).
-        leg: usize,
-        /// Index of the via target within its leg (1-based).
-        index: usize,
+        /// What it names ("via 2 of leg 0", "the robtarget of point `W1`").
+        what: String,
         /// The rule it breaks.
         source: IdentifierError,
     },
-    /// The speed, zone or tool name is not a RAPID identifier.
+    /// The speed, zone, tool or work object name is not a RAPID identifier.
     #[error("invalid RAPID {role} name `{name}`: {source}")]
     InvalidDataName {
-        /// `"speed"`, `"zone"` or `"tool"`.
+        /// `"speed"`, `"zone"`, `"tool"` or `"wobj"`.
         role: &'static str,
         /// The rejected name.
         name: String,
@@ -203,6 +204,14 @@ pub enum RapidError {
         /// The value.
         value: f64,
     },
+    /// A joint value lies outside the robot's ranges (the earlier stages never give one).
+    #[error("internal error: target `{name}` is out of range: {why}; the controller would refuse it, so no module is written")]
+    OutOfRange {
+        /// The target's name.
+        name: String,
+        /// The limit broken.
+        why: String,
+    },
     /// `header.moves` does not match the number of targets.
     #[error("header says {header} moves but the program has {actual} MoveAbsJ after the first")]
     MovesMismatch {
@@ -220,30 +229,23 @@ pub enum RapidError {
 struct TargetCtx {
     name: String,
     axes: String,
+    speed: String,
+    zone: String,
+    /// `(name, value)` of the robtarget written beside it.
+    robtarget: Option<(String, String)>,
 }
 
 #[derive(Serialize)]
 struct ModuleCtx<'a> {
     module: &'a str,
     header: Vec<String>,
+    /// `(name, value)` of the declared tooldata and wobjdata.
+    tooldata: Option<(String, String)>,
+    wobjdata: Option<(String, String)>,
     targets: Vec<TargetCtx>,
-    speed: &'a str,
-    zone: &'a str,
     tool: &'a str,
-}
-
-/// Header free text as printable ASCII on one line (see module doc).
-fn comment_text(text: &str) -> String {
-    let mapped: String = text
-        .chars()
-        .map(|c| if (' '..='~').contains(&c) { c } else { '?' })
-        .collect();
-    let trimmed = mapped.trim_matches(' ');
-    if trimmed.is_empty() {
-        "-".to_string()
-    } else {
-        trimmed.to_string()
-    }
+    /// `\WObj:=<name>`, or empty.
+    wobj_arg: String,
 }
 
 fn finite(what: impl Into<String>, value: f64) -> Result<f64, RapidError> {
@@ -257,77 +259,42 @@ fn finite(what: impl Into<String>, value: f64) -> Result<f64, RapidError> {
     }
 }
 
-fn header_lines(h: &Header) -> Result<Vec<String>, RapidError> {
-    let grid = finite("header grid_deg", h.grid_deg)?;
-    let clearance = finite("header clearance_mm", h.clearance_mm)?;
-    let [x, y, z] = h.base_mm;
-    let (x, y, z) = (
-        finite("header base_mm[0]", x)?,
-        finite("header base_mm[1]", y)?,
-        finite("header base_mm[2]", z)?,
-    );
-    let yaw = finite("header yaw_deg", h.yaw_deg)?;
-    let min_clearance = match h.min_clearance_mm {
-        Some(c) => format_fixed(finite("header min_clearance_mm", c)?, LENGTH_DECIMALS),
-        None => "none (no obstacles)".to_string(),
-    };
-    let mut lines = vec![
-        format!("generator: {}", comment_text(&h.generator)),
-        format!("cell: {}", comment_text(&h.cell_file)),
-        format!("planner: {}", comment_text(&h.planner)),
-        format!("grid (deg): {}", format_fixed(grid, GRID_DECIMALS)),
-        format!(
-            "clearance (mm): {}",
-            format_fixed(clearance, LENGTH_DECIMALS)
-        ),
-        format!(
-            "base: [{}, {}, {}] yaw: {}",
-            format_fixed(x, LENGTH_DECIMALS),
-            format_fixed(y, LENGTH_DECIMALS),
-            format_fixed(z, LENGTH_DECIMALS),
-            format_fixed(yaw, YAW_DECIMALS)
-        ),
-        format!("moves: {}", h.moves),
-        format!("min clearance (mm): {min_clearance}"),
-    ];
-    if let Some(t) = h.estimated_time_s {
-        let t = finite("header estimated_time_s", t)?;
-        lines.push(format!(
-            "estimated time (s): {}",
-            format_fixed(t, TIME_DECIMALS)
-        ));
-    }
-    Ok(lines)
-}
-
 /// Renders `program` as the complete text of a RAPID module (see the module
 /// documentation for the exact shape and the guarantees).
 ///
-/// Checks, in this order: module name ([`check_identifier`]); speed, zone and
-/// tool names (identifier shape, not a reserved word); header numbers finite;
-/// `header.moves == targets.len() - 1`; target names ([`target_names`]);
-/// no target name equal to the module, `main`, speed, zone or tool name and
-/// the module name not equal to `main`, speed, zone or tool (ignoring case);
-/// axis values finite. The first failure is returned.
+/// Checks, in this order: module name ([`check_identifier`]); tool and work
+/// object names (declared: [`check_identifier`]; used: identifier shape, not a
+/// reserved word); every speed and zone name; header numbers finite;
+/// `header.moves == targets.len() - 1`; target names ([`target_names`]), the
+/// robtarget names ([`robtarget_name`]); no declared name equal to another, to
+/// `main` or to a speed, zone or tool name (ignoring case); axis values finite
+/// and in range. The first failure is returned.
 pub fn render(program: &Program) -> Result<String, RapidError> {
     check_identifier(&program.module).map_err(|source| RapidError::InvalidModuleName {
         name: program.module.clone(),
         source,
     })?;
-    let roles = [
-        ("speed", &program.speed),
-        ("zone", &program.zone),
-        ("tool", &program.tool),
-    ];
-    for (role, name) in roles {
-        check_data_name(name).map_err(|source| RapidError::InvalidDataName {
+    let data_name = |role: &'static str, name: &str, declared: bool| {
+        match declared {
+            true => check_identifier(name),
+            false => check_data_name(name),
+        }
+        .map_err(|source| RapidError::InvalidDataName {
             role,
-            name: name.clone(),
+            name: name.to_string(),
             source,
-        })?;
+        })
+    };
+    data_name("tool", &program.tool, program.tooldata.is_some())?;
+    if let Some(w) = &program.wobj {
+        data_name("wobj", &w.name, true)?;
+    }
+    for t in &program.targets {
+        data_name("speed", &t.speed, false)?;
+        data_name("zone", &t.zone, false)?;
     }
 
-    let header = header_lines(&program.header)?;
+    let header = header_lines(program)?;
     let actual = program.targets.len().saturating_sub(1);
     if program.header.moves != actual {
         return Err(RapidError::MovesMismatch {
@@ -337,38 +304,7 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
     }
 
     let target_names = target_names(&program.targets)?;
-
-    // Names used by the module itself, other than the CONSTs.
-    let mut others: Vec<(String, String)> = vec![
-        (
-            program.module.clone(),
-            format!("the module name `{}`", program.module),
-        ),
-        (
-            "main".to_string(),
-            "PROC main of the generated module".to_string(),
-        ),
-    ];
-    for (role, name) in roles {
-        others.push((name.clone(), format!("the {role} data `{name}`")));
-    }
-    if let Some((_, what)) = others[1..]
-        .iter()
-        .find(|(n, _)| n.eq_ignore_ascii_case(&program.module))
-    {
-        return Err(RapidError::NameClash {
-            name: program.module.clone(),
-            other: what.clone(),
-        });
-    }
-    for name in &target_names {
-        if let Some((_, what)) = others.iter().find(|(n, _)| n.eq_ignore_ascii_case(name)) {
-            return Err(RapidError::NameClash {
-                name: name.clone(),
-                other: what.clone(),
-            });
-        }
-    }
+    check_name_space(program, &target_names)?;
 
     let mut targets = Vec::with_capacity(program.targets.len());
     for (target, name) in program.targets.iter().zip(target_names) {
@@ -377,19 +313,43 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
             let value = finite(format!("axis {} of target `{name}`", k + 1), value)?;
             axes.push(format_fixed(value, JOINT_DECIMALS));
         }
+        if let Some(why) = program.ranges.violation(&target.axes_deg) {
+            return Err(RapidError::OutOfRange { name, why });
+        }
+        let robtarget = match &target.robtarget {
+            Some(r) => {
+                let rname = robtarget_name(&name);
+                let value = data::robtarget(&rname, r)?;
+                Some((rname, value))
+            }
+            None => None,
+        };
         targets.push(TargetCtx {
             name,
             axes: axes.join(","),
+            speed: target.speed.clone(),
+            zone: target.zone.clone(),
+            robtarget,
         });
     }
 
     let ctx = ModuleCtx {
         module: &program.module,
         header,
+        tooldata: match &program.tooldata {
+            Some(t) => Some((program.tool.clone(), data::tooldata(&program.tool, t)?)),
+            None => None,
+        },
+        wobjdata: match &program.wobj {
+            Some(w) => Some((w.name.clone(), data::wobjdata(w)?)),
+            None => None,
+        },
         targets,
-        speed: &program.speed,
-        zone: &program.zone,
         tool: &program.tool,
+        wobj_arg: match &program.wobj {
+            Some(w) => format!("\\WObj:={}", w.name),
+            None => String::new(),
+        },
     };
 
     let mut env = Environment::new();
@@ -406,6 +366,65 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
     let text = env.get_template("module.mod.j2")?.render(Serde(&ctx))?;
     debug_assert!(text.is_ascii() && !text.contains('\r') && text.ends_with('\n'));
     Ok(text)
+}
+
+/// One name space: the declared names (the module, the tool and work object when declared,
+/// every `CONST`) differ from each other and from the names the module uses (`main`, the tool
+/// when not declared, every speed and zone).
+fn check_name_space(program: &Program, target_names: &[String]) -> Result<(), RapidError> {
+    let mut used: Vec<(String, String)> = vec![(
+        "main".to_string(),
+        "PROC main of the generated module".to_string(),
+    )];
+    let mut declared: Vec<(String, String)> = vec![(
+        program.module.clone(),
+        format!("the module name `{}`", program.module),
+    )];
+    let tool = (
+        program.tool.clone(),
+        format!("the tool data `{}`", program.tool),
+    );
+    match program.tooldata {
+        Some(_) => declared.push(tool),
+        None => used.push(tool),
+    }
+    if let Some(w) = &program.wobj {
+        declared.push((w.name.clone(), format!("the work object `{}`", w.name)));
+    }
+    for t in &program.targets {
+        for (role, name) in [("speed", &t.speed), ("zone", &t.zone)] {
+            if !used.iter().any(|(n, _)| n == name) {
+                used.push((name.clone(), format!("the {role} data `{name}`")));
+            }
+        }
+    }
+    for name in target_names {
+        declared.push((name.clone(), format!("the target `{name}`")));
+    }
+    for (t, name) in program.targets.iter().zip(target_names) {
+        if t.robtarget.is_some() {
+            let r = robtarget_name(name);
+            check_identifier(&r).map_err(|source| RapidError::InvalidGeneratedName {
+                name: r.clone(),
+                what: format!("the robtarget of point `{name}`"),
+                source,
+            })?;
+            declared.push((r.clone(), format!("the robtarget `{r}`")));
+        }
+    }
+    for (i, (name, _)) in declared.iter().enumerate() {
+        let clash = used
+            .iter()
+            .chain(&declared[..i])
+            .find(|(n, _)| n.eq_ignore_ascii_case(name));
+        if let Some((_, other)) = clash {
+            return Err(RapidError::NameClash {
+                name: name.clone(),
+                other: other.clone(),
+            });
+        }
+    }
+    Ok(())
 }
 
 #[cfg(test)]

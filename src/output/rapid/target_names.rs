@@ -90,8 +90,7 @@ pub fn target_names(targets: &[JointTarget]) -> Result<Vec<String>, RapidError> 
                 }
                 check_identifier(&name).map_err(|source| RapidError::InvalidGeneratedName {
                     name: name.clone(),
-                    leg,
-                    index,
+                    what: format!("via {index} of leg {leg}"),
                     source,
                 })?;
                 taken.insert(name.to_ascii_lowercase());
@@ -113,12 +112,18 @@ mod tests {
                 name: name.to_string(),
             },
             axes_deg: [0.0; 6],
+            speed: "v300".into(),
+            zone: "fine".into(),
+            robtarget: None,
         }
     }
     fn via(leg: usize, index: usize) -> JointTarget {
         JointTarget {
             kind: TargetKind::Via { leg, index },
             axes_deg: [0.0; 6],
+            speed: "v300".into(),
+            zone: "fine".into(),
+            robtarget: None,
         }
     }
 

@@ -9,39 +9,66 @@ fn point(name: &str, axes_deg: [f64; 6]) -> JointTarget {
             name: name.to_string(),
         },
         axes_deg,
+        speed: "v300".into(),
+        zone: "fine".into(),
+        robtarget: None,
     }
 }
 fn via(leg: usize, index: usize, axes_deg: [f64; 6]) -> JointTarget {
     JointTarget {
         kind: TargetKind::Via { leg, index },
         axes_deg,
+        speed: "v300".into(),
+        zone: "fine".into(),
+        robtarget: None,
+    }
+}
+
+/// The IRB 1400's ranges (docs/irb1400.md).
+const IRB1400: AxisRanges = AxisRanges {
+    axes_deg: [
+        [-170.0, 170.0],
+        [-70.0, 70.0],
+        [-65.0, 70.0],
+        [-150.0, 150.0],
+        [-115.0, 115.0],
+        [-300.0, 300.0],
+    ],
+    coupled_axis3_deg: Some([-65.0, 70.0]),
+};
+
+fn header(moves: usize) -> Header {
+    Header {
+        generator: "gen-rapid 0.1.0".to_string(),
+        cell_file: "trunk.yaml".to_string(),
+        urdf: "irb1400.urdf".to_string(),
+        controller: Some("irb1400.controller.yaml".to_string()),
+        parallelogram: true,
+        planner: "extensile".to_string(),
+        grid_deg: 5.0,
+        clearance_mm: 10.0,
+        base_mm: [0.0, -250.5, 12.26],
+        yaw_deg: -90.0,
+        moves,
+        min_clearance_mm: Some(14.04),
+        estimated_time_s: Some(3.456),
     }
 }
 
 fn small_program() -> Program {
     Program {
         module: "Trunk".to_string(),
-        header: Header {
-            generator: "gen-rapid 0.1.0".to_string(),
-            cell_file: "trunk.yaml".to_string(),
-            planner: "extensile".to_string(),
-            grid_deg: 5.0,
-            clearance_mm: 10.0,
-            base_mm: [0.0, -250.5, 12.26],
-            yaw_deg: -90.0,
-            moves: 3,
-            min_clearance_mm: Some(14.04),
-            estimated_time_s: Some(3.456),
-        },
+        header: header(3),
         targets: vec![
             point("home", [0.0, 0.0, 0.0, 0.0, 30.0, 0.0]),
             via(0, 1, [10.5, -0.0004, 20.0, -0.0, 29.99951, -180.0]),
             via(0, 2, [21.0, 1.23456, 19.9996, 0.0, 30.0, 179.9999]),
             point("pick", [45.0, 10.0, -5.0, 0.0, 60.0, 90.0]),
         ],
-        speed: "v300".to_string(),
-        zone: "fine".to_string(),
         tool: "tool0".to_string(),
+        tooldata: None,
+        wobj: None,
+        ranges: IRB1400,
     }
 }
 
@@ -49,6 +76,9 @@ fn small_program() -> Program {
 const SMALL_EXPECTED: &str = r"MODULE Trunk
     ! generator: gen-rapid 0.1.0
     ! cell: trunk.yaml
+    ! urdf: irb1400.urdf
+    ! controller: irb1400.controller.yaml
+    ! coupling: parallelogram (axis 3 = URDF joint 3 + joint 2)
     ! planner: extensile
     ! grid (deg): 5.000
     ! clearance (mm): 10.0
@@ -97,6 +127,9 @@ fn awkward_program() -> Program {
         header: Header {
             generator: "gen-rapid 0.1.0".to_string(),
             cell_file: "c\u{e9}ll\tfile.yaml ".to_string(),
+            urdf: "robot.urdf".to_string(),
+            controller: None,
+            parallelogram: false,
             planner: "depth-first".to_string(),
             grid_deg: 2.5e-3,
             clearance_mm: -0.04,
@@ -106,10 +139,18 @@ fn awkward_program() -> Program {
             min_clearance_mm: Some(1e-20),
             estimated_time_s: None,
         },
-        targets,
-        speed: "v1000".to_string(),
-        zone: "z10".to_string(),
+        targets: targets
+            .into_iter()
+            .map(|t| JointTarget {
+                speed: "v1000".into(),
+                zone: "z10".into(),
+                ..t
+            })
+            .collect(),
         tool: "gripper".to_string(),
+        tooldata: None,
+        wobj: None,
+        ranges: AxisRanges::UNBOUNDED,
     }
 }
 
@@ -220,6 +261,10 @@ fn render_awkward_program_has_properties() {
     assert!(text.contains("    ! clearance (mm): 0.0\n"), "{text}");
     assert!(text.contains("    ! min clearance (mm): 0.0\n"), "{text}");
     assert!(text.contains("    ! moves: 15\n"), "{text}");
+    assert!(
+        text.contains("    ! urdf: robot.urdf\n    ! controller: none: serial arm, the URDF's limits\n    ! coupling: serial (axes 1..6 = URDF joints 1..6)\n"),
+        "{text}"
+    );
     // -165.0005 is stored as -165.000499999..., so it rounds towards zero.
     assert!(
         text.contains("[[0.000,0.000,0.000,0.000,123456.789,-165.000]"),
@@ -245,6 +290,9 @@ fn render_without_targets() {
     let expected = r"MODULE Trunk
     ! generator: gen-rapid 0.1.0
     ! cell: trunk.yaml
+    ! urdf: irb1400.urdf
+    ! controller: irb1400.controller.yaml
+    ! coupling: parallelogram (axis 3 = URDF joint 3 + joint 2)
     ! planner: extensile
     ! grid (deg): 5.000
     ! clearance (mm): 10.0
@@ -283,10 +331,14 @@ fn render_rejects_invalid_module_name() {
 #[test]
 fn render_checks_speed_zone_tool_shape_but_allows_predefined() {
     let mut p = small_program();
-    p.speed = "vmax".into();
-    p.zone = "z200".into();
+    p.targets[1].speed = "vmax".into();
+    p.targets[2].zone = "z200".into();
     p.tool = "Tool0".into();
-    assert!(render(&p).is_ok());
+    let text = render(&p).unwrap();
+    assert!(
+        text.contains("MoveAbsJ via01_01\\NoEOffs, vmax, fine, Tool0;\n        MoveAbsJ via01_02\\NoEOffs, v300, z200, Tool0;"),
+        "{text}"
+    );
     for (field, bad) in [
         (0, "v 300"),
         (1, "If"),
@@ -296,8 +348,8 @@ fn render_checks_speed_zone_tool_shape_but_allows_predefined() {
     ] {
         let mut p = small_program();
         match field {
-            0 => p.speed = bad.into(),
-            1 => p.zone = bad.into(),
+            0 => p.targets[2].speed = bad.into(),
+            1 => p.targets[3].zone = bad.into(),
             _ => p.tool = bad.into(),
         }
         let role = ["speed", "zone", "tool"][field];
@@ -387,4 +439,196 @@ fn comment_text_is_printable_ascii() {
     assert_eq!(comment_text("  x  "), "x");
     assert_eq!(comment_text(""), "-");
     assert_eq!(comment_text("   "), "-");
+}
+
+/// A program with a declared tool and work object and two robtarget points.
+fn tcp_program() -> Program {
+    let (c, s) = (0.9238795325112867, 0.3826834323650898);
+    let mut w1 = point("W1", [10.0, 20.0, 30.0, 0.0, 40.0, 0.0]);
+    w1.speed = "v100".into();
+    w1.zone = "z10".into();
+    w1.robtarget = Some(RobTarget {
+        pose: Pose {
+            pos_mm: [600.0, -100.0, 300.0],
+            quat_wxyz: [0.0, 0.0, 1.0, 0.0],
+        },
+        conf: [0, 0, 0, 1],
+    });
+    let mut v = via(1, 1, [-5.0, 20.0, 30.0, 0.0, 40.0, 0.0]);
+    v.speed = "v100".into();
+    let mut w2 = point("W2", [-10.5, 20.0, 30.0, -100.0, -40.0, -95.0]);
+    w2.speed = "v100".into();
+    w2.robtarget = Some(RobTarget {
+        pose: Pose {
+            pos_mm: [612.5, 0.25, 300.0],
+            quat_wxyz: [c, 0.0, s, -0.0],
+        },
+        conf: [-1, -2, -2, 1],
+    });
+    Program {
+        module: "Weld".to_string(),
+        header: header(3),
+        targets: vec![point("home", [0.0, 0.0, 0.0, 0.0, 30.0, 0.0]), w1, v, w2],
+        tool: "tTorch".into(),
+        tooldata: Some(ToolData {
+            tframe: Pose {
+                pos_mm: [0.0, 0.0, 350.0],
+                quat_wxyz: [c, 0.0, s, 0.0],
+            },
+            mass_kg: 2.5,
+            cog_mm: [0.0, 0.0, 120.0],
+            shapes: vec!["neck".into(), "body".into()],
+        }),
+        wobj: Some(WobjData {
+            name: "wobjTrunk".into(),
+            uframe: Pose {
+                pos_mm: [400.0, 0.0, 500.0],
+                quat_wxyz: [1.0, 0.0, 0.0, 0.0],
+            },
+        }),
+        ranges: IRB1400,
+    }
+}
+
+/// Written by hand from docs/rapid.md's formats (tooldata, wobjdata, robtarget, MoveAbsJ with
+/// `\WObj`), not copied from the output.
+const TCP_EXPECTED: &str = r#"MODULE Weld
+    ! generator: gen-rapid 0.1.0
+    ! cell: trunk.yaml
+    ! urdf: irb1400.urdf
+    ! controller: irb1400.controller.yaml
+    ! coupling: parallelogram (axis 3 = URDF joint 3 + joint 2)
+    ! planner: extensile
+    ! grid (deg): 5.000
+    ! clearance (mm): 10.0
+    ! base: [0.0, -250.5, 12.3] yaw: -90.000
+    ! tool: tTorch (declared below; collision shapes: neck, body)
+    ! wobj: wobjTrunk (declared below; robtargets are in its user frame)
+    ! frames: robtargets and the user frame are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above
+    ! moves: 3
+    ! min clearance (mm): 14.0
+    ! estimated time (s): 3.46
+
+    PERS tooldata tTorch := [TRUE,[[0.000,0.000,350.000],[0.923879533,0.000000000,0.382683432,0.000000000]],[2.500,[0.000,0.000,120.000],[1,0,0,0],0,0,0]];
+    PERS wobjdata wobjTrunk := [FALSE,TRUE,"",[[400.000,0.000,500.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];
+
+    CONST jointtarget home := [[0.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget W1 := [[10.000,20.000,30.000,0.000,40.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST robtarget W1_rt := [[600.000,-100.000,300.000],[0.000000000,0.000000000,1.000000000,0.000000000],[0,0,0,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via02_01 := [[-5.000,20.000,30.000,0.000,40.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget W2 := [[-10.500,20.000,30.000,-100.000,-40.000,-95.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST robtarget W2_rt := [[612.500,0.250,300.000],[0.923879533,0.000000000,0.382683432,0.000000000],[-1,-2,-2,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
+
+    PROC main()
+        MoveAbsJ home\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
+        MoveAbsJ W1\NoEOffs, v100, z10, tTorch\WObj:=wobjTrunk;
+        MoveAbsJ via02_01\NoEOffs, v100, fine, tTorch\WObj:=wobjTrunk;
+        MoveAbsJ W2\NoEOffs, v100, fine, tTorch\WObj:=wobjTrunk;
+    ENDPROC
+ENDMODULE
+"#;
+
+#[test]
+fn render_tcp_program_matches_hand_written_text() {
+    let text = render(&tcp_program()).unwrap();
+    assert_eq!(text, TCP_EXPECTED);
+}
+
+#[test]
+fn a_module_of_joint_moves_says_nothing_of_tools_and_frames() {
+    let text = render(&small_program()).unwrap();
+    assert!(
+        !text.contains("! tool:") && !text.contains("! frames:"),
+        "{text}"
+    );
+    // A robtarget alone (tool0, wobj0) brings the tool, wobj and frames lines.
+    let mut p = small_program();
+    p.targets[3].robtarget = tcp_program().targets[1].robtarget;
+    let text = render(&p).unwrap();
+    assert!(
+        text.contains("    ! tool: tool0 (predefined: the flange; no tool volume)\n    ! wobj: wobj0 (robtargets are in the world frame)\n    ! frames: "),
+        "{text}"
+    );
+    assert!(
+        text.contains("MoveAbsJ pick\\NoEOffs, v300, fine, tool0;"),
+        "{text}"
+    );
+    assert!(text.contains("CONST robtarget pick_rt := "), "{text}");
+    assert!(!text.contains("PERS "), "{text}");
+}
+
+#[test]
+fn render_refuses_a_joint_value_out_of_range_as_a_last_guard() {
+    for (k, v, why) in [
+        (
+            3,
+            150.001,
+            "axis 4 = 150.001 deg is outside -150 .. 150 deg",
+        ),
+        (4, -115.5, "axis 5 = -115.5 deg is outside -115 .. 115 deg"),
+        (5, 300.5, "axis 6 = 300.5 deg is outside -300 .. 300 deg"),
+        (0, -171.0, "axis 1 = -171 deg is outside -170 .. 170 deg"),
+    ] {
+        let mut p = small_program();
+        p.targets[2].axes_deg[k] = v;
+        match render(&p) {
+            Err(e @ RapidError::OutOfRange { .. }) => {
+                let msg = e.to_string();
+                assert!(
+                    msg.contains("target `via01_02` is out of range") && msg.contains(why),
+                    "{msg}"
+                );
+            }
+            other => panic!("{k}: expected OutOfRange, got {other:?}"),
+        }
+    }
+    // The coupled range: both axes in range, the angle between the arms not.
+    let mut p = small_program();
+    p.targets[0].axes_deg[1] = -60.0;
+    p.targets[0].axes_deg[2] = 30.0;
+    let msg = render(&p).unwrap_err().to_string();
+    assert!(msg.contains("axis 3 - axis 2 = 90 deg"), "{msg}");
+    // At the limits is in range.
+    let mut p = small_program();
+    p.targets[1].axes_deg = [170.0, 70.0, 70.0, -150.0, 115.0, -300.0];
+    assert!(render(&p).is_ok());
+}
+
+#[test]
+fn declared_tool_wobj_and_robtarget_names_share_the_name_space() {
+    // A point named like its neighbour's robtarget.
+    let mut p = tcp_program();
+    p.targets[0] = point("w2_RT", [0.0; 6]);
+    let err = render(&p).unwrap_err();
+    assert!(
+        matches!(&err, RapidError::NameClash { name, .. } if name == "W2_rt"),
+        "{err}"
+    );
+    // The tool and the work object are declared: named like a point, they clash.
+    let mut p = tcp_program();
+    p.tool = "Home".into();
+    assert!(matches!(render(&p), Err(RapidError::NameClash { .. })));
+    let mut p = tcp_program();
+    p.wobj.as_mut().unwrap().name = "weld".into();
+    let err = render(&p).unwrap_err().to_string();
+    assert!(err.contains("the module name `Weld`"), "{err}");
+    // Declared names follow the identifier rule: tool0 cannot be declared again.
+    let mut p = tcp_program();
+    p.tool = "tool0".into();
+    assert!(matches!(
+        render(&p),
+        Err(RapidError::InvalidDataName { role: "tool", .. })
+    ));
+    // A robtarget name past 32 characters.
+    let mut p = tcp_program();
+    let long = format!("W{}", "x".repeat(30));
+    p.targets[1].kind = TargetKind::CellPoint { name: long };
+    assert!(matches!(
+        render(&p),
+        Err(RapidError::InvalidGeneratedName { .. })
+    ));
+    // A speed named like a declared point.
+    let mut p = tcp_program();
+    p.targets[2].speed = "W1".into();
+    assert!(matches!(render(&p), Err(RapidError::NameClash { .. })));
 }

@@ -6,7 +6,8 @@
 //! code with `collision` or `geometry`: only the cell types and parser and the robot's
 //! kinematics (which `robot`'s tests hold against RobotStudio). It also holds every via's wrist
 //! to the wrist schedule (the leg's wrists in proportion to the via's projection onto the leg's
-//! line in axes 1..3, clamped, rounded to 0.001 deg), computed here again.
+//! line in axes 1..3, clamped, rounded to 0.001 deg), computed here again. Robtarget points, the
+//! TCP, the work object and each move's speed and zone are checked in `tcp.rs`.
 //!
 //! # What the robot stands on: this check's own reading
 //!
@@ -21,6 +22,7 @@
 
 use super::library::{Base, Cell, Robot, Target, Tool, ToolGeometry};
 use super::module::Module;
+use super::tcp::{check_tcp, TcpReport};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use parry3d::math::{Pose, Vector};
 use parry3d::shape::{Ball, Cuboid, Cylinder, Shape};
@@ -94,7 +96,7 @@ impl<'a> Scene<'a> {
     }
 
     /// The same scene carrying `tool`'s shapes on the flange (none: no tool volume).
-    pub fn with_tool(mut self, tool: Option<&Tool>) -> Scene<'a> {
+    fn with_tool(mut self, tool: Option<&Tool>) -> Scene<'a> {
         self.tool.clear();
         self.tool_extent_mm = 0.0;
         for s in tool.map(|t| t.shapes.as_slice()).unwrap_or_default() {
@@ -151,7 +153,7 @@ impl<'a> Scene<'a> {
     }
 
     /// The same with the boxes given as (name, min, max), cell frame, mm.
-    pub fn from_boxes(
+    fn from_boxes(
         robot: &'a Robot,
         base_mm: [f64; 3],
         yaw_deg: f64,
@@ -339,6 +341,8 @@ pub struct Report {
     pub smallest: Nearest,
     /// Cell points given as `xyz` whose written joints were held against them.
     pub xyz_points: usize,
+    /// The robtarget points, tooldata, wobjdata and moves (`tcp.rs`).
+    pub tcp: TcpReport,
 }
 
 /// Checks a module written for `cell` by `robot` (see the module doc); `label` names it in
@@ -437,6 +441,8 @@ pub fn check_module(
                     ));
                 }
             }
+            // Reached by its jointtarget: `tcp::check_tcp` below.
+            Target::Robtarget { .. } => {}
         }
     }
     for (name, axes) in &module.targets {
@@ -505,12 +511,20 @@ pub fn check_module(
         )),
     }
 
+    let tcp = match check_tcp(cell, robot, &module, &scene.cell_from_robot) {
+        Ok(r) => r,
+        Err(f) => {
+            failures.extend(f.into_iter().map(|m| format!("{label}: {m}")));
+            TcpReport::default()
+        }
+    };
     if failures.is_empty() {
         Ok(Report {
             module,
             samples,
             smallest,
             xyz_points,
+            tcp,
         })
     } else {
         Err(failures)

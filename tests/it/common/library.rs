@@ -1,7 +1,8 @@
 //! Every path into the `gen_rapid` library that the integration tests use, in one place (the rest
 //! of the tests drive the binary or read files). When the library's modules move, mend them here.
 
-pub use gen_rapid::cell::{Base, Cell, Frame, Loc, Target, Tool, ToolGeometry, ToolShape};
+pub use gen_rapid::cell::{Base, Cell, Target, Tool, ToolGeometry};
+pub use gen_rapid::output::preview;
 pub use gen_rapid::place::Survey;
 pub use gen_rapid::robot::Robot;
 
@@ -25,7 +26,7 @@ pub fn parse_cell(path: &Path, text: &str) -> Result<Cell, String> {
 
 /// The cell's robot (its URDF and controller file).
 pub fn load_robot(cell: &Cell) -> Robot {
-    Robot::load(&cell.robot.urdf_path)
+    Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref())
         .unwrap_or_else(|e| panic!("{}: {e}", cell.robot.urdf_path.display()))
 }
 
@@ -47,7 +48,8 @@ pub enum Planned {
 /// Plans `cell` with every method on one inspected grid of `grid_deg`. Any error but a planning
 /// failure (the cell, the robot, a point, rendering) is `Err` with its message.
 pub fn plan_every_method(cell: &Cell, grid_deg: f64) -> Result<Vec<(String, Planned)>, String> {
-    let robot = Robot::load(&cell.robot.urdf_path).map_err(|e| e.to_string())?;
+    let robot = Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref())
+        .map_err(|e| e.to_string())?;
     let job = pipeline::Loaded {
         cell: cell.clone(),
         text: String::new(),

@@ -1,5 +1,6 @@
 //! Reading a written module as text (not through the library's types): the header's facts, the
-//! `CONST jointtarget` declarations and the `MoveAbsJ` moves.
+//! `CONST jointtarget` and `CONST robtarget` declarations, the `PERS tooldata` and
+//! `PERS wobjdata`, and the `MoveAbsJ` moves with their speed, zone, tool and work object.
 
 /// What a module says.
 #[derive(Clone, Debug)]
@@ -21,6 +22,44 @@ pub struct Module {
     pub targets: Vec<(String, [f64; 6])>,
     /// The target of every `MoveAbsJ`, in order.
     pub moves: Vec<String>,
+    /// Every `MoveAbsJ` as written, in order.
+    pub move_args: Vec<MoveArgs>,
+    /// Every `CONST robtarget NAME := [[x,y,z],[q1..q4],[cf1,cf4,cf6,cfx],[9E9,..]]`.
+    pub robtargets: Vec<(String, RobTarget)>,
+    /// `PERS tooldata NAME := [TRUE,[[x,y,z],[q..]],[mass,[cx,cy,cz],[1,0,0,0],0,0,0]]`.
+    pub tooldata: Vec<(String, ToolData)>,
+    /// `PERS wobjdata NAME := [FALSE,TRUE,"",[[x,y,z],[q..]],[[0,0,0],[1,0,0,0]]]`.
+    pub wobjdata: Vec<(String, [f64; 7])>,
+    /// The header's `! urdf:`, `! controller:` and `! coupling:` lines.
+    pub urdf: Option<String>,
+    pub controller: Option<String>,
+    pub coupling: Option<String>,
+}
+
+/// One `MoveAbsJ <target>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>];`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MoveArgs {
+    pub target: String,
+    pub speed: String,
+    pub zone: String,
+    pub tool: String,
+    pub wobj: Option<String>,
+}
+
+/// A written robtarget.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RobTarget {
+    pub pos_mm: [f64; 3],
+    pub quat_wxyz: [f64; 4],
+    pub conf: [i32; 4],
+}
+
+/// A written tooldata: tframe (position, quaternion), mass and centre of gravity.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ToolData {
+    pub tframe: [f64; 7],
+    pub mass_kg: f64,
+    pub cog_mm: [f64; 3],
 }
 
 impl Module {
@@ -34,6 +73,11 @@ impl Module {
         let mut min_clearance = None;
         let mut targets = Vec::new();
         let mut moves = Vec::new();
+        let mut move_args = Vec::new();
+        let mut robtargets = Vec::new();
+        let mut tooldata = Vec::new();
+        let mut wobjdata = Vec::new();
+        let (mut urdf, mut controller, mut coupling) = (None, None, None);
         for line in text.lines().map(str::trim) {
             if let Some(rest) = line.strip_prefix("MODULE ") {
                 name = Some(rest.to_string());
@@ -75,6 +119,54 @@ impl Module {
             } else if let Some(rest) = line.strip_prefix("MoveAbsJ ") {
                 let target = rest.split('\\').next().unwrap_or_default();
                 moves.push(target.to_string());
+                move_args.push(move_args_of(line)?);
+            } else if let Some(rest) = line.strip_prefix("! urdf: ") {
+                urdf = Some(rest.to_string());
+            } else if let Some(rest) = line.strip_prefix("! controller: ") {
+                controller = Some(rest.to_string());
+            } else if let Some(rest) = line.strip_prefix("! coupling: ") {
+                coupling = Some(rest.to_string());
+            } else if let Some(rest) = line.strip_prefix("CONST robtarget ") {
+                let (name, value) = declaration(line, rest)?;
+                let v = numbers(value)?;
+                if v.len() != 17 || v[11..] != [9e9; 6] {
+                    return Err(format!("'{line}': not [[x,y,z],[q..],[cf..],[9E9 x 6]]"));
+                }
+                robtargets.push((
+                    name,
+                    RobTarget {
+                        pos_mm: [v[0], v[1], v[2]],
+                        quat_wxyz: [v[3], v[4], v[5], v[6]],
+                        conf: [v[7], v[8], v[9], v[10]].map(|c| c as i32),
+                    },
+                ));
+            } else if let Some(rest) = line.strip_prefix("PERS tooldata ") {
+                let (name, value) = declaration(line, rest)?;
+                let value = value
+                    .strip_prefix("[TRUE,")
+                    .ok_or_else(|| format!("'{line}': robhold is not TRUE"))?;
+                let v = numbers(value)?;
+                if v.len() != 18 || v[11..] != [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0] {
+                    return Err(format!("'{line}': not a point-mass tooldata"));
+                }
+                tooldata.push((
+                    name,
+                    ToolData {
+                        tframe: [v[0], v[1], v[2], v[3], v[4], v[5], v[6]],
+                        mass_kg: v[7],
+                        cog_mm: [v[8], v[9], v[10]],
+                    },
+                ));
+            } else if let Some(rest) = line.strip_prefix("PERS wobjdata ") {
+                let (name, value) = declaration(line, rest)?;
+                let value = value
+                    .strip_prefix("[FALSE,TRUE,\"\",")
+                    .ok_or_else(|| format!("'{line}': not a fixed, not robot-held wobjdata"))?;
+                let v = numbers(value)?;
+                if v.len() != 14 || v[7..] != [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0] {
+                    return Err(format!("'{line}': oframe is not the identity"));
+                }
+                wobjdata.push((name, [v[0], v[1], v[2], v[3], v[4], v[5], v[6]]));
             }
         }
         let missing = |what: &str| format!("the module has no {what}");
@@ -90,6 +182,13 @@ impl Module {
                 .ok_or_else(|| missing("'! min clearance (mm):' line"))?,
             targets,
             moves,
+            move_args,
+            robtargets,
+            tooldata,
+            wobjdata,
+            urdf,
+            controller,
+            coupling,
         })
     }
 
@@ -101,6 +200,42 @@ impl Module {
             .map(|t| t.1)
             .unwrap_or_else(|| panic!("the module has no target {name}"))
     }
+}
+
+/// `NAME := VALUE;` -> (NAME, VALUE without the `;`).
+fn declaration<'a>(line: &str, rest: &'a str) -> Result<(String, &'a str), String> {
+    let (name, value) = rest
+        .split_once(" := ")
+        .ok_or_else(|| format!("'{line}': no ' := '"))?;
+    let value = value
+        .strip_suffix(';')
+        .ok_or_else(|| format!("'{line}': no final ';'"))?;
+    Ok((name.to_string(), value))
+}
+
+/// The arguments of a `MoveAbsJ` line.
+fn move_args_of(line: &str) -> Result<MoveArgs, String> {
+    let bad = || format!("'{line}': not MoveAbsJ T\\NoEOffs, speed, zone, tool[\\WObj:=w];");
+    let rest = line
+        .strip_prefix("MoveAbsJ ")
+        .and_then(|r| r.strip_suffix(';'))
+        .ok_or_else(bad)?;
+    let (target, rest) = rest.split_once("\\NoEOffs, ").ok_or_else(bad)?;
+    let parts: Vec<&str> = rest.split(", ").collect();
+    let [speed, zone, tool] = parts.as_slice() else {
+        return Err(bad());
+    };
+    let (tool, wobj) = match tool.split_once("\\WObj:=") {
+        Some((t, w)) => (t, Some(w.to_string())),
+        None => (*tool, None),
+    };
+    Ok(MoveArgs {
+        target: target.to_string(),
+        speed: speed.to_string(),
+        zone: zone.to_string(),
+        tool: tool.to_string(),
+        wobj,
+    })
 }
 
 fn number(s: &str) -> Result<f64, String> {

@@ -374,6 +374,12 @@ impl SixAxisIk {
         self.wrist_zero
     }
 
+    /// The wrist centre in the tool0 (flange) frame, mm: the same in every pose. With a tool's
+    /// `tframe` it gives the wrist centre of a TCP pose without solving anything (`base: auto`).
+    pub fn wrist_in_tool0(&self) -> Vector3<f64> {
+        self.wrist_in_tool0
+    }
+
     /// Shortest and longest distance from axis 2 to the wrist centre the arm can make, mm
     /// (geometry only; the axis ranges are not applied).
     pub fn reach_mm(&self) -> (f64, f64) {

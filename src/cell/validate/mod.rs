@@ -1,0 +1,417 @@
+//! The cell file as written ([`RawCell`]) -> a [`Cell`]: one function per YAML section
+//! (`points.rs` the points, `tool.rs` the tool and the work object, `values.rs` the value checks
+//! they share), then the checks that need several sections (the module's one name space, the
+//! tool and `motion.tool`, `base: auto` with its points). Every refusal points at the value at
+//! fault.
+//!
+//! Two rules come from elsewhere, so that the cell and the module cannot disagree: the RAPID
+//! identifier rule ([`crate::names`], with the name of a robtarget point's `CONST robtarget`) and
+//! the table of output precisions ([`crate::precision`]): a value finer than the module states
+//! it is refused, so every value of the cell appears in the module exactly as given
+//! (quaternions are normalised, and written to 9 decimals).
+
+mod points;
+mod tool;
+mod values;
+
+use super::raw::{RawBase, RawCell, RawMotion, RawObstacle, RawPlanner, RawRobot};
+use super::{
+    check_grid, defaults, Base, Cell, CellError, Loc, Method, Motion, Obstacle, Planner, Point,
+    RobotSpec, Target, Tool, Wobj,
+};
+use crate::geometry::Aabb;
+use crate::names::{check_identifier, robtarget_name, ROBTARGET_SUFFIX};
+use crate::precision::{LENGTH_DECIMALS, YAW_DECIMALS};
+use nalgebra::Point3;
+use serde_saphyr::Spanned;
+use std::path::Path;
+use values::{data_name, decimals, identifier, invalid, invalid_help, joint_value, loc, triple};
+
+/// Validates every section of a parsed cell file (module docs).
+pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
+    let module = identifier(&raw.module, "module")?;
+    let robot = robot(path, &raw.robot)?;
+    let obstacles = obstacles(&raw.obstacles)?;
+    let points = points::points(&raw.points)?;
+    let planner = planner(raw.planner.as_ref().map(|p| &p.value))?;
+    let raw_motion = raw.motion.as_ref().map(|m| &m.value);
+    let mut motion = motion(raw_motion)?;
+    let tool = raw.tool.as_ref().map(tool::tool).transpose()?;
+    let wobj = raw.wobj.as_ref().map(tool::wobj).transpose()?;
+    tool_and_motion(tool.as_ref(), raw_motion, &points)?;
+    if let Some(t) = &tool {
+        motion.tool = t.name.clone();
+    }
+    one_name_space(
+        &module,
+        loc(&raw.module),
+        &points,
+        &motion,
+        tool.as_ref(),
+        wobj.as_ref(),
+    )?;
+    if robot.base == Base::Auto {
+        every_point_positioned(&points)?;
+    }
+    Ok(Cell {
+        path: path.to_path_buf(),
+        module,
+        robot,
+        obstacles,
+        points,
+        planner,
+        motion,
+        tool,
+        wobj,
+    })
+}
+
+// ---- sections ----
+
+/// `robot:`.
+fn robot(path: &Path, r: &Spanned<RawRobot>) -> Result<RobotSpec, CellError> {
+    let r = &r.value;
+    if r.urdf.value.trim().is_empty() {
+        return Err(invalid(loc(&r.urdf), "robot.urdf must name a URDF file"));
+    }
+    let dir = path.parent().unwrap_or(Path::new(""));
+    let urdf_path = dir.join(&r.urdf.value);
+    let base = match &r.base.value {
+        RawBase::Auto => Base::Auto,
+        RawBase::Xyz(v) => {
+            let v = Spanned {
+                value: v.clone(),
+                referenced: r.base.referenced,
+                defined: r.base.defined,
+            };
+            let b = triple(&v, "robot.base")?;
+            for x in b {
+                decimals(x, LENGTH_DECIMALS, loc(&v), "robot.base", "mm")?;
+            }
+            Base::Fixed(b)
+        }
+    };
+    let yaw_deg = match &r.yaw {
+        Some(y) if !y.value.is_finite() => {
+            return Err(invalid(loc(y), "robot.yaw must be a finite number (deg)"))
+        }
+        Some(y) => decimals(y.value, YAW_DECIMALS, loc(y), "robot.yaw", "deg")?,
+        None => 0.0,
+    };
+    let wrist_deg = match &r.wrist {
+        Some(w) => {
+            let t = triple(w, "robot.wrist")?;
+            let l = loc(w);
+            [
+                joint_value(t[0], l, "robot.wrist axis 4")?,
+                joint_value(t[1], l, "robot.wrist axis 5")?,
+                joint_value(t[2], l, "robot.wrist axis 6")?,
+            ]
+        }
+        None => [0.0; 3],
+    };
+    let controller_path = match &r.controller {
+        Some(c) if c.value.trim().is_empty() => {
+            return Err(invalid(
+                loc(c),
+                "robot.controller must name a controller file",
+            ))
+        }
+        Some(c) => Some(dir.join(&c.value)),
+        None => None,
+    };
+    Ok(RobotSpec {
+        urdf_path,
+        urdf_loc: loc(&r.urdf),
+        controller_path,
+        controller_loc: r.controller.as_ref().map(loc).unwrap_or_default(),
+        base,
+        base_loc: loc(&r.base),
+        yaw_deg,
+        wrist_deg,
+        wrist_loc: r.wrist.as_ref().map(loc),
+    })
+}
+
+/// `obstacles:`.
+fn obstacles(raw: &[Spanned<RawObstacle>]) -> Result<Vec<Obstacle>, CellError> {
+    let mut obstacles: Vec<Obstacle> = Vec::new();
+    for o in raw {
+        let name = o.value.name.value.clone();
+        if name.trim().is_empty() {
+            return Err(invalid(loc(&o.value.name), "an obstacle needs a name"));
+        }
+        if let Some(first) = obstacles.iter().find(|p| p.name == name) {
+            return Err(invalid(
+                loc(&o.value.name),
+                format!(
+                    "obstacle name '{name}' is used twice (first at line {})",
+                    first.loc.line
+                ),
+            ));
+        }
+        let min_mm = triple(
+            &o.value.aabb.value.min,
+            &format!("obstacle '{name}' box.min"),
+        )?;
+        let max_mm = triple(
+            &o.value.aabb.value.max,
+            &format!("obstacle '{name}' box.max"),
+        )?;
+        if let Some(i) = (0..3).find(|&i| min_mm[i] >= max_mm[i]) {
+            return Err(invalid_help(
+                loc(&o.value.aabb),
+                format!(
+                    "obstacle '{name}': box.min {} = {} is not below box.max {} = {}",
+                    ["x", "y", "z"][i],
+                    min_mm[i],
+                    ["x", "y", "z"][i],
+                    max_mm[i]
+                ),
+                "boxes are axis-aligned: min holds the smallest x, y, z and max the largest",
+            ));
+        }
+        obstacles.push(Obstacle {
+            name,
+            aabb: Aabb::new(Point3::from(min_mm), Point3::from(max_mm)),
+            loc: loc(o),
+        });
+    }
+    Ok(obstacles)
+}
+
+/// `planner:`.
+fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
+    let mut planner = Planner {
+        method: defaults::METHOD,
+        grid_deg: defaults::GRID_DEG,
+        clearance_mm: defaults::CLEARANCE_MM,
+    };
+    let Some(p) = p else {
+        return Ok(planner);
+    };
+    if let Some(m) = &p.method {
+        planner.method = Method::parse(&m.value).ok_or_else(|| {
+            invalid(
+                loc(m),
+                format!(
+                    "planner.method '{}' is not one of neighboring, depth-first, extensile",
+                    m.value
+                ),
+            )
+        })?;
+    }
+    if let Some(g) = &p.grid {
+        planner.grid_deg = check_grid(g.value).map_err(|m| invalid(loc(g), m))?;
+    }
+    if let Some(c) = &p.clearance {
+        if !(c.value.is_finite() && c.value >= 0.0) {
+            return Err(invalid(
+                loc(c),
+                "planner.clearance must be a number >= 0 (mm)",
+            ));
+        }
+        planner.clearance_mm = c.value;
+    }
+    Ok(planner)
+}
+
+/// `motion:`.
+fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
+    let name = |s: Option<&Spanned<String>>, default: &str, what: &str| match s {
+        Some(s) => data_name(s, what),
+        None => Ok(default.to_string()),
+    };
+    Ok(Motion {
+        speed: name(
+            m.and_then(|m| m.speed.as_ref()),
+            defaults::SPEED,
+            "motion.speed",
+        )?,
+        zone: name(
+            m.and_then(|m| m.zone.as_ref()),
+            defaults::ZONE,
+            "motion.zone",
+        )?,
+        tool: name(
+            m.and_then(|m| m.tool.as_ref()),
+            defaults::TOOL,
+            "motion.tool",
+        )?,
+    })
+}
+
+// ---- across sections ----
+
+/// The tool the moves use is the `tool:` block's (then `motion.tool` must be absent) or
+/// `motion.tool`. Robtarget points are TCP poses of a tool the cell describes: without a `tool:`
+/// block that is tool0, so `motion.tool` must then be tool0 too.
+fn tool_and_motion(
+    tool: Option<&Tool>,
+    motion: Option<&RawMotion>,
+    points: &[Point],
+) -> Result<(), CellError> {
+    let Some(given) = motion.and_then(|m| m.tool.as_ref()) else {
+        return Ok(());
+    };
+    if let Some(t) = tool {
+        return Err(invalid_help(
+            loc(given),
+            format!(
+                "motion.tool '{}' is given beside the tool block (tool '{}' at line {})",
+                given.value, t.name, t.loc.line
+            ),
+            "with a `tool:` block every move uses that tool; remove motion.tool",
+        ));
+    }
+    let robtarget = points
+        .iter()
+        .find(|p| matches!(p.target, Target::Robtarget { .. }));
+    if let Some(p) = robtarget {
+        if !given.value.eq_ignore_ascii_case(defaults::TOOL) {
+            return Err(invalid_help(
+                loc(given),
+                format!(
+                    "motion.tool '{}' is not tool0, but point '{}' (line {}) is a robtarget, a TCP pose: gen-rapid must know the tool's TCP",
+                    given.value, p.name, p.loc.line
+                ),
+                "describe the tool in a `tool:` block (name, tframe, shapes) instead of motion.tool",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// One name of the module's name space and what it is, for messages.
+struct Named<'a> {
+    name: String,
+    /// "point name", "tool name", ...: how a message introduces it.
+    kind: &'a str,
+    /// What it is when another name clashes with it ("the module", "tool 'tTorch'").
+    what: String,
+    loc: Loc,
+}
+
+/// RAPID names are case-insensitive and share one name space in a module: the names the module
+/// declares (the module, the tool, the work object, the points and their `CONST robtarget`s)
+/// must differ from each other and from the names it uses (`PROC main`, every speed and zone,
+/// the tool when it is not declared). Each clash is refused at the later name's line.
+fn one_name_space(
+    module: &str,
+    module_loc: Loc,
+    points: &[Point],
+    motion: &Motion,
+    tool: Option<&Tool>,
+    wobj: Option<&Wobj>,
+) -> Result<(), CellError> {
+    let mut used: Vec<(String, String)> = vec![
+        ("main".into(), "the module's PROC main".into()),
+        (motion.speed.clone(), "motion.speed".into()),
+        (motion.zone.clone(), "motion.zone".into()),
+    ];
+    if tool.is_none() {
+        used.push((motion.tool.clone(), "motion.tool".into()));
+    }
+    for p in points {
+        if let Some(s) = &p.speed {
+            used.push((s.clone(), format!("the speed of point '{}'", p.name)));
+        }
+        if let Some(z) = &p.zone {
+            used.push((z.clone(), format!("the zone of point '{}'", p.name)));
+        }
+    }
+    let mut declared = vec![Named {
+        name: module.to_string(),
+        kind: "module name",
+        what: "the module".into(),
+        loc: module_loc,
+    }];
+    if let Some(t) = tool {
+        declared.push(Named {
+            name: t.name.clone(),
+            kind: "tool name",
+            what: format!("the tool (line {})", t.loc.line),
+            loc: t.loc,
+        });
+    }
+    if let Some(w) = wobj {
+        declared.push(Named {
+            name: w.name.clone(),
+            kind: "work object name",
+            what: format!("the work object (line {})", w.loc.line),
+            loc: w.loc,
+        });
+    }
+    for p in points {
+        declared.push(Named {
+            name: p.name.clone(),
+            kind: "point name",
+            what: format!("point '{}' (line {})", p.name, p.loc.line),
+            loc: p.loc,
+        });
+        if matches!(p.target, Target::Robtarget { .. }) {
+            declared.push(Named {
+                name: robtarget_name(&p.name),
+                kind: "robtarget name",
+                what: format!("the robtarget of point '{}' (line {})", p.name, p.loc.line),
+                loc: p.loc,
+            });
+        }
+    }
+    for (i, d) in declared.iter().enumerate() {
+        if d.kind == "robtarget name" {
+            check_identifier(&d.name).map_err(|e| {
+                invalid_help(
+                    d.loc,
+                    format!("the robtarget of this point would be named '{}', not a valid RAPID name: {e}", d.name),
+                    format!("a robtarget point is written as a CONST jointtarget of its own name and a CONST robtarget named <name>{ROBTARGET_SUFFIX}; shorten the point's name"),
+                )
+            })?;
+        }
+        let earlier = declared[..i]
+            .iter()
+            .map(|e| (e.name.as_str(), e.what.as_str()));
+        let mut taken = used
+            .iter()
+            .map(|(n, w)| (n.as_str(), w.as_str()))
+            .chain(earlier);
+        if let Some((_, what)) = taken.find(|(n, _)| n.eq_ignore_ascii_case(&d.name)) {
+            let rename = d.kind.trim_end_matches(" name");
+            let message = match d.kind {
+                "robtarget name" => format!(
+                    "point '{}' is a robtarget, written as CONST robtarget '{}', which is already the name of {what}",
+                    d.name.strip_suffix(ROBTARGET_SUFFIX).unwrap_or(&d.name),
+                    d.name
+                ),
+                _ => format!("{} '{}' is already the name of {what}", d.kind, d.name),
+            };
+            let rename = if rename == "robtarget" {
+                "point"
+            } else {
+                rename
+            };
+            return Err(invalid_help(
+                d.loc,
+                message,
+                format!("RAPID names are case-insensitive and share one name space in a module; rename the {rename}"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// `base: auto` needs every point as a position (`xyz`) or a pose (`robtarget`): joint values
+/// mean nothing until the base is known.
+fn every_point_positioned(points: &[Point]) -> Result<(), CellError> {
+    match points
+        .iter()
+        .find(|p| matches!(p.target, Target::Joints { .. }))
+    {
+        Some(p) => Err(invalid_help(
+            p.loc,
+            format!("point '{}' gives joint values, but `base: auto` needs every point as `xyz` or `robtarget` (joint values mean nothing until the base is known)", p.name),
+            "give the point's wrist-centre position `xyz: [x, y, z]` in the cell frame (mm), or its TCP pose as a robtarget",
+        )),
+        None => Ok(()),
+    }
+}

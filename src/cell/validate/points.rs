@@ -1,0 +1,137 @@
+//! `points:`: each point's name, what it gives (`joints`, `xyz` + `branch`, or `robtarget`) and
+//! the motion of the move into it (`speed`, `zone`).
+
+use super::super::raw::RawPoint;
+use super::super::{CellError, Point, Target};
+use super::values::{
+    data_name, finite, identifier, invalid, invalid_help, joint_value, loc, pose, triple,
+};
+use crate::robot::ik::Branch;
+use serde_saphyr::Spanned;
+
+/// `points:`.
+pub(super) fn points(raw: &Spanned<Vec<Spanned<RawPoint>>>) -> Result<Vec<Point>, CellError> {
+    if raw.value.len() < 2 {
+        return Err(invalid(
+            loc(raw),
+            format!(
+                "a cell needs at least 2 points (a start and an end), found {}",
+                raw.value.len()
+            ),
+        ));
+    }
+    let mut points: Vec<Point> = Vec::new();
+    for p in &raw.value {
+        let name = identifier(&p.value.name, "point name")?;
+        if let Some(first) = points.iter().find(|q| q.name.eq_ignore_ascii_case(&name)) {
+            return Err(invalid_help(
+                loc(&p.value.name),
+                format!(
+                    "point name '{name}' is used twice (first at line {})",
+                    first.loc.line
+                ),
+                "RAPID names are case-insensitive; give every point its own name",
+            ));
+        }
+        let speed = match &p.value.speed {
+            Some(s) => Some(data_name(s, &format!("point '{name}' speed"))?),
+            None => None,
+        };
+        let zone = match &p.value.zone {
+            Some(z) => Some(data_name(z, &format!("point '{name}' zone"))?),
+            None => None,
+        };
+        points.push(Point {
+            target: target(&name, p)?,
+            name,
+            speed,
+            zone,
+            loc: loc(p),
+        });
+    }
+    Ok(points)
+}
+
+/// What one point gives: `joints` (3 or 6 controller values), `xyz` (+ `branch`) or `robtarget`.
+fn target(name: &str, p: &Spanned<RawPoint>) -> Result<Target, CellError> {
+    let v = &p.value;
+    let given: Vec<(&str, crate::cell::Loc)> = [
+        v.joints.as_ref().map(|j| ("joints", loc(j))),
+        v.xyz.as_ref().map(|x| ("xyz", loc(x))),
+        v.robtarget.as_ref().map(|r| ("robtarget", loc(r))),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    if let [(first, _), (second, at), ..] = given.as_slice() {
+        return Err(invalid(
+            *at,
+            format!("point '{name}' gives both `{first}` and `{second}`; give one"),
+        ));
+    }
+    if let (Some(b), None) = (&v.branch, &v.xyz) {
+        return Err(invalid(
+            loc(b),
+            format!("point '{name}': `branch` applies to `xyz` points only"),
+        ));
+    }
+    if let Some(j) = &v.joints {
+        return joints(name, j);
+    }
+    if let Some(x) = &v.xyz {
+        return Ok(Target::Xyz {
+            wrist_centre_mm: triple(x, &format!("point '{name}' xyz"))?,
+            branch: match &v.branch {
+                Some(b) => Some(
+                    b.value
+                        .parse::<Branch>()
+                        .map_err(|why| invalid(loc(b), format!("point '{name}': {why}")))?,
+                ),
+                None => None,
+            },
+            branch_loc: v.branch.as_ref().map(loc).unwrap_or_default(),
+        });
+    }
+    if let Some(r) = &v.robtarget {
+        let (pose, conf) = pose(r, &format!("point '{name}' robtarget"), true)?;
+        return Ok(Target::Robtarget { pose, conf });
+    }
+    Err(invalid_help(
+        loc(p),
+        format!("point '{name}' gives neither `joints`, `xyz` nor `robtarget`"),
+        "write `joints: [a1, a2, a3]` (controller values, deg), `xyz: [x, y, z]` (wrist centre, mm) or `robtarget: [[x, y, z], [q1, q2, q3, q4]]` (TCP pose in the work object)",
+    ))
+}
+
+/// `joints: [a1, a2, a3]` or all six.
+fn joints(name: &str, j: &Spanned<Vec<f64>>) -> Result<Target, CellError> {
+    finite(j, &format!("point '{name}' joints"))?;
+    let l = loc(j);
+    let mut a = Vec::with_capacity(6);
+    for (i, x) in j.value.iter().enumerate() {
+        a.push(joint_value(
+            *x,
+            l,
+            &format!("point '{name}' axis {}", i + 1),
+        )?);
+    }
+    Ok(match a.as_slice() {
+        [a1, a2, a3] => Target::Joints {
+            axes_deg: [*a1, *a2, *a3],
+            wrist_deg: None,
+        },
+        [a1, a2, a3, a4, a5, a6] => Target::Joints {
+            axes_deg: [*a1, *a2, *a3],
+            wrist_deg: Some([*a4, *a5, *a6]),
+        },
+        _ => {
+            return Err(invalid(
+                l,
+                format!(
+                    "point '{name}': joints must list axes 1..3 or all six axes, found {} values",
+                    a.len()
+                ),
+            ))
+        }
+    })
+}

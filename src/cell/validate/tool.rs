@@ -1,0 +1,136 @@
+//! `tool:` and `wobj:`: the tooldata the module declares (name, TCP frame in the flange frame,
+//! load) with the tool's collision shapes, and the work object robtargets are given in.
+
+use super::super::raw::{RawShape, RawTool, RawWobj};
+use super::super::{defaults, CellError, Frame, Tool, ToolGeometry, ToolShape, Wobj};
+use super::values::{identifier, invalid, invalid_help, loc, mass, pose, position, triple};
+use serde_saphyr::Spanned;
+
+/// `tool:`.
+pub(super) fn tool(t: &Spanned<RawTool>) -> Result<Tool, CellError> {
+    let r = &t.value;
+    let name = identifier(&r.name, "tool name").map_err(|e| with_help(e, "the tool block declares tooldata: name it (e.g. tTorch); tool0 is the flange itself, predefined, and is what the moves use without a tool block"))?;
+    let (tframe, _) = pose(&r.tframe, "tool.tframe", false)?;
+    let mass_kg = match &r.mass {
+        Some(m) => mass(m)?,
+        None => defaults::TOOL_MASS_KG,
+    };
+    let cog_mm = match &r.cog {
+        Some(c) => position(c, "tool.cog")?,
+        None => [0.0; 3],
+    };
+    let mut shapes: Vec<ToolShape> = Vec::new();
+    for s in &r.shapes {
+        let shape = shape(s)?;
+        if let Some(first) = shapes.iter().find(|p| p.name == shape.name) {
+            return Err(invalid(
+                loc(&s.value.name),
+                format!(
+                    "tool shape name '{}' is used twice (first at line {})",
+                    shape.name, first.loc.line
+                ),
+            ));
+        }
+        shapes.push(shape);
+    }
+    Ok(Tool {
+        name,
+        tframe,
+        mass_kg,
+        cog_mm,
+        shapes,
+        loc: loc(&r.name),
+    })
+}
+
+fn with_help(e: CellError, help: &str) -> CellError {
+    match e {
+        CellError::Invalid { loc, message, .. } => invalid_help(loc, message, help),
+        other => other,
+    }
+}
+
+/// One tool shape: exactly one of cylinder, box, sphere, in the flange frame (mm).
+fn shape(s: &Spanned<RawShape>) -> Result<ToolShape, CellError> {
+    let r = &s.value;
+    let name = r.name.value.clone();
+    if name.trim().is_empty() {
+        return Err(invalid(loc(&r.name), "a tool shape needs a name"));
+    }
+    let what = |key: &str| format!("tool shape '{name}' {key}");
+    let positive = |v: &Spanned<f64>, key: &str| {
+        if v.value.is_finite() && v.value > 0.0 {
+            Ok(v.value)
+        } else {
+            Err(invalid(
+                loc(v),
+                format!("{} = {} must be a number > 0 (mm)", what(key), v.value),
+            ))
+        }
+    };
+    let geometry = match (&r.cylinder, &r.aabb, &r.sphere) {
+        (Some(c), None, None) => {
+            let c = &c.value;
+            let from_mm = triple(&c.from, &what("cylinder.from"))?;
+            let to_mm = triple(&c.to, &what("cylinder.to"))?;
+            let radius_mm = positive(&c.radius, "cylinder.radius")?;
+            if from_mm == to_mm {
+                return Err(invalid(
+                    loc(&c.to),
+                    format!("{}: from and to are the same point", what("cylinder")),
+                ));
+            }
+            ToolGeometry::Cylinder {
+                from_mm,
+                to_mm,
+                radius_mm,
+            }
+        }
+        (None, Some(b), None) => {
+            let min_mm = triple(&b.value.min, &what("box.min"))?;
+            let max_mm = triple(&b.value.max, &what("box.max"))?;
+            if let Some(i) = (0..3).find(|&i| min_mm[i] >= max_mm[i]) {
+                let axis = ["x", "y", "z"][i];
+                return Err(invalid_help(
+                    loc(b),
+                    format!(
+                        "{}: box.min {axis} = {} is not below box.max {axis} = {}",
+                        what("box"),
+                        min_mm[i],
+                        max_mm[i]
+                    ),
+                    "a tool box is axis-aligned in the flange frame: min holds the smallest x, y, z and max the largest",
+                ));
+            }
+            ToolGeometry::Box { min_mm, max_mm }
+        }
+        (None, None, Some(p)) => ToolGeometry::Sphere {
+            centre_mm: triple(&p.value.centre, &what("sphere.centre"))?,
+            radius_mm: positive(&p.value.radius, "sphere.radius")?,
+        },
+        _ => {
+            return Err(invalid_help(
+                loc(s),
+                format!("tool shape '{name}' must give exactly one of cylinder, box, sphere"),
+                "cylinder: { from: [x, y, z], to: [x, y, z], radius: r }, box: { min: [..], max: [..] } or sphere: { centre: [..], radius: r }, in the flange frame (mm)",
+            ))
+        }
+    };
+    Ok(ToolShape {
+        name,
+        geometry,
+        loc: loc(s),
+    })
+}
+
+/// `wobj:`.
+pub(super) fn wobj(w: &Spanned<RawWobj>) -> Result<Wobj, CellError> {
+    let r = &w.value;
+    let name = identifier(&r.name, "work object name").map_err(|e| with_help(e, "the wobj block declares wobjdata: name it (e.g. wobjTrunk); wobj0 is predefined (the world frame) and is what robtargets use without a wobj block"))?;
+    let (uframe, _): (Frame, _) = pose(&r.uframe, "wobj.uframe", false)?;
+    Ok(Wobj {
+        name,
+        uframe,
+        loc: loc(&r.name),
+    })
+}

@@ -1,0 +1,152 @@
+//! The comment header of the module: what was planned with what (the cell, the robot files and
+//! their convention, the planner, the base, the tool and work object) and what came out (moves,
+//! certified clearance, time). Free text is made printable ASCII on one line.
+
+use super::{finite, format_fixed, Program, RapidError};
+use crate::precision::{GRID_DECIMALS, LENGTH_DECIMALS, TIME_DECIMALS, YAW_DECIMALS};
+
+/// What the module says about the controller without a controller file.
+pub const NO_CONTROLLER: &str = "none: serial arm, the URDF's limits";
+
+/// The header's note on frames, for a module with robtargets or a work object: wobj0's frame
+/// (and a wobjdata's user frame) is the controller's world frame, the cell's positions are in the
+/// cell frame; they agree only if the controller's base frame is the placement.
+pub const FRAMES_NOTE: &str = "frames: robtargets and the user frame are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above";
+
+/// Values printed as comments at the top of the module.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Header {
+    /// Generator name and version, e.g. `"gen-rapid 0.1.0"`.
+    pub generator: String,
+    /// Cell file name only (no directory), e.g. `"trunk.yaml"`.
+    pub cell_file: String,
+    /// The URDF's file name, e.g. `"irb1400.urdf"`.
+    pub urdf: String,
+    /// The controller file's name, or `None` without one.
+    pub controller: Option<String>,
+    /// Whether the controller couples axis 3 to axis 2 (parallelogram), else serial.
+    pub parallelogram: bool,
+    /// Planner used: `"extensile"`, `"neighboring"` or `"depth-first"`.
+    pub planner: String,
+    /// Grid step in degrees (printed with 3 decimals).
+    pub grid_deg: f64,
+    /// Required clearance in mm (printed with 1 decimal).
+    pub clearance_mm: f64,
+    /// Robot base position in mm (printed with 1 decimal each).
+    pub base_mm: [f64; 3],
+    /// Robot base yaw in degrees (printed with 3 decimals).
+    pub yaw_deg: f64,
+    /// Number of `MoveAbsJ` after the first (the straight moves); must equal
+    /// `targets.len() - 1` (0 for no targets).
+    pub moves: usize,
+    /// Smallest clearance along the whole path in mm (printed with 1 decimal).
+    /// None when the cell has no obstacles (the header then says so).
+    pub min_clearance_mm: Option<f64>,
+    /// Manipulation time estimate in seconds, when known (printed with 2 decimals).
+    pub estimated_time_s: Option<f64>,
+}
+
+/// Header free text as printable ASCII on one line (see module doc).
+pub(super) fn comment_text(text: &str) -> String {
+    let mapped: String = text
+        .chars()
+        .map(|c| if (' '..='~').contains(&c) { c } else { '?' })
+        .collect();
+    let trimmed = mapped.trim_matches(' ');
+    if trimmed.is_empty() {
+        "-".to_string()
+    } else {
+        trimmed.to_string()
+    }
+}
+
+/// The header lines of `p` (without the leading `! `).
+pub(super) fn header_lines(p: &Program) -> Result<Vec<String>, RapidError> {
+    let h = &p.header;
+    let grid = finite("header grid_deg", h.grid_deg)?;
+    let clearance = finite("header clearance_mm", h.clearance_mm)?;
+    let [x, y, z] = h.base_mm;
+    let (x, y, z) = (
+        finite("header base_mm[0]", x)?,
+        finite("header base_mm[1]", y)?,
+        finite("header base_mm[2]", z)?,
+    );
+    let yaw = finite("header yaw_deg", h.yaw_deg)?;
+    let min_clearance = match h.min_clearance_mm {
+        Some(c) => format_fixed(finite("header min_clearance_mm", c)?, LENGTH_DECIMALS),
+        None => "none (no obstacles)".to_string(),
+    };
+    let coupling = match h.parallelogram {
+        true => "parallelogram (axis 3 = URDF joint 3 + joint 2)",
+        false => "serial (axes 1..6 = URDF joints 1..6)",
+    };
+    let mut lines = vec![
+        format!("generator: {}", comment_text(&h.generator)),
+        format!("cell: {}", comment_text(&h.cell_file)),
+        format!("urdf: {}", comment_text(&h.urdf)),
+        format!(
+            "controller: {}",
+            comment_text(h.controller.as_deref().unwrap_or(NO_CONTROLLER))
+        ),
+        format!("coupling: {coupling}"),
+        format!("planner: {}", comment_text(&h.planner)),
+        format!("grid (deg): {}", format_fixed(grid, GRID_DECIMALS)),
+        format!(
+            "clearance (mm): {}",
+            format_fixed(clearance, LENGTH_DECIMALS)
+        ),
+        format!(
+            "base: [{}, {}, {}] yaw: {}",
+            format_fixed(x, LENGTH_DECIMALS),
+            format_fixed(y, LENGTH_DECIMALS),
+            format_fixed(z, LENGTH_DECIMALS),
+            format_fixed(yaw, YAW_DECIMALS)
+        ),
+    ];
+    lines.extend(tcp_lines(p));
+    lines.push(format!("moves: {}", h.moves));
+    lines.push(format!("min clearance (mm): {min_clearance}"));
+    if let Some(t) = h.estimated_time_s {
+        let t = finite("header estimated_time_s", t)?;
+        lines.push(format!(
+            "estimated time (s): {}",
+            format_fixed(t, TIME_DECIMALS)
+        ));
+    }
+    Ok(lines)
+}
+
+/// The tool, the work object and the frame note: only for a module that declares a tool or a
+/// work object or writes robtargets (a module of joint moves alone says nothing of them).
+fn tcp_lines(p: &Program) -> Vec<String> {
+    let robtargets = p.targets.iter().any(|t| t.robtarget.is_some());
+    if p.tooldata.is_none() && p.wobj.is_none() && !robtargets {
+        return Vec::new();
+    }
+    let tool = match &p.tooldata {
+        Some(t) if t.shapes.is_empty() => format!(
+            "tool: {} (declared below; no collision shapes)",
+            comment_text(&p.tool)
+        ),
+        Some(t) => format!(
+            "tool: {} (declared below; collision shapes: {})",
+            comment_text(&p.tool),
+            comment_text(&t.shapes.join(", "))
+        ),
+        None if p.tool.eq_ignore_ascii_case("tool0") => {
+            "tool: tool0 (predefined: the flange; no tool volume)".to_string()
+        }
+        None => format!(
+            "tool: {} (not declared by this module; no tool volume)",
+            comment_text(&p.tool)
+        ),
+    };
+    let wobj = match &p.wobj {
+        Some(w) => format!(
+            "wobj: {} (declared below; robtargets are in its user frame)",
+            comment_text(&w.name)
+        ),
+        None => "wobj: wobj0 (robtargets are in the world frame)".to_string(),
+    };
+    vec![tool, wobj, FRAMES_NOTE.to_string()]
+}

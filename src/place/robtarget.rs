@@ -1,0 +1,128 @@
+//! Robtarget points: a TCP pose in the work object -> controller values of all six axes, through
+//! the six-axis inverse kinematics ([`SixAxisIk`]). Beyond the paper (which plans wrist centres).
+//!
+//! **Frames.** The cell gives the TCP pose in the work object's user frame (`wobj.uframe`, itself
+//! in the cell frame; without a `wobj:` block wobj0, whose frame is the cell frame). So
+//! `TCP (cell) = uframe * pose`, `TCP (robot base) = placement^-1 * TCP (cell)`, and the flange
+//! (tool0) pose the arm must reach is `TCP (robot base) * tframe^-1` (`tool.tframe`: the TCP in
+//! the flange frame; without a `tool:` block tool0, the identity).
+//!
+//! **Choice.** With confdata, the solution of that configuration; without, the one nearest the
+//! previous point under the IK's documented metric (time of the joint move at the controller's
+//! axis speeds, then the joint distance; the zero pose for the first point). Among those, the
+//! first whose values, *rounded to the written 0.001 deg*, are in range (all six axes and the
+//! coupled axis-3 range), keep the confdata asked for, still reach the pose within
+//! [`POSITION_TOL_MM`] and [`ANGLE_TOL_DEG`] by the robot's forward kinematics, and pass the
+//! place stage's [`PoseCheck`] (collisions). Every refusal is kept, so a failure says why each
+//! solution was refused, or that the pose is out of reach by how much, or that axis 5 would have
+//! to leave its range, or which confdata are reachable when the one asked for is not.
+//!
+//! **The wrist centre without a base** (`base: auto`): the wrist centre is fixed in the flange
+//! frame ([`SixAxisIk::wrist_in_tool0`]), so `W (cell) = uframe * pose * tframe^-1 * w` follows
+//! from the cell alone; the location stage takes it as an `xyz` point.
+
+use super::{PlaceError, Placement, PoseCheck};
+use crate::cell::{Cell, Frame, Point};
+use crate::precision::quantize_joints;
+use crate::robot::ik::six::{describe_violation, ConfData, SixAxisIk};
+use crate::robot::{Axes6, Robot};
+use nalgebra::{Isometry3, Point3};
+
+/// The written joint values must put the TCP within this of the robtarget's position, mm.
+pub const POSITION_TOL_MM: f64 = 0.1;
+/// ... and its orientation within this angle, deg.
+pub const ANGLE_TOL_DEG: f64 = 0.01;
+
+/// The tool and work object of a cell, with the solver of its robot.
+pub(super) struct Tcp {
+    ik: SixAxisIk,
+    /// TCP in the flange frame.
+    tframe: Isometry3<f64>,
+    /// Work object user frame in the cell frame.
+    uframe: Isometry3<f64>,
+}
+
+impl Tcp {
+    /// The cell's tool and work object; a robot the six-axis IK cannot handle is an input error
+    /// pointing at `robot.urdf`.
+    pub(super) fn of(cell: &Cell, robot: &Robot) -> Result<Tcp, PlaceError> {
+        let ik = SixAxisIk::from_robot(robot).map_err(|source| PlaceError::SixAxis {
+            source,
+            loc: cell.robot.urdf_loc,
+        })?;
+        let frame = |f: Option<Frame>| f.unwrap_or(Frame::IDENTITY).isometry();
+        Ok(Tcp {
+            ik,
+            tframe: frame(cell.tool.as_ref().map(|t| t.tframe)),
+            uframe: frame(cell.wobj.as_ref().map(|w| w.uframe)),
+        })
+    }
+
+    /// The TCP pose of a robtarget in the cell frame.
+    fn tcp_in_cell(&self, pose: &Frame) -> Isometry3<f64> {
+        self.uframe * pose.isometry()
+    }
+
+    /// The wrist centre of a robtarget, cell frame, mm (module docs).
+    pub(super) fn wrist_centre(&self, pose: &Frame) -> [f64; 3] {
+        let w =
+            self.tcp_in_cell(pose) * self.tframe.inverse() * Point3::from(self.ik.wrist_in_tool0());
+        [w.x, w.y, w.z]
+    }
+
+    /// Solves robtarget point `p` from `placement` (module docs): the written joint values and
+    /// the confdata the module states with them.
+    pub(super) fn solve(
+        &self,
+        p: &Point,
+        pose: &Frame,
+        wanted: Option<ConfData>,
+        placement: Placement,
+        previous: Option<&Axes6>,
+        check: &impl PoseCheck,
+    ) -> Result<(Axes6, ConfData), PlaceError> {
+        let tcp = placement.cell_from_robot().inverse() * self.tcp_in_cell(pose);
+        let robot = self.ik.robot();
+        let accept = |axes: &Axes6| -> Result<(), String> {
+            let q = quantize_joints(*axes);
+            if let Err(v) = robot.check_range6(&q) {
+                return Err(format!("rounded to 0.001 deg, {}", describe_violation(&v)));
+            }
+            if let Some(w) = wanted.filter(|w| *w != self.ik.conf(&q)) {
+                return Err(format!(
+                    "rounded to 0.001 deg it is confdata {}, not {w}",
+                    self.ik.conf(&q)
+                ));
+            }
+            let (mm, deg) = pose_error(&(robot.tool0(&q) * self.tframe), &tcp);
+            if mm > POSITION_TOL_MM || deg > ANGLE_TOL_DEG {
+                return Err(format!(
+                    "rounded to 0.001 deg it misses the pose by {mm:.3} mm and {deg:.4} deg"
+                ));
+            }
+            match check.why_blocked(&q) {
+                None => Ok(()),
+                Some(why) => Err(why),
+            }
+        };
+        let solution = self
+            .ik
+            .choose_tcp(&tcp, &self.tframe, wanted, previous, accept)
+            .map_err(|source| PlaceError::Robtarget {
+                point: p.name.clone(),
+                base_mm: placement.base_mm,
+                yaw_deg: placement.yaw_deg,
+                source: Box::new(source),
+                loc: p.loc,
+            })?;
+        let q = quantize_joints(solution.axes_deg);
+        Ok((q, self.ik.conf(&q)))
+    }
+}
+
+/// How far pose `a` is from pose `b`: position (mm) and rotation angle (deg).
+pub fn pose_error(a: &Isometry3<f64>, b: &Isometry3<f64>) -> (f64, f64) {
+    let mm = (a.translation.vector - b.translation.vector).norm();
+    let deg = a.rotation.angle_to(&b.rotation).to_degrees();
+    (mm, deg)
+}

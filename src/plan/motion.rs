@@ -1,0 +1,107 @@
+//! The motion of each move: which speeddata and zonedata the move into a waypoint uses, for the
+//! module and for the time estimate (both read it here, neither imports the other).
+//!
+//! The rule (issue 9): the move into a cell point uses the point's own `speed`/`zone`, else the
+//! cell's `motion.speed`/`motion.zone` (the place stage resolves that into
+//! [`PlacedPoint::motion`]); the moves into a leg's vias use the speed of the leg's end point
+//! (the leg is one job: reaching that point) and [`VIA_ZONE`], a stop point, since a fly-by
+//! corner at a via is not proven to keep the clearance (issue 10 adds certified zones).
+//! The first waypoint's "move into" is the move from wherever the robot stands to the first
+//! point: the first point's motion.
+
+use super::{Plan, WaypointKind};
+use crate::place::{MoveMotion, PlacedPoint};
+
+/// The zone of every move into a via: a stop point.
+pub const VIA_ZONE: &str = "fine";
+
+impl Plan {
+    /// The speed and zone of the move into waypoint `k` (module docs); `points` are the placed
+    /// points the plan was made from.
+    pub fn motion_into(&self, k: usize, points: &[PlacedPoint]) -> MoveMotion {
+        let of = |i: usize| {
+            points
+                .get(i)
+                .map(|p| p.motion.clone())
+                .unwrap_or(MoveMotion {
+                    speed: String::new(),
+                    zone: String::new(),
+                })
+        };
+        match self.waypoints.get(k).map(|w| w.kind) {
+            Some(WaypointKind::CellPoint(i)) => of(i),
+            Some(WaypointKind::Via { leg, .. }) => MoveMotion {
+                speed: of(leg + 1).speed,
+                zone: VIA_ZONE.to_string(),
+            },
+            None => of(usize::MAX),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cell::Loc;
+    use crate::place::Origin;
+    use crate::plan::{Method, Waypoint};
+
+    fn point(name: &str, speed: &str, zone: &str) -> PlacedPoint {
+        PlacedPoint {
+            name: name.into(),
+            joints_deg: [0.0; 6],
+            loc: Loc::default(),
+            origin: Origin::Joints,
+            motion: MoveMotion {
+                speed: speed.into(),
+                zone: zone.into(),
+            },
+        }
+    }
+
+    #[test]
+    fn cell_points_keep_theirs_and_vias_take_the_legs_end_speed_and_fine() {
+        let points = [
+            point("A", "v300", "z10"),
+            point("B", "v100", "z5"),
+            point("C", "v2000", "fine"),
+        ];
+        let kinds = [
+            WaypointKind::CellPoint(0),
+            WaypointKind::Via { leg: 0, index: 1 },
+            WaypointKind::CellPoint(1),
+            WaypointKind::Via { leg: 1, index: 1 },
+            WaypointKind::Via { leg: 1, index: 2 },
+            WaypointKind::CellPoint(2),
+        ];
+        let plan = Plan {
+            method: Method::Extensile,
+            grid_deg: 1.0,
+            waypoints: kinds
+                .iter()
+                .map(|&kind| Waypoint {
+                    kind,
+                    joints_deg: [0.0; 6],
+                })
+                .collect(),
+            legs: Vec::new(),
+            min_clearance: None,
+            estimate: None,
+        };
+        let got: Vec<(String, String)> = (0..kinds.len())
+            .map(|k| {
+                let m = plan.motion_into(k, &points);
+                (m.speed, m.zone)
+            })
+            .collect();
+        let want = [
+            ("v300", "z10"),
+            ("v100", "fine"),
+            ("v100", "z5"),
+            ("v2000", "fine"),
+            ("v2000", "fine"),
+            ("v2000", "fine"),
+        ];
+        assert_eq!(got, want.map(|(s, z)| (s.to_string(), z.to_string())));
+    }
+}

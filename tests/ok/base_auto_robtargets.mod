@@ -1,0 +1,32 @@
+MODULE AutoTcp
+    ! generator: gen-rapid 0.1.0
+    ! cell: base_auto_robtargets.yaml
+    ! urdf: irb1400.urdf
+    ! controller: irb1400.controller.yaml
+    ! coupling: parallelogram (axis 3 = URDF joint 3 + joint 2)
+    ! planner: extensile
+    ! grid (deg): 2.000
+    ! clearance (mm): 10.0
+    ! base: [155.0, -5.0, 0.0] yaw: 0.000
+    ! tool: tGripper (declared below; collision shapes: housing)
+    ! wobj: wobj0 (robtargets are in the world frame)
+    ! frames: robtargets and the user frame are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above
+    ! moves: 2
+    ! min clearance (mm): 367.1
+    ! estimated time (s): 1.61
+
+    PERS tooldata tGripper := [TRUE,[[0.000,0.000,180.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[1.000,[0.000,0.000,0.000],[1,0,0,0],0,0,0]];
+
+    CONST jointtarget A := [[-21.602,4.413,43.467,0.000,46.533,158.398],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST robtarget A_rt := [[900.000,-300.000,400.000],[0.000000000,1.000000000,0.000000000,0.000000000],[-1,0,1,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget B := [[22.264,4.753,43.440,0.000,46.560,202.264],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST robtarget B_rt := [[900.000,300.000,400.000],[0.000000000,1.000000000,0.000000000,0.000000000],[0,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget C := [[0.644,-45.953,3.735,0.000,86.265,180.644],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST robtarget C_rt := [[600.000,0.000,700.000],[0.000000000,1.000000000,0.000000000,0.000000000],[0,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+
+    PROC main()
+        MoveAbsJ A\NoEOffs, v300, fine, tGripper;
+        MoveAbsJ B\NoEOffs, v300, fine, tGripper;
+        MoveAbsJ C\NoEOffs, v300, fine, tGripper;
+    ENDPROC
+ENDMODULE
