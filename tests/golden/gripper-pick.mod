@@ -13,7 +13,7 @@ MODULE GripperPick
     ! frames: robtargets and the user frame are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above
     ! moves: 9
     ! min clearance (mm): 10.3
-    ! estimated time (s): 6.06
+    ! estimated time (s): 5.14
 
     PERS tooldata tGripper := [TRUE,[[0.000,0.000,180.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[3.200,[0.000,0.000,80.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjConveyor := [FALSE,TRUE,"",[[700.000,0.000,750.000],[0.707106781,0.000000000,0.000000000,0.707106781]],[[0,0,0],[1,0,0,0]]];
@@ -25,14 +25,14 @@ MODULE GripperPick
     CONST robtarget pick_rt := [[-300.000,-200.000,30.000],[0.000000000,1.000000000,0.000000000,0.000000000],[-1,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget lift := [[-18.435,11.508,30.997,0.000,59.003,71.565],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget lift_rt := [[-300.000,-200.000,180.000],[0.000000000,1.000000000,0.000000000,0.000000000],[-1,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via04_01 := [[54.000,26.000,10.000,0.000,59.003,71.565],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via04_01 := [[54.000,26.000,10.000,0.000,55.938,142.609],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget above_place := [[90.000,9.123,35.675,0.000,54.325,180.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget above_place_rt := [[900.000,700.000,130.000],[0.000000000,1.000000000,0.000000000,0.000000000],[1,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget place := [[90.000,17.228,47.831,0.000,42.169,180.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget place_rt := [[900.000,700.000,-20.000],[0.000000000,1.000000000,0.000000000,0.000000000],[1,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget leave := [[90.000,9.123,35.675,0.000,54.325,180.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget leave_rt := [[900.000,700.000,130.000],[0.000000000,1.000000000,0.000000000,0.000000000],[1,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via07_01 := [[4.000,0.000,0.000,0.000,54.325,180.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via07_01 := [[4.000,0.000,0.000,0.000,45.355,6.853],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget home2 := [[0.000,0.000,0.000,0.000,45.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
 
     PROC main()

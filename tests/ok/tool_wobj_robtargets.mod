@@ -12,7 +12,7 @@ MODULE TcpCase
     ! wobj: wobjTable (declared below; robtargets are in its user frame)
     ! frames: robtargets and the user frame are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above
     ! moves: 2
-    ! min clearance (mm): 250.0
+    ! min clearance (mm): 183.3
     ! estimated time (s): 0.94
 
     PERS tooldata tTorch := [TRUE,[[0.000,0.000,250.000],[0.965925836,0.000000000,0.258819010,0.000000000]],[1.000,[0.000,0.000,0.000],[1,0,0,0],0,0,0]];
