@@ -1,6 +1,6 @@
 //! Whole-pipeline timing by stage, for benches/README.md: `cargo run --release --example profile -- CELL GRID`.
 use gen_rapid::pipeline;
-use gen_rapid::plan::leg::{LegGraph, WristSchedule};
+use gen_rapid::plan::leg::{LegGraph, ToolMemo, WristSchedule};
 use gen_rapid::plan::{wave, Method};
 use std::time::Instant;
 fn main() {
@@ -38,11 +38,13 @@ fn main() {
         let schedule =
             WristSchedule::new(&placed.points[0].joints_deg, &placed.points[1].joints_deg);
         for eager in [false, true] {
+            let memo = ToolMemo::new(cs, &check);
             let graph = LegGraph {
                 cs,
                 check: &check,
                 schedule: &schedule,
                 eager,
+                memo: &memo,
             };
             let t = Instant::now();
             let w = wave::expand(cs, &graph, a, b, wave::Connectivity::TwentySix);

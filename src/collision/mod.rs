@@ -70,7 +70,7 @@ pub use crate::cell::Obstacle;
 use crate::cell::{Cell, Tool};
 use crate::geometry::{
     cylinder_clear_of_aabb, distance_capsule_aabb, distance_point_aabb, distance_segment_aabb,
-    Aabb, Cylinder, Point, Solid,
+    gap_sq_aabb_aabb, Aabb, Cylinder, Point, Solid,
 };
 use crate::place::{Placement, PoseCheck};
 use crate::robot::{RangeViolation, Robot};
@@ -341,11 +341,15 @@ impl CollisionModel {
             return true;
         };
         let flange = self.flange_pose(axes);
+        let c = self.clearance_mm;
         tool.shapes.iter().all(|s| {
             let solid = s.local.placed(&flange);
-            self.obstacles
-                .iter()
-                .all(|o| solid_clear_of_box(&solid, &o.aabb, self.clearance_mm))
+            // The enclosing box once per shape; most boxes are farther than that (the hot path
+            // of a leg's tool inspection).
+            let e = solid.enclosing_aabb();
+            self.obstacles.iter().all(|o| {
+                gap_sq_aabb_aabb(&e, &o.aabb) > c * c || solid_clear_of_box(&solid, &o.aabb, c)
+            })
         })
     }
 
@@ -625,11 +629,15 @@ impl PoseCheck for CollisionModel {
     }
 }
 
-/// The node test for any solid: `true` when it keeps MORE than `clearance` from the box. Link
-/// cylinders go through [`link_clear_of_box`] (fast bounds before parry's GJK), balls and
-/// oriented boxes are measured exactly.
+/// The node test for any solid: `true` when it keeps MORE than `clearance` from the box. First
+/// the distance of the solid's enclosing box (a few comparisons; most boxes are far from most
+/// parts); then link cylinders go through [`link_clear_of_box`] (fast bounds before parry's
+/// GJK), balls and oriented boxes are measured exactly.
 #[inline]
 fn solid_clear_of_box(s: &Solid, b: &Aabb, clearance: f64) -> bool {
+    if s.coarse_lower_bound_aabb(b) > clearance {
+        return true;
+    }
     match s {
         Solid::Cylinder(c) => link_clear_of_box(c, b, clearance),
         _ => s.distance_aabb(b) > clearance,

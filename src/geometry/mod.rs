@@ -24,7 +24,7 @@
 use nalgebra::{Point3, Vector3};
 
 mod solids;
-pub use solids::{distance_obb_aabb, distance_sphere_aabb, Obb, Solid, Sphere};
+pub use solids::{distance_obb_aabb, distance_sphere_aabb, gap_sq_aabb_aabb, Obb, Solid, Sphere};
 
 /// A point of the cell frame, mm.
 pub type Point = Point3<f64>;

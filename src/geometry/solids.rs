@@ -109,6 +109,17 @@ pub fn distance_obb_aabb(o: &Obb, b: &Aabb) -> f64 {
     best
 }
 
+/// The squared distance between two axis-aligned boxes, mm²; 0 when they touch or overlap.
+#[inline]
+pub fn gap_sq_aabb_aabb(a: &Aabb, b: &Aabb) -> f64 {
+    (0..3)
+        .map(|k| {
+            let g = (b.min[k] - a.max[k]).max(a.min[k] - b.max[k]).max(0.0);
+            g * g
+        })
+        .sum()
+}
+
 impl Solid {
     /// Distance to the box, mm (0 on contact): exact for the ball and the oriented box, the
     /// cylinder's as [`distance_cylinder_aabb`] gives it.
@@ -119,6 +130,42 @@ impl Solid {
             Solid::Sphere(s) => distance_sphere_aabb(s, b),
             Solid::Box(o) => distance_obb_aabb(o, b),
         }
+    }
+
+    /// The smallest axis-aligned box holding the solid, mm: a cylinder's from its caps' discs
+    /// (along axis `k` a cap of radius `r` about a unit axis `u` reaches `r sqrt(1 - u_k^2)`),
+    /// a ball's and an oriented box's exact.
+    #[inline]
+    pub fn enclosing_aabb(&self) -> Aabb {
+        let (c, h) = match self {
+            Solid::Cylinder(cy) => {
+                let d = cy.b - cy.a;
+                let len = d.norm();
+                let r = cy.radius.max(0.0);
+                let h = Vector3::from_fn(|k, _| {
+                    let u = if len > 0.0 { d[k] / len } else { 0.0 };
+                    0.5 * d[k].abs() + r * (1.0 - u * u).max(0.0).sqrt()
+                });
+                (nalgebra::center(&cy.a, &cy.b), h)
+            }
+            Solid::Sphere(s) => (s.centre, Vector3::repeat(s.radius.max(0.0))),
+            Solid::Box(o) => {
+                let half = o.half.map(|x| x.max(0.0));
+                (o.centre, o.axes.abs() * half)
+            }
+        };
+        Aabb {
+            min: c - h,
+            max: c + h,
+        }
+    }
+
+    /// A bound below [`distance_aabb`](Self::distance_aabb) that costs a few comparisons, mm:
+    /// the distance between [`enclosing_aabb`](Self::enclosing_aabb) and `b` (the solid lies in
+    /// that box, so nothing of it is nearer).
+    #[inline]
+    pub fn coarse_lower_bound_aabb(&self, b: &Aabb) -> f64 {
+        gap_sq_aabb_aabb(&self.enclosing_aabb(), b).sqrt()
     }
 
     /// A cheap lower bound of [`distance_aabb`](Self::distance_aabb), mm: the capsule bound for
@@ -300,5 +347,82 @@ mod tests {
             let s = Solid::Cylinder(c);
             assert!(s.lower_bound_aabb(&b) <= s.distance_aabb(&b) + 1e-9);
         }
+    }
+
+    #[test]
+    fn the_enclosing_box_is_parrys_and_its_gap_bounds_the_distance_from_below() {
+        // The enclosing box of each solid against parry's own AABB of the same shape (exact
+        // for cylinders, balls and cuboids), and the coarse bound against the exact distance.
+        use parry3d::shape::Shape;
+        let mut rng = Rng(0xe4c1_05ed);
+        let b = Aabb::new(Point::new(0.0, 0.0, 0.0), Point::new(200.0, 100.0, 50.0));
+        let (mut culled, mut near) = (0, 0);
+        for k in 0..6_000 {
+            let centre = rng.point(-200.0, 400.0);
+            let rot = random_rotation(&mut rng);
+            let q = nalgebra::UnitQuaternion::from_matrix(&rot);
+            let pose = Pose::from_parts(
+                Vector::new(centre.x, centre.y, centre.z),
+                Rotation::from_xyzw(q.i, q.j, q.k, q.w),
+            );
+            let (solid, theirs) = match k % 3 {
+                0 => {
+                    // parry's cylinder runs along its local y axis.
+                    let (h, r) = (rng.range(0.0, 150.0), rng.range(0.0, 60.0));
+                    let y = rot * Vector3::y() * h;
+                    let c = Cylinder {
+                        a: centre - y,
+                        b: centre + y,
+                        radius: r,
+                    };
+                    let aabb = parry3d::shape::Cylinder::new(h, r).compute_aabb(&pose);
+                    (Solid::Cylinder(c), aabb)
+                }
+                1 => {
+                    let r = rng.range(0.0, 60.0);
+                    let aabb = parry3d::shape::Ball::new(r).compute_aabb(&pose);
+                    (Solid::Sphere(Sphere { centre, radius: r }), aabb)
+                }
+                _ => {
+                    let half = Vector3::new(
+                        rng.range(0.0, 100.0),
+                        rng.range(0.0, 100.0),
+                        rng.range(0.0, 100.0),
+                    );
+                    let aabb = parry3d::shape::Cuboid::new(Vector::new(half.x, half.y, half.z))
+                        .compute_aabb(&pose);
+                    (
+                        Solid::Box(Obb {
+                            centre,
+                            axes: rot,
+                            half,
+                        }),
+                        aabb,
+                    )
+                }
+            };
+            let mine = solid.enclosing_aabb();
+            for i in 0..3 {
+                assert!(
+                    (mine.min[i] - theirs.mins[i]).abs() < 1e-6
+                        && (mine.max[i] - theirs.maxs[i]).abs() < 1e-6,
+                    "{solid:?}: {mine:?} against parry's {theirs:?}"
+                );
+            }
+            let (coarse, exact) = (solid.coarse_lower_bound_aabb(&b), solid.distance_aabb(&b));
+            assert!(coarse <= exact + 1e-9, "{solid:?}: {coarse} > {exact}");
+            if coarse > 10.0 {
+                culled += 1;
+            } else if exact > 10.0 {
+                near += 1;
+            }
+        }
+        // Both outcomes occur: most far solids are culled by the coarse bound, some pass it
+        // though the exact distance would have cleared them.
+        eprintln!("{culled} culled, {near} left to the exact test");
+        assert!(
+            culled > 1_000 && near > 50,
+            "{culled} culled, {near} left to the exact test"
+        );
     }
 }

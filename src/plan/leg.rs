@@ -16,10 +16,11 @@
 //! The grid of axes 1..3 is inspected once for the arm (`collision::grid`). A leg's nodes are the
 //! arm-free nodes whose tool, at the leg's wrist there, is also free; the tool is looked at only
 //! where the node's code says it could reach a box (the wrist centre within the tool's radius
-//! plus the clearance of one), and only when the wave gets there. Its steps are the neighbour
-//! steps whose six-axis move the step check accepts (`GridCheck::step_is_safe`: node depths
-//! first, the whole-move proof where they do not suffice), asked with the two ends in index order
-//! so the answer is symmetric. Without a tool this costs nothing beyond the step check.
+//! plus the clearance of one), only when the wave gets there, and once per node for the whole
+//! leg ([`ToolMemo`], shared by its waves and walks). Its steps are the neighbour steps whose
+//! six-axis move the step check accepts (`GridCheck::step_is_safe`: node depths first, the
+//! whole-move proof where they do not suffice), asked with the two ends in index order so the
+//! answer is symmetric. Without a tool this costs nothing beyond the step check.
 //!
 //! # The leg
 //!
@@ -36,6 +37,7 @@ use crate::collision::{Ends, GridCheck};
 use crate::place::PlacedPoint;
 use crate::plan::cspace::{CSpace, Node};
 use crate::precision::quantize_joints;
+use std::sync::atomic::{AtomicU8, Ordering};
 
 /// The wrist schedule of a leg (module doc).
 #[derive(Clone, Debug, PartialEq)]
@@ -85,6 +87,28 @@ impl WristSchedule {
     }
 }
 
+/// What a leg has learned about its tool at the grid's nodes, shared by every wave and walk of
+/// the leg (two waves run at once in the extensile search, and the eager wave follows the
+/// optimistic one): per node 0 (not looked at yet), [`TOOL_CLEAR`] or [`TOOL_BLOCKED`]. Empty
+/// without a tool (then no node needs a look). Filled in any order, by any thread: the answer
+/// at a node is a pure function of the node and the leg, so a race only repeats the work.
+pub struct ToolMemo(Vec<AtomicU8>);
+
+const TOOL_CLEAR: u8 = 1;
+const TOOL_BLOCKED: u8 = 2;
+
+impl ToolMemo {
+    /// A memo for one leg on the grid of `cs`.
+    pub fn new(cs: &CSpace, check: &GridCheck<'_>) -> ToolMemo {
+        let n = if check.model().has_tool() {
+            cs.grid.len()
+        } else {
+            0
+        };
+        ToolMemo((0..n).map(|_| AtomicU8::new(0)).collect())
+    }
+}
+
 /// The leg's graph on the inspected grid (module doc).
 pub struct LegGraph<'a> {
     pub cs: &'a CSpace,
@@ -93,6 +117,8 @@ pub struct LegGraph<'a> {
     /// Whether the wave numbers over accepted steps only (else over every step between usable
     /// nodes, the optimistic first try of [`search`]).
     pub eager: bool,
+    /// The tool's answers so far (the same memo for every graph of one leg).
+    pub memo: &'a ToolMemo,
 }
 
 impl LegGraph<'_> {
@@ -118,7 +144,24 @@ impl LegGraph<'_> {
 
 impl Graph for LegGraph<'_> {
     fn node_ok(&self, n: Node) -> bool {
-        !GridCheck::tool_near(self.cs.code(n)) || self.check.model().tool_is_free(&self.six(n))
+        if !GridCheck::tool_near(self.cs.code(n)) {
+            return true;
+        }
+        let slot = self.memo.0.get(self.cs.grid.index(n));
+        match slot.map(|m| m.load(Ordering::Relaxed)) {
+            Some(TOOL_CLEAR) => true,
+            Some(TOOL_BLOCKED) => false,
+            _ => {
+                let clear = self.check.model().tool_is_free(&self.six(n));
+                if let Some(m) = slot {
+                    m.store(
+                        if clear { TOOL_CLEAR } else { TOOL_BLOCKED },
+                        Ordering::Relaxed,
+                    );
+                }
+                clear
+            }
+        }
     }
 
     fn wave_step_ok(&self, a: Node, b: Node) -> bool {
@@ -172,11 +215,13 @@ pub fn plan_leg(
 ) -> Result<PlannedLeg, LegFailure> {
     let model = check.model();
     let schedule = WristSchedule::new(&from.joints_deg, &to.joints_deg);
+    let memo = ToolMemo::new(cs, check);
     let graph = LegGraph {
         cs,
         check,
         schedule: &schedule,
         eager: false,
+        memo: &memo,
     };
     let s = join(&graph, &from.joints_deg).ok_or(LegFailure::NoJoin { last: false })?;
     let g = join(&graph, &to.joints_deg).ok_or(LegFailure::NoJoin { last: true })?;

@@ -74,11 +74,13 @@ fn per_leg_inspection_is_the_six_axis_node_test_at_every_node() {
         &[-40.0, 0.0, 10.0, 0.0, -80.0, 0.0],
         &[40.0, 30.0, 30.0, 90.0, 80.0, 180.0],
     );
+    let memo = ToolMemo::new(&cs, &check);
     let graph = LegGraph {
         cs: &cs,
         check: &check,
         schedule: &schedule,
         eager: true,
+        memo: &memo,
     };
     let (mut arm_free, mut looked, mut tool_blocked) = (0, 0, 0);
     for i in 0..g.len() {
@@ -104,6 +106,12 @@ fn per_leg_inspection_is_the_six_axis_node_test_at_every_node() {
         looked > tool_blocked && looked * 2 < arm_free,
         "{looked} looked at of {arm_free} arm-free nodes"
     );
+    // Asked again, the memo answers, the same.
+    let memo_again = (0..g.len()).all(|i| {
+        let n = g.node(i);
+        graph.usable(n) == m.is_free(&graph.six(n))
+    });
+    assert!(memo_again);
     // Without a tool no node asks for a look.
     let bare = model(false, false);
     let check = bare.grid_check(g.step_deg);
@@ -163,11 +171,13 @@ fn the_search_finds_a_path_exactly_where_the_accepted_steps_join_the_points() {
         }
         legs += 1;
         let schedule = WristSchedule::new(&from, &to);
+        let memo = ToolMemo::new(&cs, &check);
         let graph = LegGraph {
             cs: &cs,
             check: &check,
             schedule: &schedule,
             eager: false,
+            memo: &memo,
         };
         let (j26, j6) = (
             joined(&graph, s, e, Connectivity::TwentySix),
