@@ -277,3 +277,69 @@ fn where_the_optimistic_walk_runs_out_the_eager_wave_finds_the_way() {
         }
     }
 }
+
+#[test]
+fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_accepted_ones() {
+    // tests/ok/complete_search_2deg.yaml (found by a seeded generator of random cells): on a
+    // 2 deg grid every path the paper's wave offers from P to Q has a step the step check
+    // refuses, so the walk on it runs out (the search used to give up here); the wave over
+    // accepted steps has a path, and the leg plans.
+    let boxes = vec![
+        bx("b0", [641.0, 453.0, 0.0], [1041.0, 933.0, 199.0]),
+        bx("b1", [-137.0, 537.0, 0.0], [57.0, 1047.0, 1383.0]),
+        bx("b3", [623.0, 648.0, 0.0], [767.0, 980.0, 382.0]),
+        bx("b4", [-650.0, -1388.0, 0.0], [-56.0, -1060.0, 872.0]),
+        bx("b5", [581.0, 291.0, 319.0], [1075.0, 445.0, 775.0]),
+        bx("b6", [197.0, 526.0, 383.0], [631.0, 830.0, 635.0]),
+    ];
+    let robot = Robot::irb1400();
+    let placement = Placement {
+        base_mm: [0.0, 0.0, 0.0],
+        yaw_deg: 0.0,
+    };
+    let m = CollisionModel::new(&robot, placement, boxes, 25.0, None);
+    let a = &robot.controller.axes;
+    let g = Grid::over([0, 1, 2].map(|k| [a[k].min_deg, a[k].max_deg]), 2.0);
+    let check = m.grid_check(g.step_deg);
+    let cs = CSpace::build(g, &check);
+    let (from, to) = (
+        [-34.0, 34.0, 36.0, 0.0, 0.0, 0.0],
+        [120.0, 30.0, 40.0, 0.0, 0.0, 0.0],
+    );
+    let schedule = WristSchedule::new(&from, &to);
+    let memo = ToolMemo::new(&cs, &check);
+    let optimistic = LegGraph {
+        cs: &cs,
+        check: &check,
+        schedule: &schedule,
+        eager: false,
+        memo: &memo,
+    };
+    let eager = LegGraph {
+        eager: true,
+        ..optimistic
+    };
+    let (s, e) = (
+        g.node_at(&[from[0], from[1], from[2]])
+            .expect("on the grid"),
+        g.node_at(&[to[0], to[1], to[2]]).expect("on the grid"),
+    );
+    for method in [Method::Neighboring, Method::Extensile] {
+        assert_eq!(
+            method.search(&cs, s, e, &optimistic),
+            Err(SearchFailure::WalkFailed),
+            "{method}: the paper's wave offers a path of accepted steps here"
+        );
+        let path = method
+            .search(&cs, s, e, &eager)
+            .unwrap_or_else(|f| panic!("{method}: {f:?}"));
+        for w in path.windows(2) {
+            assert!(eager.usable(w[1]) && eager.step_ok(w[0], w[1]), "{w:?}");
+        }
+        let leg = plan_leg(&cs, &check, &point("P", from), &point("Q", to), method)
+            .unwrap_or_else(|f| panic!("{method}: {f:?}"));
+        for w in leg.waypoints.windows(2) {
+            assert!(m.move_is_safe(&w[0], &w[1]));
+        }
+    }
+}
