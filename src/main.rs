@@ -15,6 +15,10 @@ Examples:
   gen-rapid cells/trunk.yaml -o trunk.mod         the same, written atomically to a file
   gen-rapid cells/trunk.yaml --planner depth-first --grid 2
   gen-rapid cells/trunk.yaml --svg trunk.svg      also draw the route over the C-space
+  gen-rapid cells/trunk.yaml --html trunk.html    also a 3D preview page (open it in a browser)
+  gen-rapid cells/trunk.yaml --report trunk.json  also the results as JSON
+  gen-rapid cells/trunk.yaml --template templates/module-local.mod.j2 --proc Weld
+                                                  your own module template, routine Weld
   gen-rapid compare cells/trunk.yaml --svg all.svg      the three methods side by side
   gen-rapid locate cells/trunk-auto.yaml --svg r.svg    where the base may stand (region R)
 
@@ -28,7 +32,7 @@ A minimal cell (mm and degrees; joint values are the controller's, as in a joint
     - { name: P2, joints: [30, 0, 0] }
 Optional: robot.yaw, robot.wrist, robot.controller (a controller file for the URDF), points as
 xyz (wrist centre), base: auto, planner.method (extensile), planner.grid (1 deg),
-planner.clearance (10 mm), motion.speed/zone/tool (v300, fine, tool0).
+planner.clearance (10 mm), motion.speed/zone/tool/proc (v300, fine, tool0, main).
 
 A tool, a work object and points as TCP poses (robtargets; quaternions [w, x, y, z]):
   tool:                                  # the tooldata to declare, with its collision volumes
@@ -80,6 +84,22 @@ struct RunArgs {
     /// Also draw the route over the blocked nodes of the configuration space to FILE (SVG).
     #[arg(long, value_name = "FILE")]
     svg: Option<PathBuf>,
+    /// Also write a 3D preview page to FILE: one self-contained HTML file (the cell, the arm
+    /// and tool moving along the estimated timing, the smallest clearance); when planning fails,
+    /// a page of the points that could not be joined.
+    #[arg(long, value_name = "FILE")]
+    html: Option<PathBuf>,
+    /// Also write the run's results as JSON to FILE (waypoints, moves with their clearance,
+    /// time, speed and zone; docs/report.schema.json).
+    #[arg(long, value_name = "FILE")]
+    report: Option<PathBuf>,
+    /// Render the module through this minijinja template instead of the embedded one
+    /// (templates/module.mod.j2 is the default; README lists the names a template may use).
+    #[arg(long, value_name = "FILE")]
+    template: Option<PathBuf>,
+    /// Name the routine that makes the moves (default: the cell's motion.proc, else main).
+    #[arg(long = "proc", value_name = "NAME")]
+    proc_name: Option<String>,
 }
 
 #[derive(Subcommand)]
@@ -156,6 +176,10 @@ fn main() -> ExitCode {
             planner: cli.run.planner.map(Method::from),
             grid_deg: cli.run.grid,
             svg: cli.run.svg,
+            html: cli.run.html,
+            report: cli.run.report,
+            template: cli.run.template,
+            proc_name: cli.run.proc_name,
         }),
         Some(Command::Compare(a)) => compare(&CompareOptions {
             cell: a.cell,

@@ -5,7 +5,7 @@
 //! ```
 //!
 //! Each stage is a function of the previous stages' results. Only [`load`] reads files (the cell,
-//! the URDF and its controller file); everything after it is a pure function of its inputs, so a
+//! the URDF and its controller file; [`load_template`] the user's module template); everything after it is a pure function of its inputs, so a
 //! benchmark loads once and runs the rest as often as it likes. Errors are the stages' own,
 //! wrapped in [`Error`] with the place in the cell file they point at.
 
@@ -13,7 +13,7 @@ use crate::cell::{self, Cell};
 use crate::collision::CollisionModel;
 use crate::error::{Error, Failure};
 use crate::output::program::{self, RobotFacts};
-use crate::output::rapid::{self, AxisRanges};
+use crate::output::rapid::{self, AxisRanges, ModuleTemplate, RapidError, TemplateError};
 use crate::place::{self, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
 use crate::plan::{self, Method, Plan};
@@ -82,10 +82,12 @@ pub struct Inspected {
     pub cspace: CSpace,
 }
 
-/// The render stage's result: the module's content and its text.
+/// The render stage's result: the module's content, its text and the names it gives the
+/// plan's waypoints (in order).
 pub struct Rendered {
     pub program: rapid::Program,
     pub text: String,
+    pub names: Vec<String>,
 }
 
 /// Load: reads the cell file and the robot it names (the only file reads of the pipeline).
@@ -114,6 +116,23 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
             Err(fail(Error::Robot { source, loc }, Some(text)))
         }
     }
+}
+
+/// Load, the user's module template (`--template FILE`): read and compiled here, so a template
+/// that does not parse fails before any planning, pointing at its line (an input error).
+pub fn load_template(path: &Path) -> Result<ModuleTemplate, Failure> {
+    let fail = |error: Error| Failure {
+        error: Box::new(error),
+        file: path.display().to_string(),
+        text: None,
+    };
+    let source = std::fs::read_to_string(path).map_err(|source| {
+        fail(Error::Template(TemplateError::Read {
+            path: path.to_path_buf(),
+            source,
+        }))
+    })?;
+    ModuleTemplate::user(path, source).map_err(|e| fail(Error::Template(e)))
 }
 
 /// Place: where the robot stands and every point on all six axes.
@@ -166,11 +185,30 @@ pub fn time(job: &Loaded, mut plan: Plan) -> Plan {
     plan
 }
 
-/// Render: the RAPID module of a plan.
+/// Render: the RAPID module of a plan, through the embedded template.
 pub fn render(job: &Loaded, placed: &Placed, plan: &Plan) -> Result<Rendered, Error> {
+    render_with(job, placed, plan, &ModuleTemplate::embedded())
+}
+
+/// Render through `template` (the user's, `--template`, or the embedded one). An error of the
+/// user's template is an input error pointing at its line.
+pub fn render_with(
+    job: &Loaded,
+    placed: &Placed,
+    plan: &Plan,
+    template: &ModuleTemplate,
+) -> Result<Rendered, Error> {
     let program = program::build(&job.cell, placed, plan, &job.robot_facts());
-    let text = rapid::render(&program)?;
-    Ok(Rendered { program, text })
+    let text = rapid::render_with(&program, template).map_err(|e| match e {
+        RapidError::UserTemplate(t) => Error::Template(t),
+        e => Error::Rapid(e),
+    })?;
+    let names = rapid::target_names(&program.targets)?;
+    Ok(Rendered {
+        program,
+        text,
+        names,
+    })
 }
 
 /// A whole run after load: the placed job, the inspected grid, the timed plan and the module.
@@ -181,12 +219,61 @@ pub struct Outcome {
     pub rendered: Rendered,
 }
 
-/// Place, inspect, plan, time and render, in that order.
-pub fn run(job: &Loaded, method: Method, grid_deg: f64) -> Result<Outcome, Error> {
+/// A run that stopped at a stage's error, with what the stages before it made that a picture of
+/// the failure needs.
+pub struct Halted {
+    /// Boxed: the error is large and a `Result` carrying it should not be.
+    pub error: Box<Error>,
+    /// Set when the plan stage failed: the placed points and the grid it searched.
+    pub searched: Option<Box<Searched>>,
+}
+
+/// The place and inspect stages' results, kept for a picture when the plan stage fails.
+pub struct Searched {
+    pub placed: Placed,
+    pub inspected: Inspected,
+}
+
+impl From<Error> for Halted {
+    fn from(error: Error) -> Halted {
+        Halted {
+            error: Box::new(error),
+            searched: None,
+        }
+    }
+}
+
+impl std::fmt::Debug for Halted {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Debug::fmt(&self.error, f)
+    }
+}
+
+/// Place, inspect, plan, time and render, in that order. A failure of the plan stage keeps the
+/// placed points and the inspected grid (a picture of why the plan failed).
+pub fn run(job: &Loaded, method: Method, grid_deg: f64) -> Result<Outcome, Halted> {
+    run_with(job, method, grid_deg, &ModuleTemplate::embedded())
+}
+
+/// [`run`] with the module rendered through `template`.
+pub fn run_with(
+    job: &Loaded,
+    method: Method,
+    grid_deg: f64,
+    template: &ModuleTemplate,
+) -> Result<Outcome, Halted> {
     let placed = place(job)?;
     let inspected = inspect(job, &placed, grid_deg);
-    let plan = time(job, plan(job, &placed, &inspected, method)?);
-    let rendered = render(job, &placed, &plan)?;
+    let plan = match plan(job, &placed, &inspected, method) {
+        Ok(plan) => time(job, plan),
+        Err(error) => {
+            return Err(Halted {
+                error: Box::new(error),
+                searched: Some(Box::new(Searched { placed, inspected })),
+            })
+        }
+    };
+    let rendered = render_with(job, &placed, &plan, template)?;
     Ok(Outcome {
         placed,
         inspected,

@@ -219,6 +219,22 @@ pub struct Motion {
     /// The tooldata every move uses: the `tool:` block's name when there is one, else
     /// `motion.tool`.
     pub tool: String,
+    /// The name of the routine that makes the moves (`motion.proc`, or `--proc`; default
+    /// `main`): a RAPID identifier in the module's one name space.
+    pub proc: String,
+    /// Where that name comes from.
+    pub proc_from: ProcFrom,
+}
+
+/// Where the routine's name comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProcFrom {
+    /// Not given: [`defaults::PROC`].
+    Default,
+    /// `motion.proc`, at this place of the cell file.
+    Cell(Loc),
+    /// `--proc NAME` on the command line (it overrides `motion.proc`).
+    CommandLine,
 }
 
 /// A validated cell.
@@ -246,6 +262,8 @@ pub mod defaults {
     pub const SPEED: &str = "v300";
     pub const ZONE: &str = "fine";
     pub const TOOL: &str = "tool0";
+    /// The routine's name.
+    pub const PROC: &str = "main";
     /// The load of a `tool:` block that states no `mass`, kg.
     pub const TOOL_MASS_KG: f64 = 1.0;
     /// Finest grid accepted (deg): 0.25 deg over the IRB 1400's ranges is ~400 M nodes.
@@ -334,6 +352,13 @@ fn syntax_message(e: &serde_saphyr::Error) -> String {
         }
     }
     msg.to_string()
+}
+
+/// Names the routine `name` (`--proc NAME`, overriding `motion.proc`): the RAPID identifier
+/// rule and the module's one name space, as for `motion.proc`. The error has no place in the
+/// cell unless a name of the cell clashes with it (then it points at that name).
+pub fn override_proc(cell: &mut Cell, name: &str) -> Result<(), CellError> {
+    validate::override_proc(cell, name)
 }
 
 /// Checks a grid spacing (deg): within [MIN_GRID_DEG, MAX_GRID_DEG].

@@ -298,6 +298,7 @@ mod tests {
                 waypoints: 0..4,
             }],
             min_clearance: None,
+            move_clearances: Vec::new(),
             estimate: None,
         };
         let svg = render_svg(&cs, &|_| true, &points, &[&plan], "test").expect("svg");

@@ -17,7 +17,7 @@ mod values;
 use super::raw::{RawBase, RawCell, RawMotion, RawObstacle, RawPlanner, RawRobot};
 use super::{
     check_grid, defaults, Base, Cell, CellError, Loc, Method, Motion, Obstacle, Planner, Point,
-    RobotSpec, Target, Tool, Wobj,
+    ProcFrom, RobotSpec, Target, Tool, Wobj,
 };
 use crate::geometry::Aabb;
 use crate::names::{check_identifier, robtarget_name, ROBTARGET_SUFFIX};
@@ -218,6 +218,10 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
 
 /// `motion:`.
 fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
+    let (proc, proc_from) = match m.and_then(|m| m.proc.as_ref()) {
+        Some(p) => (identifier(p, "motion.proc")?, ProcFrom::Cell(loc(p))),
+        None => (defaults::PROC.to_string(), ProcFrom::Default),
+    };
     let name = |s: Option<&Spanned<String>>, default: &str, what: &str| match s {
         Some(s) => data_name(s, what),
         None => Ok(default.to_string()),
@@ -238,7 +242,29 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
             defaults::TOOL,
             "motion.tool",
         )?,
+        proc,
+        proc_from,
     })
+}
+
+/// `--proc NAME` (module docs of `cell`): the identifier rule, then the name space again.
+pub(super) fn override_proc(cell: &mut Cell, name: &str) -> Result<(), CellError> {
+    check_identifier(name).map_err(|e| {
+        invalid(
+            Loc::default(),
+            format!("--proc '{name}' is not a valid RAPID name: {e}"),
+        )
+    })?;
+    cell.motion.proc = name.to_string();
+    cell.motion.proc_from = ProcFrom::CommandLine;
+    one_name_space(
+        &cell.module,
+        Loc::default(),
+        &cell.points,
+        &cell.motion,
+        cell.tool.as_ref(),
+        cell.wobj.as_ref(),
+    )
 }
 
 // ---- across sections ----
@@ -305,10 +331,18 @@ fn one_name_space(
     wobj: Option<&Wobj>,
 ) -> Result<(), CellError> {
     let mut used: Vec<(String, String)> = vec![
-        ("main".into(), "the module's PROC main".into()),
         (motion.speed.clone(), "motion.speed".into()),
         (motion.zone.clone(), "motion.zone".into()),
     ];
+    if motion.proc_from == ProcFrom::Default {
+        used.insert(
+            0,
+            (
+                motion.proc.clone(),
+                format!("the module's PROC {}", motion.proc),
+            ),
+        );
+    }
     if tool.is_none() {
         used.push((motion.tool.clone(), "motion.tool".into()));
     }
@@ -326,6 +360,21 @@ fn one_name_space(
         what: "the module".into(),
         loc: module_loc,
     }];
+    match motion.proc_from {
+        ProcFrom::Default => {}
+        ProcFrom::Cell(loc) => declared.push(Named {
+            name: motion.proc.clone(),
+            kind: "routine name",
+            what: format!("the routine (motion.proc, line {})", loc.line),
+            loc,
+        }),
+        ProcFrom::CommandLine => declared.push(Named {
+            name: motion.proc.clone(),
+            kind: "routine name",
+            what: "the routine (--proc)".into(),
+            loc: Loc::default(),
+        }),
+    }
     if let Some(t) = tool {
         declared.push(Named {
             name: t.name.clone(),

@@ -27,8 +27,11 @@
 use serde::Serialize;
 use serde_json::Value;
 
+mod scene;
 #[cfg(test)]
 mod tests;
+
+pub use scene::{failure_scene, scene};
 
 /// The HTML skeleton; `/*@CSS@*/`, `/*@SCENE@*/`, `/*@JS@*/` and `@TITLE@` are filled in.
 const PAGE_HTML: &str = include_str!("../../../templates/preview/page.html");
@@ -37,16 +40,12 @@ const PAGE_CSS: &str = include_str!("../../../templates/preview/preview.css");
 /// The WebGL viewer (plain WebGL 1, no library).
 const PAGE_JS: &str = include_str!("../../../templates/preview/preview.js");
 
-/// Decimals written for lengths in millimetres (`_mm`): 0.001 mm.
-pub const MM_DECIMALS: u32 = 3;
-/// Decimals written for times in seconds (`_s`): 1 ms.
-pub const SECONDS_DECIMALS: u32 = 3;
-/// Decimals written for angles in degrees (`_deg`).
-pub const DEG_DECIMALS: u32 = 3;
-/// Decimals written for quaternion components (`_wxyz`).
-pub const QUAT_DECIMALS: u32 = 4;
-/// Decimals for any other non-integer number (none in today's [`Scene`]).
-pub const OTHER_DECIMALS: u32 = 6;
+// The decimals of the scene's numbers, by unit suffix: the one table, `crate::precision`.
+pub use crate::precision::{
+    PREVIEW_DEG_DECIMALS as DEG_DECIMALS, PREVIEW_MM_DECIMALS as MM_DECIMALS,
+    PREVIEW_OTHER_DECIMALS as OTHER_DECIMALS, PREVIEW_QUAT_DECIMALS as QUAT_DECIMALS,
+    PREVIEW_SECONDS_DECIMALS as SECONDS_DECIMALS,
+};
 
 /// Everything the preview page shows; filled by the pipeline, drawn by the page as it is.
 ///
@@ -63,8 +62,8 @@ pub struct Scene {
     pub cell_file: String,
     /// The cell's boxes.
     pub obstacles: Vec<SceneObstacle>,
-    /// Where the robot stands.
-    pub base: SceneBase,
+    /// Where the robot stands; `None` when it is not known (a failed choice of base).
+    pub base: Option<SceneBase>,
     /// The robot's collision shapes (link cylinders) and the tool's shapes, each in its own
     /// frame; [`Keyframe::poses`] places them.
     pub shapes: Vec<ShapeDef>,
@@ -302,11 +301,12 @@ fn check_finite(scene: &Scene) -> Result<(), PreviewError> {
             &[o.min_mm, o.max_mm].concat(),
         )?;
     }
-    let b = &scene.base;
-    f(
-        || "the base".into(),
-        &[&b.position_mm[..], &[b.yaw_deg]].concat(),
-    )?;
+    if let Some(b) = &scene.base {
+        f(
+            || "the base".into(),
+            &[&b.position_mm[..], &[b.yaw_deg]].concat(),
+        )?;
+    }
     for s in &scene.shapes {
         let xs = match &s.geometry {
             ShapeGeometry::Cylinder {
@@ -363,7 +363,7 @@ fn scene_json(scene: &Scene) -> Result<String, PreviewError> {
 }
 
 /// Decimals for the numbers under a JSON key, by the key's unit suffix.
-pub fn decimals_for_key(key: &str) -> Option<u32> {
+pub fn decimals_for_key(key: &str) -> Option<usize> {
     if key.ends_with("_mm") {
         Some(MM_DECIMALS)
     } else if key.ends_with("_s") {
@@ -380,7 +380,7 @@ pub fn decimals_for_key(key: &str) -> Option<u32> {
 /// Rounds every float in `v` to the decimals of its nearest enclosing key (`decimals` for
 /// numbers under no unit key); integers stay as they are. (Non-finite numbers were refused by
 /// [`check`]: serde_json would have written them as `null`.)
-fn round_value(v: &mut Value, decimals: u32) {
+fn round_value(v: &mut Value, decimals: usize) {
     match v {
         Value::Number(n) if n.is_f64() => {
             if let Some(r) = n.as_f64().and_then(|x| rounded(x, decimals)) {
@@ -400,7 +400,7 @@ fn round_value(v: &mut Value, decimals: u32) {
 }
 
 /// `x` rounded to `decimals` places as a JSON number with no `-0`; `None` when not finite.
-fn rounded(x: f64, decimals: u32) -> Option<serde_json::Number> {
+fn rounded(x: f64, decimals: usize) -> Option<serde_json::Number> {
     if !x.is_finite() {
         return None;
     }

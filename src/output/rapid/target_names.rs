@@ -12,9 +12,9 @@ fn digits(n: usize) -> usize {
 /// The `CONST jointtarget` names for `targets`, in the same order.
 ///
 /// - A cell point keeps its name, which must pass [`check_identifier`]
-///   ([`RapidError::InvalidTargetName`] otherwise), must not equal `main`
-///   (the generated `PROC`) and must be unique among cell points ignoring
-///   case ([`RapidError::NameClash`] otherwise).
+///   ([`RapidError::InvalidTargetName`] otherwise) and must be unique among
+///   cell points ignoring case ([`RapidError::NameClash`] otherwise); the
+///   routine's name is checked with the module's other names (`render`).
 /// - A via target is named `via<L>_<I>` with `L = leg + 1` and `I = index`,
 ///   both zero-padded to the same width for the whole program: the number of
 ///   digits of the largest `leg + 1` (resp. `index`) among the via targets,
@@ -40,12 +40,6 @@ pub fn target_names(targets: &[JointTarget]) -> Result<Vec<String>, RapidError> 
                 source,
             })?;
             let key = name.to_ascii_lowercase();
-            if key == "main" {
-                return Err(RapidError::NameClash {
-                    name: name.clone(),
-                    other: "PROC main of the generated module".to_string(),
-                });
-            }
             if let Some((_, first)) = owners.iter().find(|(k, _)| *k == key) {
                 return Err(RapidError::NameClash {
                     name: name.clone(),
@@ -189,14 +183,6 @@ mod tests {
             }
             other => panic!("expected NameClash, got {other:?}"),
         }
-    }
-
-    #[test]
-    fn target_names_reject_cell_point_named_main() {
-        assert!(matches!(
-            target_names(&[point("Main")]),
-            Err(RapidError::NameClash { .. })
-        ));
     }
 
     #[test]

@@ -69,6 +69,7 @@ fn small_program() -> Program {
         tooldata: None,
         wobj: None,
         ranges: IRB1400,
+        proc_name: "main".into(),
     }
 }
 
@@ -151,6 +152,7 @@ fn awkward_program() -> Program {
         tooldata: None,
         wobj: None,
         ranges: AxisRanges::UNBOUNDED,
+        proc_name: "main".into(),
     }
 }
 
@@ -382,6 +384,21 @@ fn render_rejects_target_named_like_module_or_tool() {
     let mut p = small_program();
     p.module = "main".into();
     assert!(matches!(render(&p), Err(RapidError::NameClash { .. })));
+    // A cell point takes the routine's name: refused, whatever the routine is called.
+    let mut p = small_program();
+    p.targets[3] = point("Main", [0.0; 6]);
+    let err = render(&p).unwrap_err();
+    assert!(err.to_string().contains("PROC main"), "{err}");
+    p.proc_name = "Weld".into();
+    let text = render(&p).expect("a point may be called main when the routine is not");
+    assert!(text.contains("    PROC Weld()\n") && text.contains("MoveAbsJ Main\\NoEOffs"));
+    p.targets[3] = point("weld", [0.0; 6]);
+    assert!(matches!(render(&p), Err(RapidError::NameClash { .. })));
+    p.proc_name = "MoveJ".into();
+    assert!(matches!(
+        render(&p),
+        Err(RapidError::InvalidProcName { .. })
+    ));
 }
 
 #[test]
@@ -487,6 +504,7 @@ fn tcp_program() -> Program {
             },
         }),
         ranges: IRB1400,
+        proc_name: "main".into(),
     }
 }
 

@@ -2,7 +2,6 @@
 //! of the tests drive the binary or read files). When the library's modules move, mend them here.
 
 pub use gen_rapid::cell::{Base, Cell, Target};
-pub use gen_rapid::output::preview;
 pub use gen_rapid::place::Survey;
 pub use gen_rapid::robot::Robot;
 

@@ -1,0 +1,439 @@
+//! The preview's [`Scene`] from a run's results: the cell's boxes, the robot's link cylinders
+//! and the tool's shapes posed by forward kinematics ([`Poser`]) at keyframes sampled along
+//! every move with the estimated timing, the waypoints with the names the module gives them,
+//! the TCP trace, and the place of the smallest clearance; or, for a failed plan, the cell, the
+//! robot where it could be placed and the points that could not be joined.
+//!
+//! **Keyframes.** Move `i` starts when move `i - 1` ends and lasts the estimate's
+//! `move_s[i]`; within it all six axes run together along the straight joint move (`MoveAbsJ`)
+//! at the progress of the move's profile (`Profile::progress`, the leading axis' profile of the
+//! time stage). A move is sampled every [`KEYFRAME_STEP_S`] of time and every
+//! [`KEYFRAME_STEP_DEG`] of its largest axis change (whichever gives more samples, at least one),
+//! both ends included, so the page's linear interpolation between keyframes stays within a few
+//! tenths of a millimetre of the kinematics.
+//!
+//! **The smallest clearance** is the plan's certified figure, on the move, link and obstacle the
+//! plan names ([`Plan::move_clearances`]). Where on the move it occurs is only for the picture:
+//! the move is sampled ([`CLEARANCE_SAMPLES`]) and at each sample the closest points of the
+//! named shape and box are found by alternating projections (two convex sets: project onto one,
+//! then the other, until the pair stops moving); the nearest sample gives the time and the two
+//! points the page joins with a red line. That search certifies nothing.
+
+use super::{
+    FailedPoint, Keyframe, Scene, SceneBase, SceneClearance, SceneFailure, SceneObstacle,
+    ScenePose, SceneWaypoint, ShapeDef, ShapeGeometry, ShapeKind, WaypointKind,
+};
+use crate::cell::{Cell, Target, ToolGeometry};
+use crate::output::poses::Poser;
+use crate::place::{Placed, PlacedPoint, Placement};
+use crate::plan::{Plan, Profile};
+use crate::robot::Robot;
+use nalgebra::{Isometry3, Point3, Vector3};
+
+/// Keyframes at least this often along a move, s.
+pub const KEYFRAME_STEP_S: f64 = 1.0 / 30.0;
+/// Keyframes at least every this many degrees of a move's largest axis change.
+pub const KEYFRAME_STEP_DEG: f64 = 1.0;
+/// Samples along the move of the smallest clearance, to place its marker.
+pub const CLEARANCE_SAMPLES: usize = 400;
+/// A move takes this long in the picture when the plan has no time estimate, s.
+const UNTIMED_MOVE_S: f64 = 1.0;
+
+/// One shape of the robot model and the frame it hangs on.
+enum Carrier {
+    /// Link `k` (0-based: the child of joint `k + 1`).
+    Link(usize),
+    /// The flange (tool0), which carries the tool's shapes.
+    Flange,
+}
+
+/// The robot's link cylinders, then the tool's shapes, each with the frame it hangs on.
+fn shapes(robot: &Robot, cell: &Cell) -> (Vec<ShapeDef>, Vec<Carrier>) {
+    let mut defs = Vec::new();
+    let mut carriers = Vec::new();
+    for c in &robot.cylinders {
+        defs.push(ShapeDef {
+            name: c.link.clone(),
+            kind: ShapeKind::Link,
+            geometry: ShapeGeometry::Cylinder {
+                radius_mm: c.radius_mm,
+                from_mm: c.a.coords.into(),
+                to_mm: c.b.coords.into(),
+            },
+        });
+        carriers.push(Carrier::Link(c.joint_index));
+    }
+    for s in cell.tool.iter().flat_map(|t| &t.shapes) {
+        let geometry = match s.geometry {
+            ToolGeometry::Cylinder {
+                from_mm,
+                to_mm,
+                radius_mm,
+            } => ShapeGeometry::Cylinder {
+                radius_mm,
+                from_mm,
+                to_mm,
+            },
+            ToolGeometry::Box { min_mm, max_mm } => ShapeGeometry::Box { min_mm, max_mm },
+            ToolGeometry::Sphere {
+                centre_mm,
+                radius_mm,
+            } => ShapeGeometry::Sphere {
+                centre_mm,
+                radius_mm,
+            },
+        };
+        defs.push(ShapeDef {
+            name: s.name.clone(),
+            kind: ShapeKind::Tool,
+            geometry,
+        });
+        carriers.push(Carrier::Flange);
+    }
+    (defs, carriers)
+}
+
+fn obstacles(cell: &Cell) -> Vec<SceneObstacle> {
+    cell.obstacles
+        .iter()
+        .map(|o| SceneObstacle {
+            name: o.name.clone(),
+            min_mm: o.aabb.min.coords.into(),
+            max_mm: o.aabb.max.coords.into(),
+        })
+        .collect()
+}
+
+fn scene_pose(iso: &Isometry3<f64>) -> ScenePose {
+    let q = iso.rotation.quaternion();
+    let t = iso.translation.vector;
+    ScenePose {
+        position_mm: [t.x, t.y, t.z],
+        quat_wxyz: [q.w, q.i, q.j, q.k],
+    }
+}
+
+/// The robot at one pose: every shape's frame and the TCP.
+fn keyframe(poser: &Poser, carriers: &[Carrier], time_s: f64, axes: &[f64; 6]) -> Keyframe {
+    let links = poser.links(axes);
+    let flange = poser.tool0(axes);
+    Keyframe {
+        time_s,
+        poses: carriers
+            .iter()
+            .map(|c| match c {
+                Carrier::Link(k) => scene_pose(&links[*k]),
+                Carrier::Flange => scene_pose(&flange),
+            })
+            .collect(),
+        tcp_mm: poser.tcp_mm(axes),
+    }
+}
+
+fn lerp6(a: &[f64; 6], b: &[f64; 6], s: f64) -> [f64; 6] {
+    std::array::from_fn(|k| a[k] + s * (b[k] - a[k]))
+}
+
+/// The title the page shows: the module and the cell file's name.
+fn title(cell: &Cell) -> (String, String) {
+    let file = cell
+        .path
+        .file_name()
+        .map(|f| f.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    (format!("{} - {file}", cell.module), file)
+}
+
+/// Each move's duration and profile: the estimate's, or [`UNTIMED_MOVE_S`] on one quintic.
+fn timing(plan: &Plan) -> Vec<(f64, Profile)> {
+    (0..plan.moves())
+        .map(|i| match &plan.estimate {
+            Some(e) => (
+                e.move_s.get(i).copied().unwrap_or(0.0),
+                e.move_profile.get(i).copied().unwrap_or(Profile::Quintic),
+            ),
+            None => (UNTIMED_MOVE_S, Profile::Quintic),
+        })
+        .collect()
+}
+
+/// The scene of a planned run: `names` are the module's names of the plan's waypoints (the
+/// cell points' own, `via<leg>_<index>` for the vias), in order.
+pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[String]) -> Scene {
+    let poser = Poser::new(robot, placed.placement, cell.tool.as_ref());
+    let (defs, carriers) = shapes(robot, cell);
+    let timing = timing(plan);
+    let mut keyframes = Vec::new();
+    let mut waypoints = Vec::with_capacity(plan.waypoints.len());
+    let mut starts = Vec::with_capacity(plan.moves());
+    let mut t0 = 0.0;
+    for (k, w) in plan.waypoints.iter().enumerate() {
+        if k == 0 {
+            keyframes.push(keyframe(&poser, &carriers, 0.0, &w.joints_deg));
+        } else {
+            let from = &plan.waypoints[k - 1].joints_deg;
+            let (duration, profile) = timing[k - 1];
+            starts.push(t0);
+            let largest = (0..6)
+                .map(|a| (w.joints_deg[a] - from[a]).abs())
+                .fold(0.0, f64::max);
+            let n = ((duration / KEYFRAME_STEP_S).ceil())
+                .max((largest / KEYFRAME_STEP_DEG).ceil())
+                .max(1.0) as usize;
+            for j in 1..=n {
+                let t = duration * j as f64 / n as f64;
+                let axes = if j == n {
+                    w.joints_deg
+                } else {
+                    lerp6(from, &w.joints_deg, profile.progress(t, duration))
+                };
+                keyframes.push(keyframe(&poser, &carriers, t0 + t, &axes));
+            }
+            t0 += duration;
+        }
+        waypoints.push(SceneWaypoint {
+            name: names.get(k).cloned().unwrap_or_default(),
+            kind: match w.kind {
+                crate::plan::WaypointKind::CellPoint(_) => WaypointKind::Cell,
+                crate::plan::WaypointKind::Via { .. } => WaypointKind::Via,
+            },
+            time_s: t0,
+            tcp_mm: poser.tcp_mm(&w.joints_deg),
+        });
+    }
+    let clearance = clearance(cell, plan, &poser, &defs, &carriers, &timing, &starts);
+    let (title, cell_file) = title(cell);
+    Scene {
+        title,
+        module: cell.module.clone(),
+        cell_file,
+        obstacles: obstacles(cell),
+        base: Some(base(placed.placement)),
+        shapes: defs,
+        keyframes,
+        waypoints,
+        clearance,
+        // As the module header states it.
+        total_time_s: plan
+            .estimate
+            .as_ref()
+            .map(|e| crate::precision::round(e.total_s, crate::precision::TIME_DECIMALS)),
+        failure: None,
+    }
+}
+
+fn base(p: Placement) -> SceneBase {
+    SceneBase {
+        position_mm: p.base_mm,
+        yaw_deg: p.yaw_deg,
+    }
+}
+
+/// The smallest clearance of the plan, marked where it occurs (module docs).
+fn clearance(
+    cell: &Cell,
+    plan: &Plan,
+    poser: &Poser,
+    defs: &[ShapeDef],
+    carriers: &[Carrier],
+    timing: &[(f64, Profile)],
+    starts: &[f64],
+) -> Option<SceneClearance> {
+    let least = plan.min_clearance.as_ref()?;
+    let i = plan
+        .move_clearances
+        .iter()
+        .position(|c| c.as_ref() == Some(least))?;
+    // The link (or tool shape) named by the clearance, and the obstacle.
+    let (_, shape_name) = crate::output::clearance_part(least);
+    let s = defs.iter().position(|d| d.name == shape_name)?;
+    let obstacle = cell.obstacles.iter().find(|o| o.name == least.obstacle)?;
+    let (from, to) = (
+        &plan.waypoints[i].joints_deg,
+        &plan.waypoints[i + 1].joints_deg,
+    );
+    let (duration, profile) = timing.get(i).copied().unwrap_or((0.0, Profile::Quintic));
+    let mut best: Option<(f64, f64, [[f64; 3]; 2])> = None;
+    for j in 0..=CLEARANCE_SAMPLES {
+        let u = j as f64 / CLEARANCE_SAMPLES as f64;
+        let t = duration * u;
+        let axes = lerp6(from, to, profile.progress(t, duration));
+        let frame = match carriers[s] {
+            Carrier::Link(k) => poser.links(&axes)[k],
+            Carrier::Flange => poser.tool0(&axes),
+        };
+        let (d, pts) = closest_points(
+            &defs[s].geometry,
+            &frame,
+            &obstacle.aabb.min,
+            &obstacle.aabb.max,
+        );
+        if best.is_none_or(|b| d < b.1) {
+            best = Some((t, d, pts));
+        }
+    }
+    let (t, _, points) = best?;
+    Some(SceneClearance {
+        distance_mm: crate::precision::round(least.mm, crate::precision::LENGTH_DECIMALS),
+        move_index: i,
+        shape: shape_name.to_string(),
+        obstacle: least.obstacle.clone(),
+        time_s: Some(starts.get(i).copied().unwrap_or(0.0) + t),
+        points_mm: Some(points),
+    })
+}
+
+/// The closest points of a shape (in `frame`) and a box `[lo, hi]` (cell frame), and their
+/// distance, by alternating projections (module docs): for the picture only.
+fn closest_points(
+    g: &ShapeGeometry,
+    frame: &Isometry3<f64>,
+    lo: &Point3<f64>,
+    hi: &Point3<f64>,
+) -> (f64, [[f64; 3]; 2]) {
+    let on_box = |p: &Point3<f64>| Point3::from(p.coords.sup(&lo.coords).inf(&hi.coords));
+    // The closest point of the shape to `q` (cell frame).
+    let on_shape = |q: &Point3<f64>| -> Point3<f64> {
+        let local = frame.inverse_transform_point(q);
+        let p = match g {
+            ShapeGeometry::Cylinder {
+                radius_mm,
+                from_mm,
+                to_mm,
+            } => {
+                let a = Point3::from(*from_mm);
+                let axis = Point3::from(*to_mm) - a;
+                let len = axis.norm();
+                let u = if len > 0.0 { axis / len } else { Vector3::z() };
+                let v = local - a;
+                let along = v.dot(&u).clamp(0.0, len);
+                let radial = v - u * v.dot(&u);
+                let r = radial.norm();
+                let radial = if r > *radius_mm {
+                    radial * (*radius_mm / r)
+                } else {
+                    radial
+                };
+                a + u * along + radial
+            }
+            ShapeGeometry::Box { min_mm, max_mm } => Point3::from(
+                local
+                    .coords
+                    .sup(&Vector3::from(*min_mm))
+                    .inf(&Vector3::from(*max_mm)),
+            ),
+            ShapeGeometry::Sphere {
+                centre_mm,
+                radius_mm,
+            } => {
+                let c = Point3::from(*centre_mm);
+                let d = local - c;
+                let n = d.norm();
+                if n > *radius_mm {
+                    c + d * (*radius_mm / n)
+                } else {
+                    local
+                }
+            }
+        };
+        frame.transform_point(&p)
+    };
+    let mut q = nalgebra::center(lo, hi);
+    let mut p = on_shape(&q);
+    for _ in 0..200 {
+        let q_next = on_box(&p);
+        let p_next = on_shape(&q_next);
+        let settled = (q_next - q).norm() < 1e-6 && (p_next - p).norm() < 1e-6;
+        (p, q) = (p_next, q_next);
+        if settled {
+            break;
+        }
+    }
+    ((p - q).norm(), [p.coords.into(), q.coords.into()])
+}
+
+/// The scene of a failed plan: the cell, the robot still at the first of `failed` (the points
+/// the failure is about, indices into the cell's points) where the points were placed, and
+/// those points (TCP, or the wrist centre an `xyz` point gives) with `message`. `placement` is
+/// where the robot stands, if that was decided; `placed` the placed points, if the place stage
+/// got that far.
+pub fn failure_scene(
+    cell: &Cell,
+    robot: &Robot,
+    placement: Option<Placement>,
+    placed: Option<&[PlacedPoint]>,
+    failed: &[usize],
+    message: &str,
+) -> Scene {
+    let (defs, carriers) = shapes(robot, cell);
+    let poser = placement.map(|p| Poser::new(robot, p, cell.tool.as_ref()));
+    let joints = |i: usize| -> Option<[f64; 6]> {
+        match (placed.and_then(|p| p.get(i)), cell.points.get(i)) {
+            (Some(p), _) => Some(p.joints_deg),
+            (
+                None,
+                Some(crate::cell::Point {
+                    target:
+                        Target::Joints {
+                            axes_deg,
+                            wrist_deg,
+                        },
+                    ..
+                }),
+            ) => {
+                let w = wrist_deg.unwrap_or(cell.robot.wrist_deg);
+                Some([axes_deg[0], axes_deg[1], axes_deg[2], w[0], w[1], w[2]])
+            }
+            _ => None,
+        }
+    };
+    let position = |i: usize| -> Option<[f64; 3]> {
+        if let (Some(poser), Some(j)) = (&poser, joints(i)) {
+            return Some(poser.tcp_mm(&j));
+        }
+        match &cell.points.get(i)?.target {
+            Target::Xyz {
+                wrist_centre_mm, ..
+            } => Some(*wrist_centre_mm),
+            Target::Robtarget { pose, .. } => {
+                let uframe = cell
+                    .wobj
+                    .as_ref()
+                    .map_or(Isometry3::identity(), |w| w.uframe.isometry());
+                let p = uframe * Point3::from(pose.pos_mm);
+                Some([p.x, p.y, p.z])
+            }
+            Target::Joints { .. } => None,
+        }
+    };
+    let keyframes = match (&poser, failed.first().and_then(|&i| joints(i))) {
+        (Some(poser), Some(j)) => vec![keyframe(poser, &carriers, 0.0, &j)],
+        _ => Vec::new(),
+    };
+    let points = failed
+        .iter()
+        .filter_map(|&i| {
+            Some(FailedPoint {
+                name: cell.points.get(i)?.name.clone(),
+                position_mm: position(i)?,
+            })
+        })
+        .collect();
+    let (title, cell_file) = title(cell);
+    Scene {
+        title,
+        module: cell.module.clone(),
+        cell_file,
+        obstacles: obstacles(cell),
+        base: placement.map(base),
+        shapes: defs,
+        keyframes,
+        waypoints: Vec::new(),
+        clearance: None,
+        total_time_s: None,
+        failure: Some(SceneFailure {
+            message: message.to_string(),
+            points,
+        }),
+    }
+}
