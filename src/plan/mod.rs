@@ -491,8 +491,9 @@ mod tests {
         assert_eq!(p.moves(), 1);
         assert_eq!(leg_arm(&p, 0), vec![[0.0, 0.0, 0.0], [2.0, 2.0, 0.0]]);
         assert_eq!(p.legs[0].grid_path, vec![[0, 0, 0], [1, 1, 0], [2, 2, 0]]);
-        // No obstacles: no clearance to certify.
+        // No obstacles: no clearance to certify, on any move.
         assert_eq!(p.min_clearance, None);
+        assert_eq!(p.move_clearances, vec![None; p.moves()]);
         // Not joined at all: no path, for every method (one wave tells).
         let cs = CSpace::from_fn(g, |n| n[0] != 1);
         for m in Method::ALL {

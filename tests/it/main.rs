@@ -13,6 +13,8 @@
 //! - `locate`: `base: auto`, `xyz` points and branches, `gen-rapid locate`.
 //! - `preview_browser`: the `--html` preview page in headless Chromium (skipped, saying so,
 //!   where no Chromium is installed).
+//! - `report`: `--report`, against its JSON Schema, the module and independent kinematics.
+//! - `templates`: `--template` (the example templates under `templates/`) and `--proc`.
 //! - `random_cells`: generated cells, every method, every module through the dense re-check.
 //! - `common`: helpers: running the binary, temporary cells, reading a module (`module`), the
 //!   fixtures (`fixtures`), the dense re-check (`dense`), and `library`, the only file here that
@@ -28,4 +30,6 @@ mod golden;
 mod locate;
 mod preview_browser;
 mod random_cells;
+mod report;
 mod safety;
+mod templates;

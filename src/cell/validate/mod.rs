@@ -360,21 +360,7 @@ fn one_name_space(
         what: "the module".into(),
         loc: module_loc,
     }];
-    match motion.proc_from {
-        ProcFrom::Default => {}
-        ProcFrom::Cell(loc) => declared.push(Named {
-            name: motion.proc.clone(),
-            kind: "routine name",
-            what: format!("the routine (motion.proc, line {})", loc.line),
-            loc,
-        }),
-        ProcFrom::CommandLine => declared.push(Named {
-            name: motion.proc.clone(),
-            kind: "routine name",
-            what: "the routine (--proc)".into(),
-            loc: Loc::default(),
-        }),
-    }
+
     if let Some(t) = tool {
         declared.push(Named {
             name: t.name.clone(),
@@ -406,6 +392,23 @@ fn one_name_space(
                 loc: p.loc,
             });
         }
+    }
+    // The routine last: `motion:` follows the points in a cell file, and `--proc` has no line
+    // there, so a clash is told about the routine's name.
+    match motion.proc_from {
+        ProcFrom::Default => {}
+        ProcFrom::Cell(loc) => declared.push(Named {
+            name: motion.proc.clone(),
+            kind: "routine name",
+            what: format!("the routine (motion.proc, line {})", loc.line),
+            loc,
+        }),
+        ProcFrom::CommandLine => declared.push(Named {
+            name: motion.proc.clone(),
+            kind: "routine name",
+            what: "the routine (--proc)".into(),
+            loc: Loc::default(),
+        }),
     }
     for (i, d) in declared.iter().enumerate() {
         if d.kind == "robtarget name" {
