@@ -51,10 +51,10 @@ A robtarget point may give its confdata [cf1, cf4, cf6, cfx]; speed and zone set
 a point. With a tool block, leave out motion.tool. README.md describes every key.
 
 The module goes to stdout (or -o FILE); one summary line goes to stderr. On error nothing is
-written to stdout and no FILE is made.
+written to stdout and no FILE is made, but --html, which then shows why planning failed.
 
-Exit status: 0 success, 1 invalid cell or robot files, 2 bad command line, 3 planning failed
-(point unreachable or in collision, no path), 4 the module could not be written.";
+Exit status: 0 success, 1 invalid cell, robot files or template, 2 bad command line, 3 planning
+failed (point unreachable or in collision, no path), 4 the module could not be written.";
 
 /// Plans a collision-free joint-space path through a robot cell's points and writes it as an
 /// ABB RAPID module of MoveAbsJ moves (method of Ting & Jar 2006).

@@ -3,11 +3,13 @@
 //! along its estimated timing, with the waypoints, the TCP trace and the place of the smallest
 //! clearance; on a failed plan, the cell and the points that could not be joined.
 //!
-//! This is an output stage and goes beyond the paper (which has no such picture). It does no
-//! kinematics and no geometry: the pipeline samples the motion into a [`Scene`] (every shape's
-//! pose in the cell frame at a list of keyframe times), and the page only draws the shapes and
-//! interpolates between keyframes (positions linearly, quaternions by normalised linear
-//! interpolation). Whatever the page shows is therefore what Rust computed.
+//! This is an output stage and goes beyond the paper (which has no such picture). Two parts:
+//! [`scene`] (`scene.rs`) samples a run into a [`Scene`]: every shape's pose in the cell frame
+//! at a list of keyframe times, by the robot's forward kinematics along the estimated timing,
+//! from the cell, the placed job and the plan (or, for a failed plan, [`failure_scene`]);
+//! [`render_html`] (this file) writes the page, which only draws the shapes and interpolates
+//! between keyframes (positions linearly, quaternions by normalised linear interpolation).
+//! Whatever the page shows is therefore what Rust computed.
 //!
 //! The page is assembled from three embedded assets under `templates/preview/` (the HTML
 //! skeleton, the stylesheet and a few hundred lines of plain WebGL 1 script, documented at its
@@ -16,8 +18,8 @@
 //! `file://` in any browser with WebGL.
 //!
 //! Deterministic bytes: the scene is written with fixed precisions chosen by the unit suffix of
-//! each JSON key ([`decimals_for_key`]: 3 decimals for `_mm`, `_s`, `_deg`; 4 for the
-//! quaternions `_wxyz`), no `-0`, sorted keys, and no timestamp anywhere. `<`, `>`, `&` and
+//! each JSON key ([`decimals_for_key`], from the one table [`crate::precision`]: 3 decimals for
+//! `_mm`, `_s`, `_deg`; 4 for the quaternions `_wxyz`), no `-0`, sorted keys, and no timestamp anywhere. `<`, `>`, `&` and
 //! the JavaScript line separators are written as `\u` escapes inside the JSON, so no name can
 //! close the script element (`</script>`) or open a comment.
 //!

@@ -4,9 +4,14 @@
 //! Everything the text needs is decided by earlier stages and handed over as a
 //! [`Program`]; this stage only validates names, formats numbers and fills the
 //! template `templates/module.mod.j2` (embedded at compile time, rendered with
-//! minijinja in strict-undefined mode, no auto-escaping, trailing newline kept).
-//! The template holds no logic beyond loops and variable output; every number
-//! is formatted here with [`format_fixed`].
+//! minijinja in strict-undefined mode, no auto-escaping, trailing newline kept),
+//! or the user's template (`--template FILE`, [`ModuleTemplate`]), which sees the
+//! same context (README, "Your own module template": `module`, `proc`, `header`,
+//! `facts`, `tool`, `wobj`, `wobj_arg`, `targets`, `moves`). A template holds no
+//! logic beyond loops and variable output; every number is formatted here with
+//! [`format_fixed`]. An error of the user's template is an input error at its
+//! line ([`TemplateError`]). The guarantees below are the embedded template's; a
+//! user's template keeps the names and numbers, its text is its own.
 //!
 //! # Shape of the module
 //!
@@ -35,7 +40,7 @@
 //!     CONST robtarget <name>_rt := [[x,y,z],[q1,q2,q3,q4],[cf1,cf4,cf6,cfx],[9E9,...]];
 //!                                                     (after a robtarget point's jointtarget)
 //!
-//!     PROC main()
+//!     PROC <proc>()                                   (`main` unless the cell or --proc names it)
 //!         MoveAbsJ <name>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>];   (one per target)
 //!     ENDPROC
 //! ENDMODULE
@@ -65,7 +70,7 @@
 //!   allowed there). It is the rule of [`crate::names`], which the cell
 //!   validation applies first, at the cell's lines: here it is a last guard.
 //!   All declared names are unique ignoring case and differ from the module
-//!   name, `main` and every speed and zone name (see [`target_names`]).
+//!   name, the routine's and every speed and zone name (see [`target_names`]).
 //! - One `CONST jointtarget` per target and one `MoveAbsJ` per target, in the
 //!   same order, so each name is used by exactly one move.
 //! - Free text in the header (`generator`, `cell_file`, paths, `planner`) is
@@ -447,7 +452,7 @@ fn finite(what: impl Into<String>, value: f64) -> Result<f64, RapidError> {
 /// reserved word); every speed and zone name; header numbers finite;
 /// `header.moves == targets.len() - 1`; target names ([`target_names`]), the
 /// robtarget names ([`robtarget_name`]); no declared name equal to another, to
-/// `main` or to a speed, zone or tool name (ignoring case); axis values finite
+/// the routine or to a speed, zone or tool name (ignoring case); axis values finite
 /// and in range. The first failure is returned.
 pub fn render(program: &Program) -> Result<String, RapidError> {
     render_with(program, &ModuleTemplate::embedded())
@@ -580,7 +585,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
 }
 
 /// One name space: the declared names (the module, the tool and work object when declared,
-/// every `CONST`) differ from each other and from the names the module uses (`main`, the tool
+/// every `CONST`, the routine) differ from each other and from the names the module uses (the tool
 /// when not declared, every speed and zone).
 fn check_name_space(program: &Program, target_names: &[String]) -> Result<(), RapidError> {
     let mut used: Vec<(String, String)> = Vec::new();
