@@ -12,6 +12,7 @@ use super::{
     check_grid, defaults, Base, Cell, CellError, Loc, Method, Motion, Obstacle, Planner, Point,
     RobotSpec, Target,
 };
+use crate::excerpt;
 use crate::geometry::Aabb;
 use crate::names::{check_data_name, check_identifier};
 use crate::precision::{self, JOINT_DECIMALS, LENGTH_DECIMALS, YAW_DECIMALS};
@@ -122,7 +123,10 @@ fn identifier(s: &Spanned<String>, what: &str) -> Result<String, CellError> {
     check_identifier(&s.value).map_err(|e| {
         invalid(
             loc(s),
-            format!("{what} '{}' is not a valid RAPID name: {e}", s.value),
+            format!(
+                "{what} '{}' is not a valid RAPID name: {e}",
+                excerpt::value(&s.value)
+            ),
         )
     })?;
     Ok(s.value.clone())
@@ -137,7 +141,10 @@ fn data_name(s: Option<&Spanned<String>>, default: &str, what: &str) -> Result<S
     check_data_name(&s.value).map_err(|e| {
         invalid_help(
             loc(s),
-            format!("{what} '{}' is not a valid RAPID name: {e}", s.value),
+            format!(
+                "{what} '{}' is not a valid RAPID name: {e}",
+                excerpt::value(&s.value)
+            ),
             "speed, zone and tool name RAPID data: a predefined one (v300, fine, tool0) or one declared on the controller",
         )
     })?;
@@ -208,6 +215,8 @@ fn obstacles(raw: &[Spanned<RawObstacle>]) -> Result<Vec<Obstacle>, CellError> {
     let mut obstacles: Vec<Obstacle> = Vec::new();
     for o in raw {
         let name = o.value.name.value.clone();
+        // As quoted in messages (a name may be as long as the input).
+        let shown = excerpt::value(&name);
         if name.trim().is_empty() {
             return Err(invalid(loc(&o.value.name), "an obstacle needs a name"));
         }
@@ -215,24 +224,24 @@ fn obstacles(raw: &[Spanned<RawObstacle>]) -> Result<Vec<Obstacle>, CellError> {
             return Err(invalid(
                 loc(&o.value.name),
                 format!(
-                    "obstacle name '{name}' is used twice (first at line {})",
+                    "obstacle name '{shown}' is used twice (first at line {})",
                     first.loc.line
                 ),
             ));
         }
         let min_mm = triple(
             &o.value.aabb.value.min,
-            &format!("obstacle '{name}' box.min"),
+            &format!("obstacle '{shown}' box.min"),
         )?;
         let max_mm = triple(
             &o.value.aabb.value.max,
-            &format!("obstacle '{name}' box.max"),
+            &format!("obstacle '{shown}' box.max"),
         )?;
         if let Some(i) = (0..3).find(|&i| min_mm[i] >= max_mm[i]) {
             return Err(invalid_help(
                 loc(&o.value.aabb),
                 format!(
-                    "obstacle '{name}': box.min {} = {} is not below box.max {} = {}",
+                    "obstacle '{shown}': box.min {} = {} is not below box.max {} = {}",
                     ["x", "y", "z"][i],
                     min_mm[i],
                     ["x", "y", "z"][i],
@@ -361,7 +370,7 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
                 loc(m),
                 format!(
                     "planner.method '{}' is not one of neighboring, depth-first, extensile",
-                    m.value
+                    excerpt::value(&m.value)
                 ),
             )
         })?;

@@ -10,6 +10,8 @@
 //! - `cli`: the command line as such: stdout, stderr, `-o`, flags, exit statuses, `--help`.
 //! - `compare`: `gen-rapid compare` and the paper's comparison of the three searches.
 //! - `locate`: `base: auto`, `xyz` points and branches, `gen-rapid locate`.
+//! - `messages`: error messages bounded whatever the input, and located (their texts are
+//!   fixtures in `tests/err/`).
 //! - `random_cells`: generated cells, every method, every module through the dense re-check.
 //! - `common`: helpers: running the binary, temporary cells, reading a module (`module`), the
 //!   fixtures (`fixtures`), the dense re-check (`dense`), and `library`, the only file here that
@@ -22,5 +24,6 @@ mod common;
 mod compare;
 mod golden;
 mod locate;
+mod messages;
 mod random_cells;
 mod safety;
