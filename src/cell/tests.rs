@@ -162,6 +162,17 @@ fn refusals_name_the_key_and_its_place() {
             "point name 'main' is already the name of the module's PROC main",
             7,
         ),
+        // The speed, zone and tool are three data of three types: one name cannot be two.
+        (
+            format!("{MINIMAL}motion:\n  speed: mine\n  tool: Mine\n"),
+            "motion.tool 'Mine' is already the name of motion.speed",
+            10,
+        ),
+        (
+            format!("{MINIMAL}motion:\n  zone: v300\n"),
+            "motion.zone 'v300' is already the name of motion.speed (its default)",
+            9,
+        ),
         // `base: auto` needs positions, not joint values.
         (
             MINIMAL.replace("base: [1, 2, 3]", "base: auto"),

@@ -30,6 +30,7 @@ pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
     let planner = planner(raw.planner.as_ref().map(|p| &p.value))?;
     let motion = motion(raw.motion.as_ref().map(|m| &m.value))?;
     one_name_space(&module, loc(&raw.module), &points, &motion)?;
+    distinct_data(&motion, raw.motion.as_ref().map(|m| &m.value))?;
     if robot.base == Base::Auto {
         every_point_xyz(&points)?;
     }
@@ -444,6 +445,55 @@ fn one_name_space(
                 p.loc,
                 format!("point name '{}' is already the name of {what}", p.name),
                 "RAPID names are case-insensitive and share one name space in a module; rename the point",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The speed, zone and tool are three RAPID data objects of three types: one name cannot be two
+/// of them (a clash with a default counts: `zone: v300` beside the default speed `v300`).
+fn distinct_data(motion: &Motion, raw: Option<&RawMotion>) -> Result<(), CellError> {
+    let given = |s: Option<&Spanned<String>>| s.map(loc);
+    let data = [
+        (
+            "motion.speed",
+            &motion.speed,
+            raw.and_then(|m| given(m.speed.as_ref())),
+        ),
+        (
+            "motion.zone",
+            &motion.zone,
+            raw.and_then(|m| given(m.zone.as_ref())),
+        ),
+        (
+            "motion.tool",
+            &motion.tool,
+            raw.and_then(|m| given(m.tool.as_ref())),
+        ),
+    ];
+    for (i, first) in data.iter().enumerate() {
+        for second in &data[i + 1..] {
+            if !first.1.eq_ignore_ascii_case(second.1) {
+                continue;
+            }
+            // Point at the one given last in the file (a default has no place).
+            let (this, other) = match (first.2, second.2) {
+                (Some(a), Some(b)) if (a.line, a.column) > (b.line, b.column) => (first, second),
+                (_, Some(_)) => (second, first),
+                (Some(_), None) => (first, second),
+                (None, None) => continue,
+            };
+            let (what, name, at) = (this.0, this.1, this.2.unwrap_or_default());
+            let default = if other.2.is_some() {
+                ""
+            } else {
+                " (its default)"
+            };
+            return Err(invalid_help(
+                at,
+                format!("{what} '{name}' is already the name of {}{default}", other.0),
+                "the speed, zone and tool are three RAPID data of three types (speeddata, zonedata, tooldata); give each its own name",
             ));
         }
     }

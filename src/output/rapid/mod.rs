@@ -59,7 +59,7 @@ mod format;
 mod target_names;
 
 pub use format::format_fixed;
-pub use target_names::target_names;
+pub use target_names::{target_names, target_names_avoiding};
 
 use crate::names::{check_data_name, check_identifier, IdentifierError};
 use crate::precision::{
@@ -336,8 +336,6 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
         });
     }
 
-    let target_names = target_names(&program.targets)?;
-
     // Names used by the module itself, other than the CONSTs.
     let mut others: Vec<(String, String)> = vec![
         (
@@ -361,6 +359,9 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
             other: what.clone(),
         });
     }
+    // Vias avoid them (a cell point that takes one is a clash, refused above at its line).
+    let reserved: Vec<&str> = others.iter().map(|(n, _)| n.as_str()).collect();
+    let target_names = target_names_avoiding(&program.targets, &reserved)?;
     for name in &target_names {
         if let Some((_, what)) = others.iter().find(|(n, _)| n.eq_ignore_ascii_case(name)) {
             return Err(RapidError::NameClash {

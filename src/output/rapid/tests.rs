@@ -333,6 +333,24 @@ fn render_rejects_target_named_like_module_or_tool() {
 }
 
 #[test]
+fn vias_take_no_name_of_the_module_or_its_data() {
+    // A module or tool called like a via is valid RAPID; the via steps aside (was a name clash,
+    // exit 4, at render time).
+    let mut p = small_program();
+    p.module = "Via01_01".into();
+    p.tool = "VIA01_02".into();
+    let text = render(&p).expect("renders");
+    assert!(text.starts_with("MODULE Via01_01\n"), "{text}");
+    assert!(text.contains("CONST jointtarget via01_01_x1 := "), "{text}");
+    assert!(text.contains("CONST jointtarget via01_02_x1 := "), "{text}");
+    assert!(
+        text.contains("MoveAbsJ via01_02_x1\\NoEOffs, v300, fine, VIA01_02;"),
+        "{text}"
+    );
+    assert!(!text.contains("CONST jointtarget via01_01 :="), "{text}");
+}
+
+#[test]
 fn render_reports_invalid_cell_point_by_name_and_rule() {
     let mut p = small_program();
     p.targets[3] = point("Proc", [0.0; 6]);
