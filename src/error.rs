@@ -122,17 +122,24 @@ impl Error {
 }
 
 /// A failure with the cell file's name and text, ready to print (the text, when it could be
-/// read, lets the message show the offending line).
+/// read, lets the message show the offending line), and notes on what was done about it (a
+/// picture of the failure drawn, or why none was).
 #[derive(Debug)]
 pub struct Failure {
     /// Boxed: the error is large and a `Result` carrying it should not be.
     pub error: Box<Error>,
     pub file: String,
     pub text: Option<String>,
+    /// Printed after the message, one `note:` line each.
+    pub notes: Vec<String>,
 }
 
 impl Failure {
     pub fn render(&self) -> String {
-        self.error.render(&self.file, self.text.as_deref())
+        let mut out = self.error.render(&self.file, self.text.as_deref());
+        for note in &self.notes {
+            out += &format!("note: {}\n", excerpt::message(note));
+        }
+        out
     }
 }

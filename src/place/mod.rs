@@ -191,11 +191,29 @@ pub fn survey<C: PoseCheck>(
         }
         Base::Fixed(b) => *b,
     };
+    let (points, base_z) = survey_points(cell, &geom);
+    let location = locate_points(cell, robot, &geom, &points, base_z)?;
+    Ok(Survey {
+        base_mm: [location.best_mm[0], location.best_mm[1], base[2]],
+        margin_mm: location.best_margin_mm,
+        location,
+        points,
+    })
+}
+
+/// The points R is computed for by [`survey`], and the height of the base's mounting plane:
+/// with `base: auto` the `xyz` points, on the floor; with a fixed base the wrist centres of all
+/// points (`joints` points by forward kinematics from the given base and yaw), at its height.
+fn survey_points(cell: &Cell, geom: &ArmGeometry) -> (Vec<(String, [f64; 3])>, f64) {
+    let base = match &cell.robot.base {
+        Base::Auto => return (xyz_points(cell), AUTO_BASE_Z_MM),
+        Base::Fixed(b) => *b,
+    };
     let placement = Placement {
         base_mm: base,
         yaw_deg: cell.robot.yaw_deg,
     };
-    let points: Vec<(String, [f64; 3])> = cell
+    let points = cell
         .points
         .iter()
         .map(|p| {
@@ -204,19 +222,24 @@ pub fn survey<C: PoseCheck>(
                     wrist_centre_mm, ..
                 } => *wrist_centre_mm,
                 Target::Joints { axes_deg, .. } => {
-                    placement.to_cell_frame(ik::forward(&geom, *axes_deg))
+                    placement.to_cell_frame(ik::forward(geom, *axes_deg))
                 }
             };
             (p.name.clone(), xyz)
         })
         .collect();
-    let location = locate_points(cell, robot, &geom, &points, base[2])?;
-    Ok(Survey {
-        base_mm: [location.best_mm[0], location.best_mm[1], base[2]],
-        margin_mm: location.best_margin_mm,
-        location,
-        points,
-    })
+    (points, base[2])
+}
+
+/// What `gen-rapid locate --svg` draws when [`survey`] fails for want of a base position: the
+/// reach regions of the points [`survey`] uses, the obstacles that can block the base, and R
+/// where it is not empty ([`locate::sketch`]).
+pub fn sketch(cell: &Cell, robot: &Robot) -> Result<locate::Sketch, PlaceError> {
+    let geom = geometry(cell, robot)?;
+    let (points, base_z) = survey_points(cell, &geom);
+    Ok(locate::sketch(&locate_input(
+        cell, robot, &geom, &points, base_z,
+    )))
 }
 
 /// The closed-form arm geometry (needed by `base: auto` and `xyz` points); a robot the closed
@@ -303,8 +326,24 @@ fn locate_points(
     points: &[(String, [f64; 3])],
     base_z_mm: f64,
 ) -> Result<Location, PlaceError> {
+    locate::locate(&locate_input(cell, robot, geom, points, base_z_mm)).map_err(|source| {
+        PlaceError::Locate {
+            source,
+            loc: cell.robot.base_loc,
+        }
+    })
+}
+
+/// The location problem of `points` with the base's mounting plane at `base_z_mm`.
+fn locate_input<'a>(
+    cell: &'a Cell,
+    robot: &Robot,
+    geom: &'a ArmGeometry,
+    points: &'a [(String, [f64; 3])],
+    base_z_mm: f64,
+) -> LocateInput<'a> {
     let (radius, height) = locate::base_cylinder_mm(robot).unwrap_or((0.0, 0.0));
-    locate::locate(&LocateInput {
+    LocateInput {
         geom,
         points_mm: points,
         obstacles: &cell.obstacles,
@@ -313,9 +352,5 @@ fn locate_points(
         base_height_mm: height,
         clearance_mm: cell.planner.clearance_mm,
         cell_mm: locate::DEFAULT_CELL_MM,
-    })
-    .map_err(|source| PlaceError::Locate {
-        source,
-        loc: cell.robot.base_loc,
-    })
+    }
 }

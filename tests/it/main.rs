@@ -10,6 +10,8 @@
 //! - `cli`: the command line as such: stdout, stderr, `-o`, flags, exit statuses, `--help`.
 //! - `compare`: `gen-rapid compare` and the paper's comparison of the three searches.
 //! - `locate`: `base: auto`, `xyz` points and branches, `gen-rapid locate`.
+//! - `pictures`: `--svg` when planning fails (the picture of why), and the help lines that
+//!   suggest one.
 //! - `messages`: error messages bounded whatever the input, and located (their texts are
 //!   fixtures in `tests/err/`).
 //! - `random_cells`: generated cells, every method, every module through the dense re-check.
@@ -25,5 +27,6 @@ mod compare;
 mod golden;
 mod locate;
 mod messages;
+mod pictures;
 mod random_cells;
 mod safety;

@@ -6,6 +6,7 @@ pub mod dense;
 pub mod fixtures;
 pub mod library;
 pub mod module;
+pub mod svg;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
