@@ -412,7 +412,8 @@ fn indentation(loc: Loc, text: &Text, value_here: bool) -> Option<Said> {
         let above_col = key_column(above);
         let word_end = above[above_col..]
             .find(' ')
-            .map_or(above.trim_end().len(), |i| above_col + i);
+            .map_or(above.trim_end().len(), |i| above_col + i)
+            .max(above_col);
         let word = &above[above_col..word_end];
         return Some(Said::new(
             Loc {
@@ -755,6 +756,15 @@ mod tests {
         assert_eq!(key_of("module ErrCase"), None);
         assert_eq!(end_of("ab\ncd"), at(2, 3));
         assert_eq!(end_of("a\r\nb\rc"), at(3, 2));
+    }
+
+    #[test]
+    fn a_line_above_of_only_a_dash_is_no_key() {
+        // Found by the fuzz target (tests/fuzz/dash_line_above_a_key*.yaml): `- ` above a
+        // refused `key:` sliced past its end.
+        let text = Text::of("- \nkey: 1\n");
+        let said = indentation(Loc { line: 2, column: 4 }, &text, true).expect("said");
+        assert_eq!(said.loc, Loc { line: 1, column: 3 }, "{}", said.message);
     }
 
     #[test]

@@ -9,6 +9,8 @@
 //!   itself (what the base stands on).
 //! - `cli`: the command line as such: stdout, stderr, `-o`, flags, exit statuses, `--help`.
 //! - `compare`: `gen-rapid compare` and the paper's comparison of the three searches.
+//! - `fuzz`: the seeded fuzz target over loading, validating and placing cells
+//!   (`GEN_RAPID_FUZZ_CASES`, `GEN_RAPID_FUZZ_SEED`).
 //! - `locate`: `base: auto`, `xyz` points and branches, `gen-rapid locate`.
 //! - `pictures`: `--svg` when planning fails (the picture of why), and the help lines that
 //!   suggest one.
@@ -24,6 +26,7 @@
 mod cli;
 mod common;
 mod compare;
+mod fuzz;
 mod golden;
 mod locate;
 mod messages;
