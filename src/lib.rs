@@ -8,7 +8,6 @@
 //! ```
 
 // Leaves, used by any stage.
-/// What a message may echo of the input, bounded.
 pub mod excerpt;
 pub mod geometry;
 pub mod names;

@@ -162,6 +162,16 @@ fn refusals_name_the_key_and_its_place() {
             "point name 'main' is already the name of the module's PROC main",
             7,
         ),
+        (
+            MINIMAL.replace("name: B", "name: m"),
+            "point name 'm' is already the name of the module",
+            7,
+        ),
+        (
+            format!("{MINIMAL}motion:\n  tool: gripper\n").replace("name: A", "name: Gripper"),
+            "point name 'Gripper' is already the name of motion.tool",
+            6,
+        ),
         // The speed, zone and tool are three data of three types: one name cannot be two.
         (
             format!("{MINIMAL}motion:\n  speed: mine\n  tool: Mine\n"),

@@ -34,7 +34,16 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
     let started = Instant::now();
     let job = pipeline::load(&opts.cell)?;
     let grid_deg = opts.grid_deg.unwrap_or(job.cell.planner.grid_deg);
-    let placed = pipeline::place(&job).map_err(|e| job.fail(e))?;
+    let placed = pipeline::place(&job).map_err(|e| {
+        let mut failure = job.fail(e);
+        if let Some(path) = &opts.svg {
+            failure.notes.push(format!(
+                "nothing drawn to {}: the comparison stopped before the grid was searched",
+                path.display()
+            ));
+        }
+        failure
+    })?;
     let inspected = pipeline::inspect(&job, &placed, grid_deg);
     let attempts = pipeline::compare(&job, &placed, &inspected);
     let rows: Vec<Row> = attempts

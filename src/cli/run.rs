@@ -23,7 +23,7 @@ pub struct RunOptions {
 /// Runs the pipeline; on success the module (and the picture) is written and a summary line is
 /// returned for stderr. On any error no module is written and stdout stays empty: the picture
 /// is drawn before the module is emitted and written only after it. When the plan stage fails,
-/// `--svg` draws the failure instead ([`failed`]).
+/// `--svg` draws the failure instead.
 pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     let started = Instant::now();
     let job = pipeline::load(&opts.cell)?;
