@@ -47,7 +47,8 @@ A robtarget point may give its confdata [cf1, cf4, cf6, cfx]; speed and zone set
 a point. With a tool block, leave out motion.tool. README.md describes every key.
 
 The module goes to stdout (or -o FILE); one summary line goes to stderr. On error nothing is
-written to stdout and no FILE is made.
+written to stdout and no module FILE is made; when planning fails, --svg FILE draws why (the
+blocked nodes, the points of the failed leg ringed; locate: the reach circles).
 
 Exit status: 0 success, 1 invalid cell or robot files, 2 bad command line, 3 planning failed
 (point unreachable or in collision, no path), 4 the module could not be written.";
@@ -77,7 +78,8 @@ struct RunArgs {
     /// Grid spacing d in degrees, overriding the cell's planner.grid (0.25 .. 10).
     #[arg(long, value_name = "DEG", value_parser = parse_grid)]
     grid: Option<f64>,
-    /// Also draw the route over the blocked nodes of the configuration space to FILE (SVG).
+    /// Also draw the route over the blocked nodes of the configuration space to FILE (SVG); when
+    /// planning fails, the blocked nodes with the points of the failed leg ringed.
     #[arg(long, value_name = "FILE")]
     svg: Option<PathBuf>,
 }
@@ -98,7 +100,8 @@ struct LocateArgs {
     /// The cell file (YAML).
     #[arg(value_name = "CELL")]
     cell: PathBuf,
-    /// Also draw the top view (obstacles, reach circles, R, base) to FILE as SVG (atomically).
+    /// Also draw the top view (obstacles, reach circles, R, base) to FILE as SVG (atomically);
+    /// also when R is empty.
     #[arg(long, value_name = "FILE")]
     svg: Option<PathBuf>,
     /// Print the report as JSON on stdout instead of text.
@@ -114,7 +117,8 @@ struct CompareArgs {
     /// Print the comparison as JSON instead of a table.
     #[arg(long)]
     json: bool,
-    /// Draw every method's route over the configuration space to FILE (SVG).
+    /// Draw every method's route over the configuration space to FILE (SVG); when none finds
+    /// one, the points they failed at ringed.
     #[arg(long, value_name = "FILE")]
     svg: Option<PathBuf>,
     /// Grid spacing d in degrees, overriding the cell's planner.grid (0.25 .. 10).

@@ -12,8 +12,10 @@
 use crate::cell::{self, Cell};
 use crate::collision::CollisionModel;
 use crate::error::{Error, Failure};
+use crate::excerpt;
 use crate::output::program::{self, RobotFacts};
 use crate::output::rapid::{self, AxisRanges};
+use crate::place::locate::Sketch;
 use crate::place::{self, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
 use crate::plan::{self, Method, Plan};
@@ -54,14 +56,16 @@ impl Loaded {
     pub fn warnings(&self) -> Vec<String> {
         match &self.robot.controller.source {
             Some(_) => Vec::new(),
-            None => vec![format!(
+            // Bounded like every message (the path comes from the cell).
+            None => vec![excerpt::message(&format!(
                 "warning: {} has no controller file beside it ({}): the robot is taken as a serial arm with the URDF's joint limits and speeds; name one with robot.controller if this robot has another convention",
                 self.robot.urdf_path.display(),
                 crate::robot::controller::path_beside(&self.robot.urdf_path)
                     .file_name()
                     .map(|f| f.to_string_lossy().into_owned())
                     .unwrap_or_default()
-            )],
+            ))
+            .into_owned()],
         }
     }
 
@@ -71,6 +75,7 @@ impl Loaded {
             error: Box::new(error),
             file: self.cell.path.display().to_string(),
             text: Some(self.text.clone()),
+            notes: Vec::new(),
         }
     }
 }
@@ -94,6 +99,7 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
         error: Box::new(error),
         file: path.display().to_string(),
         text,
+        notes: Vec::new(),
     };
     let text = cell::read(path).map_err(|e| fail(e.into(), None))?;
     let cell = match cell::parse(path, &text) {
@@ -130,6 +136,12 @@ pub fn survey(job: &Loaded) -> Result<Survey, Error> {
     Ok(place::survey(cell, robot, |p| {
         CollisionModel::of_cell(cell, robot, p)
     })?)
+}
+
+/// What the place stage can draw of its location problem when [`survey`] fails for want of a
+/// base position (the points' reach regions, the obstacles, R where not empty).
+pub fn sketch(job: &Loaded) -> Result<Sketch, Error> {
+    Ok(place::sketch(&job.cell, &job.robot)?)
 }
 
 /// Inspect: the collision model at the placement and the grid at spacing `grid_deg` over the
@@ -181,11 +193,50 @@ pub struct Outcome {
     pub rendered: Rendered,
 }
 
-/// Place, inspect, plan, time and render, in that order.
-pub fn run(job: &Loaded, method: Method, grid_deg: f64) -> Result<Outcome, Error> {
+/// A run that stopped at a stage's error, with what the stages before it made that a picture of
+/// the failure needs.
+pub struct Halted {
+    /// Boxed: the error is large and a `Result` carrying it should not be.
+    pub error: Box<Error>,
+    /// Set when the plan stage failed: the placed points and the grid it searched.
+    pub searched: Option<Box<Searched>>,
+}
+
+/// The place and inspect stages' results, kept for a picture when the plan stage fails.
+pub struct Searched {
+    pub placed: Placed,
+    pub inspected: Inspected,
+}
+
+impl From<Error> for Halted {
+    fn from(error: Error) -> Halted {
+        Halted {
+            error: Box::new(error),
+            searched: None,
+        }
+    }
+}
+
+impl std::fmt::Debug for Halted {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Debug::fmt(&self.error, f)
+    }
+}
+
+/// Place, inspect, plan, time and render, in that order. A failure of the plan stage keeps the
+/// placed points and the inspected grid (a picture of why the plan failed).
+pub fn run(job: &Loaded, method: Method, grid_deg: f64) -> Result<Outcome, Halted> {
     let placed = place(job)?;
     let inspected = inspect(job, &placed, grid_deg);
-    let plan = time(job, plan(job, &placed, &inspected, method)?);
+    let plan = match plan(job, &placed, &inspected, method) {
+        Ok(plan) => time(job, plan),
+        Err(error) => {
+            return Err(Halted {
+                error: Box::new(error),
+                searched: Some(Box::new(Searched { placed, inspected })),
+            })
+        }
+    };
     let rendered = render(job, &placed, &plan)?;
     Ok(Outcome {
         placed,
