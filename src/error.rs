@@ -6,6 +6,7 @@
 //! cannot be reached, no path between two points) carry the location of the item they are about.
 
 use crate::cell::{CellError, Loc};
+use crate::excerpt;
 use crate::output::cspace_svg::PictureError;
 use crate::output::preview::PreviewError;
 use crate::output::rapid::{RapidError, TemplateError};
@@ -119,9 +120,11 @@ impl Error {
         }
     }
 
-    /// The message for stderr: `error: ...`, then the place in the cell, then help.
+    /// The message for stderr: `error: ...`, then the place in the cell, then help. Bounded
+    /// whatever the input ([`crate::excerpt`]): a long source line is shown as a window around
+    /// the column, a long message is cut.
     pub fn render(&self, file: &str, text: Option<&str>) -> String {
-        let mut out = format!("error: {self}\n");
+        let mut out = format!("error: {}\n", excerpt::message(&self.to_string()));
         if let Error::Template(TemplateError::Invalid {
             path,
             line,
@@ -137,7 +140,7 @@ impl Error {
             ..
         })) = self
         {
-            // The template's place, not the cell's.
+            // The template's place, not the cell's (bounded like a cell's line).
             out += &match line {
                 Some(l) => format!(
                     "  --> {}:{l}{}\n",
@@ -147,20 +150,22 @@ impl Error {
                 None => format!("  --> {}\n", path.display()),
             };
             if let (Some(l), Some(t)) = (line, line_text) {
+                let window = excerpt::line_window(t, column.unwrap_or(1) as u64);
                 let num = l.to_string();
                 let pad = " ".repeat(num.len());
-                out += &format!("{pad} |\n{num} | {t}\n");
-                if let Some(c) = column {
-                    out += &format!("{pad} | {}^\n", " ".repeat(c.saturating_sub(1)));
+                out += &format!("{pad} |\n{num} | {}\n", window.text);
+                if column.is_some() {
+                    out += &format!("{pad} | {}^\n", " ".repeat(window.caret));
                 }
             }
         } else if let Some(loc) = self.loc().filter(|l| l.line > 0) {
             out += &format!("  --> {file}:{}:{}\n", loc.line, loc.column);
-            if let Some(line) = text.and_then(|t| t.lines().nth(loc.line as usize - 1)) {
+            if let Some(line) = text.and_then(|t| excerpt::nth_line(t, loc.line)) {
+                let window = excerpt::line_window(line, loc.column);
                 let num = loc.line.to_string();
                 let pad = " ".repeat(num.len());
-                let caret = " ".repeat(loc.column.saturating_sub(1) as usize);
-                out += &format!("{pad} |\n{num} | {line}\n{pad} | {caret}^\n");
+                let caret = " ".repeat(window.caret);
+                out += &format!("{pad} |\n{num} | {}\n{pad} | {caret}^\n", window.text);
             }
         } else if matches!(
             self,
@@ -171,24 +176,31 @@ impl Error {
             out += &format!("  --> {file}\n");
         }
         if let Some(h) = self.help() {
-            out += &format!("help: {h}\n");
+            out += &format!("help: {}\n", excerpt::message(&h));
         }
         out
     }
 }
 
 /// A failure with the cell file's name and text, ready to print (the text, when it could be
-/// read, lets the message show the offending line).
+/// read, lets the message show the offending line), and notes on what was done about it (a
+/// picture of the failure drawn, or why none was).
 #[derive(Debug)]
 pub struct Failure {
     /// Boxed: the error is large and a `Result` carrying it should not be.
     pub error: Box<Error>,
     pub file: String,
     pub text: Option<String>,
+    /// Printed after the message, one `note:` line each.
+    pub notes: Vec<String>,
 }
 
 impl Failure {
     pub fn render(&self) -> String {
-        self.error.render(&self.file, self.text.as_deref())
+        let mut out = self.error.render(&self.file, self.text.as_deref());
+        for note in &self.notes {
+            out += &format!("note: {}\n", excerpt::message(note));
+        }
+        out
     }
 }

@@ -51,7 +51,9 @@ A robtarget point may give its confdata [cf1, cf4, cf6, cfx]; speed and zone set
 a point. With a tool block, leave out motion.tool. README.md describes every key.
 
 The module goes to stdout (or -o FILE); one summary line goes to stderr. On error nothing is
-written to stdout and no FILE is made, but --html, which then shows why planning failed.
+written to stdout and no module FILE is made; when planning fails, --svg FILE draws why (the
+blocked nodes, the points of the failed leg ringed; locate: the reach circles) and --html FILE
+shows the cell and the points that could not be joined.
 
 Exit status: 0 success, 1 invalid cell, robot files or template, 2 bad command line, 3 planning
 failed (point unreachable or in collision, no path), 4 the module could not be written.";
@@ -81,7 +83,8 @@ struct RunArgs {
     /// Grid spacing d in degrees, overriding the cell's planner.grid (0.25 .. 10).
     #[arg(long, value_name = "DEG", value_parser = parse_grid)]
     grid: Option<f64>,
-    /// Also draw the route over the blocked nodes of the configuration space to FILE (SVG).
+    /// Also draw the route over the blocked nodes of the configuration space to FILE (SVG); when
+    /// planning fails, the blocked nodes with the points of the failed leg ringed.
     #[arg(long, value_name = "FILE")]
     svg: Option<PathBuf>,
     /// Also write a 3D preview page to FILE: one self-contained HTML file (the cell, the arm
@@ -118,7 +121,8 @@ struct LocateArgs {
     /// The cell file (YAML).
     #[arg(value_name = "CELL")]
     cell: PathBuf,
-    /// Also draw the top view (obstacles, reach circles, R, base) to FILE as SVG (atomically).
+    /// Also draw the top view (obstacles, reach circles, R, base) to FILE as SVG (atomically);
+    /// also when R is empty.
     #[arg(long, value_name = "FILE")]
     svg: Option<PathBuf>,
     /// Print the report as JSON on stdout instead of text.
@@ -134,7 +138,8 @@ struct CompareArgs {
     /// Print the comparison as JSON instead of a table.
     #[arg(long)]
     json: bool,
-    /// Draw every method's route over the configuration space to FILE (SVG).
+    /// Draw every method's route over the configuration space to FILE (SVG); when none finds
+    /// one, the points they failed at ringed.
     #[arg(long, value_name = "FILE")]
     svg: Option<PathBuf>,
     /// Grid spacing d in degrees, overriding the cell's planner.grid (0.25 .. 10).

@@ -12,8 +12,10 @@
 use crate::cell::{self, Cell};
 use crate::collision::CollisionModel;
 use crate::error::{Error, Failure};
+use crate::excerpt;
 use crate::output::program::{self, RobotFacts};
 use crate::output::rapid::{self, AxisRanges, ModuleTemplate, RapidError, TemplateError};
+use crate::place::locate::Sketch;
 use crate::place::{self, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
 use crate::plan::{self, Method, Plan};
@@ -54,14 +56,16 @@ impl Loaded {
     pub fn warnings(&self) -> Vec<String> {
         match &self.robot.controller.source {
             Some(_) => Vec::new(),
-            None => vec![format!(
+            // Bounded like every message (the path comes from the cell).
+            None => vec![excerpt::message(&format!(
                 "warning: {} has no controller file beside it ({}): the robot is taken as a serial arm with the URDF's joint limits and speeds; name one with robot.controller if this robot has another convention",
                 self.robot.urdf_path.display(),
                 crate::robot::controller::path_beside(&self.robot.urdf_path)
                     .file_name()
                     .map(|f| f.to_string_lossy().into_owned())
                     .unwrap_or_default()
-            )],
+            ))
+            .into_owned()],
         }
     }
 
@@ -71,6 +75,7 @@ impl Loaded {
             error: Box::new(error),
             file: self.cell.path.display().to_string(),
             text: Some(self.text.clone()),
+            notes: Vec::new(),
         }
     }
 }
@@ -96,6 +101,7 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
         error: Box::new(error),
         file: path.display().to_string(),
         text,
+        notes: Vec::new(),
     };
     let text = cell::read(path).map_err(|e| fail(e.into(), None))?;
     let cell = match cell::parse(path, &text) {
@@ -125,6 +131,7 @@ pub fn load_template(path: &Path) -> Result<ModuleTemplate, Failure> {
         error: Box::new(error),
         file: path.display().to_string(),
         text: None,
+        notes: Vec::new(),
     };
     let source = std::fs::read_to_string(path).map_err(|source| {
         fail(Error::Template(TemplateError::Read {
@@ -149,6 +156,12 @@ pub fn survey(job: &Loaded) -> Result<Survey, Error> {
     Ok(place::survey(cell, robot, |p| {
         CollisionModel::of_cell(cell, robot, p)
     })?)
+}
+
+/// What the place stage can draw of its location problem when [`survey`] fails for want of a
+/// base position (the points' reach regions, the obstacles, R where not empty).
+pub fn sketch(job: &Loaded) -> Result<Sketch, Error> {
+    Ok(place::sketch(&job.cell, &job.robot)?)
 }
 
 /// Inspect: the collision model at the placement and the grid at spacing `grid_deg` over the
@@ -203,7 +216,7 @@ pub fn render_with(
         RapidError::UserTemplate(t) => Error::Template(t),
         e => Error::Rapid(e),
     })?;
-    let names = rapid::target_names(&program.targets)?;
+    let names = rapid::module_target_names(&program)?;
     Ok(Rendered {
         program,
         text,

@@ -3,19 +3,21 @@
 //! renders the module through the user's template, `--proc` names its routine.
 //!
 //! On success every file is made in memory first, then written atomically, and the module goes
-//! to stdout (or `-o FILE`) last. On a planning failure (exit 3) `--html` still writes a page
-//! that shows the cell and the points that could not be joined (what that file holds succeeded);
-//! nothing else is written and stdout stays empty.
+//! to stdout (or `-o FILE`) last. On a planning failure (exit 3) `--svg` draws why (the blocked
+//! nodes, the points of the failed leg ringed) and `--html` writes a page of the cell and the
+//! points that could not be joined (what those files hold succeeded); nothing else is written,
+//! stdout stays empty, and a note on stderr says what was drawn.
 
 use super::{emit, write_atomically};
 use crate::cell;
 use crate::error::{exit, Error, Failure};
+use crate::output::cspace_svg::{self, Marked};
 use crate::output::rapid::ModuleTemplate;
-use crate::output::{cspace_svg, preview, report};
-use crate::pipeline::{self, Halted, Loaded, Outcome};
+use crate::output::{preview, report};
+use crate::pipeline::{self, Halted, Loaded, Outcome, Searched};
 use crate::place::{PlaceError, Placement};
 use crate::plan::{Method, PlanError};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 pub struct RunOptions {
@@ -54,7 +56,7 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     let grid_deg = opts.grid_deg.unwrap_or(job.cell.planner.grid_deg);
     let out = match pipeline::run_with(&job, method, grid_deg, &template) {
         Ok(out) => out,
-        Err(halted) => return Err(failed(&job, opts, halted)),
+        Err(halted) => return Err(failed(&job, opts, method, grid_deg, halted)),
     };
     let files = files(&job, opts, &out, method, grid_deg).map_err(|e| job.fail(e))?;
     // The files first: if one cannot be written, nothing has reached stdout yet.
@@ -133,20 +135,109 @@ fn files(
     Ok(files)
 }
 
-/// A run that failed. With `--html`, when it failed for want of a plan (exit 3), the page of
-/// the failure: the cell, the robot where it was placed, the points the failure is about and
-/// the message (written atomically; the exit status stays the planning failure's).
-fn failed(job: &Loaded, opts: &RunOptions, halted: Halted) -> Failure {
+/// A run that failed. When the plan stage failed, `--svg` draws the failure: the grid's blocked
+/// nodes and the cell points, those the failure is about ringed. When it failed for want of a
+/// plan (exit 3), `--html` writes the page of the failure: the cell, the robot where it was
+/// placed, the points the failure is about and the message. Both are written atomically, the
+/// exit status stays the planning failure's, and a note says what was drawn, or why nothing was.
+fn failed(
+    job: &Loaded,
+    opts: &RunOptions,
+    method: Method,
+    grid_deg: f64,
+    halted: Halted,
+) -> Failure {
     let Halted { error, searched } = halted;
     let error = *error;
-    let Some(path) = &opts.html else {
-        return job.fail(error);
-    };
+    let mut notes = Vec::new();
+    if let Some(path) = &opts.svg {
+        notes.push(failure_svg(
+            job,
+            opts,
+            method,
+            grid_deg,
+            path,
+            &error,
+            searched.as_deref(),
+        ));
+    }
+    if let Some(path) = &opts.html {
+        if let Some(note) = failure_page(job, path, &error, searched.as_deref()) {
+            notes.push(note);
+        }
+    }
+    let mut failure = job.fail(error);
+    failure.notes.extend(notes);
+    failure
+}
+
+/// `--svg` of a failed run (see [`failed`]): the note to print.
+fn failure_svg(
+    job: &Loaded,
+    opts: &RunOptions,
+    method: Method,
+    grid_deg: f64,
+    path: &Path,
+    error: &Error,
+    searched: Option<&Searched>,
+) -> String {
+    match (error, searched) {
+        (Error::Plan { source, .. }, Some(searched)) => {
+            let marked = failed_points(source);
+            let why = source.to_string();
+            let title = format!(
+                "{}: {} on a {} deg grid: no route",
+                opts.cell.display(),
+                method,
+                grid_deg
+            );
+            let in_range = |a: &[f64; 3]| job.robot.check_range3(a).is_ok();
+            let drawn = cspace_svg::render_failure_svg(
+                &searched.inspected.cspace,
+                &in_range,
+                &searched.placed.points,
+                &Marked {
+                    points: &marked,
+                    why: &why,
+                },
+                &title,
+            )
+            .map_err(Error::from)
+            .and_then(|svg| write_atomically(path, svg.as_bytes()));
+            let names: Vec<&str> = marked
+                .iter()
+                .filter_map(|&k| searched.placed.points.get(k))
+                .map(|p| p.name.as_str())
+                .collect();
+            match drawn {
+                Ok(()) => format!(
+                    "the blocked nodes of the grid are drawn to {}, with {} ringed in red",
+                    path.display(),
+                    names.join(" and ")
+                ),
+                Err(e) => format!("no picture: {e}"),
+            }
+        }
+        _ => format!(
+            "nothing drawn to {}: the run stopped before the grid was searched",
+            path.display()
+        ),
+    }
+}
+
+/// `--html` of a failed run (see [`failed`]): the note to print, `None` when the run did not
+/// fail for want of a plan (an input or output error: there is nothing to show).
+fn failure_page(
+    job: &Loaded,
+    path: &Path,
+    error: &Error,
+    searched: Option<&Searched>,
+) -> Option<String> {
     if error.exit_code() != exit::PLANNING {
-        return job.fail(error);
+        return None;
     }
     let index = |name: &str| job.cell.points.iter().position(|p| p.name == name);
-    let (placement, points, marked) = match (&error, &searched) {
+    let (placement, points, marked) = match (error, searched) {
         (Error::Plan { source, .. }, Some(s)) => (
             Some(s.placed.placement),
             Some(&s.placed.points[..]),
@@ -189,10 +280,13 @@ fn failed(job: &Loaded, opts: &RunOptions, halted: Halted) -> Failure {
     let written = preview::render_html(&scene)
         .map_err(Error::from)
         .and_then(|html| write_atomically(path, html.as_bytes()));
-    if let Err(e) = written {
-        eprintln!("warning: no preview page of the failure: {e}");
-    }
-    job.fail(error)
+    Some(match written {
+        Ok(()) => format!(
+            "the preview page of the failure is written to {}",
+            path.display()
+        ),
+        Err(e) => format!("no preview page: {e}"),
+    })
 }
 
 /// The points a planning failure is about: both ends of a leg that could not be planned, or the

@@ -130,7 +130,7 @@ fn a_failing_method_is_a_row_and_the_others_still_count() {
 }
 
 #[test]
-fn depth_first_failure_names_the_leg_exits_3_and_writes_nothing() {
+fn depth_first_failure_names_the_leg_exits_3_writes_no_module_and_draws_why() {
     let dir = tempfile::tempdir().expect("tempdir");
     let (module, svg) = (dir.path().join("out.mod"), dir.path().join("out.svg"));
     let o = gen_rapid(&[
@@ -157,11 +157,18 @@ fn depth_first_failure_names_the_leg_exits_3_and_writes_nothing() {
         "{err}"
     );
     assert!(o.stdout.is_empty());
-    assert!(!module.exists() && !svg.exists());
+    assert!(!module.exists());
+    // The picture of why: the leg's two points ringed (tests/it/pictures.rs reads such pictures).
+    let pic = std::fs::read_to_string(&svg).expect("picture of the failure");
+    assert_eq!(
+        pic.matches("stroke=\"#DC0000\"").count(),
+        6,
+        "A and B ringed in 3 projections"
+    );
 }
 
 #[test]
-fn no_method_succeeding_prints_the_table_and_exits_3_without_a_picture() {
+fn no_method_succeeding_prints_the_table_exits_3_and_draws_why() {
     // The trunk cell with a 50 mm clearance: point A is then too close to the trunk floor.
     let dir = tempfile::tempdir().expect("tempdir");
     let text = std::fs::read_to_string(root().join(TRUNK)).expect("trunk");
@@ -195,7 +202,8 @@ fn no_method_succeeding_prints_the_table_and_exits_3_without_a_picture() {
         "{}",
         stderr(&o)
     );
-    assert!(!svg.exists());
+    // The picture of why (tests/it/pictures.rs reads it).
+    assert!(svg.exists());
 }
 
 #[test]

@@ -70,7 +70,8 @@
 //!   allowed there). It is the rule of [`crate::names`], which the cell
 //!   validation applies first, at the cell's lines: here it is a last guard.
 //!   All declared names are unique ignoring case and differ from the module
-//!   name, the routine's and every speed and zone name (see [`target_names`]).
+//!   name, the routine's and every speed and zone name (see [`target_names`]); a via
+//!   whose name is taken by any of them steps aside (`via01_01_x1`, ...).
 //! - One `CONST jointtarget` per target and one `MoveAbsJ` per target, in the
 //!   same order, so each name is used by exactly one move.
 //! - Free text in the header (`generator`, `cell_file`, paths, `planner`) is
@@ -85,7 +86,7 @@ mod target_names;
 pub use data::{AxisRanges, Pose, RobTarget, ToolData, WobjData, NO_EXTERNAL_AXES};
 pub use format::format_fixed;
 pub use header::{Header, NO_CONTROLLER};
-pub use target_names::target_names;
+pub use target_names::{target_names, target_names_avoiding};
 
 use crate::names::{check_data_name, check_identifier, robtarget_name, IdentifierError};
 use crate::precision::JOINT_DECIMALS;
@@ -450,8 +451,9 @@ fn finite(what: impl Into<String>, value: f64) -> Result<f64, RapidError> {
 /// Checks, in this order: module name ([`check_identifier`]); tool and work
 /// object names (declared: [`check_identifier`]; used: identifier shape, not a
 /// reserved word); every speed and zone name; header numbers finite;
-/// `header.moves == targets.len() - 1`; target names ([`target_names`]), the
-/// robtarget names ([`robtarget_name`]); no declared name equal to another, to
+/// `header.moves == targets.len() - 1`; target names ([`target_names_avoiding`]:
+/// a via steps aside for the module's other names), the robtarget names
+/// ([`robtarget_name`]); no declared name equal to another, to
 /// the routine or to a speed, zone or tool name (ignoring case); axis values finite
 /// and in range. The first failure is returned.
 pub fn render(program: &Program) -> Result<String, RapidError> {
@@ -499,7 +501,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
         });
     }
 
-    let target_names = target_names(&program.targets)?;
+    let target_names = module_target_names(program)?;
     check_name_space(program, &target_names)?;
 
     let wobj_arg = match &program.wobj {
@@ -582,6 +584,38 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             || (text.is_ascii() && !text.contains('\r') && text.ends_with('\n'))
     );
     Ok(text)
+}
+
+/// The names of the module's `CONST jointtarget`s, in order: the cell points' own, and the
+/// vias' (`via<leg>_<index>`), which step aside for the module's other names (a cell point that
+/// takes one is a clash, refused by the cell validation at its line, and by [`render`] as a
+/// last guard). The preview and the report name the waypoints with it.
+pub fn module_target_names(program: &Program) -> Result<Vec<String>, RapidError> {
+    let others = other_names(program);
+    let reserved: Vec<&str> = others.iter().map(String::as_str).collect();
+    target_names_avoiding(&program.targets, &reserved)
+}
+
+/// The module's names other than its `CONST jointtarget`s: the module, the routine, the tool, the
+/// work object, every speed and zone, and the `CONST robtarget`s of the cell points that have
+/// one. The vias' names avoid them ([`target_names_avoiding`]).
+fn other_names(program: &Program) -> Vec<String> {
+    let mut names = vec![
+        program.module.clone(),
+        program.proc_name.clone(),
+        program.tool.clone(),
+    ];
+    names.extend(program.wobj.iter().map(|w| w.name.clone()));
+    for t in &program.targets {
+        names.push(t.speed.clone());
+        names.push(t.zone.clone());
+        if let (TargetKind::CellPoint { name }, Some(_)) = (&t.kind, &t.robtarget) {
+            names.push(robtarget_name(name));
+        }
+    }
+    names.sort_unstable();
+    names.dedup();
+    names
 }
 
 /// One name space: the declared names (the module, the tool and work object when declared,

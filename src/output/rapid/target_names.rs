@@ -29,8 +29,17 @@ fn digits(n: usize) -> usize {
 ///
 /// The result is a pure function of `targets`: same input, same names.
 pub fn target_names(targets: &[JointTarget]) -> Result<Vec<String>, RapidError> {
-    // 1. Cell points: validate and reserve.
-    let mut taken: HashSet<String> = HashSet::new();
+    target_names_avoiding(targets, &[])
+}
+
+/// [`target_names`], with vias also avoiding `reserved` (the module's other names: the module,
+/// the speed, zone and tool data), which take a via's name as a cell point does: `_x1`, ....
+pub fn target_names_avoiding(
+    targets: &[JointTarget],
+    reserved: &[&str],
+) -> Result<Vec<String>, RapidError> {
+    // 1. Cell points: validate and reserve; then the other names.
+    let mut taken: HashSet<String> = reserved.iter().map(|n| n.to_ascii_lowercase()).collect();
     let mut owners: Vec<(String, String)> = Vec::new(); // lowercase -> original
     for (position, target) in targets.iter().enumerate() {
         if let TargetKind::CellPoint { name } = &target.kind {
@@ -119,6 +128,15 @@ mod tests {
             zone: "fine".into(),
             robtarget: None,
         }
+    }
+
+    #[test]
+    fn vias_avoid_the_modules_other_names() {
+        let t = [point("home"), via(0, 1), via(0, 2), point("pick")];
+        assert_eq!(
+            target_names_avoiding(&t, &["VIA01_01", "v300"]).unwrap(),
+            ["home", "via01_01_x1", "via01_02", "pick"]
+        );
     }
 
     #[test]
