@@ -6,8 +6,11 @@
 //! cannot be reached, no path between two points) carry the location of the item they are about.
 
 use crate::cell::{CellError, Loc};
+use crate::excerpt;
 use crate::output::cspace_svg::PictureError;
-use crate::output::rapid::RapidError;
+use crate::output::preview::PreviewError;
+use crate::output::rapid::{RapidError, TemplateError};
+use crate::output::report::ReportError;
 use crate::place::PlaceError;
 use crate::plan::PlanError;
 use crate::robot::ik::IkError;
@@ -46,6 +49,13 @@ pub enum Error {
     },
     #[error(transparent)]
     Picture(#[from] PictureError),
+    /// The user's module template (`--template`): an input error at the template's line.
+    #[error(transparent)]
+    Template(TemplateError),
+    #[error(transparent)]
+    Preview(#[from] PreviewError),
+    #[error(transparent)]
+    Report(#[from] ReportError),
     /// `compare`: every method failed (each reason is in the table).
     #[error("no method found a route through the cell ({})", .failures.join("; "))]
     NoMethodSucceeded { failures: Vec<String> },
@@ -54,12 +64,17 @@ pub enum Error {
 impl Error {
     pub fn exit_code(&self) -> u8 {
         match self {
-            Error::Cell(_) | Error::Robot { .. } => exit::INPUT,
+            Error::Cell(_) | Error::Robot { .. } | Error::Template(_) => exit::INPUT,
+            Error::Rapid(RapidError::UserTemplate(_)) => exit::INPUT,
             Error::Place(e) if e.is_input() => exit::INPUT,
             Error::Place(_) | Error::Plan { .. } | Error::NoMethodSucceeded { .. } => {
                 exit::PLANNING
             }
-            Error::Rapid(_) | Error::Write { .. } | Error::Picture(_) => exit::OUTPUT,
+            Error::Rapid(_)
+            | Error::Write { .. }
+            | Error::Picture(_)
+            | Error::Preview(_)
+            | Error::Report(_) => exit::OUTPUT,
         }
     }
 
@@ -72,6 +87,9 @@ impl Error {
             Error::Rapid(_)
             | Error::Write { .. }
             | Error::Picture(_)
+            | Error::Template(_)
+            | Error::Preview(_)
+            | Error::Report(_)
             | Error::NoMethodSucceeded { .. } => None,
         }
     }
@@ -98,6 +116,7 @@ impl Error {
             Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
             Error::Place(PlaceError::Range { .. }) => Some("joint values are controller values (what a jointtarget holds) and must lie in the robot's ranges, all six axes; a point without axes 4..6 takes robot.wrist".into()),
             Error::Place(PlaceError::Robtarget { .. }) => Some("a robtarget is the TCP pose [[x, y, z], [q1, q2, q3, q4]] in the work object's frame (mm, quaternion [w, x, y, z]) of the tool's TCP (tool.tframe); confdata [cf1, cf4, cf6, cfx] picks one of the arm's solutions, without it the one nearest the previous point is taken".into()),
+            Error::Template(_) | Error::Rapid(RapidError::UserTemplate(_)) => Some("the template is minijinja (Jinja2) text rendered with strict undefined names: README's \"Your own module template\" lists every name it may use".into()),
             Error::Rapid(RapidError::OutOfRange { .. }) => Some("this is a bug in gen-rapid: an earlier stage let an out-of-range value through; please report it with the cell file".into()),
             Error::Place(PlaceError::Locate { .. }) => Some("`gen-rapid locate CELL --svg FILE` draws every point's reach region; move the points closer together or give `base: [x, y, z]`".into()),
             Error::Place(PlaceError::Ik { source, .. }) if matches!(**source, IkError::Unreachable { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `gen-rapid locate CELL` shows which base positions reach every point".into()),
@@ -105,41 +124,87 @@ impl Error {
         }
     }
 
-    /// The message for stderr: `error: ...`, then the place in the cell, then help.
+    /// The message for stderr: `error: ...`, then the place in the cell, then help. Bounded
+    /// whatever the input ([`crate::excerpt`]): a long source line is shown as a window around
+    /// the column, a long message is cut.
     pub fn render(&self, file: &str, text: Option<&str>) -> String {
-        let mut out = format!("error: {self}\n");
-        if let Some(loc) = self.loc().filter(|l| l.line > 0) {
+        let mut out = format!("error: {}\n", excerpt::message(&self.to_string()));
+        if let Error::Template(TemplateError::Invalid {
+            path,
+            line,
+            column,
+            line_text,
+            ..
+        })
+        | Error::Rapid(RapidError::UserTemplate(TemplateError::Invalid {
+            path,
+            line,
+            column,
+            line_text,
+            ..
+        })) = self
+        {
+            // The template's place, not the cell's (bounded like a cell's line).
+            out += &match line {
+                Some(l) => format!(
+                    "  --> {}:{l}{}\n",
+                    path.display(),
+                    column.map(|c| format!(":{c}")).unwrap_or_default()
+                ),
+                None => format!("  --> {}\n", path.display()),
+            };
+            if let (Some(l), Some(t)) = (line, line_text) {
+                let window = excerpt::line_window(t, column.unwrap_or(1) as u64);
+                let num = l.to_string();
+                let pad = " ".repeat(num.len());
+                out += &format!("{pad} |\n{num} | {}\n", window.text);
+                if column.is_some() {
+                    out += &format!("{pad} | {}^\n", " ".repeat(window.caret));
+                }
+            }
+        } else if let Some(loc) = self.loc().filter(|l| l.line > 0) {
             out += &format!("  --> {file}:{}:{}\n", loc.line, loc.column);
-            if let Some(line) = text.and_then(|t| t.lines().nth(loc.line as usize - 1)) {
+            if let Some(line) = text.and_then(|t| excerpt::nth_line(t, loc.line)) {
+                let window = excerpt::line_window(line, loc.column);
                 let num = loc.line.to_string();
                 let pad = " ".repeat(num.len());
-                let caret = " ".repeat(loc.column.saturating_sub(1) as usize);
-                out += &format!("{pad} |\n{num} | {line}\n{pad} | {caret}^\n");
+                let caret = " ".repeat(window.caret);
+                out += &format!("{pad} |\n{num} | {}\n{pad} | {caret}^\n", window.text);
             }
-        } else if matches!(self, Error::Cell(CellError::Read { .. })) {
+        } else if matches!(
+            self,
+            Error::Cell(CellError::Read { .. }) | Error::Template(TemplateError::Read { .. })
+        ) {
             // The message names the file already.
         } else if !matches!(self, Error::Write { .. }) {
             out += &format!("  --> {file}\n");
         }
         if let Some(h) = self.help() {
-            out += &format!("help: {h}\n");
+            out += &format!("help: {}\n", excerpt::message(&h));
         }
         out
     }
 }
 
 /// A failure with the cell file's name and text, ready to print (the text, when it could be
-/// read, lets the message show the offending line).
+/// read, lets the message show the offending line), and notes on what was done about it (a
+/// picture of the failure drawn, or why none was).
 #[derive(Debug)]
 pub struct Failure {
     /// Boxed: the error is large and a `Result` carrying it should not be.
     pub error: Box<Error>,
     pub file: String,
     pub text: Option<String>,
+    /// Printed after the message, one `note:` line each.
+    pub notes: Vec<String>,
 }
 
 impl Failure {
     pub fn render(&self) -> String {
-        self.error.render(&self.file, self.text.as_deref())
+        let mut out = self.error.render(&self.file, self.text.as_deref());
+        for note in &self.notes {
+            out += &format!("note: {}\n", excerpt::message(note));
+        }
+        out
     }
 }

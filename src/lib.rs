@@ -8,6 +8,7 @@
 //! ```
 
 // Leaves, used by any stage.
+pub mod excerpt;
 pub mod geometry;
 pub mod names;
 pub mod precision;

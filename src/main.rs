@@ -15,6 +15,10 @@ Examples:
   gen-rapid cells/trunk.yaml -o trunk.mod         the same, written atomically to a file
   gen-rapid cells/trunk.yaml --planner depth-first --grid 2
   gen-rapid cells/trunk.yaml --svg trunk.svg      also draw the route over the C-space
+  gen-rapid cells/trunk.yaml --html trunk.html    also a 3D preview page (open it in a browser)
+  gen-rapid cells/trunk.yaml --report trunk.json  also the results as JSON
+  gen-rapid cells/trunk.yaml --template templates/module-local.mod.j2 --proc Weld
+                                                  your own module template, routine Weld
   gen-rapid compare cells/trunk.yaml --svg all.svg      the three methods side by side
   gen-rapid locate cells/trunk-auto.yaml --svg r.svg    where the base may stand (region R)
 
@@ -28,7 +32,7 @@ A minimal cell (mm and degrees; joint values are the controller's, as in a joint
     - { name: P2, joints: [30, 0, 0] }
 Optional: robot.yaw, robot.wrist, robot.controller (a controller file for the URDF), points as
 xyz (wrist centre), base: auto, planner.method (extensile), planner.grid (1 deg),
-planner.clearance (10 mm), motion.speed/zone/tool (v300, fine, tool0).
+planner.clearance (10 mm), motion.speed/zone/tool/proc (v300, fine, tool0, main).
 
 A tool, a work object and points as TCP poses (robtargets; quaternions [w, x, y, z]):
   tool:                                  # the tooldata to declare, with its collision volumes
@@ -47,10 +51,12 @@ A robtarget point may give its confdata [cf1, cf4, cf6, cfx]; speed and zone set
 a point. With a tool block, leave out motion.tool. README.md describes every key.
 
 The module goes to stdout (or -o FILE); one summary line goes to stderr. On error nothing is
-written to stdout and no FILE is made.
+written to stdout and no module FILE is made; when planning fails, --svg FILE draws why (the
+blocked nodes, the points of the failed leg ringed; locate: the reach circles) and --html FILE
+shows the cell and the points that could not be joined.
 
-Exit status: 0 success, 1 invalid cell or robot files, 2 bad command line, 3 planning failed
-(point unreachable or in collision, no path), 4 the module could not be written.";
+Exit status: 0 success, 1 invalid cell, robot files or template, 2 bad command line, 3 planning
+failed (point unreachable or in collision, no path), 4 the module could not be written.";
 
 /// Plans a collision-free joint-space path through a robot cell's points and writes it as an
 /// ABB RAPID module of MoveAbsJ moves (method of Ting & Jar 2006).
@@ -77,9 +83,26 @@ struct RunArgs {
     /// Grid spacing d in degrees, overriding the cell's planner.grid (0.25 .. 10).
     #[arg(long, value_name = "DEG", value_parser = parse_grid)]
     grid: Option<f64>,
-    /// Also draw the route over the blocked nodes of the configuration space to FILE (SVG).
+    /// Also draw the route over the blocked nodes of the configuration space to FILE (SVG); when
+    /// planning fails, the blocked nodes with the points of the failed leg ringed.
     #[arg(long, value_name = "FILE")]
     svg: Option<PathBuf>,
+    /// Also write a 3D preview page to FILE: one self-contained HTML file (the cell, the arm
+    /// and tool moving along the estimated timing, the smallest clearance); when planning fails,
+    /// a page of the points that could not be joined.
+    #[arg(long, value_name = "FILE")]
+    html: Option<PathBuf>,
+    /// Also write the run's results as JSON to FILE (waypoints, moves with their clearance,
+    /// time, speed and zone; docs/report.schema.json).
+    #[arg(long, value_name = "FILE")]
+    report: Option<PathBuf>,
+    /// Render the module through this minijinja template instead of the embedded one
+    /// (templates/module.mod.j2 is the default; README lists the names a template may use).
+    #[arg(long, value_name = "FILE")]
+    template: Option<PathBuf>,
+    /// Name the routine that makes the moves (default: the cell's motion.proc, else main).
+    #[arg(long = "proc", value_name = "NAME")]
+    proc_name: Option<String>,
 }
 
 #[derive(Subcommand)]
@@ -98,7 +121,8 @@ struct LocateArgs {
     /// The cell file (YAML).
     #[arg(value_name = "CELL")]
     cell: PathBuf,
-    /// Also draw the top view (obstacles, reach circles, R, base) to FILE as SVG (atomically).
+    /// Also draw the top view (obstacles, reach circles, R, base) to FILE as SVG (atomically);
+    /// also when R is empty.
     #[arg(long, value_name = "FILE")]
     svg: Option<PathBuf>,
     /// Print the report as JSON on stdout instead of text.
@@ -114,7 +138,8 @@ struct CompareArgs {
     /// Print the comparison as JSON instead of a table.
     #[arg(long)]
     json: bool,
-    /// Draw every method's route over the configuration space to FILE (SVG).
+    /// Draw every method's route over the configuration space to FILE (SVG); when none finds
+    /// one, the points they failed at ringed.
     #[arg(long, value_name = "FILE")]
     svg: Option<PathBuf>,
     /// Grid spacing d in degrees, overriding the cell's planner.grid (0.25 .. 10).
@@ -156,6 +181,10 @@ fn main() -> ExitCode {
             planner: cli.run.planner.map(Method::from),
             grid_deg: cli.run.grid,
             svg: cli.run.svg,
+            html: cli.run.html,
+            report: cli.run.report,
+            template: cli.run.template,
+            proc_name: cli.run.proc_name,
         }),
         Some(Command::Compare(a)) => compare(&CompareOptions {
             cell: a.cell,

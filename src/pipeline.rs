@@ -5,15 +5,17 @@
 //! ```
 //!
 //! Each stage is a function of the previous stages' results. Only [`load`] reads files (the cell,
-//! the URDF and its controller file); everything after it is a pure function of its inputs, so a
+//! the URDF and its controller file; [`load_template`] the user's module template); everything after it is a pure function of its inputs, so a
 //! benchmark loads once and runs the rest as often as it likes. Errors are the stages' own,
 //! wrapped in [`Error`] with the place in the cell file they point at.
 
 use crate::cell::{self, Cell};
 use crate::collision::CollisionModel;
 use crate::error::{Error, Failure};
+use crate::excerpt;
 use crate::output::program::{self, RobotFacts};
-use crate::output::rapid::{self, AxisRanges};
+use crate::output::rapid::{self, AxisRanges, ModuleTemplate, RapidError, TemplateError};
+use crate::place::locate::Sketch;
 use crate::place::{self, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
 use crate::plan::{self, Method, Plan};
@@ -54,14 +56,16 @@ impl Loaded {
     pub fn warnings(&self) -> Vec<String> {
         match &self.robot.controller.source {
             Some(_) => Vec::new(),
-            None => vec![format!(
+            // Bounded like every message (the path comes from the cell).
+            None => vec![excerpt::message(&format!(
                 "warning: {} has no controller file beside it ({}): the robot is taken as a serial arm with the URDF's joint limits and speeds; name one with robot.controller if this robot has another convention",
                 self.robot.urdf_path.display(),
                 crate::robot::controller::path_beside(&self.robot.urdf_path)
                     .file_name()
                     .map(|f| f.to_string_lossy().into_owned())
                     .unwrap_or_default()
-            )],
+            ))
+            .into_owned()],
         }
     }
 
@@ -71,6 +75,7 @@ impl Loaded {
             error: Box::new(error),
             file: self.cell.path.display().to_string(),
             text: Some(self.text.clone()),
+            notes: Vec::new(),
         }
     }
 }
@@ -82,10 +87,12 @@ pub struct Inspected {
     pub cspace: CSpace,
 }
 
-/// The render stage's result: the module's content and its text.
+/// The render stage's result: the module's content, its text and the names it gives the
+/// plan's waypoints (in order).
 pub struct Rendered {
     pub program: rapid::Program,
     pub text: String,
+    pub names: Vec<String>,
 }
 
 /// Load: reads the cell file and the robot it names (the only file reads of the pipeline).
@@ -94,6 +101,7 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
         error: Box::new(error),
         file: path.display().to_string(),
         text,
+        notes: Vec::new(),
     };
     let text = cell::read(path).map_err(|e| fail(e.into(), None))?;
     let cell = match cell::parse(path, &text) {
@@ -116,6 +124,24 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
     }
 }
 
+/// Load, the user's module template (`--template FILE`): read and compiled here, so a template
+/// that does not parse fails before any planning, pointing at its line (an input error).
+pub fn load_template(path: &Path) -> Result<ModuleTemplate, Failure> {
+    let fail = |error: Error| Failure {
+        error: Box::new(error),
+        file: path.display().to_string(),
+        text: None,
+        notes: Vec::new(),
+    };
+    let source = std::fs::read_to_string(path).map_err(|source| {
+        fail(Error::Template(TemplateError::Read {
+            path: path.to_path_buf(),
+            source,
+        }))
+    })?;
+    ModuleTemplate::user(path, source).map_err(|e| fail(Error::Template(e)))
+}
+
 /// Place: where the robot stands and every point on all six axes.
 pub fn place(job: &Loaded) -> Result<Placed, Error> {
     let (cell, robot) = (&job.cell, &job.robot);
@@ -130,6 +156,12 @@ pub fn survey(job: &Loaded) -> Result<Survey, Error> {
     Ok(place::survey(cell, robot, |p| {
         CollisionModel::of_cell(cell, robot, p)
     })?)
+}
+
+/// What the place stage can draw of its location problem when [`survey`] fails for want of a
+/// base position (the points' reach regions, the obstacles, R where not empty).
+pub fn sketch(job: &Loaded) -> Result<Sketch, Error> {
+    Ok(place::sketch(&job.cell, &job.robot)?)
 }
 
 /// Inspect: the collision model at the placement and the grid at spacing `grid_deg` over the
@@ -166,11 +198,30 @@ pub fn time(job: &Loaded, mut plan: Plan) -> Plan {
     plan
 }
 
-/// Render: the RAPID module of a plan.
+/// Render: the RAPID module of a plan, through the embedded template.
 pub fn render(job: &Loaded, placed: &Placed, plan: &Plan) -> Result<Rendered, Error> {
+    render_with(job, placed, plan, &ModuleTemplate::embedded())
+}
+
+/// Render through `template` (the user's, `--template`, or the embedded one). An error of the
+/// user's template is an input error pointing at its line.
+pub fn render_with(
+    job: &Loaded,
+    placed: &Placed,
+    plan: &Plan,
+    template: &ModuleTemplate,
+) -> Result<Rendered, Error> {
     let program = program::build(&job.cell, placed, plan, &job.robot_facts());
-    let text = rapid::render(&program)?;
-    Ok(Rendered { program, text })
+    let text = rapid::render_with(&program, template).map_err(|e| match e {
+        RapidError::UserTemplate(t) => Error::Template(t),
+        e => Error::Rapid(e),
+    })?;
+    let names = rapid::module_target_names(&program)?;
+    Ok(Rendered {
+        program,
+        text,
+        names,
+    })
 }
 
 /// A whole run after load: the placed job, the inspected grid, the timed plan and the module.
@@ -181,12 +232,61 @@ pub struct Outcome {
     pub rendered: Rendered,
 }
 
-/// Place, inspect, plan, time and render, in that order.
-pub fn run(job: &Loaded, method: Method, grid_deg: f64) -> Result<Outcome, Error> {
+/// A run that stopped at a stage's error, with what the stages before it made that a picture of
+/// the failure needs.
+pub struct Halted {
+    /// Boxed: the error is large and a `Result` carrying it should not be.
+    pub error: Box<Error>,
+    /// Set when the plan stage failed: the placed points and the grid it searched.
+    pub searched: Option<Box<Searched>>,
+}
+
+/// The place and inspect stages' results, kept for a picture when the plan stage fails.
+pub struct Searched {
+    pub placed: Placed,
+    pub inspected: Inspected,
+}
+
+impl From<Error> for Halted {
+    fn from(error: Error) -> Halted {
+        Halted {
+            error: Box::new(error),
+            searched: None,
+        }
+    }
+}
+
+impl std::fmt::Debug for Halted {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Debug::fmt(&self.error, f)
+    }
+}
+
+/// Place, inspect, plan, time and render, in that order. A failure of the plan stage keeps the
+/// placed points and the inspected grid (a picture of why the plan failed).
+pub fn run(job: &Loaded, method: Method, grid_deg: f64) -> Result<Outcome, Halted> {
+    run_with(job, method, grid_deg, &ModuleTemplate::embedded())
+}
+
+/// [`run`] with the module rendered through `template`.
+pub fn run_with(
+    job: &Loaded,
+    method: Method,
+    grid_deg: f64,
+    template: &ModuleTemplate,
+) -> Result<Outcome, Halted> {
     let placed = place(job)?;
     let inspected = inspect(job, &placed, grid_deg);
-    let plan = time(job, plan(job, &placed, &inspected, method)?);
-    let rendered = render(job, &placed, &plan)?;
+    let plan = match plan(job, &placed, &inspected, method) {
+        Ok(plan) => time(job, plan),
+        Err(error) => {
+            return Err(Halted {
+                error: Box::new(error),
+                searched: Some(Box::new(Searched { placed, inspected })),
+            })
+        }
+    };
+    let rendered = render_with(job, &placed, &plan, template)?;
     Ok(Outcome {
         placed,
         inspected,

@@ -1,5 +1,7 @@
 //! The one table of output precisions: how many decimals each kind of number has in the RAPID
-//! module (joint values, header figures, the poses of robtargets, tooldata and wobjdata). The
+//! module (joint values, header figures, the poses of robtargets, tooldata and wobjdata), in the
+//! JSON report (`--report`, which states the module's numbers with the module's decimals) and in
+//! the preview page's scene (`--html`). The
 //! cell validation refuses input finer than what the module can state (so every cell value
 //! appears in the module exactly as given; quaternions excepted, which are normalised), the
 //! planner rounds computed joint values to it before proving them (so what is proven is what is
@@ -24,6 +26,34 @@ pub const POSITION_DECIMALS: usize = 3;
 pub const QUATERNION_DECIMALS: usize = 9;
 /// The tool's mass in `PERS tooldata` (kg); also the cell's `tool.mass`.
 pub const MASS_DECIMALS: usize = 3;
+
+// ---- the JSON report (`--report`): the module's decimals, so that both state the same numbers ----
+
+/// Joint values in the report (deg): as in the module.
+pub const REPORT_JOINT_DECIMALS: usize = JOINT_DECIMALS;
+/// Positions in the report (TCP, wrist centre, base; mm): as robtargets in the module.
+pub const REPORT_POSITION_DECIMALS: usize = POSITION_DECIMALS;
+/// Clearances in the report (mm): as the header's min clearance (a certified lower bound within
+/// 0.05 mm, so a finer figure would claim more than is known).
+pub const REPORT_CLEARANCE_DECIMALS: usize = LENGTH_DECIMALS;
+/// Times in the report (s): as the header's estimated time.
+pub const REPORT_TIME_DECIMALS: usize = TIME_DECIMALS;
+/// The grid spacing and the yaw in the report (deg): as in the header.
+pub const REPORT_GRID_DECIMALS: usize = GRID_DECIMALS;
+pub const REPORT_YAW_DECIMALS: usize = YAW_DECIMALS;
+
+// ---- the preview page's scene (`--html`), chosen by each JSON key's unit suffix ----
+
+/// Lengths in millimetres (`_mm`): 0.001 mm.
+pub const PREVIEW_MM_DECIMALS: usize = 3;
+/// Times in seconds (`_s`): 1 ms.
+pub const PREVIEW_SECONDS_DECIMALS: usize = 3;
+/// Angles in degrees (`_deg`).
+pub const PREVIEW_DEG_DECIMALS: usize = 3;
+/// Quaternion components (`_wxyz`): 1e-4, under 0.02 deg, invisible on a screen.
+pub const PREVIEW_QUAT_DECIMALS: usize = 4;
+/// Any other non-integer number of the scene (none today).
+pub const PREVIEW_OTHER_DECIMALS: usize = 6;
 
 /// `10^decimals`, the scale of the rounding.
 fn scale(decimals: usize) -> f64 {

@@ -42,7 +42,7 @@
 //! routes, not a cycle time: the real controller blends, limits torques and plans its own
 //! profiles.
 
-use crate::plan::{Estimate, Plan};
+use crate::plan::{Estimate, Plan, Profile};
 use crate::robot::AxisSpec;
 
 /// Ramp time (s) of the quintic speed ramp for speed `v` under peak acceleration `a`.
@@ -97,17 +97,40 @@ pub fn leading_axis(from: &[f64; 6], to: &[f64; 6], axes: &[AxisSpec; 6]) -> usi
     best.0
 }
 
+/// The profile a move's leading axis follows (module doc): ramp, cruise and ramp where that is
+/// the faster, else one quintic.
+pub fn move_profile(from: &[f64; 6], to: &[f64; 6], axes: &[AxisSpec; 6]) -> Profile {
+    let k = leading_axis(from, to, axes);
+    let (d, v, a) = (
+        (to[k] - from[k]).abs(),
+        axes[k].speed_deg_s,
+        axes[k].acceleration(),
+    );
+    match cruise_profile_s(d, v, a) {
+        Some(t) if d > 0.0 && t <= quintic_profile_s(d, v, a) => Profile::Cruise {
+            ramp_s: ramp_time_s(v, a),
+        },
+        _ => Profile::Quintic,
+    }
+}
+
 /// The time stage: the manipulation time of every move of the route and their sum (s), each
-/// move from rest to rest over all six axes of its waypoints.
+/// move from rest to rest over all six axes of its waypoints, and each move's profile.
 pub fn estimate(plan: &Plan, axes: &[AxisSpec; 6]) -> Estimate {
     let move_s: Vec<f64> = plan
         .waypoints
         .windows(2)
         .map(|w| move_time_s(&w[0].joints_deg, &w[1].joints_deg, axes))
         .collect();
+    let move_profile = plan
+        .waypoints
+        .windows(2)
+        .map(|w| move_profile(&w[0].joints_deg, &w[1].joints_deg, axes))
+        .collect();
     Estimate {
         total_s: move_s.iter().sum(),
         move_s,
+        move_profile,
     }
 }
 
@@ -207,6 +230,45 @@ mod tests {
     }
 
     #[test]
+    fn the_profile_of_a_move_is_its_leading_axis_and_progress_follows_it() {
+        let axes = [axis(110.0, 515.625); 6];
+        let from = [0.0; 6];
+        // 180 deg cruises (ramp 15 * 110 / (8 * 515.625) = 0.4 s); 10 deg is one quintic.
+        let long = [180.0, 20.0, 0.0, 0.0, 0.0, 0.0];
+        assert_eq!(
+            move_profile(&from, &long, &axes),
+            Profile::Cruise { ramp_s: 0.4 }
+        );
+        let short = [10.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        assert_eq!(move_profile(&from, &short, &axes), Profile::Quintic);
+        assert_eq!(move_profile(&from, &from, &axes), Profile::Quintic);
+        // Cruise, ramp 0.4 s, 2 s in all: speed 1 / 1.6 = 0.625 of the move per second; a ramp
+        // covers 0.625 * 0.4 / 2 = 0.125; halfway 0.125 + 0.625 * 0.6 = 0.5.
+        let p = Profile::Cruise { ramp_s: 0.4 };
+        assert!(close(p.progress(0.4, 2.0), 0.125, 1e-12));
+        assert!(close(p.progress(1.0, 2.0), 0.5, 1e-12));
+        assert!(close(p.progress(1.6, 2.0), 0.875, 1e-12));
+        assert_eq!((p.progress(0.0, 2.0), p.progress(2.0, 2.0)), (0.0, 1.0));
+        // The quintic: h(1/4) = (1/64) (10 - 15/4 + 6/16) = 0.103515625.
+        assert!(close(
+            Profile::Quintic.progress(0.25, 1.0),
+            0.103515625,
+            1e-12
+        ));
+        assert!(close(Profile::Quintic.progress(0.5, 1.0), 0.5, 1e-12));
+        // Both rise steadily, never faster than their peak speed: the cruise's 0.625 per second,
+        // the quintic's 15 / 8 over 2 s.
+        for (profile, peak) in [(p, 0.625), (Profile::Quintic, 15.0 / 16.0)] {
+            let mut last = 0.0;
+            for i in 1..=2000 {
+                let now = profile.progress(i as f64 * 0.001, 2.0);
+                assert!(now >= last && now - last <= peak * 0.001 * (1.0 + 1e-9));
+                last = now;
+            }
+        }
+    }
+
+    #[test]
     fn a_route_sums_its_moves_over_all_six_axes() {
         use crate::plan::{Method, Waypoint, WaypointKind};
         let w = |kind, joints_deg| Waypoint { kind, joints_deg };
@@ -226,6 +288,7 @@ mod tests {
             ],
             legs: Vec::new(),
             min_clearance: None,
+            move_clearances: Vec::new(),
             estimate: None,
         };
         let mut axes = [axis(110.0, 515.625); 6];

@@ -18,6 +18,7 @@
 //! [`QUATERNION_NORM_TOL`] is refused as a typo.
 
 mod raw;
+mod syntax;
 mod validate;
 
 use crate::geometry::Aabb;
@@ -219,6 +220,22 @@ pub struct Motion {
     /// The tooldata every move uses: the `tool:` block's name when there is one, else
     /// `motion.tool`.
     pub tool: String,
+    /// The name of the routine that makes the moves (`motion.proc`, or `--proc`; default
+    /// `main`): a RAPID identifier in the module's one name space.
+    pub proc: String,
+    /// Where that name comes from.
+    pub proc_from: ProcFrom,
+}
+
+/// Where the routine's name comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProcFrom {
+    /// Not given: [`defaults::PROC`].
+    Default,
+    /// `motion.proc`, at this place of the cell file.
+    Cell(Loc),
+    /// `--proc NAME` on the command line (it overrides `motion.proc`).
+    CommandLine,
 }
 
 /// A validated cell.
@@ -246,6 +263,8 @@ pub mod defaults {
     pub const SPEED: &str = "v300";
     pub const ZONE: &str = "fine";
     pub const TOOL: &str = "tool0";
+    /// The routine's name.
+    pub const PROC: &str = "main";
     /// The load of a `tool:` block that states no `mass`, kg.
     pub const TOOL_MASS_KG: f64 = 1.0;
     /// Finest grid accepted (deg): 0.25 deg over the IRB 1400's ranges is ~400 M nodes.
@@ -261,8 +280,13 @@ pub enum CellError {
         path: PathBuf,
         source: std::io::Error,
     },
+    /// The YAML reader refused the text (or it is not UTF-8); `help` for the common slips.
     #[error("{message}")]
-    Syntax { loc: Loc, message: String },
+    Syntax {
+        loc: Loc,
+        message: String,
+        help: Option<String>,
+    },
     #[error("{message}")]
     Invalid {
         loc: Loc,
@@ -281,18 +305,24 @@ impl CellError {
 
     pub fn help(&self) -> Option<&str> {
         match self {
-            CellError::Invalid { help, .. } => help.as_deref(),
-            _ => None,
+            CellError::Syntax { help, .. } | CellError::Invalid { help, .. } => help.as_deref(),
+            CellError::Read { .. } => None,
         }
     }
 }
 
-/// Reads a cell file's text (the load stage's one read of it).
+/// Reads a cell file's text (the load stage's one read of it): [`text_of`] its bytes.
 pub fn read(path: &Path) -> Result<String, CellError> {
-    std::fs::read_to_string(path).map_err(|source| CellError::Read {
+    let bytes = std::fs::read(path).map_err(|source| CellError::Read {
         path: path.to_path_buf(),
         source,
-    })
+    })?;
+    text_of(bytes)
+}
+
+/// A cell file's bytes as text: UTF-8, or refused at the first byte that is not.
+pub fn text_of(bytes: Vec<u8>) -> Result<String, CellError> {
+    String::from_utf8(bytes).map_err(|e| syntax::not_utf8(e.as_bytes(), &e.utf8_error()))
 }
 
 /// Reads and validates a cell file; returns the cell and its text.
@@ -304,36 +334,15 @@ pub fn load(path: &Path) -> Result<(Cell, String), CellError> {
 
 /// Validates cell text; `path` names the file (for messages and to resolve the URDF path).
 pub fn parse(path: &Path, text: &str) -> Result<Cell, CellError> {
-    let raw: raw::RawCell = serde_saphyr::from_str(text).map_err(|e| CellError::Syntax {
-        loc: e.location().map(Loc::from).unwrap_or_default(),
-        message: syntax_message(&e),
-    })?;
+    let raw: raw::RawCell = serde_saphyr::from_str(text).map_err(|e| syntax::refusal(text, &e))?;
     validate::cell(path, raw)
 }
 
-/// serde-saphyr renders a snippet of its own; we render ours, so keep the first line only.
-fn syntax_message(e: &serde_saphyr::Error) -> String {
-    let full = e.to_string();
-    let mut msg = full.lines().next().unwrap_or("").trim();
-    // Our report says "error:" and gives the place itself; drop the library's own prefixes.
-    if let Some(rest) = msg.strip_prefix("error: ") {
-        msg = rest;
-    }
-    if msg.starts_with("line ") {
-        if let Some(i) = msg.find(": ") {
-            msg = &msg[i + 2..];
-        }
-    }
-    // ... and a trailing " at line N, column M".
-    if let Some(i) = msg.rfind(" at line ") {
-        if msg[i + 9..]
-            .chars()
-            .all(|c| c.is_ascii_digit() || c == ',' || c == ' ' || c.is_ascii_lowercase())
-        {
-            msg = &msg[..i];
-        }
-    }
-    msg.to_string()
+/// Names the routine `name` (`--proc NAME`, overriding `motion.proc`): the RAPID identifier
+/// rule and the module's one name space, as for `motion.proc`. The error has no place in the
+/// cell unless a name of the cell clashes with it (then it points at that name).
+pub fn override_proc(cell: &mut Cell, name: &str) -> Result<(), CellError> {
+    validate::override_proc(cell, name)
 }
 
 /// Checks a grid spacing (deg): within [MIN_GRID_DEG, MAX_GRID_DEG].

@@ -124,6 +124,8 @@ pub struct RawMotion {
     pub zone: Option<Spanned<String>>,
     #[serde(default)]
     pub tool: Option<Spanned<String>>,
+    #[serde(default)]
+    pub proc: Option<Spanned<String>>,
 }
 
 /// A pose as RAPID writes it, `[[x, y, z], [q1, q2, q3, q4]]`.

@@ -162,6 +162,27 @@ fn refusals_name_the_key_and_its_place() {
             "point name 'main' is already the name of the module's PROC main",
             7,
         ),
+        (
+            MINIMAL.replace("name: B", "name: m"),
+            "point name 'm' is already the name of the module",
+            7,
+        ),
+        (
+            format!("{MINIMAL}motion:\n  tool: gripper\n").replace("name: A", "name: Gripper"),
+            "point name 'Gripper' is already the name of motion.tool",
+            6,
+        ),
+        // The speed, zone and tool are three data of three types: one name cannot be two.
+        (
+            format!("{MINIMAL}motion:\n  speed: mine\n  tool: Mine\n"),
+            "motion.tool 'Mine' is already the name of motion.speed",
+            10,
+        ),
+        (
+            format!("{MINIMAL}motion:\n  zone: v300\n"),
+            "motion.zone 'v300' is already the name of motion.speed (its default)",
+            9,
+        ),
         // `base: auto` needs positions, not joint values.
         (
             MINIMAL.replace("base: [1, 2, 3]", "base: auto"),
@@ -212,4 +233,96 @@ fn data_names_may_be_predefined_but_declared_names_may_not() {
     );
     let err = parse_str(&MINIMAL.replace("name: B", "name: v300")).expect_err("predefined");
     assert!(err.to_string().contains("predefined"), "{err}");
+}
+
+#[test]
+fn messages_quote_long_input_shortened() {
+    let huge = "x".repeat(100_000);
+    for text in [
+        MINIMAL.replace("module: M", &format!("module: {huge}")),
+        format!("{MINIMAL}planner:\n  method: {huge}\n"),
+        format!("{MINIMAL}obstacles:\n  - {{ name: {huge}, box: {{ min: [0, 0, 0], max: [0, 1, 1] }} }}\n"),
+        format!("{MINIMAL}{huge}: 1\n"),
+        MINIMAL.replace("base: [1, 2, 3]", &format!("base: {huge}")),
+        MINIMAL.replace("joints: [1, 2, 3]", &format!("joints: [1, {huge}, 3]")),
+    ] {
+        let err = parse_str(&text).expect_err("refused");
+        let m = err.to_string();
+        assert!(m.len() < 400 && m.contains("..."), "{} chars: {}", m.len(), &m[..m.len().min(300)]);
+        assert!(err.loc().is_some_and(|l| l.line > 0), "{m}");
+    }
+}
+
+#[test]
+fn syntax_errors_point_at_the_fault_with_help() {
+    // (text, message, line, column, help)
+    let cases = [
+        // An unclosed `{` noticed at the next key: the message points at the `{`.
+        (
+            MINIMAL.replace("joints: [1, 2, 3] }", "joints: [1, 2, 3]"),
+            "this '{' is never closed",
+            6,
+            5,
+            "close the mapping with '}'",
+        ),
+        (
+            MINIMAL.replace("  base: [1, 2, 3]", "\tbase: [1, 2, 3]"),
+            "a tab character",
+            4,
+            1,
+            "spaces only",
+        ),
+        (
+            MINIMAL.replace("  base: [1, 2, 3]", "   base: [1, 2, 3]"),
+            "`base` is indented more than `urdf` on line 3",
+            4,
+            4,
+            "same column",
+        ),
+        (
+            MINIMAL.replace("module: M", "module M"),
+            "expected ':' after `module`",
+            1,
+            7,
+            "`key: value`",
+        ),
+        (
+            MINIMAL.replace("points:", "pionts:"),
+            "unknown field `pionts`",
+            5,
+            1,
+            "did you mean `points`?",
+        ),
+        (
+            MINIMAL.replace("  base: [1, 2, 3]", "  base: [1, 2, 3]\n  base: [1, 2, 4]"),
+            "the key `base` appears twice in this mapping (first at line 4)",
+            5,
+            3,
+            "give each key once",
+        ),
+    ];
+    for (text, needle, line, column, help) in cases {
+        let err = parse_str(&text).expect_err(needle);
+        assert!(err.to_string().contains(needle), "'{err}' lacks '{needle}'");
+        assert_eq!(err.loc(), Some(Loc { line, column }), "{err}");
+        assert!(
+            err.help().is_some_and(|h| h.contains(help)),
+            "{err}: {:?}",
+            err.help()
+        );
+    }
+}
+
+#[test]
+fn text_that_is_not_utf8_is_refused_at_its_byte() {
+    let err = text_of(b"module: M\nrobot: caf\xE9\n".to_vec()).expect_err("latin-1");
+    assert_eq!(
+        err.loc(),
+        Some(Loc {
+            line: 2,
+            column: 11
+        }),
+        "{err}"
+    );
+    assert!(err.to_string().contains("0xE9"), "{err}");
 }

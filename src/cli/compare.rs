@@ -12,7 +12,7 @@
 use super::{emit, write_atomically};
 use crate::error::{Error, Failure};
 use crate::output::comparison::{Comparison, Row};
-use crate::output::cspace_svg;
+use crate::output::cspace_svg::{self, Marked};
 use crate::pipeline;
 use crate::plan::Plan;
 use std::path::PathBuf;
@@ -28,13 +28,23 @@ pub struct CompareOptions {
 }
 
 /// Runs the comparison. The table (or JSON) goes to stdout even when every method fails; then
-/// the error is [`Error::NoMethodSucceeded`] (exit status 3) and no picture is written.
+/// the error is [`Error::NoMethodSucceeded`] (exit status 3) and `--svg` draws the grid with the
+/// points the methods failed at ringed.
 pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
     let started = Instant::now();
     let job = pipeline::load(&opts.cell)?;
     super::warn(&job);
     let grid_deg = opts.grid_deg.unwrap_or(job.cell.planner.grid_deg);
-    let placed = pipeline::place(&job).map_err(|e| job.fail(e))?;
+    let placed = pipeline::place(&job).map_err(|e| {
+        let mut failure = job.fail(e);
+        if let Some(path) = &opts.svg {
+            failure.notes.push(format!(
+                "nothing drawn to {}: the comparison stopped before the grid was searched",
+                path.display()
+            ));
+        }
+        failure
+    })?;
     let inspected = pipeline::inspect(&job, &placed, grid_deg);
     let attempts = pipeline::compare(&job, &placed, &inspected);
     let rows: Vec<Row> = attempts
@@ -65,39 +75,70 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
         points: placed.points.iter().map(|p| p.name.clone()).collect(),
         methods: rows,
     };
-    let svg = match (&opts.svg, plans.is_empty()) {
-        (Some(path), false) => {
-            let title = format!(
-                "{}: the three searches on a {} deg grid",
-                opts.cell.display(),
-                grid_deg
-            );
-            let in_range = |a: &[f64; 3]| job.robot.check_range3(a).is_ok();
+    let title = |what: &str| {
+        format!(
+            "{}: the three searches on a {} deg grid{what}",
+            opts.cell.display(),
+            grid_deg
+        )
+    };
+    let in_range = |a: &[f64; 3]| job.robot.check_range3(a).is_ok();
+    let svg = match &opts.svg {
+        Some(path) if !plans.is_empty() => {
             let text = cspace_svg::render_svg(
                 &inspected.cspace,
                 &in_range,
                 &placed.points,
                 &plans,
-                &title,
+                &title(""),
             )
             .map_err(|e| job.fail(e.into()))?;
             Some((path, text))
         }
-        _ => None,
+        Some(path) => {
+            // No route: the picture of why, the points every method failed at ringed.
+            let mut marked: Vec<usize> = Vec::new();
+            for a in &attempts {
+                if let Err(Error::Plan { source, .. }) = &a.result {
+                    marked.extend(super::run::failed_points(source));
+                }
+            }
+            marked.sort_unstable();
+            marked.dedup();
+            let text = cspace_svg::render_failure_svg(
+                &inspected.cspace,
+                &in_range,
+                &placed.points,
+                &Marked {
+                    points: &marked,
+                    why: &failures.join("; "),
+                },
+                &title(": no route"),
+            )
+            .map_err(|e| job.fail(e.into()))?;
+            Some((path, text))
+        }
+        None => None,
     };
     let text = if opts.json {
         super::to_json(&comparison).map_err(|e| job.fail(e))?
     } else {
         comparison.table()
     };
-    // The picture first: if it cannot be written, nothing has reached stdout yet. (With no
-    // route there is no picture; the table still says why each method failed.)
+    // The picture first: if it cannot be written, nothing has reached stdout yet.
     if let Some((path, svg_text)) = &svg {
         write_atomically(path, svg_text.as_bytes()).map_err(|e| job.fail(e))?;
     }
     emit(None, text.as_bytes()).map_err(|e| job.fail(e))?;
     if plans.is_empty() {
-        return Err(job.fail(Error::NoMethodSucceeded { failures }));
+        let mut failure = job.fail(Error::NoMethodSucceeded { failures });
+        if let Some((path, _)) = &svg {
+            failure.notes.push(format!(
+                "the blocked nodes of the grid are drawn to {}, with the points the methods failed at ringed in red",
+                path.display()
+            ));
+        }
+        return Err(failure);
     }
     Ok(format!(
         "gen-rapid compare: {}: {} of 3 methods found a route, {:.2} s",

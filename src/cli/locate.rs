@@ -12,15 +12,18 @@
 //!   given base's height; the report says whether the given base lies in `R` (exact test, with
 //!   its margin) besides the position with the largest margin.
 //!
-//! `--svg FILE` draws the top view ([`topview_svg`]). The file is written atomically, and only
-//! when everything succeeded; stdout gets the report only then too. Errors are the run's: an
-//! empty `R` exits 3 naming the points or obstacles, pointing at `robot.base`.
+//! `--svg FILE` draws the top view ([`topview_svg`]), written atomically; stdout gets the report
+//! only when everything succeeded. Errors are the run's: an empty `R` exits 3 naming the points
+//! or obstacles, pointing at `robot.base`; then `--svg` draws why (the reach circles, the
+//! obstacles' footprints, R where it is not empty: [`topview_svg::render_failure`]).
 
 use super::{emit, write_atomically};
 use crate::error::{Error, Failure};
 use crate::output::location::{self, Report};
 use crate::output::topview_svg;
 use crate::pipeline;
+use crate::pipeline::Loaded;
+use crate::place::PlaceError;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -35,7 +38,10 @@ pub fn locate(opts: &LocateOptions) -> Result<String, Failure> {
     let started = Instant::now();
     let job = pipeline::load(&opts.cell)?;
     super::warn(&job);
-    let survey = pipeline::survey(&job).map_err(|e| job.fail(e))?;
+    let survey = match pipeline::survey(&job) {
+        Ok(survey) => survey,
+        Err(e) => return Err(failed(&job, opts, e)),
+    };
     let rep: Report = location::report(&job.cell, &survey);
     let out = if opts.json {
         super::to_json(&rep).map_err(|e| job.fail(e))?
@@ -63,4 +69,40 @@ pub fn locate(opts: &LocateOptions) -> Result<String, Failure> {
             .unwrap_or_default(),
         started.elapsed().as_secs_f64()
     ))
+}
+
+/// `locate` failed. With `--svg`, when no base position will do, the top view of why: every
+/// point's reach region, the obstacles' footprints, R where it is not empty (written
+/// atomically; the exit status stays the failure's); a note says what was drawn.
+fn failed(job: &Loaded, opts: &LocateOptions, error: Error) -> Failure {
+    let Some(path) = &opts.svg else {
+        return job.fail(error);
+    };
+    let note = match &error {
+        Error::Place(PlaceError::Locate { .. }) => {
+            let drawn = pipeline::sketch(job).and_then(|sketch| {
+                let svg = topview_svg::render_failure(&job.cell, &sketch).map_err(|message| {
+                    Error::Write {
+                        path: path.clone(),
+                        source: std::io::Error::other(format!("drawing failed: {message}")),
+                    }
+                })?;
+                write_atomically(path, svg.as_bytes())
+            });
+            match drawn {
+                Ok(()) => format!(
+                    "the reach regions and the obstacles' footprints are drawn to {}",
+                    path.display()
+                ),
+                Err(e) => format!("no picture: {e}"),
+            }
+        }
+        _ => format!(
+            "nothing drawn to {}: the failure is not about where the base stands",
+            path.display()
+        ),
+    };
+    let mut failure = job.fail(error);
+    failure.notes.push(note);
+    failure
 }

@@ -13,7 +13,9 @@
 //!
 //! Each route is drawn as its straight moves (the waypoints after shortening and merging, i.e.
 //! what the module drives) in the method's colour, with a legend; the cell points are black
-//! dots labelled with their names. Text is plain SVG `<text>` (plotters' built-in size
+//! dots labelled with their names. When planning fails ([`render_failure_svg`]) there is no route:
+//! the points the failure is about (both ends of a leg that could not be planned) are ringed and
+//! labelled in red, and the reason is written under the picture. Text is plain SVG `<text>` (plotters' built-in size
 //! estimate, no font files), so rendering needs nothing beyond the Rust toolchain. The output is
 //! deterministic for the same grid and plans.
 
@@ -81,6 +83,9 @@ fn shade(level: u8) -> RGBColor {
     }
 }
 
+/// The colour of the points a failure is about.
+pub const FAILED: RGBColor = RGBColor(220, 0, 0);
+
 /// Draws the grid's blocked nodes, the cell points and each route; `title` heads the picture.
 /// `in_range` tells a node out of the axis ranges (drawn apart) from one blocked by an obstacle.
 pub fn render_svg(
@@ -88,6 +93,37 @@ pub fn render_svg(
     in_range: &dyn Fn(&[f64; 3]) -> bool,
     points: &[PlacedPoint],
     routes: &[&Plan],
+    title: &str,
+) -> Result<String, PictureError> {
+    draw(cs, in_range, points, routes, None, title)
+}
+
+/// What a picture of a failed plan marks: the points the failure is about (indices into the
+/// points; both ends of a leg that could not be planned), ringed in [`FAILED`], and why.
+pub struct Marked<'a> {
+    pub points: &'a [usize],
+    pub why: &'a str,
+}
+
+/// The picture of a plan that failed: the grid's blocked nodes and the cell points as
+/// [`render_svg`] draws them, no route, the points of `marked` ringed and labelled in
+/// [`FAILED`], and why under the picture.
+pub fn render_failure_svg(
+    cs: &CSpace,
+    in_range: &dyn Fn(&[f64; 3]) -> bool,
+    points: &[PlacedPoint],
+    marked: &Marked,
+    title: &str,
+) -> Result<String, PictureError> {
+    draw(cs, in_range, points, &[], Some(marked), title)
+}
+
+fn draw(
+    cs: &CSpace,
+    in_range: &dyn Fn(&[f64; 3]) -> bool,
+    points: &[PlacedPoint],
+    routes: &[&Plan],
+    marked: Option<&Marked>,
     title: &str,
 ) -> Result<String, PictureError> {
     let grid = &cs.grid;
@@ -144,6 +180,15 @@ pub fn render_svg(
             ("sans-serif", 14).into_font().color(&BLACK),
         ))
         .map_err(|e| err(&e))?;
+        if let Some(m) = marked {
+            foot.draw(&Text::new(
+                format!("red rings: {}", crate::excerpt::message(m.why)),
+                (20, 30),
+                ("sans-serif", 14).into_font().color(&FAILED),
+            ))
+            .map_err(|e| err(&e))?;
+        }
+        let is_marked = |k: usize| marked.is_some_and(|m| m.points.contains(&k));
         let panels = body.split_evenly((1, 3));
         let step = grid.step_deg;
         for (panel, ((u, v), lv)) in panels.iter().zip(&projections) {
@@ -209,16 +254,29 @@ pub fn render_svg(
                     .map_err(|e| err(&e))?;
             }
             chart
-                .draw_series(points.iter().map(|p| {
+                .draw_series(points.iter().enumerate().map(|(k, p)| {
                     let at = (p.joints_deg[u], p.joints_deg[v]);
+                    let label = if is_marked(k) { FAILED } else { BLACK };
                     EmptyElement::at(at)
                         + Circle::new((0, 0), 4, BLACK.filled())
                         + Text::new(
                             p.name.clone(),
                             (6, -16),
-                            ("sans-serif", 14).into_font().color(&BLACK),
+                            ("sans-serif", 14).into_font().color(&label),
                         )
                 }))
+                .map_err(|e| err(&e))?;
+            chart
+                .draw_series(
+                    points
+                        .iter()
+                        .enumerate()
+                        .filter(|(k, _)| is_marked(*k))
+                        .map(|(_, p)| {
+                            let at = (p.joints_deg[u], p.joints_deg[v]);
+                            Circle::new(at, 9, FAILED.stroke_width(2))
+                        }),
+                )
                 .map_err(|e| err(&e))?;
             if !routes.is_empty() {
                 chart
@@ -298,6 +356,7 @@ mod tests {
                 waypoints: 0..4,
             }],
             min_clearance: None,
+            move_clearances: Vec::new(),
             estimate: None,
         };
         let svg = render_svg(&cs, &|_| true, &points, &[&plan], "test").expect("svg");
@@ -313,5 +372,16 @@ mod tests {
             svg,
             render_svg(&cs, &|_| true, &points, &[&plan], "test").expect("svg")
         );
+        // A failure: no route, P2 ringed (once per projection) and labelled in red, why below.
+        let marked = Marked {
+            points: &[1],
+            why: "no path from 'P1' to 'P2'",
+        };
+        let svg = render_failure_svg(&cs, &|_| true, &points, &marked, "test").expect("svg");
+        assert_eq!(svg.matches("stroke=\"#DC0000\"").count(), 3, "{svg}");
+        assert!(!svg.contains("#C80046") && !svg.contains("extensile ("));
+        assert_eq!(svg.matches("fill=\"#DC0000\">\nP2\n</text>").count(), 3);
+        assert_eq!(svg.matches("fill=\"#000000\">\nP1\n</text>").count(), 3);
+        assert!(svg.contains("red rings: no path from &apos;P1&apos; to &apos;P2&apos;"));
     }
 }

@@ -103,5 +103,6 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             uframe: pose(&w.uframe),
         }),
         ranges: robot.ranges,
+        proc_name: cell.motion.proc.clone(),
     }
 }

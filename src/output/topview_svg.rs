@@ -6,8 +6,9 @@
 //! so drawing needs no fonts.
 
 use super::location::Report;
-use crate::cell::Cell;
+use crate::cell::{Base, Cell, Obstacle};
 use crate::geometry::Aabb;
+use crate::place::locate::{ReachRegion, Region, Sketch};
 use crate::place::Survey;
 use plotters::prelude::*;
 
@@ -70,23 +71,108 @@ fn colour(i: usize) -> RGBColor {
     C[i % C.len()]
 }
 
+/// What a top view draws.
+struct Scene<'a> {
+    /// First title line.
+    title: String,
+    reach: &'a [ReachRegion],
+    /// The points by name with their wrist centres (cell frame).
+    points: &'a [(String, [f64; 3])],
+    obstacles: &'a [Obstacle],
+    /// The obstacles that can block the base, and how far their footprints grow.
+    blocking: &'a [Obstacle],
+    grow_mm: f64,
+    region: Option<&'a Region>,
+    /// The base marked with a cross: position, label beside it, legend entry.
+    base: Option<([f64; 2], String, String)>,
+    /// A given base, marked with a triangle.
+    given: Option<[f64; 2]>,
+}
+
 /// The SVG text, or why plotters could not draw it.
 pub fn render(cell: &Cell, survey: &Survey, rep: &Report) -> Result<String, String> {
-    let (loc, points) = (&survey.location, &survey.points);
-    // Data extent: every outer circle and every grown obstacle, plus 5 %.
+    let loc = &survey.location;
+    let mode = match &rep.given_base {
+        None => "chosen base".to_string(),
+        Some(g) if g.in_region => "given base (inside R)".to_string(),
+        Some(_) => "given base (OUTSIDE R)".to_string(),
+    };
+    let label = match &rep.given_base {
+        None => "chosen base".to_string(),
+        Some(_) => "largest margin".to_string(),
+    };
+    let b = [rep.base_mm[0], rep.base_mm[1]];
+    draw(&Scene {
+        title: format!(
+            "{}: feasible base region R = {:.3} m^2 (shaded), {mode}",
+            cell.module, rep.area_m2
+        ),
+        reach: &loc.reach,
+        points: &survey.points,
+        obstacles: &cell.obstacles,
+        blocking: &loc.blocking,
+        grow_mm: loc.grow_mm,
+        region: Some(&loc.region),
+        base: Some((
+            b,
+            format!("{label} ({:.0}, {:.0})", b[0], b[1]),
+            format!("{label}, margin {:.0} mm", rep.margin_mm),
+        )),
+        given: rep
+            .given_base
+            .as_ref()
+            .map(|g| [g.base_mm[0], g.base_mm[1]]),
+    })
+}
+
+/// The top view when no base position will do (R empty, or none of its positions solves every
+/// point): the reach regions, the obstacles and their grown footprints, R where it is not
+/// empty, and the given base if there is one. A point out of reach from any base is labelled so.
+pub fn render_failure(cell: &Cell, sketch: &Sketch) -> Result<String, String> {
+    let title = match &sketch.region {
+        None => format!(
+            "{}: R is empty: no base position reaches every point clear of the obstacles",
+            cell.module
+        ),
+        Some(r) => format!(
+            "{}: R = {:.3} m^2 (shaded), but from none of its positions is every point solved",
+            cell.module,
+            r.area_mm2 * 1e-6
+        ),
+    };
+    draw(&Scene {
+        title,
+        reach: &sketch.reach,
+        points: &sketch.points,
+        obstacles: &cell.obstacles,
+        blocking: &sketch.blocking,
+        grow_mm: sketch.grow_mm,
+        region: sketch.region.as_ref(),
+        base: None,
+        given: match cell.robot.base {
+            Base::Fixed(b) => Some([b[0], b[1]]),
+            Base::Auto => None,
+        },
+    })
+}
+
+fn draw(scene: &Scene) -> Result<String, String> {
+    // Data extent: every outer circle and every grown obstacle (and each point), plus 5 %.
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     let mut grow = |x: f64, y: f64, r: f64| {
         lo = [lo[0].min(x - r), lo[1].min(y - r)];
         hi = [hi[0].max(x + r), hi[1].max(y + r)];
     };
-    for r in &loc.reach {
+    for r in scene.reach {
         grow(r.centre_mm[0], r.centre_mm[1], r.outer_mm);
     }
-    for o in &cell.obstacles {
-        grow(o.aabb.min.x, o.aabb.min.y, loc.grow_mm);
-        grow(o.aabb.max.x, o.aabb.max.y, loc.grow_mm);
+    for o in scene.obstacles {
+        grow(o.aabb.min.x, o.aabb.min.y, scene.grow_mm);
+        grow(o.aabb.max.x, o.aabb.max.y, scene.grow_mm);
     }
-    grow(rep.base_mm[0], rep.base_mm[1], loc.grow_mm);
+    for b in scene.base.iter().map(|b| b.0).chain(scene.given) {
+        grow(b[0], b[1], scene.grow_mm);
+    }
     if !(lo.iter().chain(&hi).all(|v| v.is_finite()) && hi[0] > lo[0] && hi[1] > lo[1]) {
         return Err("nothing to draw".into());
     }
@@ -115,17 +201,9 @@ pub fn render(cell: &Cell, survey: &Survey, rep: &Report) -> Result<String, Stri
         let root = SVGBackend::with_string(&mut buf, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(e)?;
         let (title, body) = root.split_vertically(TITLE);
-        let mode = match &rep.given_base {
-            None => "chosen base".to_string(),
-            Some(g) if g.in_region => "given base (inside R)".to_string(),
-            Some(_) => "given base (OUTSIDE R)".to_string(),
-        };
         title
             .draw_text(
-                &format!(
-                    "{}: feasible base region R = {:.3} m^2 (shaded), {mode}",
-                    cell.module, rep.area_m2
-                ),
+                &scene.title,
                 &("sans-serif", 17).into_font().color(&BLACK),
                 (MARGIN as i32 + Y_LABELS as i32, 8),
             )
@@ -134,7 +212,7 @@ pub fn render(cell: &Cell, survey: &Survey, rep: &Report) -> Result<String, Stri
             .draw_text(
                 &format!(
                     "top view, cell frame (mm); circles: each point's reach region (outer and inner); dashed: footprints grown by {:.0} mm",
-                    loc.grow_mm
+                    scene.grow_mm
                 ),
                 &("sans-serif", 13).into_font().color(&RGBColor(70, 70, 70)),
                 (MARGIN as i32 + Y_LABELS as i32, 28),
@@ -158,37 +236,39 @@ pub fn render(cell: &Cell, survey: &Survey, rep: &Report) -> Result<String, Stri
             .map_err(e)?;
 
         // R: one rectangle per run of inside cells in a raster row.
-        let r = &loc.region;
         let mut runs = Vec::new();
-        for j in 0..r.ny {
-            let mut i = 0;
-            while i < r.nx {
-                if r.inside[j * r.nx + i] {
-                    let start = i;
-                    while i < r.nx && r.inside[j * r.nx + i] {
+        if let Some(r) = scene.region {
+            for j in 0..r.ny {
+                let mut i = 0;
+                while i < r.nx {
+                    if r.inside[j * r.nx + i] {
+                        let start = i;
+                        while i < r.nx && r.inside[j * r.nx + i] {
+                            i += 1;
+                        }
+                        let a = r.cell_centre(start, j);
+                        let b = r.cell_centre(i - 1, j);
+                        let h = 0.5 * r.cell_mm;
+                        runs.push(Rectangle::new(
+                            [(a[0] - h, a[1] - h), (b[0] + h, b[1] + h)],
+                            R_FILL.filled(),
+                        ));
+                    } else {
                         i += 1;
                     }
-                    let a = r.cell_centre(start, j);
-                    let b = r.cell_centre(i - 1, j);
-                    let h = 0.5 * r.cell_mm;
-                    runs.push(Rectangle::new(
-                        [(a[0] - h, a[1] - h), (b[0] + h, b[1] + h)],
-                        R_FILL.filled(),
-                    ));
-                } else {
-                    i += 1;
                 }
             }
         }
-        chart
-            .draw_series(runs)
-            .map_err(e)?
-            .label("R: feasible base positions")
-            .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 16, y + 5)], R_FILL.filled()));
+        let r_series = chart.draw_series(runs).map_err(e)?;
+        if scene.region.is_some() {
+            r_series
+                .label("R: feasible base positions")
+                .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 16, y + 5)], R_FILL.filled()));
+        }
 
         // Obstacles: footprints, and the grown footprints of those that can block the base.
         chart
-            .draw_series(cell.obstacles.iter().map(|o| {
+            .draw_series(scene.obstacles.iter().map(|o| {
                 Rectangle::new(
                     [(o.aabb.min.x, o.aabb.min.y), (o.aabb.max.x, o.aabb.max.y)],
                     OBSTACLE.mix(0.35).filled(),
@@ -199,10 +279,10 @@ pub fn render(cell: &Cell, survey: &Survey, rep: &Report) -> Result<String, Stri
             .legend(|(x, y)| {
                 Rectangle::new([(x, y - 5), (x + 16, y + 5)], OBSTACLE.mix(0.35).filled())
             });
-        for (k, o) in loc.blocking.iter().enumerate() {
+        for (k, o) in scene.blocking.iter().enumerate() {
             let s = chart
                 .draw_series(DashedLineSeries::new(
-                    rounded_rect(&o.aabb, loc.grow_mm),
+                    rounded_rect(&o.aabb, scene.grow_mm),
                     6,
                     4,
                     OBSTACLE.stroke_width(1),
@@ -217,7 +297,7 @@ pub fn render(cell: &Cell, survey: &Survey, rep: &Report) -> Result<String, Stri
         }
 
         // Reach regions: every ring's two circles, one colour per point.
-        for (i, reach) in loc.reach.iter().enumerate() {
+        for (i, reach) in scene.reach.iter().enumerate() {
             let c = colour(i);
             for ring in &reach.rings_mm {
                 chart
@@ -238,14 +318,20 @@ pub fn render(cell: &Cell, survey: &Survey, rep: &Report) -> Result<String, Stri
         }
 
         // Points, labelled.
-        for (i, (name, p)) in points.iter().enumerate() {
+        for (i, (name, p)) in scene.points.iter().enumerate() {
             let c = colour(i);
+            let out_of_reach = scene.reach.get(i).is_some_and(|r| r.rings_mm.is_empty());
+            let name = if out_of_reach {
+                format!("{name} (out of reach)")
+            } else {
+                name.clone()
+            };
             chart
                 .draw_series(std::iter::once(
                     EmptyElement::at((p[0], p[1]))
                         + Circle::new((0, 0), 4, c.filled())
                         + Text::new(
-                            name.clone(),
+                            name,
                             // Alternate above / below: neighbouring points stay readable.
                             (6, if i % 2 == 0 { -20 } else { 6 }),
                             ("sans-serif", 14).into_font().color(&c),
@@ -254,27 +340,23 @@ pub fn render(cell: &Cell, survey: &Survey, rep: &Report) -> Result<String, Stri
                 .map_err(e)?;
         }
 
-        // The base: a cross in a circle of the base's radius (without clearance).
-        let b = [rep.base_mm[0], rep.base_mm[1]];
-        let label = match &rep.given_base {
-            None => "chosen base".to_string(),
-            Some(_) => "largest margin".to_string(),
-        };
-        chart
-            .draw_series(std::iter::once(
-                EmptyElement::at((b[0], b[1]))
-                    + Cross::new((0, 0), 7, BASE.stroke_width(2))
-                    + Text::new(
-                        format!("{label} ({:.0}, {:.0})", b[0], b[1]),
-                        (9, 4),
-                        ("sans-serif", 14).into_font().color(&BASE),
-                    ),
-            ))
-            .map_err(e)?
-            .label(format!("{label}, margin {:.0} mm", rep.margin_mm))
-            .legend(|(x, y)| Cross::new((x + 8, y), 5, BASE.stroke_width(2)));
-        if let Some(g) = &rep.given_base {
-            let gb = [g.base_mm[0], g.base_mm[1]];
+        // The base: a cross (its label beside it, its legend entry).
+        if let Some((b, label, legend)) = &scene.base {
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at((b[0], b[1]))
+                        + Cross::new((0, 0), 7, BASE.stroke_width(2))
+                        + Text::new(
+                            label.clone(),
+                            (9, 4),
+                            ("sans-serif", 14).into_font().color(&BASE),
+                        ),
+                ))
+                .map_err(e)?
+                .label(legend.clone())
+                .legend(|(x, y)| Cross::new((x + 8, y), 5, BASE.stroke_width(2)));
+        }
+        if let Some(gb) = scene.given {
             chart
                 .draw_series(std::iter::once(
                     EmptyElement::at((gb[0], gb[1]))

@@ -264,12 +264,38 @@ pub fn survey<C: PoseCheck>(
         }
         Base::Fixed(b) => *b,
     };
+    let (points, base_z) = survey_points(cell, robot, &geom)?;
+    let location = locate_points(cell, robot, &geom, &points, base_z)?;
+    Ok(Survey {
+        base_mm: [location.best_mm[0], location.best_mm[1], base[2]],
+        margin_mm: location.best_margin_mm,
+        location,
+        points,
+    })
+}
+
+/// Points by name with their wrist centres, cell frame, mm.
+type WristCentres = Vec<(String, [f64; 3])>;
+
+/// The points R is computed for by [`survey`], and the height of the base's mounting plane:
+/// with `base: auto` the `xyz` and robtarget points ([`positions`]), on the floor; with a fixed
+/// base the wrist centres of all points (`joints` points by forward kinematics from the given
+/// base and yaw, robtargets by their pose and the tool), at its height.
+fn survey_points(
+    cell: &Cell,
+    robot: &Robot,
+    geom: &ArmGeometry,
+) -> Result<(WristCentres, f64), PlaceError> {
+    let base = match &cell.robot.base {
+        Base::Auto => return Ok((positions(cell, robot)?, AUTO_BASE_Z_MM)),
+        Base::Fixed(b) => *b,
+    };
     let placement = Placement {
         base_mm: base,
         yaw_deg: cell.robot.yaw_deg,
     };
     let tcp = needs_tcp(cell).then(|| Tcp::of(cell, robot)).transpose()?;
-    let points: Vec<(String, [f64; 3])> = cell
+    let points = cell
         .points
         .iter()
         .filter_map(|p| {
@@ -278,20 +304,25 @@ pub fn survey<C: PoseCheck>(
                     wrist_centre_mm, ..
                 } => Some(*wrist_centre_mm),
                 Target::Joints { axes_deg, .. } => {
-                    Some(placement.to_cell_frame(ik::forward(&geom, *axes_deg)))
+                    Some(placement.to_cell_frame(ik::forward(geom, *axes_deg)))
                 }
                 Target::Robtarget { pose, .. } => tcp.as_ref().map(|t| t.wrist_centre(pose)),
             };
             xyz.map(|x| (p.name.clone(), x))
         })
         .collect();
-    let location = locate_points(cell, robot, &geom, &points, base[2])?;
-    Ok(Survey {
-        base_mm: [location.best_mm[0], location.best_mm[1], base[2]],
-        margin_mm: location.best_margin_mm,
-        location,
-        points,
-    })
+    Ok((points, base[2]))
+}
+
+/// What `gen-rapid locate --svg` draws when [`survey`] fails for want of a base position: the
+/// reach regions of the points [`survey`] uses, the obstacles that can block the base, and R
+/// where it is not empty ([`locate::sketch`]).
+pub fn sketch(cell: &Cell, robot: &Robot) -> Result<locate::Sketch, PlaceError> {
+    let geom = geometry(cell, robot)?;
+    let (points, base_z) = survey_points(cell, robot, &geom)?;
+    Ok(locate::sketch(&locate_input(
+        cell, robot, &geom, &points, base_z,
+    )))
 }
 
 /// The closed-form arm geometry (needed by `base: auto` and `xyz` points); a robot the closed
@@ -410,8 +441,24 @@ fn locate_points(
     points: &[(String, [f64; 3])],
     base_z_mm: f64,
 ) -> Result<Location, PlaceError> {
+    locate::locate(&locate_input(cell, robot, geom, points, base_z_mm)).map_err(|source| {
+        PlaceError::Locate {
+            source,
+            loc: cell.robot.base_loc,
+        }
+    })
+}
+
+/// The location problem of `points` with the base's mounting plane at `base_z_mm`.
+fn locate_input<'a>(
+    cell: &'a Cell,
+    robot: &Robot,
+    geom: &'a ArmGeometry,
+    points: &'a [(String, [f64; 3])],
+    base_z_mm: f64,
+) -> LocateInput<'a> {
     let (radius, height) = locate::base_cylinder_mm(robot).unwrap_or((0.0, 0.0));
-    locate::locate(&LocateInput {
+    LocateInput {
         geom,
         points_mm: points,
         obstacles: &cell.obstacles,
@@ -420,11 +467,7 @@ fn locate_points(
         base_height_mm: height,
         clearance_mm: cell.planner.clearance_mm,
         cell_mm: locate::DEFAULT_CELL_MM,
-    })
-    .map_err(|source| PlaceError::Locate {
-        source,
-        loc: cell.robot.base_loc,
-    })
+    }
 }
 
 #[cfg(test)]

@@ -10,7 +10,8 @@
 //! ([`shorten`]); merge collinear moves ([`merge`]); round to the written precision (0.001 deg)
 //! and prove every move again. The route starts at the first point, visits every point in the
 //! cell's order, and each cell point is a waypoint exactly as given ([`route`]). Then the
-//! smallest clearance along the whole route is certified ([`certify`]).
+//! smallest clearance along every move, and so along the whole route, is certified
+//! ([`certify`]).
 //!
 //! Axes 4..6: the grid is over axes 1..3 (the paper's lumped arm); a waypoint carries all six. A
 //! cell point keeps its own wrist ([`PlacedPoint::joints_deg`]); a via gets the leg's wrist
@@ -31,7 +32,10 @@ pub mod wave;
 
 pub use search::Method;
 
-use crate::collision::{Blocked, Clearance, CollisionModel, GridCheck};
+use crate::collision::{Blocked, CollisionModel, GridCheck};
+/// The smallest clearance along a move, as the plan holds it (certified by the collision model),
+/// and the part of the robot model it is about.
+pub use crate::collision::{Clearance, Part};
 use crate::place::PlacedPoint;
 use cspace::{CSpace, Node};
 use leg::LegFailure;
@@ -86,8 +90,53 @@ pub struct Leg {
 pub struct Estimate {
     /// Per move, s.
     pub move_s: Vec<f64>,
+    /// Per move, how its progress runs in time (for pictures of the motion).
+    pub move_profile: Vec<Profile>,
     /// The sum, s.
     pub total_s: f64,
+}
+
+/// How a move's progress runs in time: the profile of its leading axis (paper Fig. 9, chosen by
+/// the time stage). A picture moves all axes along it, together, on the straight joint move
+/// (`MoveAbsJ`); the time stage's other axes finish with the leading one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Profile {
+    /// One rest-to-rest quintic `h(s) = 10 s^3 - 15 s^4 + 6 s^5` over the whole move (Fig. 9b);
+    /// also a move that does not move.
+    Quintic,
+    /// A quintic speed ramp of `ramp_s` up to a cruise and one down from it (Fig. 9a): the speed
+    /// follows `v h(t / ramp_s)` on the way up.
+    Cruise { ramp_s: f64 },
+}
+
+impl Profile {
+    /// The share of the move done (0 at the start, 1 at the end) at time `t_s` of a move taking
+    /// `total_s`; `t_s` is clamped into the move.
+    pub fn progress(&self, t_s: f64, total_s: f64) -> f64 {
+        if total_s <= 0.0 {
+            return 1.0;
+        }
+        let t = t_s.clamp(0.0, total_s);
+        // The rest-to-rest quintic and its integral (the distance covered on a ramp, in units of
+        // speed x ramp time: 1/2 at the ramp's end).
+        let h = |s: f64| s * s * s * (10.0 + s * (-15.0 + 6.0 * s));
+        let ramp = |s: f64| s.powi(4) * (2.5 + s * (-3.0 + s));
+        match *self {
+            Profile::Cruise { ramp_s } if ramp_s > 0.0 && 2.0 * ramp_s <= total_s => {
+                // Distance 1 at cruise speed v over total_s = 1 / v + ramp_s.
+                let v = 1.0 / (total_s - ramp_s);
+                let p = if t < ramp_s {
+                    v * ramp_s * ramp(t / ramp_s)
+                } else if t <= total_s - ramp_s {
+                    v * (0.5 * ramp_s + (t - ramp_s))
+                } else {
+                    1.0 - v * ramp_s * ramp((total_s - t) / ramp_s)
+                };
+                p.clamp(0.0, 1.0)
+            }
+            _ => h(t / total_s),
+        }
+    }
 }
 
 /// The route through all points: everything the output stage prints.
@@ -102,6 +151,10 @@ pub struct Plan {
     /// The certified smallest clearance along the whole route (within
     /// [`MIN_CLEARANCE_TOL_MM`], [`certify`]); `None` without obstacles (or before [`certify`]).
     pub min_clearance: Option<Clearance>,
+    /// The certified smallest clearance along each move, in move order (move `i` runs from
+    /// waypoint `i` to `i + 1`), with the part (link or tool shape) and obstacle where it occurs;
+    /// each `None` without obstacles. Empty before [`certify`] (`compare` does without).
+    pub move_clearances: Vec<Option<Clearance>>,
     /// The manipulation time, once the time stage has run.
     pub estimate: Option<Estimate>,
 }
@@ -168,7 +221,8 @@ pub enum PlanError {
         to: usize,
         from_name: String,
         to_name: String,
-        reason: Blocked,
+        /// Boxed: it is large and errors travel in `Result`s.
+        reason: Box<Blocked>,
     },
     #[error("internal error: the move {from_axes:?} -> {to_axes:?} on the leg '{from_name}' -> '{to_name}' could not be proven safe after rounding")]
     Unsafe {
@@ -231,12 +285,18 @@ pub fn plan(
     Ok(certify(route(cs, model, points, method)?, model))
 }
 
-/// The smallest clearance along the whole route, certified within [`MIN_CLEARANCE_TOL_MM`]
-/// (`None` without obstacles), into the plan.
+/// The smallest clearance along every move and along the whole route (the least of the moves'),
+/// each certified within [`MIN_CLEARANCE_TOL_MM`] (`None` without obstacles), into the plan.
 pub fn certify(mut plan: Plan, model: &CollisionModel) -> Plan {
-    plan.min_clearance = plan
+    plan.move_clearances = plan
         .moves6()
-        .filter_map(|(a, b)| model.min_clearance_along(&a, &b, MIN_CLEARANCE_TOL_MM))
+        .map(|(a, b)| model.min_clearance_along(&a, &b, MIN_CLEARANCE_TOL_MM))
+        .collect();
+    plan.min_clearance = plan
+        .move_clearances
+        .iter()
+        .flatten()
+        .cloned()
         .reduce(|least, c| if c.mm < least.mm { c } else { least });
     plan
 }
@@ -288,7 +348,7 @@ pub fn route(
                     to: i + 1,
                     from_name: from.name.clone(),
                     to_name: to.name.clone(),
-                    reason,
+                    reason: Box::new(reason),
                 });
             }
             made.add_leg(i, Vec::new(), vec![a, b]);
@@ -336,6 +396,7 @@ pub fn route(
         waypoints: made.waypoints,
         legs: made.legs,
         min_clearance: None,
+        move_clearances: Vec::new(),
         estimate: None,
     })
 }
@@ -444,8 +505,9 @@ mod tests {
         assert_eq!(p.moves(), 1);
         assert_eq!(leg_arm(&p, 0), vec![[0.0, 0.0, 0.0], [2.0, 2.0, 0.0]]);
         assert_eq!(p.legs[0].grid_path, vec![[0, 0, 0], [1, 1, 0], [2, 2, 0]]);
-        // No obstacles: no clearance to certify.
+        // No obstacles: no clearance to certify, on any move.
         assert_eq!(p.min_clearance, None);
+        assert_eq!(p.move_clearances, vec![None; p.moves()]);
         // Not joined at all: no path, for every method (one wave tells).
         let cs = CSpace::from_fn(g, |n| n[0] != 1);
         for m in Method::ALL {

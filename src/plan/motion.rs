@@ -86,6 +86,7 @@ mod tests {
                 .collect(),
             legs: Vec::new(),
             min_clearance: None,
+            move_clearances: Vec::new(),
             estimate: None,
         };
         let got: Vec<(String, String)> = (0..kinds.len())

@@ -337,7 +337,7 @@
     for (var i = 0; i < 3; i++) { lo[i] = Math.min(lo[i], p[i]); hi[i] = Math.max(hi[i], p[i]); }
   }
   scene.obstacles.forEach(function (o) { extend(o.min_mm); extend(o.max_mm); });
-  extend(scene.base.position_mm);
+  if (scene.base) extend(scene.base.position_mm);
   keys.forEach(function (k) {
     extend(k.tcp_mm);
     k.poses.forEach(function (p) { extend(p.position_mm); });
@@ -368,7 +368,9 @@
     lineSets.push(lines([0, 0, z, a, 0, z], COLOURS.axisX),
       lines([0, 0, z, 0, a, z], COLOURS.axisY),
       lines([0, 0, z, 0, 0, z + a], COLOURS.axisZ));
-    // The robot base frame: its x (front) and y axes at the base, turned by its yaw.
+    // The robot base frame: its x (front) and y axes at the base, turned by its yaw (none
+    // where the base is not known: a failed choice of base).
+    if (!scene.base) return;
     var b = scene.base.position_mm, yaw = scene.base.yaw_deg * Math.PI / 180;
     var bx = [Math.cos(yaw), Math.sin(yaw), 0], by = [-Math.sin(yaw), Math.cos(yaw), 0];
     lineSets.push(lines(b.concat(add(b, scale(bx, 1.5 * a))), COLOURS.axisX),
@@ -452,7 +454,7 @@
     camera.target = centre.slice();
     camera.dist = radius / Math.sin(FOV_Y / 2) * 0.92;
     // From the robot's right, a little behind it: the robot on one side, its work beside it.
-    camera.yaw = (scene.base.yaw_deg - 110) * Math.PI / 180;
+    camera.yaw = ((scene.base ? scene.base.yaw_deg : 0) - 110) * Math.PI / 180;
     camera.pitch = 26 * Math.PI / 180;
   }
   resetCamera();

@@ -15,6 +15,11 @@ fn help_teaches_the_format_examples_and_exit_statuses() {
         "--grid",
         "Exit status",
         "extensile",
+        "--html <FILE>",
+        "--report <FILE>",
+        "--template <FILE>",
+        "--proc <NAME>",
+        "motion.speed/zone/tool/proc",
     ] {
         assert!(h.contains(needle), "--help lacks '{needle}':\n{h}");
     }

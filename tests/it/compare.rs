@@ -154,7 +154,7 @@ fn depth_first_no_longer_gives_up_where_its_axis_steps_have_a_way() {
 }
 
 #[test]
-fn depth_first_failure_names_the_leg_exits_3_and_writes_nothing() {
+fn depth_first_failure_names_the_leg_exits_3_writes_no_module_and_draws_why() {
     let dir = tempfile::tempdir().expect("tempdir");
     let (module, svg) = (dir.path().join("out.mod"), dir.path().join("out.svg"));
     let o = gen_rapid(&[
@@ -177,11 +177,18 @@ fn depth_first_failure_names_the_leg_exits_3_and_writes_nothing() {
         "{err}"
     );
     assert!(o.stdout.is_empty());
-    assert!(!module.exists() && !svg.exists());
+    assert!(!module.exists());
+    // The picture of why: the leg's two points ringed (tests/it/pictures.rs reads such pictures).
+    let pic = std::fs::read_to_string(&svg).expect("picture of the failure");
+    assert_eq!(
+        pic.matches("stroke=\"#DC0000\"").count(),
+        6,
+        "P0 and P1 ringed in 3 projections"
+    );
 }
 
 #[test]
-fn no_method_succeeding_prints_the_table_and_exits_3_without_a_picture() {
+fn no_method_succeeding_prints_the_table_exits_3_and_draws_why() {
     // The trunk cell with a 50 mm clearance: point A is then too close to the trunk floor.
     let dir = tempfile::tempdir().expect("tempdir");
     let text = std::fs::read_to_string(root().join(TRUNK)).expect("trunk");
@@ -215,7 +222,8 @@ fn no_method_succeeding_prints_the_table_and_exits_3_without_a_picture() {
         "{}",
         stderr(&o)
     );
-    assert!(!svg.exists());
+    // The picture of why (tests/it/pictures.rs reads it).
+    assert!(svg.exists());
 }
 
 #[test]

@@ -10,9 +10,17 @@
 //! - `cli`: the command line as such: stdout, stderr, `-o`, flags, exit statuses, `--help`.
 //! - `convention`: the robot convention stated (header lines, the warning, `robot.controller`).
 //! - `compare`: `gen-rapid compare` and the paper's comparison of the three searches.
+//! - `fuzz`: the seeded fuzz target over loading, validating and placing cells
+//!   (`GEN_RAPID_FUZZ_CASES`, `GEN_RAPID_FUZZ_SEED`).
 //! - `locate`: `base: auto`, `xyz` points and branches, `gen-rapid locate`.
 //! - `preview_browser`: the `--html` preview page in headless Chromium (skipped, saying so,
 //!   where no Chromium is installed).
+//! - `report`: `--report`, against its JSON Schema, the module and independent kinematics.
+//! - `templates`: `--template` (the example templates under `templates/`) and `--proc`.
+//! - `pictures`: `--svg` when planning fails (the picture of why), and the help lines that
+//!   suggest one.
+//! - `messages`: error messages bounded whatever the input, and located (their texts are
+//!   fixtures in `tests/err/`).
 //! - `random_cells`: generated cells (with and without a tool), every method, every module
 //!   through the dense re-check.
 //! - `tool_cells`: the example cells with a tool, every method, and the tool's volume at work.
@@ -26,9 +34,14 @@ mod cli;
 mod common;
 mod compare;
 mod convention;
+mod fuzz;
 mod golden;
 mod locate;
+mod messages;
+mod pictures;
 mod preview_browser;
 mod random_cells;
+mod report;
 mod safety;
+mod templates;
 mod tool_cells;

@@ -1,18 +1,17 @@
-//! The preview page (`output::preview`) in a real browser: each page is written to a temp
-//! dir and loaded from `file://` in headless Chromium, which takes a screenshot and dumps the
-//! DOM after the page's scripts ran. The test checks that the page drew its first frame
+//! The preview page (`--html`) in a real browser: the trunk and the torch cells and a failed
+//! plan (`tests/err/no_path.yaml`) go through the `gen-rapid` binary, and each page is loaded
+//! from `file://` in headless Chromium, which takes a screenshot and dumps the DOM after the
+//! page's scripts ran. The test checks that the page drew its first frame
 //! (`<body data-rendered="1">`), recorded no error (no `data-errors`, no uncaught exception
-//! on Chromium's console), shows its labels, and that the screenshot is a picture: several
-//! colours, the obstacles' blue, the links' orange and the tool's teal where the scene has
-//! them, and the robot in another place at another time.
+//! on Chromium's console), shows its labels (every waypoint, the smallest clearance as the
+//! `--report` of the same run states it, the failed points), and that the screenshot is a
+//! picture: several colours, the obstacles' blue, the links' orange and the tool's teal where
+//! the cell has them, and the arm in another place at the program's end.
 //!
 //! Without Chromium the test prints how to install it and passes. `GEN_RAPID_CHROMIUM` names
 //! another browser binary (set but empty: run as without Chromium); `GEN_RAPID_PREVIEW_OUT=DIR` keeps the pages and screenshots there.
 
-use crate::common::library::preview::{
-    render_html, FailedPoint, Keyframe, Scene, SceneBase, SceneClearance, SceneFailure,
-    SceneObstacle, ScenePose, SceneWaypoint, ShapeDef, ShapeGeometry, ShapeKind, WaypointKind,
-};
+use crate::common::{arg, gen_rapid, stderr};
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -190,19 +189,6 @@ impl Image {
         n as f64 / self.rgb.len() as f64
     }
 
-    /// Mean position (x, y) of the pixels for which `f` holds.
-    fn centroid(&self, f: impl Fn([i32; 3]) -> bool) -> (f64, f64) {
-        let (mut sx, mut sy, mut n) = (0.0, 0.0, 0.0);
-        for (i, p) in self.rgb.iter().enumerate() {
-            if f(p.map(i32::from)) {
-                sx += (i % self.width) as f64;
-                sy += (i / self.width) as f64;
-                n += 1.0;
-            }
-        }
-        (sx / n, sy / n)
-    }
-
     /// Colours (16 levels a channel) that each cover at least 0.2 % of the picture, and the
     /// largest share of one colour.
     fn palette(&self) -> (usize, f64) {
@@ -237,123 +223,6 @@ fn obstacle_blue([r, g, b]: [i32; 3]) -> bool {
 /// The clearance and failure red.
 fn red([r, g, b]: [i32; 3]) -> bool {
     r > 150 && r - g > 90 && (g - b).abs() < 45
-}
-
-/// Robot: a base cylinder and an arm that swings 90 deg about z in 2 s, a tool box and ball
-/// at the arm's end; a table and a pillar.
-fn scene() -> Scene {
-    let cyl = |name: &str, radius_mm, to_mm| ShapeDef {
-        name: name.into(),
-        kind: ShapeKind::Link,
-        geometry: ShapeGeometry::Cylinder {
-            radius_mm,
-            from_mm: [0.0; 3],
-            to_mm,
-        },
-    };
-    let shapes = vec![
-        cyl("link_1", 200.0, [0.0, 0.0, 500.0]),
-        cyl("link_2", 90.0, [800.0, 0.0, 0.0]),
-        ShapeDef {
-            name: "body".into(),
-            kind: ShapeKind::Tool,
-            geometry: ShapeGeometry::Box {
-                min_mm: [800.0, -70.0, -180.0],
-                max_mm: [940.0, 70.0, 0.0],
-            },
-        },
-        ShapeDef {
-            name: "cup".into(),
-            kind: ShapeKind::Tool,
-            geometry: ShapeGeometry::Sphere {
-                centre_mm: [870.0, 0.0, -240.0],
-                radius_mm: 70.0,
-            },
-        },
-    ];
-    let steps = 10;
-    let keyframes: Vec<Keyframe> = (0..=steps)
-        .map(|k| {
-            let u = k as f64 / steps as f64;
-            let yaw = u * std::f64::consts::FRAC_PI_2;
-            let q = [(yaw / 2.0).cos(), 0.0, 0.0, (yaw / 2.0).sin()];
-            let at = |z| ScenePose {
-                position_mm: [0.0, 0.0, z],
-                quat_wxyz: q,
-            };
-            Keyframe {
-                time_s: 2.0 * u,
-                poses: vec![at(0.0), at(500.0), at(500.0), at(500.0)],
-                tcp_mm: [870.0 * yaw.cos(), 870.0 * yaw.sin(), 190.0],
-            }
-        })
-        .collect();
-    let waypoint = |name: &str, time_s, tcp_mm| SceneWaypoint {
-        name: name.into(),
-        kind: WaypointKind::Cell,
-        time_s,
-        tcp_mm,
-    };
-    Scene {
-        title: "Browser test - test.yaml".into(),
-        module: "BrowserTest".into(),
-        cell_file: "test.yaml".into(),
-        obstacles: vec![
-            SceneObstacle {
-                name: "table".into(),
-                min_mm: [300.0, -700.0, 0.0],
-                max_mm: [1100.0, -250.0, 350.0],
-            },
-            SceneObstacle {
-                name: "pillar".into(),
-                min_mm: [-900.0, 300.0, 0.0],
-                max_mm: [-600.0, 600.0, 1200.0],
-            },
-        ],
-        base: SceneBase {
-            position_mm: [0.0; 3],
-            yaw_deg: 0.0,
-        },
-        shapes,
-        waypoints: vec![
-            waypoint("A", 0.0, keyframes[0].tcp_mm),
-            waypoint("B", 2.0, keyframes[steps].tcp_mm),
-        ],
-        keyframes,
-        clearance: Some(SceneClearance {
-            distance_mm: 60.0,
-            move_index: 0,
-            shape: "body".into(),
-            obstacle: "table".into(),
-            time_s: Some(0.0),
-            points_mm: Some([[800.0, -70.0, 320.0], [800.0, -250.0, 320.0]]),
-        }),
-        total_time_s: Some(2.0),
-        failure: None,
-    }
-}
-
-/// A failed plan: the cell, the robot at the start, the two points that could not be joined.
-fn failure_scene() -> Scene {
-    let mut s = scene();
-    s.keyframes.truncate(1);
-    s.waypoints.clear();
-    s.clearance = None;
-    s.total_time_s = None;
-    s.failure = Some(SceneFailure {
-        message: "no path from 'A' to 'B': the grid holds no free route between them".into(),
-        points: vec![
-            FailedPoint {
-                name: "A".into(),
-                position_mm: [870.0, 0.0, 190.0],
-            },
-            FailedPoint {
-                name: "B".into(),
-                position_mm: [0.0, 870.0, 190.0],
-            },
-        ],
-    });
-    s
 }
 
 /// The checks every page must pass: drawn, no error, a picture of several colours.
@@ -400,6 +269,68 @@ fn assert_healthy(page: &Loaded, what: &str) {
     assert!(blue > 0.02, "{what}: obstacles cover {:.2} %", blue * 100.0);
 }
 
+/// Runs `gen-rapid CELL --html PAGE --report REPORT` in `dir`: the page, the report (when the
+/// run succeeds; `None` otherwise), and the run's output.
+fn page_of(dir: &Path, cell: &str) -> (String, Option<serde_json::Value>, std::process::Output) {
+    let stem = Path::new(cell)
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let html = dir.join(format!("{stem}.html"));
+    let report = dir.join(format!("{stem}.json"));
+    let out = gen_rapid(&[cell, "--html", arg(&html), "--report", arg(&report)]);
+    let page = std::fs::read_to_string(&html)
+        .unwrap_or_else(|e| panic!("{cell}: no page {}: {e}\n{}", html.display(), stderr(&out)));
+    let report = std::fs::read_to_string(&report)
+        .ok()
+        .map(|t| serde_json::from_str(&t).expect("the report is JSON"));
+    (page, report, out)
+}
+
+/// The clearance labels the page may show, from the report: the smallest clearance, its link
+/// or shape, its obstacle and its move, 1-based (one label for each move that has it: the
+/// report rounds to 0.1 mm, so two moves may tie there).
+fn clearance_labels(report: &serde_json::Value) -> Vec<String> {
+    let least = &report["totals"]["min_clearance"];
+    let moves = report["moves"].as_array().expect("moves");
+    let labels: Vec<String> = moves
+        .iter()
+        .enumerate()
+        .filter(|(_, m)| m["min_clearance"] == *least)
+        .map(|(i, m)| {
+            format!(
+                "min clearance {} mm: {} \u{2013} {}, move {} ({} \u{2192} {})",
+                least["mm"],
+                least["name"].as_str().unwrap_or_default(),
+                least["obstacle"].as_str().unwrap_or_default(),
+                i + 1,
+                m["from"].as_str().unwrap_or_default(),
+                m["to"].as_str().unwrap_or_default(),
+            )
+        })
+        .collect();
+    assert!(!labels.is_empty(), "no move has the smallest clearance");
+    labels
+}
+
+/// Whether the page shows one of `labels`.
+fn shows_one_of(dom: &str, labels: &[String]) -> bool {
+    labels.iter().any(|l| dom.contains(l.as_str()))
+}
+
+/// When the program reaches waypoint `name`: the sum of the times of the moves up to it.
+fn time_at(report: &serde_json::Value, name: &str) -> f64 {
+    let moves = report["moves"].as_array().expect("moves");
+    let last = moves
+        .iter()
+        .position(|m| m["to"] == name)
+        .unwrap_or_else(|| panic!("no move to {name}"));
+    moves[..=last]
+        .iter()
+        .map(|m| m["time_s"].as_f64().expect("timed moves"))
+        .sum()
+}
+
 #[test]
 fn preview_pages_render_in_headless_chromium() {
     let Some(browser) = chromium() else {
@@ -409,50 +340,111 @@ fn preview_pages_render_in_headless_chromium() {
         );
         return;
     };
+    let dir = tempfile::tempdir().expect("temp dir");
 
-    // A planned program, paused at its start and at its end.
-    let html = render_html(&scene()).expect("page");
+    // The trunk cell through the binary, paused at its start and at its end.
+    let (html, report, out) = page_of(dir.path(), "cells/trunk.yaml");
+    assert!(out.status.success(), "{}", stderr(&out));
+    let report = report.expect("the trunk's report");
+    let total = report["totals"]["estimated_time_s"]
+        .as_f64()
+        .expect("a time estimate");
     let start = load(&browser, &html, "#t=0");
-    assert_healthy(&start, "program at 0 s");
-    for text in [
-        ">A</div>",
-        ">B</div>",
-        ">table</div>",
-        "min clearance 60.0 mm: body \u{2013} table, move 1 (A \u{2192} B)",
-        "0.00 / 2.00 s",
-    ] {
-        assert!(start.dom.contains(text), "the page shows no {text:?}");
+    assert_healthy(&start, "trunk at 0 s");
+    let labels = clearance_labels(&report);
+    assert!(
+        shows_one_of(&start.dom, &labels),
+        "the trunk page shows none of {labels:?}"
+    );
+    let mut shown = vec![
+        format!("0.00 / {total:.2} s"),
+        ">clamp_post</div>".to_string(),
+    ];
+    for w in report["waypoints"].as_array().expect("waypoints") {
+        shown.push(format!(">{}</div>", w["name"].as_str().unwrap_or_default()));
+    }
+    for text in &shown {
+        assert!(
+            start.dom.contains(text.as_str()),
+            "the trunk page shows no {text:?}"
+        );
     }
     let img = &start.image;
-    let (orange_share, teal_share) = (img.share(orange), img.share(teal));
     assert!(
-        orange_share > 0.01,
+        img.share(orange) > 0.01,
         "links cover {:.2} %",
-        orange_share * 100.0
-    );
-    assert!(
-        teal_share > 0.002,
-        "tool covers {:.2} %",
-        teal_share * 100.0
+        img.share(orange) * 100.0
     );
     assert!(img.share(red) > 0.0005, "no clearance marker");
-
-    let end = load(&browser, &html, "#t=2");
-    assert_healthy(&end, "program at 2 s");
-    assert!(end.dom.contains("2.00 / 2.00 s"));
-    // The arm swung 90 degrees: the tool is elsewhere on the screen.
-    let (a, b) = (start.image.centroid(teal), end.image.centroid(teal));
-    let moved = ((a.0 - b.0).powi(2) + (a.1 - b.1).powi(2)).sqrt();
+    let end = load(&browser, &html, &format!("#t={total}"));
+    assert_healthy(&end, "trunk at its end");
+    assert!(end.dom.contains(&format!("{total:.2} / {total:.2} s")));
+    // At D (axis 1 near 0, over the trunk) the arm is no longer where it was at A (axis 1 at
+    // 90 deg): it covers other pixels. D is reached at the sum of the times of the moves up to
+    // it (A and F, at 90 and -90 deg, look alike from the page's first view).
+    let middle = load(&browser, &html, &format!("#t={}", time_at(&report, "D")));
+    assert_healthy(&middle, "trunk at D");
+    let (a, b) = (&start.image, &middle.image);
+    let changed = a
+        .rgb
+        .iter()
+        .zip(&b.rgb)
+        .filter(|(p, q)| orange(p.map(i32::from)) != orange(q.map(i32::from)))
+        .count() as f64
+        / a.rgb.len() as f64;
     assert!(
-        moved > 60.0,
-        "the tool moved only {moved:.0} px between 0 s and 2 s"
+        changed > 0.02,
+        "the arm covers the same pixels at A and at D ({:.2} % differ)",
+        changed * 100.0
     );
 
-    // A failed plan: the cell, the robot still, the unjoined points and the message.
-    let html = render_html(&failure_scene()).expect("failure page");
+    // The torch cell: the tool's shapes are drawn with the arm.
+    let (html, report, out) = page_of(dir.path(), "cells/torch-trunk.yaml");
+    assert!(out.status.success(), "{}", stderr(&out));
+    let report = report.expect("the torch cell's report");
+    let torch = load(&browser, &html, &format!("#t={}", time_at(&report, "L1")));
+    assert_healthy(&torch, "torch-trunk at L1");
+    let labels = clearance_labels(&report);
+    assert!(
+        shows_one_of(&torch.dom, &labels),
+        "the torch page shows none of {labels:?}"
+    );
+    assert!(torch.image.share(orange) > 0.01);
+    // The tool is small on the screen, seen through a translucent wall, and teal-like pixels
+    // occur elsewhere (antialiased lines): draw the same page with the tool's shapes in the
+    // links' colour, and count the pixels that change, the tool's own.
+    let as_links = html.replace(r#""kind":"tool""#, r#""kind":"link""#);
+    assert_ne!(as_links, html, "the page has no tool shapes");
+    let recoloured = load(
+        &browser,
+        &as_links,
+        &format!("#t={}", time_at(&report, "L1")),
+    );
+    let tool_px = torch
+        .image
+        .rgb
+        .iter()
+        .zip(&recoloured.image.rgb)
+        .filter(|(p, q)| {
+            let (p, q) = (p.map(i32::from), q.map(i32::from));
+            (0..3).map(|k| (p[k] - q[k]).abs()).sum::<i32>() > 60
+        })
+        .count();
+    eprintln!("torch-trunk at L1: the tool covers {tool_px} px");
+    assert!(tool_px > 50, "the tool covers {tool_px} px");
+
+    // A failed plan: exit 3, nothing on stdout, no report, and a page of the cell, the robot
+    // at the first point and the two points that could not be joined, with the message.
+    let (html, report, out) = page_of(dir.path(), "tests/err/no_path.yaml");
+    assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
+    assert!(out.stdout.is_empty() && report.is_none());
     let failed = load(&browser, &html, "");
     assert_healthy(&failed, "failed plan");
-    for text in [">A (not joined)</div>", ">B (not joined)</div>"] {
+    for text in [
+        ">P1 (not joined)</div>",
+        ">P2 (not joined)</div>",
+        ">lintel</div>",
+    ] {
         assert!(
             failed.dom.contains(text),
             "the failure page shows no {text:?}"
@@ -470,20 +462,20 @@ fn preview_pages_render_in_headless_chromium() {
         "the failure box is hidden: {dom_box}"
     );
     assert!(
-        dom_box.contains("Planning failed") && dom_box.contains("no path from 'A' to 'B'"),
+        dom_box.contains("Planning failed")
+            && dom_box.contains("no collision-free path from 'P1' to 'P2'"),
         "the failure box says: {dom_box}"
     );
     assert!(
         failed.image.share(orange) > 0.01,
         "no robot on the failure page"
     );
-    assert!(failed.image.share(red) > 0.001, "no failed points drawn");
+    assert!(failed.image.share(red) > 0.0005, "no failed points drawn");
 
     // The error hook works, so the checks above could fail: a script error after the viewer
     // (a stand-in for a bug) is recorded in the DOM.
-    let broken = render_html(&scene())
-        .expect("page")
-        .replace("</body>", "<script>null.boom();</script></body>");
+    let (html, _, _) = page_of(dir.path(), "cells/trunk.yaml");
+    let broken = html.replace("</body>", "<script>null.boom();</script></body>");
     let page = load(&browser, &broken, "#broken");
     assert!(
         page.body_tag.contains("data-errors") && page.body_tag.contains("boom"),

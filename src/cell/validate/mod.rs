@@ -1,8 +1,9 @@
 //! The cell file as written ([`RawCell`]) -> a [`Cell`]: one function per YAML section
 //! (`points.rs` the points, `tool.rs` the tool and the work object, `values.rs` the value checks
 //! they share), then the checks that need several sections (the module's one name space, the
-//! tool and `motion.tool`, `base: auto` with its points). Every refusal points at the value at
-//! fault.
+//! speeds, zones and tool named apart, the tool and `motion.tool`, `base: auto` with its points).
+//! Every refusal points at the value at fault; a value quoted in a message that is not already
+//! a RAPID name (at most 32 characters) goes through [`crate::excerpt`].
 //!
 //! Two rules come from elsewhere, so that the cell and the module cannot disagree: the RAPID
 //! identifier rule ([`crate::names`], with the name of a robtarget point's `CONST robtarget`) and
@@ -14,16 +15,18 @@ mod points;
 mod tool;
 mod values;
 
-use super::raw::{RawBase, RawCell, RawMotion, RawObstacle, RawPlanner, RawRobot};
+use super::raw::{RawBase, RawCell, RawMotion, RawObstacle, RawPlanner, RawPoint, RawRobot};
 use super::{
     check_grid, defaults, Base, Cell, CellError, Loc, Method, Motion, Obstacle, Planner, Point,
-    RobotSpec, Target, Tool, Wobj,
+    ProcFrom, RobotSpec, Target, Tool, Wobj,
 };
+use crate::excerpt;
 use crate::geometry::Aabb;
 use crate::names::{check_identifier, robtarget_name, ROBTARGET_SUFFIX};
 use crate::precision::{LENGTH_DECIMALS, YAW_DECIMALS};
 use nalgebra::Point3;
 use serde_saphyr::Spanned;
+use std::collections::BTreeMap;
 use std::path::Path;
 use values::{data_name, decimals, identifier, invalid, invalid_help, joint_value, loc, triple};
 
@@ -50,6 +53,7 @@ pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
         tool.as_ref(),
         wobj.as_ref(),
     )?;
+    distinct_data(&motion, raw_motion, tool.is_some(), &raw.points.value)?;
     if robot.base == Base::Auto {
         every_point_positioned(&points)?;
     }
@@ -138,6 +142,8 @@ fn obstacles(raw: &[Spanned<RawObstacle>]) -> Result<Vec<Obstacle>, CellError> {
     let mut obstacles: Vec<Obstacle> = Vec::new();
     for o in raw {
         let name = o.value.name.value.clone();
+        // As quoted in messages (a name may be as long as the input).
+        let shown = excerpt::value(&name);
         if name.trim().is_empty() {
             return Err(invalid(loc(&o.value.name), "an obstacle needs a name"));
         }
@@ -145,24 +151,24 @@ fn obstacles(raw: &[Spanned<RawObstacle>]) -> Result<Vec<Obstacle>, CellError> {
             return Err(invalid(
                 loc(&o.value.name),
                 format!(
-                    "obstacle name '{name}' is used twice (first at line {})",
+                    "obstacle name '{shown}' is used twice (first at line {})",
                     first.loc.line
                 ),
             ));
         }
         let min_mm = triple(
             &o.value.aabb.value.min,
-            &format!("obstacle '{name}' box.min"),
+            &format!("obstacle '{shown}' box.min"),
         )?;
         let max_mm = triple(
             &o.value.aabb.value.max,
-            &format!("obstacle '{name}' box.max"),
+            &format!("obstacle '{shown}' box.max"),
         )?;
         if let Some(i) = (0..3).find(|&i| min_mm[i] >= max_mm[i]) {
             return Err(invalid_help(
                 loc(&o.value.aabb),
                 format!(
-                    "obstacle '{name}': box.min {} = {} is not below box.max {} = {}",
+                    "obstacle '{shown}': box.min {} = {} is not below box.max {} = {}",
                     ["x", "y", "z"][i],
                     min_mm[i],
                     ["x", "y", "z"][i],
@@ -196,7 +202,7 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
                 loc(m),
                 format!(
                     "planner.method '{}' is not one of neighboring, depth-first, extensile",
-                    m.value
+                    excerpt::value(&m.value)
                 ),
             )
         })?;
@@ -218,6 +224,10 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
 
 /// `motion:`.
 fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
+    let (proc, proc_from) = match m.and_then(|m| m.proc.as_ref()) {
+        Some(p) => (identifier(p, "motion.proc")?, ProcFrom::Cell(loc(p))),
+        None => (defaults::PROC.to_string(), ProcFrom::Default),
+    };
     let name = |s: Option<&Spanned<String>>, default: &str, what: &str| match s {
         Some(s) => data_name(s, what),
         None => Ok(default.to_string()),
@@ -238,7 +248,29 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
             defaults::TOOL,
             "motion.tool",
         )?,
+        proc,
+        proc_from,
     })
+}
+
+/// `--proc NAME` (module docs of `cell`): the identifier rule, then the name space again.
+pub(super) fn override_proc(cell: &mut Cell, name: &str) -> Result<(), CellError> {
+    check_identifier(name).map_err(|e| {
+        invalid(
+            Loc::default(),
+            format!("--proc '{name}' is not a valid RAPID name: {e}"),
+        )
+    })?;
+    cell.motion.proc = name.to_string();
+    cell.motion.proc_from = ProcFrom::CommandLine;
+    one_name_space(
+        &cell.module,
+        Loc::default(),
+        &cell.points,
+        &cell.motion,
+        cell.tool.as_ref(),
+        cell.wobj.as_ref(),
+    )
 }
 
 // ---- across sections ----
@@ -293,9 +325,12 @@ struct Named<'a> {
 }
 
 /// RAPID names are case-insensitive and share one name space in a module: the names the module
-/// declares (the module, the tool, the work object, the points and their `CONST robtarget`s)
-/// must differ from each other and from the names it uses (`PROC main`, every speed and zone,
-/// the tool when it is not declared). Each clash is refused at the later name's line.
+/// declares (the module, the tool, the work object, the points and their `CONST robtarget`s,
+/// the routine when `motion.proc` or `--proc` names it, last) must differ from each other and
+/// from the names it uses (`PROC main` by default, every speed and zone,
+/// the tool when it is not declared). A clash of two declared names is refused at the later
+/// one's line; a declared name that a used one takes, at the declared name's line (the module
+/// can rename what it declares, not the data it uses). Exit status 1, like every input error.
 fn one_name_space(
     module: &str,
     module_loc: Loc,
@@ -305,10 +340,18 @@ fn one_name_space(
     wobj: Option<&Wobj>,
 ) -> Result<(), CellError> {
     let mut used: Vec<(String, String)> = vec![
-        ("main".into(), "the module's PROC main".into()),
         (motion.speed.clone(), "motion.speed".into()),
         (motion.zone.clone(), "motion.zone".into()),
     ];
+    if motion.proc_from == ProcFrom::Default {
+        used.insert(
+            0,
+            (
+                motion.proc.clone(),
+                format!("the module's PROC {}", motion.proc),
+            ),
+        );
+    }
     if tool.is_none() {
         used.push((motion.tool.clone(), "motion.tool".into()));
     }
@@ -326,6 +369,7 @@ fn one_name_space(
         what: "the module".into(),
         loc: module_loc,
     }];
+
     if let Some(t) = tool {
         declared.push(Named {
             name: t.name.clone(),
@@ -357,6 +401,23 @@ fn one_name_space(
                 loc: p.loc,
             });
         }
+    }
+    // The routine last: `motion:` follows the points in a cell file, and `--proc` has no line
+    // there, so a clash is told about the routine's name.
+    match motion.proc_from {
+        ProcFrom::Default => {}
+        ProcFrom::Cell(loc) => declared.push(Named {
+            name: motion.proc.clone(),
+            kind: "routine name",
+            what: format!("the routine (motion.proc, line {})", loc.line),
+            loc,
+        }),
+        ProcFrom::CommandLine => declared.push(Named {
+            name: motion.proc.clone(),
+            kind: "routine name",
+            what: "the routine (--proc)".into(),
+            loc: Loc::default(),
+        }),
     }
     for (i, d) in declared.iter().enumerate() {
         if d.kind == "robtarget name" {
@@ -395,6 +456,115 @@ fn one_name_space(
                 message,
                 format!("RAPID names are case-insensitive and share one name space in a module; rename the {rename}"),
             ));
+        }
+    }
+    Ok(())
+}
+
+/// One speeddata, zonedata or tooldata name the moves use, for [`distinct_data`].
+struct Datum {
+    /// 0 speed, 1 zone, 2 tool: the data type.
+    kind: usize,
+    /// How a message introduces it ("motion.zone", "point 'P2' zone") and names it as the
+    /// datum clashed with ("motion.zone", "the zone of point 'P2'").
+    what: String,
+    of: String,
+    name: String,
+    /// Where the cell gives it; `None` for a default.
+    loc: Option<Loc>,
+}
+
+/// The speeds, the zones and the tool the moves use (not declared by the module) are RAPID data
+/// of three types: one name cannot be two of them (a clash with a default counts: `zone: v300`
+/// beside the default speed `v300`). The same name twice in one type is one datum, used twice.
+/// Refused at the later of the two in the file (a default has no place). The tool of a `tool:`
+/// block is declared by the module: [`one_name_space`] has checked it.
+fn distinct_data(
+    motion: &Motion,
+    raw: Option<&RawMotion>,
+    tool_block: bool,
+    points: &[Spanned<RawPoint>],
+) -> Result<(), CellError> {
+    let mut data: Vec<Datum> = Vec::new();
+    let mut given = |kind: usize, what: String, name: &str, at: Option<&Spanned<String>>| {
+        let of = match what.strip_prefix("point ").and_then(|w| w.rsplit_once(' ')) {
+            Some((point, key)) => format!("the {key} of point {point}"),
+            None => what.clone(),
+        };
+        data.push(Datum {
+            kind,
+            what,
+            of,
+            name: name.to_string(),
+            loc: at.map(loc),
+        })
+    };
+    given(
+        0,
+        "motion.speed".into(),
+        &motion.speed,
+        raw.and_then(|m| m.speed.as_ref()),
+    );
+    given(
+        1,
+        "motion.zone".into(),
+        &motion.zone,
+        raw.and_then(|m| m.zone.as_ref()),
+    );
+    if !tool_block {
+        given(
+            2,
+            "motion.tool".into(),
+            &motion.tool,
+            raw.and_then(|m| m.tool.as_ref()),
+        );
+    }
+    for p in points {
+        let p = &p.value;
+        if let Some(s) = &p.speed {
+            given(
+                0,
+                format!("point '{}' speed", p.name.value),
+                &s.value,
+                Some(s),
+            );
+        }
+        if let Some(z) = &p.zone {
+            given(
+                1,
+                format!("point '{}' zone", p.name.value),
+                &z.value,
+                Some(z),
+            );
+        }
+    }
+    // In file order, defaults first; by name (ignoring case), the first datum of each type.
+    data.sort_by_key(|d| d.loc.map(|l| (l.line, l.column)));
+    let mut first: BTreeMap<String, [Option<usize>; 3]> = BTreeMap::new();
+    for (i, d) in data.iter().enumerate() {
+        let kinds = first.entry(d.name.to_ascii_lowercase()).or_default();
+        if kinds[d.kind].is_some() {
+            continue;
+        }
+        let other = kinds.iter().flatten().next().map(|&k| &data[k]);
+        match (other, d.loc) {
+            (Some(other), Some(at)) => {
+                let default = if other.loc.is_some() {
+                    ""
+                } else {
+                    " (its default)"
+                };
+                return Err(invalid_help(
+                    at,
+                    format!(
+                        "{} '{}' is already the name of {}{default}",
+                        d.what, d.name, other.of
+                    ),
+                    "the speed, zone and tool are three RAPID data of three types (speeddata, zonedata, tooldata); give each its own name",
+                ));
+            }
+            // Two defaults (never the same name).
+            _ => kinds[d.kind] = Some(i),
         }
     }
     Ok(())

@@ -4,6 +4,7 @@
 use super::super::raw::{RawShape, RawTool, RawWobj};
 use super::super::{defaults, CellError, Frame, Tool, ToolGeometry, ToolShape, Wobj};
 use super::values::{identifier, invalid, invalid_help, loc, mass, pose, position, triple};
+use crate::excerpt;
 use serde_saphyr::Spanned;
 
 /// `tool:`.
@@ -27,7 +28,8 @@ pub(super) fn tool(t: &Spanned<RawTool>) -> Result<Tool, CellError> {
                 loc(&s.value.name),
                 format!(
                     "tool shape name '{}' is used twice (first at line {})",
-                    shape.name, first.loc.line
+                    excerpt::value(&shape.name),
+                    first.loc.line
                 ),
             ));
         }
@@ -57,7 +59,9 @@ fn shape(s: &Spanned<RawShape>) -> Result<ToolShape, CellError> {
     if name.trim().is_empty() {
         return Err(invalid(loc(&r.name), "a tool shape needs a name"));
     }
-    let what = |key: &str| format!("tool shape '{name}' {key}");
+    // As quoted in messages (a shape's name is free text, as long as the input).
+    let shown = excerpt::value(&name);
+    let what = |key: &str| format!("tool shape '{shown}' {key}");
     let positive = |v: &Spanned<f64>, key: &str| {
         if v.value.is_finite() && v.value > 0.0 {
             Ok(v.value)
@@ -111,7 +115,7 @@ fn shape(s: &Spanned<RawShape>) -> Result<ToolShape, CellError> {
         _ => {
             return Err(invalid_help(
                 loc(s),
-                format!("tool shape '{name}' must give exactly one of cylinder, box, sphere"),
+                format!("tool shape '{shown}' must give exactly one of cylinder, box, sphere"),
                 "cylinder: { from: [x, y, z], to: [x, y, z], radius: r }, box: { min: [..], max: [..] } or sphere: { centre: [..], radius: r }, in the flange frame (mm)",
             ))
         }

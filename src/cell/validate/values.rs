@@ -2,6 +2,7 @@
 //! triples, poses with normalised quaternions, RAPID names. Each refusal points at the value.
 
 use super::super::{CellError, Frame, Loc, QUATERNION_NORM_TOL};
+use crate::excerpt;
 use crate::names::{check_data_name, check_identifier};
 use crate::precision::{self, JOINT_DECIMALS, MASS_DECIMALS, POSITION_DECIMALS};
 use crate::robot::ik::six::ConfData;
@@ -209,7 +210,10 @@ pub(super) fn identifier(s: &Spanned<String>, what: &str) -> Result<String, Cell
     check_identifier(&s.value).map_err(|e| {
         invalid(
             loc(s),
-            format!("{what} '{}' is not a valid RAPID name: {e}", s.value),
+            format!(
+                "{what} '{}' is not a valid RAPID name: {e}",
+                excerpt::value(&s.value)
+            ),
         )
     })?;
     Ok(s.value.clone())
@@ -221,7 +225,10 @@ pub(super) fn data_name(s: &Spanned<String>, what: &str) -> Result<String, CellE
     check_data_name(&s.value).map_err(|e| {
         invalid_help(
             loc(s),
-            format!("{what} '{}' is not a valid RAPID name: {e}", s.value),
+            format!(
+                "{what} '{}' is not a valid RAPID name: {e}",
+                excerpt::value(&s.value)
+            ),
             "speed, zone and tool name RAPID data: a predefined one (v300, fine, tool0) or one declared on the controller",
         )
     })?;

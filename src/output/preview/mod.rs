@@ -3,11 +3,13 @@
 //! along its estimated timing, with the waypoints, the TCP trace and the place of the smallest
 //! clearance; on a failed plan, the cell and the points that could not be joined.
 //!
-//! This is an output stage and goes beyond the paper (which has no such picture). It does no
-//! kinematics and no geometry: the pipeline samples the motion into a [`Scene`] (every shape's
-//! pose in the cell frame at a list of keyframe times), and the page only draws the shapes and
-//! interpolates between keyframes (positions linearly, quaternions by normalised linear
-//! interpolation). Whatever the page shows is therefore what Rust computed.
+//! This is an output stage and goes beyond the paper (which has no such picture). Two parts:
+//! [`scene`] (`scene.rs`) samples a run into a [`Scene`]: every shape's pose in the cell frame
+//! at a list of keyframe times, by the robot's forward kinematics along the estimated timing,
+//! from the cell, the placed job and the plan (or, for a failed plan, [`failure_scene`]);
+//! [`render_html`] (this file) writes the page, which only draws the shapes and interpolates
+//! between keyframes (positions linearly, quaternions by normalised linear interpolation).
+//! Whatever the page shows is therefore what Rust computed.
 //!
 //! The page is assembled from three embedded assets under `templates/preview/` (the HTML
 //! skeleton, the stylesheet and a few hundred lines of plain WebGL 1 script, documented at its
@@ -16,8 +18,8 @@
 //! `file://` in any browser with WebGL.
 //!
 //! Deterministic bytes: the scene is written with fixed precisions chosen by the unit suffix of
-//! each JSON key ([`decimals_for_key`]: 3 decimals for `_mm`, `_s`, `_deg`; 4 for the
-//! quaternions `_wxyz`), no `-0`, sorted keys, and no timestamp anywhere. `<`, `>`, `&` and
+//! each JSON key ([`decimals_for_key`], from the one table [`crate::precision`]: 3 decimals for
+//! `_mm`, `_s`, `_deg`; 4 for the quaternions `_wxyz`), no `-0`, sorted keys, and no timestamp anywhere. `<`, `>`, `&` and
 //! the JavaScript line separators are written as `\u` escapes inside the JSON, so no name can
 //! close the script element (`</script>`) or open a comment.
 //!
@@ -27,8 +29,11 @@
 use serde::Serialize;
 use serde_json::Value;
 
+mod scene;
 #[cfg(test)]
 mod tests;
+
+pub use scene::{failure_scene, scene};
 
 /// The HTML skeleton; `/*@CSS@*/`, `/*@SCENE@*/`, `/*@JS@*/` and `@TITLE@` are filled in.
 const PAGE_HTML: &str = include_str!("../../../templates/preview/page.html");
@@ -37,16 +42,12 @@ const PAGE_CSS: &str = include_str!("../../../templates/preview/preview.css");
 /// The WebGL viewer (plain WebGL 1, no library).
 const PAGE_JS: &str = include_str!("../../../templates/preview/preview.js");
 
-/// Decimals written for lengths in millimetres (`_mm`): 0.001 mm.
-pub const MM_DECIMALS: u32 = 3;
-/// Decimals written for times in seconds (`_s`): 1 ms.
-pub const SECONDS_DECIMALS: u32 = 3;
-/// Decimals written for angles in degrees (`_deg`).
-pub const DEG_DECIMALS: u32 = 3;
-/// Decimals written for quaternion components (`_wxyz`).
-pub const QUAT_DECIMALS: u32 = 4;
-/// Decimals for any other non-integer number (none in today's [`Scene`]).
-pub const OTHER_DECIMALS: u32 = 6;
+// The decimals of the scene's numbers, by unit suffix: the one table, `crate::precision`.
+pub use crate::precision::{
+    PREVIEW_DEG_DECIMALS as DEG_DECIMALS, PREVIEW_MM_DECIMALS as MM_DECIMALS,
+    PREVIEW_OTHER_DECIMALS as OTHER_DECIMALS, PREVIEW_QUAT_DECIMALS as QUAT_DECIMALS,
+    PREVIEW_SECONDS_DECIMALS as SECONDS_DECIMALS,
+};
 
 /// Everything the preview page shows; filled by the pipeline, drawn by the page as it is.
 ///
@@ -63,8 +64,8 @@ pub struct Scene {
     pub cell_file: String,
     /// The cell's boxes.
     pub obstacles: Vec<SceneObstacle>,
-    /// Where the robot stands.
-    pub base: SceneBase,
+    /// Where the robot stands; `None` when it is not known (a failed choice of base).
+    pub base: Option<SceneBase>,
     /// The robot's collision shapes (link cylinders) and the tool's shapes, each in its own
     /// frame; [`Keyframe::poses`] places them.
     pub shapes: Vec<ShapeDef>,
@@ -302,11 +303,12 @@ fn check_finite(scene: &Scene) -> Result<(), PreviewError> {
             &[o.min_mm, o.max_mm].concat(),
         )?;
     }
-    let b = &scene.base;
-    f(
-        || "the base".into(),
-        &[&b.position_mm[..], &[b.yaw_deg]].concat(),
-    )?;
+    if let Some(b) = &scene.base {
+        f(
+            || "the base".into(),
+            &[&b.position_mm[..], &[b.yaw_deg]].concat(),
+        )?;
+    }
     for s in &scene.shapes {
         let xs = match &s.geometry {
             ShapeGeometry::Cylinder {
@@ -363,7 +365,7 @@ fn scene_json(scene: &Scene) -> Result<String, PreviewError> {
 }
 
 /// Decimals for the numbers under a JSON key, by the key's unit suffix.
-pub fn decimals_for_key(key: &str) -> Option<u32> {
+pub fn decimals_for_key(key: &str) -> Option<usize> {
     if key.ends_with("_mm") {
         Some(MM_DECIMALS)
     } else if key.ends_with("_s") {
@@ -380,7 +382,7 @@ pub fn decimals_for_key(key: &str) -> Option<u32> {
 /// Rounds every float in `v` to the decimals of its nearest enclosing key (`decimals` for
 /// numbers under no unit key); integers stay as they are. (Non-finite numbers were refused by
 /// [`check`]: serde_json would have written them as `null`.)
-fn round_value(v: &mut Value, decimals: u32) {
+fn round_value(v: &mut Value, decimals: usize) {
     match v {
         Value::Number(n) if n.is_f64() => {
             if let Some(r) = n.as_f64().and_then(|x| rounded(x, decimals)) {
@@ -400,7 +402,7 @@ fn round_value(v: &mut Value, decimals: u32) {
 }
 
 /// `x` rounded to `decimals` places as a JSON number with no `-0`; `None` when not finite.
-fn rounded(x: f64, decimals: u32) -> Option<serde_json::Number> {
+fn rounded(x: f64, decimals: usize) -> Option<serde_json::Number> {
     if !x.is_finite() {
         return None;
     }

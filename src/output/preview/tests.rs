@@ -21,10 +21,10 @@ fn scene() -> Scene {
             min_mm: [500.0, -300.0, 0.0],
             max_mm: [900.0, 300.0, 400.0],
         }],
-        base: SceneBase {
+        base: Some(SceneBase {
             position_mm: [0.0, 0.0, 0.0],
             yaw_deg: 90.0,
-        },
+        }),
         shapes: vec![
             ShapeDef {
                 name: "link_2".into(),

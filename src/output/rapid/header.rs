@@ -60,68 +60,130 @@ pub(super) fn comment_text(text: &str) -> String {
     }
 }
 
-/// The header lines of `p` (without the leading `! `).
-pub(super) fn header_lines(p: &Program) -> Result<Vec<String>, RapidError> {
+/// The header's facts, each formatted as the header writes it (and as a template sees them,
+/// `facts.*`; README). Free text is printable ASCII on one line.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Facts {
+    pub generator: String,
+    pub cell: String,
+    pub urdf: String,
+    /// The controller file's name, or `none: serial arm, the URDF's limits`.
+    pub controller: String,
+    pub coupling: String,
+    pub planner: String,
+    /// 3 decimals.
+    pub grid_deg: String,
+    /// 1 decimal.
+    pub clearance_mm: String,
+    /// x, y, z, 1 decimal each.
+    pub base_mm: [String; 3],
+    /// 3 decimals.
+    pub yaw_deg: String,
+    /// The tool, work object and frames lines (only for a module with a tool, a work object or
+    /// robtargets; else none).
+    pub tool: Option<String>,
+    pub wobj: Option<String>,
+    pub frames: Option<String>,
+    /// The number of moves.
+    pub moves: usize,
+    /// 1 decimal, or none without obstacles.
+    pub min_clearance_mm: Option<String>,
+    /// 2 decimals, or none when not estimated.
+    pub estimated_time_s: Option<String>,
+}
+
+impl Facts {
+    /// The header lines (without the leading `! `).
+    pub fn lines(&self) -> Vec<String> {
+        let [x, y, z] = &self.base_mm;
+        let mut lines = vec![
+            format!("generator: {}", self.generator),
+            format!("cell: {}", self.cell),
+            format!("urdf: {}", self.urdf),
+            format!("controller: {}", self.controller),
+            format!("coupling: {}", self.coupling),
+            format!("planner: {}", self.planner),
+            format!("grid (deg): {}", self.grid_deg),
+            format!("clearance (mm): {}", self.clearance_mm),
+            format!("base: [{x}, {y}, {z}] yaw: {}", self.yaw_deg),
+        ];
+        for line in [&self.tool, &self.wobj, &self.frames].into_iter().flatten() {
+            lines.push(line.clone());
+        }
+        lines.push(format!("moves: {}", self.moves));
+        lines.push(format!(
+            "min clearance (mm): {}",
+            self.min_clearance_mm
+                .as_deref()
+                .unwrap_or("none (no obstacles)")
+        ));
+        if let Some(t) = &self.estimated_time_s {
+            lines.push(format!("estimated time (s): {t}"));
+        }
+        lines
+    }
+}
+
+/// The header facts of `p`.
+pub(super) fn facts(p: &Program) -> Result<Facts, RapidError> {
     let h = &p.header;
     let grid = finite("header grid_deg", h.grid_deg)?;
     let clearance = finite("header clearance_mm", h.clearance_mm)?;
     let [x, y, z] = h.base_mm;
-    let (x, y, z) = (
-        finite("header base_mm[0]", x)?,
-        finite("header base_mm[1]", y)?,
-        finite("header base_mm[2]", z)?,
-    );
+    let base_mm = [
+        format_fixed(finite("header base_mm[0]", x)?, LENGTH_DECIMALS),
+        format_fixed(finite("header base_mm[1]", y)?, LENGTH_DECIMALS),
+        format_fixed(finite("header base_mm[2]", z)?, LENGTH_DECIMALS),
+    ];
     let yaw = finite("header yaw_deg", h.yaw_deg)?;
-    let min_clearance = match h.min_clearance_mm {
-        Some(c) => format_fixed(finite("header min_clearance_mm", c)?, LENGTH_DECIMALS),
-        None => "none (no obstacles)".to_string(),
+    let min_clearance_mm = match h.min_clearance_mm {
+        Some(c) => Some(format_fixed(
+            finite("header min_clearance_mm", c)?,
+            LENGTH_DECIMALS,
+        )),
+        None => None,
+    };
+    let estimated_time_s = match h.estimated_time_s {
+        Some(t) => Some(format_fixed(
+            finite("header estimated_time_s", t)?,
+            TIME_DECIMALS,
+        )),
+        None => None,
     };
     let coupling = match h.parallelogram {
         true => "parallelogram (axis 3 = URDF joint 3 + joint 2)",
         false => "serial (axes 1..6 = URDF joints 1..6)",
     };
-    let mut lines = vec![
-        format!("generator: {}", comment_text(&h.generator)),
-        format!("cell: {}", comment_text(&h.cell_file)),
-        format!("urdf: {}", comment_text(&h.urdf)),
-        format!(
-            "controller: {}",
-            comment_text(h.controller.as_deref().unwrap_or(NO_CONTROLLER))
-        ),
-        format!("coupling: {coupling}"),
-        format!("planner: {}", comment_text(&h.planner)),
-        format!("grid (deg): {}", format_fixed(grid, GRID_DECIMALS)),
-        format!(
-            "clearance (mm): {}",
-            format_fixed(clearance, LENGTH_DECIMALS)
-        ),
-        format!(
-            "base: [{}, {}, {}] yaw: {}",
-            format_fixed(x, LENGTH_DECIMALS),
-            format_fixed(y, LENGTH_DECIMALS),
-            format_fixed(z, LENGTH_DECIMALS),
-            format_fixed(yaw, YAW_DECIMALS)
-        ),
-    ];
-    lines.extend(tcp_lines(p));
-    lines.push(format!("moves: {}", h.moves));
-    lines.push(format!("min clearance (mm): {min_clearance}"));
-    if let Some(t) = h.estimated_time_s {
-        let t = finite("header estimated_time_s", t)?;
-        lines.push(format!(
-            "estimated time (s): {}",
-            format_fixed(t, TIME_DECIMALS)
-        ));
-    }
-    Ok(lines)
+    let (tool, wobj, frames) = match tcp_lines(p) {
+        Some([t, w, f]) => (Some(t), Some(w), Some(f)),
+        None => (None, None, None),
+    };
+    Ok(Facts {
+        generator: comment_text(&h.generator),
+        cell: comment_text(&h.cell_file),
+        urdf: comment_text(&h.urdf),
+        controller: comment_text(h.controller.as_deref().unwrap_or(NO_CONTROLLER)),
+        coupling: coupling.to_string(),
+        planner: comment_text(&h.planner),
+        grid_deg: format_fixed(grid, GRID_DECIMALS),
+        clearance_mm: format_fixed(clearance, LENGTH_DECIMALS),
+        base_mm,
+        yaw_deg: format_fixed(yaw, YAW_DECIMALS),
+        tool,
+        wobj,
+        frames,
+        moves: h.moves,
+        min_clearance_mm,
+        estimated_time_s,
+    })
 }
 
 /// The tool, the work object and the frame note: only for a module that declares a tool or a
 /// work object or writes robtargets (a module of joint moves alone says nothing of them).
-fn tcp_lines(p: &Program) -> Vec<String> {
+fn tcp_lines(p: &Program) -> Option<[String; 3]> {
     let robtargets = p.targets.iter().any(|t| t.robtarget.is_some());
     if p.tooldata.is_none() && p.wobj.is_none() && !robtargets {
-        return Vec::new();
+        return None;
     }
     let tool = match &p.tooldata {
         Some(t) if t.shapes.is_empty() => format!(
@@ -148,5 +210,5 @@ fn tcp_lines(p: &Program) -> Vec<String> {
         ),
         None => "wobj: wobj0 (robtargets are in the world frame)".to_string(),
     };
-    vec![tool, wobj, FRAMES_NOTE.to_string()]
+    Some([tool, wobj, FRAMES_NOTE.to_string()])
 }

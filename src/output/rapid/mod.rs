@@ -4,9 +4,14 @@
 //! Everything the text needs is decided by earlier stages and handed over as a
 //! [`Program`]; this stage only validates names, formats numbers and fills the
 //! template `templates/module.mod.j2` (embedded at compile time, rendered with
-//! minijinja in strict-undefined mode, no auto-escaping, trailing newline kept).
-//! The template holds no logic beyond loops and variable output; every number
-//! is formatted here with [`format_fixed`].
+//! minijinja in strict-undefined mode, no auto-escaping, trailing newline kept),
+//! or the user's template (`--template FILE`, [`ModuleTemplate`]), which sees the
+//! same context (README, "Your own module template": `module`, `proc`, `header`,
+//! `facts`, `tool`, `wobj`, `wobj_arg`, `targets`, `moves`). A template holds no
+//! logic beyond loops and variable output; every number is formatted here with
+//! [`format_fixed`]. An error of the user's template is an input error at its
+//! line ([`TemplateError`]). The guarantees below are the embedded template's; a
+//! user's template keeps the names and numbers, its text is its own.
 //!
 //! # Shape of the module
 //!
@@ -35,7 +40,7 @@
 //!     CONST robtarget <name>_rt := [[x,y,z],[q1,q2,q3,q4],[cf1,cf4,cf6,cfx],[9E9,...]];
 //!                                                     (after a robtarget point's jointtarget)
 //!
-//!     PROC main()
+//!     PROC <proc>()                                   (`main` unless the cell or --proc names it)
 //!         MoveAbsJ <name>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>];   (one per target)
 //!     ENDPROC
 //! ENDMODULE
@@ -65,7 +70,8 @@
 //!   allowed there). It is the rule of [`crate::names`], which the cell
 //!   validation applies first, at the cell's lines: here it is a last guard.
 //!   All declared names are unique ignoring case and differ from the module
-//!   name, `main` and every speed and zone name (see [`target_names`]).
+//!   name, the routine's and every speed and zone name (see [`target_names`]); a via
+//!   whose name is taken by any of them steps aside (`via01_01_x1`, ...).
 //! - One `CONST jointtarget` per target and one `MoveAbsJ` per target, in the
 //!   same order, so each name is used by exactly one move.
 //! - Free text in the header (`generator`, `cell_file`, paths, `planner`) is
@@ -80,16 +86,16 @@ mod target_names;
 pub use data::{AxisRanges, Pose, RobTarget, ToolData, WobjData, NO_EXTERNAL_AXES};
 pub use format::format_fixed;
 pub use header::{Header, NO_CONTROLLER};
-pub use target_names::target_names;
+pub use target_names::{target_names, target_names_avoiding};
 
 use crate::names::{check_data_name, check_identifier, robtarget_name, IdentifierError};
 use crate::precision::JOINT_DECIMALS;
 #[cfg(test)]
 use header::comment_text;
-use header::header_lines;
 
 use minijinja::{value::Serde, AutoEscape, Environment, UndefinedBehavior};
 use serde::Serialize;
+use std::path::{Path, PathBuf};
 
 /// The module template, embedded at compile time.
 pub const TEMPLATE: &str = include_str!("../../../templates/module.mod.j2");
@@ -112,6 +118,8 @@ pub struct Program {
     pub wobj: Option<WobjData>,
     /// The robot's axis ranges: no joint value outside them is written.
     pub ranges: AxisRanges,
+    /// The name of the routine that makes the moves (`motion.proc`, `--proc`; default `main`).
+    pub proc_name: String,
 }
 
 /// What a target is: a named cell point or an intermediate via point.
@@ -153,6 +161,14 @@ pub enum RapidError {
     /// The module name is not a valid RAPID identifier.
     #[error("invalid RAPID module name `{name}`: {source}")]
     InvalidModuleName {
+        /// The rejected name.
+        name: String,
+        /// The rule it breaks.
+        source: IdentifierError,
+    },
+    /// The routine's name is not a valid RAPID identifier.
+    #[error("invalid RAPID routine name `{name}`: {source}")]
+    InvalidProcName {
         /// The rejected name.
         name: String,
         /// The rule it breaks.
@@ -220,32 +236,202 @@ pub enum RapidError {
         /// `targets.len() - 1` (0 for no targets).
         actual: usize,
     },
-    /// The template failed to compile or render.
+    /// The embedded template failed to compile or render (a defect of gen-rapid).
     #[error("RAPID template error: {0}")]
     Template(#[from] minijinja::Error),
+    /// The user's template (`--template`) failed to render: an input error at its line.
+    #[error(transparent)]
+    UserTemplate(TemplateError),
+}
+
+/// Why the user's module template cannot be used: an input error pointing at the template.
+#[derive(Debug, thiserror::Error)]
+pub enum TemplateError {
+    #[error("cannot read template {path}: {source}")]
+    Read {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    /// It does not parse, or rendering it fails (an undefined name: the context is strict).
+    #[error("template {}: {message}", .path.display())]
+    Invalid {
+        path: PathBuf,
+        /// 1-based line and column of the fault in the template, when minijinja knows it.
+        line: Option<usize>,
+        column: Option<usize>,
+        /// That line of the template.
+        line_text: Option<String>,
+        message: String,
+    },
+}
+
+impl TemplateError {
+    fn of(path: &Path, source: &str, e: &minijinja::Error) -> TemplateError {
+        let line = e.line();
+        let line_text =
+            line.and_then(|l| source.lines().nth(l.checked_sub(1)?).map(str::to_string));
+        // The column of the range's start, on its line (byte offsets; templates are text).
+        let column = e.range().and_then(|r| {
+            let before = source.get(..r.start)?;
+            Some(r.start - before.rfind('\n').map_or(0, |i| i + 1) + 1)
+        });
+        let message = match e.detail() {
+            Some(d) => format!("{}: {d}", e.kind()),
+            None => e.kind().to_string(),
+        };
+        TemplateError::Invalid {
+            path: path.to_path_buf(),
+            line,
+            column,
+            line_text,
+            message,
+        }
+    }
+}
+
+/// A module template: the embedded `templates/module.mod.j2`, or the user's (`--template FILE`).
+/// Both see the same context, which README lists for template writers.
+#[derive(Clone, Debug)]
+pub struct ModuleTemplate {
+    /// The user's file; `None` for the embedded template.
+    path: Option<PathBuf>,
+    source: String,
+}
+
+impl ModuleTemplate {
+    /// The embedded template.
+    pub fn embedded() -> ModuleTemplate {
+        ModuleTemplate {
+            path: None,
+            source: TEMPLATE.to_string(),
+        }
+    }
+
+    /// The user's template read from `path`, compiled once here so that a syntax error is found
+    /// before any planning (pointing at its line).
+    pub fn user(path: &Path, source: String) -> Result<ModuleTemplate, TemplateError> {
+        let t = ModuleTemplate {
+            path: Some(path.to_path_buf()),
+            source,
+        };
+        t.environment()
+            .map_err(|e| TemplateError::of(path, &t.source, &e))?;
+        Ok(t)
+    }
+
+    /// The name minijinja knows it by (its file name; `module.mod.j2` for the embedded one).
+    fn name(&self) -> String {
+        self.path
+            .as_ref()
+            .and_then(|p| p.file_name())
+            .map(|f| f.to_string_lossy().into_owned())
+            .unwrap_or_else(|| "module.mod.j2".to_string())
+    }
+
+    /// The environment with this one template: strict undefined (a name the context lacks is an
+    /// error, never an empty string), no auto-escaping, blocks trimmed, the final newline kept.
+    fn environment(&self) -> Result<Environment<'_>, minijinja::Error> {
+        let mut env = Environment::new();
+        env.set_undefined_behavior(UndefinedBehavior::Strict);
+        env.set_auto_escape_callback(|_| AutoEscape::None);
+        env.set_syntax(
+            minijinja::syntax::SyntaxConfig::builder()
+                .trim_blocks(true)
+                .lstrip_blocks(true)
+                .keep_trailing_newline(true)
+                .build()?,
+        );
+        env.add_template_owned(self.name(), self.source.clone())?;
+        Ok(env)
+    }
+
+    /// Renders the context; an error of the user's template becomes [`TemplateError`].
+    fn render(&self, ctx: &ModuleCtx) -> Result<String, RapidError> {
+        let name = self.name();
+        let rendered = self
+            .environment()
+            .and_then(|env| env.get_template(&name)?.render(Serde(ctx)));
+        match (rendered, &self.path) {
+            (Ok(text), _) => Ok(text),
+            (Err(e), Some(path)) => Err(RapidError::UserTemplate(TemplateError::of(
+                path,
+                &self.source,
+                &e,
+            ))),
+            (Err(e), None) => Err(RapidError::Template(e)),
+        }
+    }
+}
+
+/// The template context (README, "Your own module template"): every value already formatted;
+/// templates hold no logic.
+#[derive(Serialize)]
+struct ModuleCtx {
+    /// The module name.
+    module: String,
+    /// The routine's name (`main` unless `motion.proc` or `--proc` says otherwise).
+    proc: String,
+    /// The comment header's lines, without the leading `! `.
+    header: Vec<String>,
+    /// The header's facts one by one, formatted as the header writes them.
+    facts: header::Facts,
+    /// The tooldata the moves use: its name, and its value when the module declares it.
+    tool: ToolCtx,
+    /// The work object the module declares and the moves name, or none.
+    wobj: Option<DataCtx>,
+    /// `\WObj:=<name>`, or empty.
+    wobj_arg: String,
+    /// One per `CONST jointtarget`, in visiting order.
+    targets: Vec<TargetCtx>,
+    /// One per `MoveAbsJ`, in order (move `i` goes to target `i`).
+    moves: Vec<MoveCtx>,
+}
+
+#[derive(Serialize)]
+struct ToolCtx {
+    name: String,
+    /// Whether the module declares it (`PERS tooldata`); else predefined or on the controller.
+    declared: bool,
+    /// The tooldata value `[TRUE,[[x,y,z],[q1,q2,q3,q4]],[mass,[cx,cy,cz],...]]` when declared.
+    value: Option<String>,
+}
+
+/// A declared datum: its name and its value as RAPID writes it.
+#[derive(Serialize)]
+struct DataCtx {
+    name: String,
+    value: String,
 }
 
 #[derive(Serialize)]
 struct TargetCtx {
     name: String,
+    /// `cell` (a point of the cell) or `via` (the planner's).
+    kind: &'static str,
+    /// `a1,a2,a3,a4,a5,a6` (deg, 3 decimals).
     axes: String,
+    /// The jointtarget value `[[a1,...,a6],[9E9,9E9,9E9,9E9,9E9,9E9]]`.
+    value: String,
+    /// The speed and zone of the move into it.
     speed: String,
     zone: String,
-    /// `(name, value)` of the robtarget written beside it.
-    robtarget: Option<(String, String)>,
+    /// The `CONST robtarget` written beside a robtarget point, or none.
+    robtarget: Option<DataCtx>,
 }
 
 #[derive(Serialize)]
-struct ModuleCtx<'a> {
-    module: &'a str,
-    header: Vec<String>,
-    /// `(name, value)` of the declared tooldata and wobjdata.
-    tooldata: Option<(String, String)>,
-    wobjdata: Option<(String, String)>,
-    targets: Vec<TargetCtx>,
-    tool: &'a str,
+struct MoveCtx {
+    /// The jointtarget it goes to.
+    target: String,
+    speed: String,
+    zone: String,
+    tool: String,
+    /// The work object's name, or none.
+    wobj: Option<String>,
     /// `\WObj:=<name>`, or empty.
     wobj_arg: String,
+    /// The whole argument list: `<target>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>]`.
+    args: String,
 }
 
 fn finite(what: impl Into<String>, value: f64) -> Result<f64, RapidError> {
@@ -265,11 +451,18 @@ fn finite(what: impl Into<String>, value: f64) -> Result<f64, RapidError> {
 /// Checks, in this order: module name ([`check_identifier`]); tool and work
 /// object names (declared: [`check_identifier`]; used: identifier shape, not a
 /// reserved word); every speed and zone name; header numbers finite;
-/// `header.moves == targets.len() - 1`; target names ([`target_names`]), the
-/// robtarget names ([`robtarget_name`]); no declared name equal to another, to
-/// `main` or to a speed, zone or tool name (ignoring case); axis values finite
+/// `header.moves == targets.len() - 1`; target names ([`target_names_avoiding`]:
+/// a via steps aside for the module's other names), the robtarget names
+/// ([`robtarget_name`]); no declared name equal to another, to
+/// the routine or to a speed, zone or tool name (ignoring case); axis values finite
 /// and in range. The first failure is returned.
 pub fn render(program: &Program) -> Result<String, RapidError> {
+    render_with(program, &ModuleTemplate::embedded())
+}
+
+/// [`render`] through `template` (the same checks; the context is the same for every
+/// template, so a user's template writes the same names and numbers).
+pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<String, RapidError> {
     check_identifier(&program.module).map_err(|source| RapidError::InvalidModuleName {
         name: program.module.clone(),
         source,
@@ -285,6 +478,10 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
             source,
         })
     };
+    check_identifier(&program.proc_name).map_err(|source| RapidError::InvalidProcName {
+        name: program.proc_name.clone(),
+        source,
+    })?;
     data_name("tool", &program.tool, program.tooldata.is_some())?;
     if let Some(w) = &program.wobj {
         data_name("wobj", &w.name, true)?;
@@ -294,7 +491,8 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
         data_name("zone", &t.zone, false)?;
     }
 
-    let header = header_lines(program)?;
+    let facts = header::facts(program)?;
+    let header = facts.lines();
     let actual = program.targets.len().saturating_sub(1);
     if program.header.moves != actual {
         return Err(RapidError::MovesMismatch {
@@ -303,10 +501,15 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
         });
     }
 
-    let target_names = target_names(&program.targets)?;
+    let target_names = module_target_names(program)?;
     check_name_space(program, &target_names)?;
 
+    let wobj_arg = match &program.wobj {
+        Some(w) => format!("\\WObj:={}", w.name),
+        None => String::new(),
+    };
     let mut targets = Vec::with_capacity(program.targets.len());
+    let mut moves = Vec::with_capacity(program.targets.len());
     for (target, name) in program.targets.iter().zip(target_names) {
         let mut axes = Vec::with_capacity(6);
         for (k, &value) in target.axes_deg.iter().enumerate() {
@@ -320,13 +523,31 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
             Some(r) => {
                 let rname = robtarget_name(&name);
                 let value = data::robtarget(&rname, r)?;
-                Some((rname, value))
+                Some(DataCtx { name: rname, value })
             }
             None => None,
         };
+        let axes = axes.join(",");
+        moves.push(MoveCtx {
+            args: format!(
+                "{name}\\NoEOffs, {}, {}, {}{wobj_arg}",
+                target.speed, target.zone, program.tool
+            ),
+            target: name.clone(),
+            speed: target.speed.clone(),
+            zone: target.zone.clone(),
+            tool: program.tool.clone(),
+            wobj: program.wobj.as_ref().map(|w| w.name.clone()),
+            wobj_arg: wobj_arg.clone(),
+        });
         targets.push(TargetCtx {
+            value: format!("[[{axes}],{NO_EXTERNAL_AXES}]"),
+            kind: match target.kind {
+                TargetKind::CellPoint { .. } => "cell",
+                TargetKind::Via { .. } => "via",
+            },
             name,
-            axes: axes.join(","),
+            axes,
             speed: target.speed.clone(),
             zone: target.zone.clone(),
             robtarget,
@@ -334,52 +555,84 @@ pub fn render(program: &Program) -> Result<String, RapidError> {
     }
 
     let ctx = ModuleCtx {
-        module: &program.module,
+        module: program.module.clone(),
+        proc: program.proc_name.clone(),
         header,
-        tooldata: match &program.tooldata {
-            Some(t) => Some((program.tool.clone(), data::tooldata(&program.tool, t)?)),
+        facts,
+        tool: ToolCtx {
+            name: program.tool.clone(),
+            declared: program.tooldata.is_some(),
+            value: match &program.tooldata {
+                Some(t) => Some(data::tooldata(&program.tool, t)?),
+                None => None,
+            },
+        },
+        wobj: match &program.wobj {
+            Some(w) => Some(DataCtx {
+                name: w.name.clone(),
+                value: data::wobjdata(w)?,
+            }),
             None => None,
         },
-        wobjdata: match &program.wobj {
-            Some(w) => Some((w.name.clone(), data::wobjdata(w)?)),
-            None => None,
-        },
+        wobj_arg,
         targets,
-        tool: &program.tool,
-        wobj_arg: match &program.wobj {
-            Some(w) => format!("\\WObj:={}", w.name),
-            None => String::new(),
-        },
+        moves,
     };
-
-    let mut env = Environment::new();
-    env.set_undefined_behavior(UndefinedBehavior::Strict);
-    env.set_auto_escape_callback(|_| AutoEscape::None);
-    env.set_syntax(
-        minijinja::syntax::SyntaxConfig::builder()
-            .trim_blocks(true)
-            .lstrip_blocks(true)
-            .keep_trailing_newline(true)
-            .build()?,
+    let text = template.render(&ctx)?;
+    debug_assert!(
+        template.path.is_some()
+            || (text.is_ascii() && !text.contains('\r') && text.ends_with('\n'))
     );
-    env.add_template("module.mod.j2", TEMPLATE)?;
-    let text = env.get_template("module.mod.j2")?.render(Serde(&ctx))?;
-    debug_assert!(text.is_ascii() && !text.contains('\r') && text.ends_with('\n'));
     Ok(text)
 }
 
+/// The names of the module's `CONST jointtarget`s, in order: the cell points' own, and the
+/// vias' (`via<leg>_<index>`), which step aside for the module's other names (a cell point that
+/// takes one is a clash, refused by the cell validation at its line, and by [`render`] as a
+/// last guard). The preview and the report name the waypoints with it.
+pub fn module_target_names(program: &Program) -> Result<Vec<String>, RapidError> {
+    let others = other_names(program);
+    let reserved: Vec<&str> = others.iter().map(String::as_str).collect();
+    target_names_avoiding(&program.targets, &reserved)
+}
+
+/// The module's names other than its `CONST jointtarget`s: the module, the routine, the tool, the
+/// work object, every speed and zone, and the `CONST robtarget`s of the cell points that have
+/// one. The vias' names avoid them ([`target_names_avoiding`]).
+fn other_names(program: &Program) -> Vec<String> {
+    let mut names = vec![
+        program.module.clone(),
+        program.proc_name.clone(),
+        program.tool.clone(),
+    ];
+    names.extend(program.wobj.iter().map(|w| w.name.clone()));
+    for t in &program.targets {
+        names.push(t.speed.clone());
+        names.push(t.zone.clone());
+        if let (TargetKind::CellPoint { name }, Some(_)) = (&t.kind, &t.robtarget) {
+            names.push(robtarget_name(name));
+        }
+    }
+    names.sort_unstable();
+    names.dedup();
+    names
+}
+
 /// One name space: the declared names (the module, the tool and work object when declared,
-/// every `CONST`) differ from each other and from the names the module uses (`main`, the tool
+/// every `CONST`, the routine) differ from each other and from the names the module uses (the tool
 /// when not declared, every speed and zone).
 fn check_name_space(program: &Program, target_names: &[String]) -> Result<(), RapidError> {
-    let mut used: Vec<(String, String)> = vec![(
-        "main".to_string(),
-        "PROC main of the generated module".to_string(),
-    )];
-    let mut declared: Vec<(String, String)> = vec![(
-        program.module.clone(),
-        format!("the module name `{}`", program.module),
-    )];
+    let mut used: Vec<(String, String)> = Vec::new();
+    let mut declared: Vec<(String, String)> = vec![
+        (
+            program.module.clone(),
+            format!("the module name `{}`", program.module),
+        ),
+        (
+            program.proc_name.clone(),
+            format!("PROC {} of the generated module", program.proc_name),
+        ),
+    ];
     let tool = (
         program.tool.clone(),
         format!("the tool data `{}`", program.tool),

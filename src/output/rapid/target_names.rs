@@ -12,9 +12,9 @@ fn digits(n: usize) -> usize {
 /// The `CONST jointtarget` names for `targets`, in the same order.
 ///
 /// - A cell point keeps its name, which must pass [`check_identifier`]
-///   ([`RapidError::InvalidTargetName`] otherwise), must not equal `main`
-///   (the generated `PROC`) and must be unique among cell points ignoring
-///   case ([`RapidError::NameClash`] otherwise).
+///   ([`RapidError::InvalidTargetName`] otherwise) and must be unique among
+///   cell points ignoring case ([`RapidError::NameClash`] otherwise); the
+///   routine's name is checked with the module's other names (`render`).
 /// - A via target is named `via<L>_<I>` with `L = leg + 1` and `I = index`,
 ///   both zero-padded to the same width for the whole program: the number of
 ///   digits of the largest `leg + 1` (resp. `index`) among the via targets,
@@ -29,8 +29,17 @@ fn digits(n: usize) -> usize {
 ///
 /// The result is a pure function of `targets`: same input, same names.
 pub fn target_names(targets: &[JointTarget]) -> Result<Vec<String>, RapidError> {
-    // 1. Cell points: validate and reserve.
-    let mut taken: HashSet<String> = HashSet::new();
+    target_names_avoiding(targets, &[])
+}
+
+/// [`target_names`], with vias also avoiding `reserved` (the module's other names: the module,
+/// the speed, zone and tool data), which take a via's name as a cell point does: `_x1`, ....
+pub fn target_names_avoiding(
+    targets: &[JointTarget],
+    reserved: &[&str],
+) -> Result<Vec<String>, RapidError> {
+    // 1. Cell points: validate and reserve; then the other names.
+    let mut taken: HashSet<String> = reserved.iter().map(|n| n.to_ascii_lowercase()).collect();
     let mut owners: Vec<(String, String)> = Vec::new(); // lowercase -> original
     for (position, target) in targets.iter().enumerate() {
         if let TargetKind::CellPoint { name } = &target.kind {
@@ -40,12 +49,6 @@ pub fn target_names(targets: &[JointTarget]) -> Result<Vec<String>, RapidError> 
                 source,
             })?;
             let key = name.to_ascii_lowercase();
-            if key == "main" {
-                return Err(RapidError::NameClash {
-                    name: name.clone(),
-                    other: "PROC main of the generated module".to_string(),
-                });
-            }
             if let Some((_, first)) = owners.iter().find(|(k, _)| *k == key) {
                 return Err(RapidError::NameClash {
                     name: name.clone(),
@@ -128,6 +131,15 @@ mod tests {
     }
 
     #[test]
+    fn vias_avoid_the_modules_other_names() {
+        let t = [point("home"), via(0, 1), via(0, 2), point("pick")];
+        assert_eq!(
+            target_names_avoiding(&t, &["VIA01_01", "v300"]).unwrap(),
+            ["home", "via01_01_x1", "via01_02", "pick"]
+        );
+    }
+
+    #[test]
     fn target_names_keep_cell_points_and_name_vias() {
         let t = [
             point("home"),
@@ -189,14 +201,6 @@ mod tests {
             }
             other => panic!("expected NameClash, got {other:?}"),
         }
-    }
-
-    #[test]
-    fn target_names_reject_cell_point_named_main() {
-        assert!(matches!(
-            target_names(&[point("Main")]),
-            Err(RapidError::NameClash { .. })
-        ));
     }
 
     #[test]

@@ -69,6 +69,7 @@ fn small_program() -> Program {
         tooldata: None,
         wobj: None,
         ranges: IRB1400,
+        proc_name: "main".into(),
     }
 }
 
@@ -151,6 +152,7 @@ fn awkward_program() -> Program {
         tooldata: None,
         wobj: None,
         ranges: AxisRanges::UNBOUNDED,
+        proc_name: "main".into(),
     }
 }
 
@@ -382,6 +384,39 @@ fn render_rejects_target_named_like_module_or_tool() {
     let mut p = small_program();
     p.module = "main".into();
     assert!(matches!(render(&p), Err(RapidError::NameClash { .. })));
+    // A cell point takes the routine's name: refused, whatever the routine is called.
+    let mut p = small_program();
+    p.targets[3] = point("Main", [0.0; 6]);
+    let err = render(&p).unwrap_err();
+    assert!(err.to_string().contains("PROC main"), "{err}");
+    p.proc_name = "Weld".into();
+    let text = render(&p).expect("a point may be called main when the routine is not");
+    assert!(text.contains("    PROC Weld()\n") && text.contains("MoveAbsJ Main\\NoEOffs"));
+    p.targets[3] = point("weld", [0.0; 6]);
+    assert!(matches!(render(&p), Err(RapidError::NameClash { .. })));
+    p.proc_name = "MoveJ".into();
+    assert!(matches!(
+        render(&p),
+        Err(RapidError::InvalidProcName { .. })
+    ));
+}
+
+#[test]
+fn vias_take_no_name_of_the_module_or_its_data() {
+    // A module or tool called like a via is valid RAPID; the via steps aside (was a name clash,
+    // exit 4, at render time).
+    let mut p = small_program();
+    p.module = "Via01_01".into();
+    p.tool = "VIA01_02".into();
+    let text = render(&p).expect("renders");
+    assert!(text.starts_with("MODULE Via01_01\n"), "{text}");
+    assert!(text.contains("CONST jointtarget via01_01_x1 := "), "{text}");
+    assert!(text.contains("CONST jointtarget via01_02_x1 := "), "{text}");
+    assert!(
+        text.contains("MoveAbsJ via01_02_x1\\NoEOffs, v300, fine, VIA01_02;"),
+        "{text}"
+    );
+    assert!(!text.contains("CONST jointtarget via01_01 :="), "{text}");
 }
 
 #[test]
@@ -487,7 +522,34 @@ fn tcp_program() -> Program {
             },
         }),
         ranges: IRB1400,
+        proc_name: "main".into(),
     }
+}
+
+#[test]
+fn vias_take_no_name_of_the_work_object_or_a_points_speed_or_zone() {
+    // The via of leg 2 would be via02_01: a work object, or the speed or zone of a point, of
+    // that name is valid RAPID, so the via steps aside.
+    let stepped = "CONST jointtarget via02_01_x1 := ";
+    let mut p = tcp_program();
+    p.wobj.as_mut().expect("wobj").name = "Via02_01".into();
+    let text = render(&p).expect("renders");
+    assert!(text.contains("PERS wobjdata Via02_01 := "), "{text}");
+    assert!(text.contains(stepped), "{text}");
+    assert!(!text.contains("CONST jointtarget via02_01 :="), "{text}");
+
+    let mut p = tcp_program();
+    p.targets[3].zone = "VIA02_01".into();
+    let text = render(&p).expect("renders");
+    assert!(text.contains(stepped), "{text}");
+    assert!(
+        text.contains("v100, VIA02_01, tTorch\\WObj:=wobjTrunk;"),
+        "{text}"
+    );
+
+    // Without a clash the via keeps its name.
+    let text = render(&tcp_program()).expect("renders");
+    assert!(text.contains("CONST jointtarget via02_01 := "), "{text}");
 }
 
 /// Written by hand from docs/rapid.md's formats (tooldata, wobjdata, robtarget, MoveAbsJ with

@@ -303,28 +303,19 @@ pub fn locate(input: &LocateInput) -> Result<Location, LocateError> {
     }
 
     // Reach region of every point.
-    let g = input.geom;
-    let (rho_min, rho_max) = reach_interval_mm(g);
-    let shoulder_z = input.base_z_mm + g.d1_mm;
     let mut reach = Vec::with_capacity(input.points_mm.len());
     for (name, p) in input.points_mm {
-        let dz = p[2] - shoulder_z;
-        let rings = reach_rings_mm(g.a1_mm, rho_min, rho_max, dz);
-        let (Some(first), Some(last)) = (rings.first(), rings.last()) else {
+        let r = reach_region(input, name, p);
+        if r.rings_mm.is_empty() {
+            let (dz_mm, max_mm) = reach_from_shoulder(input, p);
             return Err(LocateError::PointOutOfReach {
                 name: name.clone(),
-                dz_mm: dz,
-                max_mm: rho_max,
+                dz_mm,
+                max_mm,
                 base_z_mm: input.base_z_mm,
             });
-        };
-        reach.push(ReachRegion {
-            name: name.clone(),
-            centre_mm: [p[0], p[1]],
-            inner_mm: first[0],
-            outer_mm: last[1],
-            rings_mm: rings,
-        });
+        }
+        reach.push(r);
     }
 
     // Raster over the intersection of the outer discs' bounding boxes.
@@ -332,10 +323,7 @@ pub fn locate(input: &LocateInput) -> Result<Location, LocateError> {
         // Some two outer discs are apart, so the pairwise test names them.
         return Err(diagnose::disjoint(&reach).unwrap_or_else(|| diagnose::no_common(&reach, cell)));
     };
-    // Snap the origin to the cell lattice (module docs, "Raster").
-    let lo = lo.map(|v| (v / cell).floor() * cell);
-    let nx = (((hi[0] - lo[0]) / cell).ceil() as usize).max(1);
-    let ny = (((hi[1] - lo[1]) / cell).ceil() as usize).max(1);
+    let (lo, [nx, ny]) = raster(lo, hi, cell);
     if nx.saturating_mul(ny) > MAX_CELLS {
         return bad(format!(
             "a {cell} mm raster over {:.0} x {:.0} mm needs {nx} x {ny} cells, more than {MAX_CELLS}; \
@@ -344,16 +332,7 @@ pub fn locate(input: &LocateInput) -> Result<Location, LocateError> {
             hi[1] - lo[1]
         ));
     }
-    let grow = input.base_radius_mm + input.clearance_mm;
-    let base_top = input.base_z_mm + input.base_height_mm;
-    let blocking: Vec<Obstacle> = input
-        .obstacles
-        .iter()
-        // Boxes the robot stands on (top at or below the mounting plane) do not block it, as in
-        // `collision`; a box above the base's top blocks only within the clearance.
-        .filter(|o| o.aabb.min.z < base_top + input.clearance_mm && o.aabb.max.z > input.base_z_mm)
-        .cloned()
-        .collect();
+    let (blocking, grow) = blocking(input);
 
     let scan = region::scan(&reach, &blocking, grow, lo, [nx, ny], cell);
     let Some((best_mm, best_margin_mm)) = scan.best else {
@@ -379,6 +358,94 @@ pub fn locate(input: &LocateInput) -> Result<Location, LocateError> {
         blocking,
         grow_mm: grow,
     })
+}
+
+/// One point's reach region (no rings: out of reach from any base at this height).
+fn reach_region(input: &LocateInput, name: &str, p: &[f64; 3]) -> ReachRegion {
+    let g = input.geom;
+    let (rho_min, rho_max) = reach_interval_mm(g);
+    let (dz, _) = reach_from_shoulder(input, p);
+    let rings = reach_rings_mm(g.a1_mm, rho_min, rho_max, dz);
+    ReachRegion {
+        name: name.to_string(),
+        centre_mm: [p[0], p[1]],
+        inner_mm: rings.first().map_or(0.0, |r| r[0]),
+        outer_mm: rings.last().map_or(0.0, |r| r[1]),
+        rings_mm: rings,
+    }
+}
+
+/// A point's height above the shoulder and the arm's largest reach from it, mm.
+fn reach_from_shoulder(input: &LocateInput, p: &[f64; 3]) -> (f64, f64) {
+    let g = input.geom;
+    let (_, rho_max) = reach_interval_mm(g);
+    (p[2] - (input.base_z_mm + g.d1_mm), rho_max)
+}
+
+/// The obstacles that can block the base, and how far their footprints grow (base radius +
+/// clearance).
+fn blocking(input: &LocateInput) -> (Vec<Obstacle>, f64) {
+    let grow = input.base_radius_mm + input.clearance_mm;
+    let base_top = input.base_z_mm + input.base_height_mm;
+    let blocking = input
+        .obstacles
+        .iter()
+        // Boxes the robot stands on (top at or below the mounting plane) do not block it, as in
+        // `collision`; a box above the base's top blocks only within the clearance.
+        .filter(|o| o.aabb.min.z < base_top + input.clearance_mm && o.aabb.max.z > input.base_z_mm)
+        .cloned()
+        .collect();
+    (blocking, grow)
+}
+
+/// The raster over `lo .. hi` at `cell`: its origin, snapped to the cell lattice (module docs,
+/// "Raster"), and its size in cells.
+fn raster(lo: [f64; 2], hi: [f64; 2], cell: f64) -> ([f64; 2], [usize; 2]) {
+    let lo = lo.map(|v| (v / cell).floor() * cell);
+    let nx = (((hi[0] - lo[0]) / cell).ceil() as usize).max(1);
+    let ny = (((hi[1] - lo[1]) / cell).ceil() as usize).max(1);
+    (lo, [nx, ny])
+}
+
+/// What can be drawn of the location problem whatever its outcome (the top view of a failure):
+/// every point's reach region, the obstacles that can block the base and how far their
+/// footprints grow, and R where it is not empty. Computed by the rules of [`locate`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sketch {
+    /// The points, by name with their wrist centres (cell frame), as given.
+    pub points: Vec<(String, [f64; 3])>,
+    /// Per point, in input order; no rings: the point is out of reach from any base.
+    pub reach: Vec<ReachRegion>,
+    pub blocking: Vec<Obstacle>,
+    pub grow_mm: f64,
+    /// R, when it holds a position.
+    pub region: Option<Region>,
+}
+
+/// The [`Sketch`] of a location problem (for a picture of why [`locate`] failed; it does not
+/// fail itself: what cannot be computed is left out).
+pub fn sketch(input: &LocateInput) -> Sketch {
+    let reach: Vec<ReachRegion> = input
+        .points_mm
+        .iter()
+        .map(|(name, p)| reach_region(input, name, p))
+        .collect();
+    let (blocking, grow_mm) = blocking(input);
+    let cell = input.cell_mm;
+    let reachable = reach.iter().all(|r| !r.rings_mm.is_empty());
+    let region = region::common_bbox(&reach)
+        .filter(|_| reachable && cell.is_finite() && cell > 0.0)
+        .map(|(lo, hi)| (raster(lo, hi, cell), hi))
+        .filter(|((_, [nx, ny]), _)| nx.saturating_mul(*ny) <= MAX_CELLS)
+        .map(|((lo, n), _)| region::scan(&reach, &blocking, grow_mm, lo, n, cell).region)
+        .filter(|r| r.area_mm2 > 0.0);
+    Sketch {
+        points: input.points_mm.to_vec(),
+        reach,
+        blocking,
+        grow_mm,
+        region,
+    }
 }
 
 #[cfg(test)]

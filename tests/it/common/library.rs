@@ -2,7 +2,6 @@
 //! of the tests drive the binary or read files). When the library's modules move, mend them here.
 
 pub use gen_rapid::cell::{Base, Cell, Target, Tool, ToolGeometry};
-pub use gen_rapid::output::preview;
 pub use gen_rapid::place::Survey;
 pub use gen_rapid::robot::Robot;
 
@@ -11,6 +10,73 @@ use gen_rapid::error::Error;
 use gen_rapid::pipeline;
 use gen_rapid::plan::Method;
 use std::path::Path;
+
+/// The bundled IRB 1400.
+pub fn irb1400() -> Robot {
+    let path = super::root().join("robots/irb1400.urdf");
+    Robot::load(&path, None).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+/// A refusal as the user sees it: the rendered message, the place it points at (line, column)
+/// and the exit status.
+#[derive(Debug)]
+pub struct Refusal {
+    pub message: String,
+    pub loc: Option<(u64, u64)>,
+    pub exit: u8,
+}
+
+fn refusal(error: Error, file: &str, text: Option<&str>) -> Refusal {
+    Refusal {
+        message: error.render(file, text),
+        loc: error.loc().map(|l| (l.line, l.column)),
+        exit: error.exit_code(),
+    }
+}
+
+/// The load stage's reading of a cell file's bytes (UTF-8, YAML, validation), as if read from
+/// `path` (`file` names it in messages); no file is read.
+pub fn cell_from_bytes(path: &Path, file: &str, bytes: Vec<u8>) -> Result<(Cell, String), Refusal> {
+    let text = cell::text_of(bytes).map_err(|e| refusal(e.into(), file, None))?;
+    match cell::parse(path, &text) {
+        Ok(c) => Ok((c, text)),
+        Err(e) => Err(refusal(e.into(), file, Some(&text))),
+    }
+}
+
+/// The whole run after load (place, inspect, plan, time, render) for a cell with `robot`, on a
+/// grid of `grid_deg`: the module text.
+pub fn run_with(
+    cell: &Cell,
+    text: &str,
+    file: &str,
+    robot: &Robot,
+    grid_deg: f64,
+) -> Result<String, Refusal> {
+    let job = pipeline::Loaded {
+        cell: cell.clone(),
+        text: text.to_string(),
+        robot: robot.clone(),
+    };
+    match pipeline::run(&job, cell.planner.method, grid_deg) {
+        Ok(out) => Ok(out.rendered.text),
+        Err(halted) => Err(refusal(*halted.error, file, Some(text))),
+    }
+}
+
+/// The place stage for a cell with `robot` (whatever URDF the cell names): the number of points
+/// placed.
+pub fn place_with(cell: &Cell, text: &str, file: &str, robot: &Robot) -> Result<usize, Refusal> {
+    let job = pipeline::Loaded {
+        cell: cell.clone(),
+        text: text.to_string(),
+        robot: robot.clone(),
+    };
+    match pipeline::place(&job) {
+        Ok(placed) => Ok(placed.points.len()),
+        Err(e) => Err(refusal(e, file, Some(text))),
+    }
+}
 
 /// Reads and validates a cell file.
 pub fn load_cell(path: &Path) -> Cell {

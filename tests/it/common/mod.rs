@@ -6,6 +6,7 @@ pub mod dense;
 pub mod fixtures;
 pub mod library;
 pub mod module;
+pub mod svg;
 pub mod tcp;
 
 use std::path::{Path, PathBuf};

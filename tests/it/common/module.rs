@@ -1,6 +1,8 @@
-//! Reading a written module as text (not through the library's types): the header's facts, the
-//! `CONST jointtarget` and `CONST robtarget` declarations, the `PERS tooldata` and
-//! `PERS wobjdata`, and the `MoveAbsJ` moves with their speed, zone, tool and work object.
+//! Reading a written module as text (not through the library's types): a program header
+//! (`%%%` ... `%%%`) before it, the header's facts, the `CONST jointtarget` and
+//! `CONST robtarget` declarations, the `PERS tooldata` and `PERS wobjdata` (any of them
+//! `LOCAL`), the routine's name, and the `MoveAbsJ` moves with their speed, zone, tool and work
+//! object.
 
 /// What a module says.
 #[derive(Clone, Debug)]
@@ -34,6 +36,12 @@ pub struct Module {
     pub urdf: Option<String>,
     pub controller: Option<String>,
     pub coupling: Option<String>,
+    /// The routine's name (`PROC <name>()`).
+    pub proc_name: String,
+    /// How many declarations are `LOCAL` (module-local data).
+    pub local: usize,
+    /// The program header before `MODULE` (`%%%`, `VERSION:1`, ..., `%%%`), if any.
+    pub program_header: Vec<String>,
 }
 
 /// One `MoveAbsJ <target>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>];`.
@@ -78,8 +86,38 @@ impl Module {
         let mut tooldata = Vec::new();
         let mut wobjdata = Vec::new();
         let (mut urdf, mut controller, mut coupling) = (None, None, None);
-        for line in text.lines().map(str::trim) {
-            if let Some(rest) = line.strip_prefix("MODULE ") {
+        let mut proc_name = None;
+        let mut local = 0;
+        let mut program_header = Vec::new();
+        let mut lines = text.lines().map(str::trim).peekable();
+        // A program header: `%%%`, its lines, `%%%`, before the module.
+        if lines.peek() == Some(&"%%%") {
+            lines.next();
+            loop {
+                match lines.next() {
+                    Some("%%%") => break,
+                    Some(l) => program_header.push(l.to_string()),
+                    None => return Err("a program header '%%%' without its end".into()),
+                }
+            }
+        }
+        for line in lines {
+            // `LOCAL` makes a declaration module-local; it is read as any other.
+            let line = match line.strip_prefix("LOCAL ") {
+                Some(rest) => {
+                    local += 1;
+                    rest
+                }
+                None => line,
+            };
+            if let Some(rest) = line.strip_prefix("PROC ") {
+                let name = rest
+                    .strip_suffix("()")
+                    .ok_or_else(|| format!("'{line}': not PROC <name>()"))?;
+                if proc_name.replace(name.to_string()).is_some() {
+                    return Err("more than one PROC".into());
+                }
+            } else if let Some(rest) = line.strip_prefix("MODULE ") {
                 name = Some(rest.to_string());
             } else if let Some(rest) = line.strip_prefix("! planner: ") {
                 planner = Some(rest.to_string());
@@ -189,6 +227,9 @@ impl Module {
             urdf,
             controller,
             coupling,
+            proc_name: proc_name.ok_or_else(|| missing("PROC"))?,
+            local,
+            program_header,
         })
     }
 

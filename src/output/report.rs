@@ -1,0 +1,362 @@
+//! The run's results as data (`--report FILE`, JSON): every waypoint (its module name, all six
+//! axes, the TCP and wrist-centre positions in the cell frame, cell point or via), every move
+//! (from, to, the certified smallest clearance along it with the link or tool shape and the
+//! obstacle, its estimated time, speed and zone), the base, the grid, the method, the totals and
+//! the tool and work object. `docs/report.schema.json` is its JSON Schema (draft 2020-12);
+//! `format` names the version of that layout (later versions add keys, for example the parts of
+//! a move's time once the estimate models the speeddata).
+//!
+//! Goes beyond the paper (a script's view of a run). Made from the run's results only: the cell,
+//! the placed job, the plan and the module's content ([`Program`]: the names, speeds and zones
+//! the module writes), with positions by the robot's forward kinematics ([`Poser`]).
+//!
+//! Deterministic bytes: keys in a fixed order, numbers with the module's decimals from
+//! [`crate::precision`] (joint values 3, positions 3, clearances 1, times 2, the grid and the
+//! yaw 3), written as fixed-decimal JSON numbers (`90.000`, never `9e1` or `-0.000`); a
+//! non-finite number is refused ([`ReportError::NotFinite`]) rather than written as `null`.
+
+use super::clearance_part;
+use super::poses::Poser;
+use super::rapid::{format_fixed, Program, TargetKind};
+use crate::cell::{Base, Cell};
+use crate::place::Placed;
+use crate::plan::{Plan, WaypointKind};
+use crate::precision::{
+    REPORT_CLEARANCE_DECIMALS, REPORT_GRID_DECIMALS, REPORT_JOINT_DECIMALS,
+    REPORT_POSITION_DECIMALS, REPORT_TIME_DECIMALS, REPORT_YAW_DECIMALS,
+};
+use crate::robot::Robot;
+use serde::{Serialize, Serializer};
+
+/// The layout's name and version (the `format` key).
+pub const FORMAT: &str = "gen-rapid report 1";
+
+/// Why a report could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum ReportError {
+    #[error("cannot write the report: {what} is not a finite number")]
+    NotFinite { what: String },
+    #[error("cannot write the report: {0}")]
+    Json(#[from] serde_json::Error),
+}
+
+/// A number written with a fixed number of decimals.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fixed {
+    pub value: f64,
+    pub decimals: usize,
+}
+
+impl Serialize for Fixed {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let raw = serde_json::value::RawValue::from_string(format_fixed(self.value, self.decimals))
+            .map_err(serde::ser::Error::custom)?;
+        raw.serialize(s)
+    }
+}
+
+/// The report; field order is the JSON's key order.
+#[derive(Clone, Debug, Serialize)]
+pub struct Report {
+    pub format: &'static str,
+    pub generator: String,
+    /// The cell file's name.
+    pub cell: String,
+    pub module: String,
+    /// The routine that makes the moves.
+    pub proc: String,
+    pub robot: RobotInfo,
+    pub base: BaseInfo,
+    /// The search method of the paper used.
+    pub method: String,
+    pub grid_deg: Fixed,
+    /// The clearance asked for, mm.
+    pub clearance_mm: Fixed,
+    /// The tooldata every move uses.
+    pub tool: String,
+    /// The work object every move names (`wobj0` when the module declares none).
+    pub wobj: String,
+    pub totals: Totals,
+    pub waypoints: Vec<WaypointInfo>,
+    pub moves: Vec<MoveInfo>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct RobotInfo {
+    /// The URDF's file name.
+    pub urdf: String,
+    /// The controller file's name; `null` without one.
+    pub controller: Option<String>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct BaseInfo {
+    /// The robot base's origin in the cell frame, mm.
+    pub position_mm: [Fixed; 3],
+    pub yaw_deg: Fixed,
+    /// `true` when the place stage chose it (`base: auto`).
+    pub chosen: bool,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct Totals {
+    pub waypoints: usize,
+    pub cell_points: usize,
+    pub vias: usize,
+    pub moves: usize,
+    /// The sum of the moves' estimated times, s.
+    pub estimated_time_s: Option<Fixed>,
+    /// The smallest of the moves' clearances; `null` without obstacles.
+    pub min_clearance: Option<ClearanceInfo>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct WaypointInfo {
+    /// Its name in the module.
+    pub name: String,
+    /// `cell` (a point of the cell file) or `via` (the planner's).
+    pub kind: &'static str,
+    /// Controller values of axes 1..6, deg (the jointtarget's).
+    pub joints_deg: [Fixed; 6],
+    /// The TCP (tool0 without a tool) in the cell frame, mm.
+    pub tcp_mm: [Fixed; 3],
+    /// The wrist centre in the cell frame, mm.
+    pub wrist_centre_mm: [Fixed; 3],
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct MoveInfo {
+    /// The waypoints it joins (names).
+    pub from: String,
+    pub to: String,
+    /// The certified smallest clearance along it; `null` without obstacles.
+    pub min_clearance: Option<ClearanceInfo>,
+    /// Its estimated time, s.
+    pub time_s: Option<Fixed>,
+    /// The speeddata and zonedata of its `MoveAbsJ`.
+    pub speed: String,
+    pub zone: String,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct ClearanceInfo {
+    /// A certified lower bound of the smallest distance, mm (within 0.05 mm).
+    pub mm: Fixed,
+    /// `link` (a link cylinder) or `tool` (a tool shape).
+    pub part: &'static str,
+    /// The link's or the tool shape's name.
+    pub name: String,
+    /// The obstacle.
+    pub obstacle: String,
+}
+
+/// What the report is made from.
+pub struct Input<'a> {
+    pub cell: &'a Cell,
+    pub robot: &'a Robot,
+    pub placed: &'a Placed,
+    pub plan: &'a Plan,
+    /// The module's content: its names, speeds, zones, tool and work object.
+    pub program: &'a Program,
+    /// The module's names of the plan's waypoints, in order.
+    pub names: &'a [String],
+}
+
+/// Checks that a number is finite before it is written.
+fn fixed(what: impl Fn() -> String, value: f64, decimals: usize) -> Result<Fixed, ReportError> {
+    if value.is_finite() {
+        Ok(Fixed { value, decimals })
+    } else {
+        Err(ReportError::NotFinite { what: what() })
+    }
+}
+
+fn fixed_n<const N: usize>(
+    what: impl Fn() -> String,
+    v: [f64; N],
+    decimals: usize,
+) -> Result<[Fixed; N], ReportError> {
+    for x in v {
+        fixed(&what, x, decimals)?;
+    }
+    Ok(v.map(|value| Fixed { value, decimals }))
+}
+
+fn clearance(c: &crate::plan::Clearance, what: &str) -> Result<ClearanceInfo, ReportError> {
+    let (part, name) = clearance_part(c);
+    Ok(ClearanceInfo {
+        mm: fixed(|| what.to_string(), c.mm, REPORT_CLEARANCE_DECIMALS)?,
+        part,
+        name: name.to_string(),
+        obstacle: c.obstacle.clone(),
+    })
+}
+
+/// The report of a planned run.
+pub fn report(input: &Input) -> Result<Report, ReportError> {
+    let Input {
+        cell,
+        robot,
+        placed,
+        plan,
+        program,
+        names,
+    } = input;
+    let poser = Poser::new(robot, placed.placement, cell.tool.as_ref());
+    let name = |k: usize| names.get(k).cloned().unwrap_or_default();
+    let mut waypoints = Vec::with_capacity(plan.waypoints.len());
+    for (k, w) in plan.waypoints.iter().enumerate() {
+        let what = |field: &str| format!("{field} of waypoint '{}'", name(k));
+        waypoints.push(WaypointInfo {
+            name: name(k),
+            kind: match w.kind {
+                WaypointKind::CellPoint(_) => "cell",
+                WaypointKind::Via { .. } => "via",
+            },
+            joints_deg: fixed_n(|| what("an axis"), w.joints_deg, REPORT_JOINT_DECIMALS)?,
+            tcp_mm: fixed_n(
+                || what("the TCP"),
+                poser.tcp_mm(&w.joints_deg),
+                REPORT_POSITION_DECIMALS,
+            )?,
+            wrist_centre_mm: fixed_n(
+                || what("the wrist centre"),
+                poser.wrist_centre_mm(&w.joints_deg),
+                REPORT_POSITION_DECIMALS,
+            )?,
+        });
+    }
+    let mut moves = Vec::with_capacity(plan.moves());
+    for i in 0..plan.moves() {
+        let what = format!("the clearance of move {}", i + 1);
+        let target = program.targets.get(i + 1);
+        moves.push(MoveInfo {
+            from: name(i),
+            to: name(i + 1),
+            min_clearance: match plan.move_clearances.get(i).and_then(Option::as_ref) {
+                Some(c) => Some(clearance(c, &what)?),
+                None => None,
+            },
+            time_s: match plan.estimate.as_ref().and_then(|e| e.move_s.get(i)) {
+                Some(&t) => Some(fixed(
+                    || format!("the time of move {}", i + 1),
+                    t,
+                    REPORT_TIME_DECIMALS,
+                )?),
+                None => None,
+            },
+            speed: target.map(|t| t.speed.clone()).unwrap_or_default(),
+            zone: target.map(|t| t.zone.clone()).unwrap_or_default(),
+        });
+    }
+    let cell_points = program
+        .targets
+        .iter()
+        .filter(|t| matches!(t.kind, TargetKind::CellPoint { .. }))
+        .count();
+    let h = &program.header;
+    Ok(Report {
+        format: FORMAT,
+        generator: h.generator.clone(),
+        cell: h.cell_file.clone(),
+        module: program.module.clone(),
+        proc: program.proc_name.clone(),
+        robot: RobotInfo {
+            urdf: h.urdf.clone(),
+            controller: h.controller.clone(),
+        },
+        base: BaseInfo {
+            position_mm: fixed_n(
+                || "the base".to_string(),
+                placed.placement.base_mm,
+                REPORT_POSITION_DECIMALS,
+            )?,
+            yaw_deg: fixed(
+                || "the yaw".to_string(),
+                placed.placement.yaw_deg,
+                REPORT_YAW_DECIMALS,
+            )?,
+            chosen: cell.robot.base == Base::Auto,
+        },
+        method: plan.method.name().to_string(),
+        grid_deg: fixed(|| "the grid".into(), plan.grid_deg, REPORT_GRID_DECIMALS)?,
+        clearance_mm: fixed(
+            || "the clearance".into(),
+            cell.planner.clearance_mm,
+            REPORT_CLEARANCE_DECIMALS,
+        )?,
+        tool: program.tool.clone(),
+        wobj: program
+            .wobj
+            .as_ref()
+            .map_or_else(|| "wobj0".to_string(), |w| w.name.clone()),
+        totals: Totals {
+            waypoints: plan.waypoints.len(),
+            cell_points,
+            vias: plan.waypoints.len() - cell_points.min(plan.waypoints.len()),
+            moves: plan.moves(),
+            estimated_time_s: match &plan.estimate {
+                Some(e) => Some(fixed(
+                    || "the total time".into(),
+                    e.total_s,
+                    REPORT_TIME_DECIMALS,
+                )?),
+                None => None,
+            },
+            min_clearance: match &plan.min_clearance {
+                Some(c) => Some(clearance(c, "the smallest clearance")?),
+                None => None,
+            },
+        },
+        waypoints,
+        moves,
+    })
+}
+
+/// The report as pretty JSON with a final newline.
+pub fn to_json(report: &Report) -> Result<String, ReportError> {
+    let mut text = serde_json::to_string_pretty(report)?;
+    text.push('\n');
+    Ok(text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_have_fixed_decimals_and_no_negative_zero() {
+        let v = [
+            Fixed {
+                value: 90.0,
+                decimals: 3,
+            },
+            Fixed {
+                value: -0.0004,
+                decimals: 3,
+            },
+            Fixed {
+                value: 4.335,
+                decimals: 2,
+            },
+            Fixed {
+                value: 1e21,
+                decimals: 1,
+            },
+        ];
+        let text = serde_json::to_string(&v).unwrap();
+        assert_eq!(text, "[90.000,0.000,4.33,1000000000000000000000.0]");
+        // Still JSON numbers.
+        let back: Vec<f64> = serde_json::from_str(&text).unwrap();
+        assert_eq!(back, [90.0, 0.0, 4.33, 1e21]);
+    }
+
+    #[test]
+    fn a_number_that_is_not_finite_is_refused() {
+        let e = fixed_n(|| "axis 2".into(), [1.0, f64::NAN], 3).unwrap_err();
+        assert!(
+            e.to_string().contains("axis 2 is not a finite number"),
+            "{e}"
+        );
+    }
+}

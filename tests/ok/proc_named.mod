@@ -1,0 +1,24 @@
+MODULE Diag
+    ! generator: gen-rapid 0.1.0
+    ! cell: proc_named.yaml
+    ! urdf: irb1400.urdf
+    ! controller: irb1400.controller.yaml
+    ! coupling: parallelogram (axis 3 = URDF joint 3 + joint 2)
+    ! planner: depth-first
+    ! grid (deg): 10.000
+    ! clearance (mm): 10.0
+    ! base: [0.0, 0.0, 0.0] yaw: 0.000
+    ! moves: 2
+    ! min clearance (mm): none (no obstacles)
+    ! estimated time (s): 0.67
+
+    CONST jointtarget main := [[0.000,0.000,0.000,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_01 := [[0.000,10.000,0.000,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget Q := [[10.000,10.000,0.000,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+
+    PROC Weld()
+        MoveAbsJ main\NoEOffs, v300, fine, tool0;
+        MoveAbsJ via01_01\NoEOffs, v300, fine, tool0;
+        MoveAbsJ Q\NoEOffs, v300, fine, tool0;
+    ENDPROC
+ENDMODULE
