@@ -12,6 +12,8 @@ pub mod excerpt;
 pub mod geometry;
 pub mod names;
 pub mod precision;
+/// Progress of long runs as the stages report it (a trait; the terminal bar is in `cli`).
+pub mod progress;
 /// RAPID's predefined speeddata and zonedata (docs/rapid.md).
 pub mod rapid_data;
 

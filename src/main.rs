@@ -103,6 +103,11 @@ struct RunArgs {
     /// Name the routine that makes the moves (default: the cell's motion.proc, else main).
     #[arg(long = "proc", value_name = "NAME")]
     proc_name: Option<String>,
+    /// Print no summary line and no progress bar on stderr (warnings and errors still appear).
+    /// Without it, a run that lasts over a second shows a progress bar while stderr is a
+    /// terminal (never when stderr is a pipe or a file).
+    #[arg(short, long)]
+    quiet: bool,
 }
 
 #[derive(Subcommand)]
@@ -174,6 +179,7 @@ fn parse_grid(s: &str) -> Result<f64, String> {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    let quiet = cli.command.is_none() && cli.run.quiet;
     let result = match cli.command {
         None => run(&RunOptions {
             cell: cli.run.cell.unwrap_or_default(),
@@ -185,6 +191,7 @@ fn main() -> ExitCode {
             report: cli.run.report,
             template: cli.run.template,
             proc_name: cli.run.proc_name,
+            quiet: cli.run.quiet,
         }),
         Some(Command::Compare(a)) => compare(&CompareOptions {
             cell: a.cell,
@@ -200,7 +207,9 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(summary) => {
-            eprintln!("{summary}");
+            if !quiet {
+                eprintln!("{summary}");
+            }
             ExitCode::SUCCESS
         }
         Err(failure) => {

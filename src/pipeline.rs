@@ -19,6 +19,7 @@ use crate::place::locate::Sketch;
 use crate::place::{self, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
 use crate::plan::{self, Method, Plan};
+use crate::progress::{Progress, Silent};
 use crate::robot::{Coupling, Robot, RobotError};
 use crate::timing;
 use std::path::Path;
@@ -167,10 +168,22 @@ pub fn sketch(job: &Loaded) -> Result<Sketch, Error> {
 /// Inspect: the collision model at the placement and the grid at spacing `grid_deg` over the
 /// robot's ranges of axes 1..3, every node inspected.
 pub fn inspect(job: &Loaded, placed: &Placed, grid_deg: f64) -> Inspected {
+    inspect_observed(job, placed, grid_deg, &Silent)
+}
+
+/// [`inspect`], reporting the grid fill to `progress` (one unit per axis-1 slice).
+pub fn inspect_observed(
+    job: &Loaded,
+    placed: &Placed,
+    grid_deg: f64,
+    progress: &dyn Progress,
+) -> Inspected {
     let model = CollisionModel::of_cell(&job.cell, &job.robot, placed.placement);
     let a = &job.robot.controller.axes;
     let ranges = [0, 1, 2].map(|k| [a[k].min_deg, a[k].max_deg]);
-    let cspace = CSpace::build(Grid::over(ranges, grid_deg), &model.grid_check(grid_deg));
+    let grid = Grid::over(ranges, grid_deg);
+    progress.stage("inspecting the grid", grid.dims[0] as u64);
+    let cspace = CSpace::build_observed(grid, &model.grid_check(grid_deg), progress);
     Inspected { model, cspace }
 }
 
@@ -275,8 +288,21 @@ pub fn run_with(
     grid_deg: f64,
     template: &ModuleTemplate,
 ) -> Result<Outcome, Halted> {
+    run_observed(job, method, grid_deg, template, &Silent)
+}
+
+/// [`run_with`], reporting each stage to `progress` (a bar on a terminal, `cli::progress`).
+pub fn run_observed(
+    job: &Loaded,
+    method: Method,
+    grid_deg: f64,
+    template: &ModuleTemplate,
+    progress: &dyn Progress,
+) -> Result<Outcome, Halted> {
+    progress.stage("placing the robot", 0);
     let placed = place(job)?;
-    let inspected = inspect(job, &placed, grid_deg);
+    let inspected = inspect_observed(job, &placed, grid_deg, progress);
+    progress.stage("planning and proving the moves", 0);
     let plan = match plan(job, &placed, &inspected, method) {
         Ok(plan) => time(job, plan),
         Err(error) => {
@@ -286,6 +312,7 @@ pub fn run_with(
             })
         }
     };
+    progress.stage("writing the module", 0);
     let rendered = render_with(job, &placed, &plan, template)?;
     Ok(Outcome {
         placed,

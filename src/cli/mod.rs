@@ -5,6 +5,7 @@
 
 pub mod compare;
 pub mod locate;
+pub mod progress;
 pub mod run;
 
 use crate::error::Error;

@@ -8,6 +8,7 @@
 //! points that could not be joined (what those files hold succeeded); nothing else is written,
 //! stdout stays empty, and a note on stderr says what was drawn.
 
+use super::progress::TerminalProgress;
 use super::{emit, write_atomically};
 use crate::cell;
 use crate::error::{exit, Error, Failure};
@@ -17,6 +18,7 @@ use crate::output::{preview, report};
 use crate::pipeline::{self, Halted, Loaded, Outcome, Searched};
 use crate::place::{PlaceError, Placement};
 use crate::plan::{Method, PlanError};
+use crate::progress::{Progress, Silent};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -35,6 +37,8 @@ pub struct RunOptions {
     pub template: Option<PathBuf>,
     /// The routine's name, overriding the cell's `motion.proc`.
     pub proc_name: Option<String>,
+    /// No progress bar (`--quiet`; the caller also leaves out the summary line).
+    pub quiet: bool,
 }
 
 /// Runs the pipeline; on success the module (and the files asked for) are written and a summary
@@ -54,7 +58,19 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     };
     let method = opts.planner.unwrap_or(job.cell.planner.method);
     let grid_deg = opts.grid_deg.unwrap_or(job.cell.planner.grid_deg);
-    let out = match pipeline::run_with(&job, method, grid_deg, &template) {
+    let bar = if opts.quiet {
+        None
+    } else {
+        TerminalProgress::for_stderr()
+    };
+    let progress: &dyn Progress = match &bar {
+        Some(bar) => bar,
+        None => &Silent,
+    };
+    let planned = pipeline::run_observed(&job, method, grid_deg, &template, progress);
+    // The bar is cleared before anything else reaches stderr.
+    drop(bar);
+    let out = match planned {
         Ok(out) => out,
         Err(halted) => return Err(failed(&job, opts, method, grid_deg, halted)),
     };

@@ -12,6 +12,8 @@
 //! (fixed axes 1 and 2) also holds a few bytes of the inspector's own ([`Inspector::column_bytes`]:
 //! what does not depend on axis 3).
 
+use crate::progress::{Progress, Silent};
+
 /// A grid node: indices along axes 1..3 (0-based within the grid).
 pub type Node = [i32; 3];
 
@@ -170,6 +172,16 @@ pub struct CSpace {
 impl CSpace {
     /// Inspects every node, axis-1 slices spread over the available cores.
     pub fn build(grid: Grid, inspector: &dyn Inspector) -> CSpace {
+        CSpace::build_observed(grid, inspector, &Silent)
+    }
+
+    /// [`CSpace::build`], reporting one unit of `progress` per axis-1 slice inspected (the
+    /// caller announces the stage with `grid.dims[0]` units).
+    pub fn build_observed(
+        grid: Grid,
+        inspector: &dyn Inspector,
+        progress: &dyn Progress,
+    ) -> CSpace {
         let mut code = vec![0u8; grid.len()];
         let width = inspector.column_bytes();
         let mut column = vec![0u8; grid.dims[0] * grid.dims[1] * width];
@@ -210,6 +222,7 @@ impl CSpace {
                             let own = &mut colslab[(i2 * width).min(col_slice)..][..width];
                             inspector.inspect_column(a1, grid.value(1, i2 as i64), a3, codes, own);
                         }
+                        progress.advance(1);
                     }
                 });
             }

@@ -19,6 +19,8 @@ fn help_teaches_the_format_examples_and_exit_statuses() {
         "--report <FILE>",
         "--template <FILE>",
         "--proc <NAME>",
+        "--quiet",
+        "progress bar",
         "motion.speed/zone/tool/proc",
     ] {
         assert!(h.contains(needle), "--help lacks '{needle}':\n{h}");
@@ -250,4 +252,85 @@ fn the_tool_example_in_help_plans_as_printed() {
         text.contains("MoveAbsJ W2\\NoEOffs, v100, fine, tTorch\\WObj:=wobjDoor;"),
         "{text}"
     );
+}
+
+/// `--quiet` (and `-q`) leaves stderr empty on a cell without warnings; the module is the same
+/// bytes as without it.
+#[test]
+fn quiet_drops_the_summary_line_and_nothing_else() {
+    let loud = gen_rapid(&["cells/trunk.yaml", "--grid", "2"]);
+    assert!(loud.status.success(), "{}", stderr(&loud));
+    assert_eq!(stderr(&loud).lines().count(), 1, "{}", stderr(&loud));
+    assert!(stderr(&loud).starts_with("gen-rapid: cells/trunk.yaml: "));
+    for flag in ["--quiet", "-q"] {
+        let quiet = gen_rapid(&["cells/trunk.yaml", "--grid", "2", flag]);
+        assert!(quiet.status.success(), "{}", stderr(&quiet));
+        assert_eq!(stderr(&quiet), "", "{flag}");
+        assert_eq!(quiet.stdout, loud.stdout, "{flag} changed the module");
+    }
+    // An error still says why under --quiet.
+    let failed = gen_rapid(&["tests/err/not_a_number.yaml", "--quiet"]);
+    assert_eq!(failed.status.code(), Some(1));
+    assert!(stderr(&failed).contains("error"), "{}", stderr(&failed));
+    assert!(failed.stdout.is_empty());
+}
+
+/// Runs the binary under a pseudo-terminal (`script`), so that stderr is a terminal; `None`
+/// (with a note) where `script` is missing.
+fn under_a_terminal(args: &str, show_after_ms: &str) -> Option<String> {
+    let bin = env!("CARGO_BIN_EXE_gen-rapid");
+    let out = std::process::Command::new("script")
+        .args(["-qec", &format!("{bin} {args}"), "/dev/null"])
+        .env("GEN_RAPID_PROGRESS_AFTER_MS", show_after_ms)
+        .current_dir(root())
+        .output();
+    match out {
+        Ok(o) if o.status.success() => Some(String::from_utf8_lossy(&o.stdout).into_owned()),
+        Ok(o) => panic!(
+            "gen-rapid under script failed: {:?}\n{}",
+            o.status,
+            stdout(&o)
+        ),
+        Err(e) => {
+            eprintln!("skipped: no `script` (util-linux) to give gen-rapid a terminal: {e}");
+            None
+        }
+    }
+}
+
+/// On a terminal the bar shows the stages (here at once: the delay set to 0) and is cleared
+/// before the summary line, which comes last; `--quiet` shows neither.
+#[test]
+fn a_terminal_gets_a_progress_bar_and_a_pipe_gets_none() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("trunk.mod");
+    let args = format!("cells/trunk.yaml --grid 1 -o {}", arg(&out));
+    let Some(seen) = under_a_terminal(&args, "0") else {
+        return;
+    };
+    assert!(seen.contains("inspecting the grid"), "{seen:?}");
+    assert!(
+        seen.contains("\u{1b}[2K"),
+        "the bar is not cleared: {seen:?}"
+    );
+    let last = seen.rsplit(['\r', '\n']).find(|l| !l.trim().is_empty());
+    let last = last.unwrap_or_default().trim_start_matches("\u{1b}[2K");
+    assert!(
+        last.starts_with("gen-rapid: cells/trunk.yaml: "),
+        "{seen:?}"
+    );
+    assert!(last.contains(" moves"), "{seen:?}");
+    let quiet = under_a_terminal(&format!("{args} --quiet"), "0");
+    assert_eq!(quiet.as_deref().map(str::trim), Some(""));
+    // A pipe: the same delay, no bar, only the summary line.
+    let piped = std::process::Command::new(env!("CARGO_BIN_EXE_gen-rapid"))
+        .args(["cells/trunk.yaml", "--grid", "1", "-o", arg(&out)])
+        .env("GEN_RAPID_PROGRESS_AFTER_MS", "0")
+        .current_dir(root())
+        .output()
+        .expect("gen-rapid runs");
+    assert!(piped.status.success());
+    let err = stderr(&piped);
+    assert_eq!(err.lines().count(), 1, "{err:?}");
+    assert!(!err.contains("inspecting"), "{err:?}");
 }
