@@ -57,10 +57,72 @@ impl<F: Fn(Node, Node) -> bool + Sync> Graph for F {
     }
 }
 
-/// A label: the node was looked at and may not be used.
-const BLOCKED: u32 = u32::MAX;
-/// A label: the node may be used but no accepted step has reached it yet.
-const CHECKED: u32 = u32::MAX - 1;
+/// A node's label word. A wave is numbered in `u16` words (2 bytes a node: half the memory and
+/// memory traffic of `u32`) and again in `u32` only if a number would not fit, which takes a
+/// path of over 65 000 steps: the numbers are the same either way.
+trait Word: Copy + PartialEq + Default {
+    /// The node was looked at and may not be used.
+    const BLOCKED: Self;
+    /// The node may be used but no accepted step has reached it yet.
+    const CHECKED: Self;
+    /// Number 1.
+    const ONE: Self;
+    /// The number as `u32` (sentinels included).
+    fn wide(self) -> u32;
+    /// The next number, `None` when it would reach the sentinels.
+    fn next(self) -> Option<Self>;
+}
+
+impl Word for u16 {
+    const BLOCKED: u16 = u16::MAX;
+    const CHECKED: u16 = u16::MAX - 1;
+    const ONE: u16 = 1;
+    fn wide(self) -> u32 {
+        self as u32
+    }
+    fn next(self) -> Option<u16> {
+        (self + 1 < Self::CHECKED).then_some(self + 1)
+    }
+}
+
+impl Word for u32 {
+    const BLOCKED: u32 = u32::MAX;
+    const CHECKED: u32 = u32::MAX - 1;
+    const ONE: u32 = 1;
+    fn wide(self) -> u32 {
+        self
+    }
+    fn next(self) -> Option<u32> {
+        (self + 1 < Self::CHECKED).then_some(self + 1)
+    }
+}
+
+/// The labels of a wave, in the narrowest word that held them.
+#[derive(Clone, Debug)]
+enum Labels {
+    Narrow(Vec<u16>),
+    Wide(Vec<u32>),
+}
+
+impl Labels {
+    /// The number at linear index `i`, 0 for the sentinels.
+    #[inline]
+    fn number(&self, i: usize) -> u32 {
+        match self {
+            Labels::Narrow(l) => number_of(l[i]),
+            Labels::Wide(l) => number_of(l[i]),
+        }
+    }
+}
+
+#[inline]
+fn number_of<W: Word>(l: W) -> u32 {
+    if l == W::CHECKED || l == W::BLOCKED {
+        0
+    } else {
+        l.wide()
+    }
+}
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Connectivity {
@@ -113,7 +175,7 @@ pub struct Wave {
     pub start: Node,
     pub end: Node,
     pub connectivity: Connectivity,
-    labels: Vec<u32>,
+    labels: Labels,
     dims: [usize; 3],
 }
 
@@ -122,13 +184,9 @@ impl Wave {
     #[inline]
     pub fn label(&self, n: Node) -> u32 {
         if (0..3).all(|k| n[k] >= 0 && (n[k] as usize) < self.dims[k]) {
-            let l = self.labels
-                [(n[0] as usize * self.dims[1] + n[1] as usize) * self.dims[2] + n[2] as usize];
-            if l >= CHECKED {
-                0
-            } else {
-                l
-            }
+            self.labels.number(
+                (n[0] as usize * self.dims[1] + n[1] as usize) * self.dims[2] + n[2] as usize,
+            )
         } else {
             0
         }
@@ -141,10 +199,8 @@ impl Wave {
 
     /// How many nodes were numbered.
     pub fn numbered(&self) -> usize {
-        self.labels
-            .iter()
-            .filter(|&&l| l > 0 && l < CHECKED)
-            .count()
+        let len = self.dims.iter().product();
+        (0..len).filter(|&i| self.labels.number(i) > 0).count()
     }
 }
 
@@ -161,9 +217,35 @@ pub fn expand<G: Graph + ?Sized>(
     if !cs.is_free(start) || !cs.is_free(end) || !graph.node_ok(start) || !graph.node_ok(end) {
         return None;
     }
-    let mut labels = vec![0u32; g.len()];
+    let labels = match number::<u16, G>(cs, graph, start, end, connectivity) {
+        Ok(labels) => Labels::Narrow(labels?),
+        Err(TooLong) => Labels::Wide(number::<u32, G>(cs, graph, start, end, connectivity).ok()??),
+    };
+    Some(Wave {
+        start,
+        end,
+        connectivity,
+        labels,
+        dims: g.dims,
+    })
+}
+
+/// A number outgrew the label word.
+struct TooLong;
+
+/// The expansion itself in words `W`: the labels when `end` was numbered, `Ok(None)` when it
+/// cannot be reached, `Err(TooLong)` when a number does not fit in `W`.
+fn number<W: Word, G: Graph + ?Sized>(
+    cs: &CSpace,
+    graph: &G,
+    start: Node,
+    end: Node,
+    connectivity: Connectivity,
+) -> Result<Option<Vec<W>>, TooLong> {
+    let g = &cs.grid;
+    let mut labels = vec![W::default(); g.len()];
     let mut queue = VecDeque::new();
-    labels[g.index(start)] = 1;
+    labels[g.index(start)] = W::ONE;
     queue.push_back(start);
     let offs = offsets(connectivity);
     let dims = [g.dims[0] as i32, g.dims[1] as i32, g.dims[2] as i32];
@@ -180,7 +262,7 @@ pub fn expand<G: Graph + ?Sized>(
             break;
         }
         let here = g.index(n);
-        let next = labels[here] + 1;
+        let next = labels[here].next().ok_or(TooLong)?;
         let interior = (0..3).all(|k| n[k] > 0 && n[k] < dims[k] - 1);
         for (o, &step) in offs.iter().zip(&steps) {
             let i = if interior {
@@ -199,21 +281,21 @@ pub fn expand<G: Graph + ?Sized>(
                 g.index(m)
             };
             let l = labels[i];
-            if l != 0 && l != CHECKED {
+            if l != W::default() && l != W::CHECKED {
                 continue; // numbered, or not usable
             }
             let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
-            if l == 0 {
+            if l == W::default() {
                 if !cs.is_free_index(i) {
                     continue;
                 }
                 if !graph.node_ok(m) {
-                    labels[i] = BLOCKED;
+                    labels[i] = W::BLOCKED;
                     continue;
                 }
             }
             if !graph.wave_step_ok(n, m) {
-                labels[i] = CHECKED;
+                labels[i] = W::CHECKED;
                 continue;
             }
             labels[i] = next;
@@ -224,13 +306,7 @@ pub fn expand<G: Graph + ?Sized>(
             queue.push_back(m);
         }
     }
-    found.then_some(Wave {
-        start,
-        end,
-        connectivity,
-        labels,
-        dims: g.dims,
-    })
+    Ok(found.then_some(labels))
 }
 
 #[cfg(test)]
@@ -301,5 +377,67 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// A serpentine corridor over 80 000 steps long: the numbers outgrow the 16-bit words and
+    /// the wave is numbered again in 32 bits; n and every label agree with a plain
+    /// breadth-first count.
+    #[test]
+    fn a_path_longer_than_the_narrow_words_is_numbered_in_wide_ones() {
+        let (w, h) = (400usize, 401usize);
+        let g = Grid::over(
+            [[0.0, (w - 1) as f64], [0.0, (h - 1) as f64], [0.0, 0.0]],
+            1.0,
+        );
+        // Even rows free; odd row y open at one end only, alternating sides.
+        let free =
+            |x: i32, y: i32| y % 2 == 0 || x == if (y / 2) % 2 == 0 { w as i32 - 1 } else { 0 };
+        let cs = CSpace::from_fn(g, |n| free(n[0], n[1]));
+        let end = [
+            if ((h - 1) / 2) % 2 == 0 {
+                w as i32 - 1
+            } else {
+                0
+            },
+            h as i32 - 1,
+            0,
+        ];
+        let wave = expand(&cs, &Open, [0, 0, 0], end, Connectivity::TwentySix).expect("joined");
+        assert!(matches!(wave.labels, Labels::Wide(_)));
+        // The reference: breadth-first over the same 8-neighbourhood in the plane.
+        let mut dist = vec![0u32; w * h];
+        let mut queue = VecDeque::from([(0i32, 0i32)]);
+        dist[0] = 1;
+        while let Some((x, y)) = queue.pop_front() {
+            for dx in -1..=1 {
+                for dy in -1..=1 {
+                    let (a, b) = (x + dx, y + dy);
+                    if (a, b) == (x, y) || a < 0 || b < 0 || a >= w as i32 || b >= h as i32 {
+                        continue;
+                    }
+                    let i = b as usize * w + a as usize;
+                    if free(a, b) && dist[i] == 0 {
+                        dist[i] = dist[y as usize * w + x as usize] + 1;
+                        queue.push_back((a, b));
+                    }
+                }
+            }
+        }
+        let n = dist[end[1] as usize * w + end[0] as usize];
+        assert!(
+            n > u16::MAX as u32,
+            "the corridor is too short to test: {n}"
+        );
+        assert_eq!(wave.n(), n);
+        for (x, y) in [(5, 0), (399, 1), (17, 222), (0, 399)] {
+            assert_eq!(
+                wave.label([x, y, 0]),
+                dist[y as usize * w + x as usize],
+                "({x}, {y})"
+            );
+        }
+        // A short wave stays in narrow words.
+        let short = expand(&cs, &Open, [0, 0, 0], [9, 0, 0], Connectivity::TwentySix);
+        assert!(matches!(short.map(|w| w.labels), Some(Labels::Narrow(_))));
     }
 }
