@@ -42,8 +42,223 @@
 //! routes, not a cycle time: the real controller blends, limits torques and plans its own
 //! profiles.
 
-use crate::plan::{Estimate, Plan, Profile};
-use crate::robot::AxisSpec;
+use crate::cell::Tool;
+use crate::place::PlacedPoint;
+use crate::plan::motion::is_stop_zone;
+use crate::plan::{Estimate, Limit, Plan, Profile};
+use crate::rapid_data::{self, SpeedData};
+use crate::robot::{AxisSpec, Robot};
+use nalgebra::Isometry3;
+
+/// The sampled TCP path has converged when one more halving of the steps changes its length by
+/// at most this (mm) ...
+pub const PATH_TOL_MM: f64 = 0.1;
+/// ... and its reorientation angle by at most this (deg).
+pub const ANGLE_TOL_DEG: f64 = 0.01;
+/// The fewest steps a move is sampled with (one more halving always follows).
+const MIN_STEPS: usize = 8;
+/// At most one step per this many degrees of the largest axis motion before the first check.
+const FIRST_STEP_DEG: f64 = 4.0;
+/// The most steps a move is sampled with (reached only by a path that never converges).
+const MAX_STEPS: usize = 1 << 14;
+
+/// What the time stage knows of the robot: its axes (speeds, accelerations), its forward
+/// kinematics and the tool's TCP, and the `vmax` of this robot.
+pub struct TimeModel<'a> {
+    pub axes: &'a [AxisSpec; 6],
+    pub robot: &'a Robot,
+    /// The TCP in the flange (tool0) frame: the tool's `tframe`, identity without a tool.
+    pub tframe: Isometry3<f64>,
+    /// `vmax` for this robot: [`rapid_data::vmax_for`] the robot's maximum TCP speed where
+    /// the robot files give one (none do yet), else the table's.
+    pub vmax: SpeedData,
+}
+
+impl<'a> TimeModel<'a> {
+    /// The model of `robot` (its controller's axes) carrying `tool` (tool0 without one).
+    pub fn new(robot: &'a Robot, tool: Option<&Tool>) -> TimeModel<'a> {
+        TimeModel {
+            axes: &robot.controller.axes,
+            robot,
+            tframe: tool.map_or(Isometry3::identity(), |t| t.tframe.isometry()),
+            vmax: rapid_data::predefined_speed("vmax")
+                .unwrap_or(rapid_data::vmax_for(rapid_data::VMAX_GENERIC_V_TCP_MM_S)),
+        }
+    }
+
+    /// The speeddata called `name`: a predefined one (with this robot's `vmax`), or `None` for a
+    /// name RAPID does not predefine (data declared on the controller, unknown here).
+    pub fn speed(&self, name: &str) -> Option<SpeedData> {
+        if name.eq_ignore_ascii_case("vmax") {
+            return Some(self.vmax);
+        }
+        rapid_data::predefined_speed(name)
+    }
+
+    /// The TCP in the robot's base frame at controller axis values `axes_deg`.
+    pub fn tcp(&self, axes_deg: &[f64; 6]) -> Isometry3<f64> {
+        self.robot.tool0(axes_deg) * self.tframe
+    }
+}
+
+/// The TCP's path along a straight joint move, sampled (module doc, "The TCP path").
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TcpPath {
+    /// Length of the TCP's path, mm.
+    pub length_mm: f64,
+    /// Total rotation angle of the TCP frame along the move, deg.
+    pub angle_deg: f64,
+    /// Steps of the polyline it was measured on.
+    pub steps: usize,
+}
+
+fn lerp6(a: &[f64; 6], b: &[f64; 6], s: f64) -> [f64; 6] {
+    std::array::from_fn(|k| a[k] + s * (b[k] - a[k]))
+}
+
+/// Length (mm) and summed rotation angle (deg) of a polyline of frames.
+fn polyline(poses: &[Isometry3<f64>]) -> (f64, f64) {
+    let mut length = 0.0;
+    let mut angle = 0.0;
+    for w in poses.windows(2) {
+        length += (w[1].translation.vector - w[0].translation.vector).norm();
+        // The angle of the relative rotation, 2 atan2(|v|, |w|): exact also for tiny steps.
+        let q = w[0].rotation.inverse() * w[1].rotation;
+        angle += 2.0 * q.imag().norm().atan2(q.w.abs());
+    }
+    (length, angle.to_degrees())
+}
+
+/// The TCP's path length and reorientation along the straight joint move `from` -> `to`, with
+/// `tcp` the TCP frame at given axis values: the polyline through equally spaced samples of
+/// the move, its steps halved until one halving changes the length by at most [`PATH_TOL_MM`]
+/// and the angle by at most [`ANGLE_TOL_DEG`] (module doc). Deterministic: the samples depend
+/// only on the move.
+pub fn tcp_path(
+    from: &[f64; 6],
+    to: &[f64; 6],
+    tcp: impl Fn(&[f64; 6]) -> Isometry3<f64>,
+) -> TcpPath {
+    let largest = (0..6).map(|k| (to[k] - from[k]).abs()).fold(0.0, f64::max);
+    if largest == 0.0 {
+        return TcpPath {
+            length_mm: 0.0,
+            angle_deg: 0.0,
+            steps: 0,
+        };
+    }
+    let at = |i: usize, n: usize| tcp(&lerp6(from, to, i as f64 / n as f64));
+    let first = ((largest / FIRST_STEP_DEG).ceil() as usize).clamp(MIN_STEPS, MAX_STEPS / 2);
+    let mut n = first.next_power_of_two();
+    let mut poses: Vec<Isometry3<f64>> = (0..=n).map(|i| at(i, n)).collect();
+    let (mut length, mut angle) = polyline(&poses);
+    while n < MAX_STEPS {
+        let finer_n = 2 * n;
+        let mut finer = Vec::with_capacity(finer_n + 1);
+        for (i, p) in poses.iter().enumerate().take(n) {
+            finer.push(*p);
+            finer.push(at(2 * i + 1, finer_n));
+        }
+        finer.push(poses[n]);
+        let (l, a) = polyline(&finer);
+        let converged = (l - length).abs() <= PATH_TOL_MM && (a - angle).abs() <= ANGLE_TOL_DEG;
+        (poses, n, length, angle) = (finer, finer_n, l, a);
+        if converged {
+            break;
+        }
+    }
+    TcpPath {
+        length_mm: length,
+        angle_deg: angle,
+        steps: n,
+    }
+}
+
+/// One move's time from rest to rest and what set it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MoveTime {
+    /// The axes alone (the leading axis' profile), s.
+    pub axis_s: f64,
+    /// The TCP path at `v_tcp`, s (0 without known speeddata).
+    pub tcp_s: f64,
+    /// The reorientation at `v_ori`, s (0 without known speeddata).
+    pub reorientation_s: f64,
+    /// The longest of the three: the move from rest to rest, s.
+    pub stop_s: f64,
+    pub limit: Limit,
+    /// The leading axis' profile stretched to `stop_s`.
+    pub profile: Profile,
+    /// What flying through one end of the move saves at most, s ([`end_saving_s`]).
+    pub end_saving_s: f64,
+    pub path: TcpPath,
+}
+
+/// The time of the move `from` -> `to` from rest to rest under `speed` (`None`: a speeddata
+/// that is not predefined; the axes alone): the longest of the axis-limited profile, the TCP
+/// path at `v_tcp` and the reorientation at `v_ori` (module doc).
+pub fn move_time(
+    from: &[f64; 6],
+    to: &[f64; 6],
+    model: &TimeModel,
+    speed: Option<SpeedData>,
+) -> MoveTime {
+    let axis_s = move_time_s(from, to, model.axes);
+    let path = tcp_path(from, to, |q| model.tcp(q));
+    let (tcp_s, reorientation_s) = match speed {
+        Some(s) if s.v_tcp_mm_s > 0.0 && s.v_ori_deg_s > 0.0 => {
+            (path.length_mm / s.v_tcp_mm_s, path.angle_deg / s.v_ori_deg_s)
+        }
+        _ => (0.0, 0.0),
+    };
+    let (stop_s, limit) = if axis_s >= tcp_s && axis_s >= reorientation_s {
+        (axis_s, Limit::Axis)
+    } else if tcp_s >= reorientation_s {
+        (tcp_s, Limit::Tcp)
+    } else {
+        (reorientation_s, Limit::Reorientation)
+    };
+    let profile = match move_profile(from, to, model.axes) {
+        Profile::Cruise { ramp_s } if axis_s > 0.0 => Profile::Cruise {
+            ramp_s: ramp_s * stop_s / axis_s,
+        },
+        p => p,
+    };
+    MoveTime {
+        axis_s,
+        tcp_s,
+        reorientation_s,
+        stop_s,
+        limit,
+        profile,
+        end_saving_s: end_saving_s(from, to, model.axes, stop_s),
+        path,
+    }
+}
+
+/// What flying through one end of a move taking `t_s` (stop to stop) saves at most, s (module
+/// doc, "Fly-by"): for each axis, its own profile stretched to `t_s` and held at its peak speed
+/// instead of ramping down: `r_k t_s / (2 T_k)` for an axis on ramp-cruise-ramp (own time
+/// `T_k`, ramp `r_k`), `7 t_s / 30` for one quintic (also an axis that does not move); the
+/// least of the six.
+pub fn end_saving_s(from: &[f64; 6], to: &[f64; 6], axes: &[AxisSpec; 6], t_s: f64) -> f64 {
+    let mut saving = 7.0 * t_s / 30.0;
+    for k in 0..6 {
+        let (d, v, a) = (
+            (to[k] - from[k]).abs(),
+            axes[k].speed_deg_s,
+            axes[k].acceleration(),
+        );
+        if d == 0.0 {
+            continue;
+        }
+        if let Some(cruise) = cruise_profile_s(d, v, a) {
+            if cruise <= quintic_profile_s(d, v, a) {
+                saving = saving.min(ramp_time_s(v, a) * t_s / (2.0 * cruise));
+            }
+        }
+    }
+    saving
+}
 
 /// Ramp time (s) of the quintic speed ramp for speed `v` under peak acceleration `a`.
 pub fn ramp_time_s(v: f64, a: f64) -> f64 {
@@ -114,23 +329,50 @@ pub fn move_profile(from: &[f64; 6], to: &[f64; 6], axes: &[AxisSpec; 6]) -> Pro
     }
 }
 
-/// The time stage: the manipulation time of every move of the route and their sum (s), each
-/// move from rest to rest over all six axes of its waypoints, and each move's profile.
-pub fn estimate(plan: &Plan, axes: &[AxisSpec; 6]) -> Estimate {
-    let move_s: Vec<f64> = plan
-        .waypoints
-        .windows(2)
-        .map(|w| move_time_s(&w[0].joints_deg, &w[1].joints_deg, axes))
+/// The time stage: every move's time and profile and their sum (s). Move `i` runs into waypoint
+/// `i + 1` with the speeddata of `plan.motion_into(i + 1, points)`; a waypoint between two moves
+/// whose move in has a fly-by zone is flown through (module doc, "Fly-by"); the first and the
+/// last waypoint are stop points. `points` are the placed points the plan was made from.
+pub fn estimate(plan: &Plan, points: &[PlacedPoint], model: &TimeModel) -> Estimate {
+    let n = plan.moves();
+    let stops: Vec<MoveTime> = (0..n)
+        .map(|i| {
+            let speed = model.speed(&plan.motion_into(i + 1, points).speed);
+            move_time(
+                &plan.waypoints[i].joints_deg,
+                &plan.waypoints[i + 1].joints_deg,
+                model,
+                speed,
+            )
+        })
         .collect();
-    let move_profile = plan
-        .waypoints
-        .windows(2)
-        .map(|w| move_profile(&w[0].joints_deg, &w[1].joints_deg, axes))
+    // The time saved at each waypoint (0 at a stop point, the first and the last).
+    let saved: Vec<f64> = (0..=n)
+        .map(|k| {
+            if k == 0 || k >= n || is_stop_zone(&plan.motion_into(k, points).zone) {
+                0.0
+            } else {
+                stops[k - 1].end_saving_s.min(stops[k].end_saving_s)
+            }
+        })
+        .collect();
+    let move_s: Vec<f64> = (0..n)
+        .map(|i| (stops[i].stop_s - saved[i] - saved[i + 1]).max(0.0))
+        .collect();
+    // A flown move keeps its profile's shape, compressed to its shorter time.
+    let move_profile = (0..n)
+        .map(|i| match stops[i].profile {
+            Profile::Cruise { ramp_s } if stops[i].stop_s > 0.0 => Profile::Cruise {
+                ramp_s: ramp_s * move_s[i] / stops[i].stop_s,
+            },
+            p => p,
+        })
         .collect();
     Estimate {
         total_s: move_s.iter().sum(),
         move_s,
         move_profile,
+        move_limit: stops.iter().map(|m| m.limit).collect(),
     }
 }
 
@@ -268,39 +510,257 @@ mod tests {
         }
     }
 
-    #[test]
-    fn a_route_sums_its_moves_over_all_six_axes() {
-        use crate::plan::{Method, Waypoint, WaypointKind};
-        let w = |kind, joints_deg| Waypoint { kind, joints_deg };
-        let plan = Plan {
+    use crate::cell::{Frame, Loc};
+    use crate::place::{MoveMotion, Origin};
+    use crate::plan::{Method, Waypoint, WaypointKind};
+
+    fn point(speed: &str, zone: &str) -> PlacedPoint {
+        PlacedPoint {
+            name: "P".into(),
+            joints_deg: [0.0; 6],
+            loc: Loc::default(),
+            origin: Origin::Joints,
+            motion: MoveMotion {
+                speed: speed.into(),
+                zone: zone.into(),
+            },
+        }
+    }
+
+    /// A plan through `joints`: the first and last cell points 0 and 1, vias of leg 0 between.
+    fn plan_of(joints: &[[f64; 6]]) -> Plan {
+        let last = joints.len() - 1;
+        let waypoints = joints
+            .iter()
+            .enumerate()
+            .map(|(k, &joints_deg)| Waypoint {
+                kind: match k {
+                    0 => WaypointKind::CellPoint(0),
+                    k if k == last => WaypointKind::CellPoint(1),
+                    k => WaypointKind::Via { leg: 0, index: k },
+                },
+                joints_deg,
+            })
+            .collect();
+        Plan {
             method: Method::Extensile,
             grid_deg: 1.0,
-            waypoints: vec![
-                w(WaypointKind::CellPoint(0), [0.0, 0.0, 0.0, 0.0, 30.0, 0.0]),
-                w(
-                    WaypointKind::Via { leg: 0, index: 1 },
-                    [10.0, 0.0, 0.0, 0.0, 30.0, 0.0],
-                ),
-                w(
-                    WaypointKind::CellPoint(1),
-                    [10.0, 10.0, 0.0, 0.0, 30.0, 100.0],
-                ),
-            ],
+            waypoints,
             legs: Vec::new(),
             min_clearance: None,
             move_clearances: Vec::new(),
             estimate: None,
-        };
-        let mut axes = [axis(110.0, 515.625); 6];
-        for a in axes.iter_mut().skip(3) {
-            *a = axis(280.0, 1312.5);
+            paper: None,
         }
+    }
+
+    /// A tool whose TCP is 200 mm along the flange's z axis (the axis-6 line), turned 30 deg.
+    fn tool_on_axis6() -> Tool {
+        let half = 15f64.to_radians();
+        Tool {
+            name: "tPen".into(),
+            tframe: Frame {
+                pos_mm: [0.0, 0.0, 200.0],
+                quat_wxyz: [half.cos(), half.sin(), 0.0, 0.0],
+            },
+            mass_kg: 1.0,
+            cog_mm: [0.0; 3],
+            shapes: Vec::new(),
+            loc: Loc::default(),
+        }
+    }
+
+    #[test]
+    fn a_route_sums_its_moves_over_all_six_axes() {
+        let robot = Robot::irb1400();
+        let model = TimeModel::new(&robot, None);
+        let plan = plan_of(&[
+            [0.0, 0.0, 0.0, 0.0, 30.0, 0.0],
+            [10.0, 0.0, 0.0, 0.0, 30.0, 0.0],
+            [10.0, 10.0, 0.0, 0.0, 30.0, 100.0],
+        ]);
+        // vmax: the axes lead (the TCP covers at most ~200 mm here, 0.04 s at 5000 mm/s; the
+        // wrist turns 100 deg, 0.2 s at 500 deg/s).
+        let points = [point("v300", "fine"), point("vmax", "fine")];
         // Move 1: axis 1, 10 deg: 0.334621 s. Move 2: axis 2 10 deg (0.334621 s) and axis 6
-        // 100 deg (0.669643 s, above): 0.669643 s. Total 1.004264 s.
-        let e = estimate(&plan, &axes);
+        // 100 deg (0.669643 s, above): 0.669643 s. Total 1.004264 s. The via is `fine`.
+        let e = estimate(&plan, &points, &model);
         assert_eq!(e.move_s.len(), 2);
         assert!(close(e.move_s[0], 0.334621, 1e-6) && close(e.move_s[1], 0.669643, 1e-6));
         assert!(close(e.total_s, 1.004264, 1e-6));
+        assert_eq!(e.move_limit, [Limit::Axis, Limit::Axis]);
+    }
+
+    #[test]
+    fn the_tcp_speed_limits_an_axis_1_swing_on_its_circle() {
+        // The IRB 1400 at zero: the flange lies 150 + 720 + 85 = 955 mm from axis 1 (the URDF's
+        // joint origins: joint 2 at x 150, joint 5 at x 720 beyond joint 4, joint 6 at x 85
+        // beyond it). Turning axis 1 by 90 deg moves tool0 on a circle of radius 955 mm: an arc
+        // of 955 pi / 2 = 1500.1 mm, whatever the polyline.
+        let robot = Robot::irb1400();
+        let model = TimeModel::new(&robot, None);
+        let (from, to) = ([0.0; 6], [90.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
+        let arc_mm = 955.0 * std::f64::consts::FRAC_PI_2;
+        let path = tcp_path(&from, &to, |q| model.tcp(q));
+        assert!(path.length_mm <= arc_mm + 1e-9, "{path:?}");
+        assert!(arc_mm - path.length_mm < 0.1, "{path:?}");
+        // The flange turns 90 deg about the vertical as well.
+        assert!(close(path.angle_deg, 90.0, 1e-6), "{path:?}");
+        // Axes alone: 90 / 110 + 0.4 = 1.218182 s.
+        let axis_s = 90.0 / 110.0 + 0.4;
+        let v100 = move_time(&from, &to, &model, model.speed("v100"));
+        let v1000 = move_time(&from, &to, &model, model.speed("v1000"));
+        let vmax = move_time(&from, &to, &model, model.speed("vmax"));
+        // v100: at least 1500.1 / 100 = 15.0 s; v1000: 1.5 s, still above the axes; vmax
+        // (5000 mm/s: 0.3 s) leaves the axes in the lead.
+        assert!(v100.stop_s >= (arc_mm - 0.1) / 100.0 && v100.stop_s <= arc_mm / 100.0);
+        assert!(close(v1000.stop_s, arc_mm / 1000.0, 1e-4));
+        assert!(close(vmax.stop_s, axis_s, 1e-9));
+        assert_eq!(
+            (v100.limit, v1000.limit, vmax.limit),
+            (Limit::Tcp, Limit::Tcp, Limit::Axis)
+        );
+        // An unknown speeddata: the axes alone.
+        let unknown = move_time(&from, &to, &model, model.speed("vMine"));
+        assert!(close(unknown.stop_s, axis_s, 1e-9));
+        // The stretched profile keeps the leading axis' shape: its ramp scaled by 15 / 1.218.
+        assert_eq!(
+            v100.profile,
+            Profile::Cruise {
+                ramp_s: 0.4 * v100.stop_s / axis_s
+            }
+        );
+    }
+
+    #[test]
+    fn a_turn_of_axis_6_reorients_the_tool_without_moving_its_tcp() {
+        // With the TCP on the axis-6 line (200 mm along tool0's z axis, which is that line),
+        // turning axis 6 by 120 deg leaves the TCP where it is and turns the tool 120 deg.
+        let robot = Robot::irb1400();
+        let tool = tool_on_axis6();
+        let model = TimeModel::new(&robot, Some(&tool));
+        let (from, to) = ([0.0; 6], [0.0, 0.0, 0.0, 0.0, 0.0, 120.0]);
+        let path = tcp_path(&from, &to, |q| model.tcp(q));
+        assert!(path.length_mm < 1e-6, "{path:?}");
+        assert!(close(path.angle_deg, 120.0, 1e-6), "{path:?}");
+        // Every predefined speeddata turns the tool at 500 deg/s: 0.24 s, below axis 6's
+        // 0.803571 s (120 deg is below the tie D* = 15 280^2 / (7 1312.5) = 128 deg: one
+        // quintic, 15 120 / (8 280)), so even v5 leaves the axes in the lead.
+        let v5 = move_time(&from, &to, &model, model.speed("v5"));
+        assert!(close(v5.stop_s, 0.803571, 1e-6), "{v5:?}");
+        assert_eq!(v5.limit, Limit::Axis);
+        // A slow reorientation speed leads: 120 / 20 = 6 s.
+        let slow = SpeedData {
+            v_ori_deg_s: 20.0,
+            ..rapid_data::vmax_for(100.0)
+        };
+        let m = move_time(&from, &to, &model, Some(slow));
+        assert!(m.stop_s >= 120.0 / 20.0 - 1e-9 && close(m.stop_s, 6.0, 1e-6));
+        assert_eq!(m.limit, Limit::Reorientation);
+    }
+
+    #[test]
+    fn the_sampled_path_converges_and_is_deterministic() {
+        let robot = Robot::irb1400();
+        let tool = tool_on_axis6();
+        let model = TimeModel::new(&robot, Some(&tool));
+        let (from, to) = (
+            [-40.0, 10.0, -20.0, 30.0, 45.0, -60.0],
+            [60.0, -20.0, 40.0, -50.0, -30.0, 90.0],
+        );
+        let a = tcp_path(&from, &to, |q| model.tcp(q));
+        let b = tcp_path(&from, &to, |q| model.tcp(q));
+        assert_eq!(a, b);
+        // Independently: 100 000 equal steps (a polyline never overestimates the path; the
+        // converged one is within the tolerance of this much finer one).
+        let n = 100_000;
+        let poses: Vec<_> = (0..=n)
+            .map(|i| model.tcp(&lerp6(&from, &to, i as f64 / n as f64)))
+            .collect();
+        let (fine_mm, fine_deg) = polyline(&poses);
+        assert!(a.length_mm <= fine_mm + 1e-6 && fine_mm - a.length_mm < PATH_TOL_MM);
+        assert!(a.angle_deg <= fine_deg + 1e-6 && fine_deg - a.angle_deg < ANGLE_TOL_DEG);
+        assert!(a.steps < MAX_STEPS, "{a:?}");
+        // The move back is as long.
+        let back = tcp_path(&to, &from, |q| model.tcp(q));
+        assert!(close(back.length_mm, a.length_mm, PATH_TOL_MM));
+    }
+
+    #[test]
+    fn what_flying_through_a_move_end_saves() {
+        let robot = Robot::irb1400();
+        let model = TimeModel::new(&robot, None);
+        // An axis-1 move of 60 deg, a move of axes 2 and 3, a last small move.
+        let plan = plan_of(&[
+            [0.0, 0.0, 0.0, 0.0, 30.0, 0.0],
+            [60.0, 0.0, 0.0, 0.0, 30.0, 0.0],
+            [60.0, 30.0, 20.0, 0.0, 30.0, 0.0],
+            [65.0, 30.0, 20.0, 0.0, 30.0, 0.0],
+        ]);
+        let timed = |zone: &str| {
+            let points = [point("vmax", "fine"), point("vmax", zone)];
+            estimate(&plan, &points, &model)
+        };
+        let fine = timed("fine");
+        // The vias stop (`motion_into` gives them `fine`) and the last point always stops,
+        // whatever its zone.
+        assert_eq!(fine.total_s, timed("z50").total_s);
+        let stops: Vec<MoveTime> = plan
+            .moves6()
+            .map(|(a, b)| move_time(&a, &b, &model, model.speed("vmax")))
+            .collect();
+        // Move 1 cruises (60 deg, ramp 0.4 s): flying through its end saves 0.2 s on axis 1;
+        // axis 1 alone moves, so the least of the six is axis 1's r/2 = 0.2 s.
+        assert!(close(stops[0].end_saving_s, 0.2, 1e-9), "{stops:?}");
+        // Move 2: axes 2 and 3 by 30 and 20 deg (30 deg: 15 D / (8 v) = 0.511 s against
+        // D / v + T_r = 0.673 s: one quintic, and so is 20 deg): 7 t / 30.
+        assert!(close(stops[1].end_saving_s, 7.0 * stops[1].stop_s / 30.0, 1e-9));
+        for (k, m) in stops.iter().enumerate() {
+            // Never shorter than the move at its peak speed throughout.
+            assert!(2.0 * m.end_saving_s < m.stop_s, "move {k}");
+        }
+        assert_eq!(fine.move_s, stops.iter().map(|m| m.stop_s).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn fly_by_is_never_slower_strictly_faster_and_continuous() {
+        let robot = Robot::irb1400();
+        let model = TimeModel::new(&robot, None);
+        // A route of three cell points (the middle one is the only waypoint between two moves),
+        // its zone fine or z50.
+        let route = |mid: [f64; 6]| {
+            let mut plan = plan_of(&[[0.0, 0.0, 0.0, 0.0, 30.0, 0.0], mid, [80.0; 6]]);
+            plan.waypoints[1].kind = WaypointKind::CellPoint(1);
+            plan.waypoints[2].kind = WaypointKind::CellPoint(2);
+            plan.waypoints[2].joints_deg = [80.0, 10.0, 10.0, 0.0, 30.0, 0.0];
+            plan
+        };
+        let total = |plan: &Plan, zone: &str| {
+            let points = [
+                point("v300", "fine"),
+                point("v300", zone),
+                point("v300", "fine"),
+            ];
+            estimate(plan, &points, &model).total_s
+        };
+        let mut last = None;
+        for i in 0..=400 {
+            // The middle point slides along axis 1 through both profiles' boundary.
+            let a1 = 0.1 * i as f64;
+            let plan = route([a1, 5.0, 0.0, 0.0, 30.0, 0.0]);
+            let (stop, fly) = (total(&plan, "fine"), total(&plan, "z50"));
+            assert!(fly < stop, "at {a1}: {fly} vs {stop}");
+            // A user zonedata is a fly-by zone too, and the model does not read its size.
+            assert_eq!(fly, total(&plan, "zMine"));
+            if let Some(prev) = last {
+                let jump: f64 = fly - prev;
+                assert!(jump.abs() < 0.01, "jump {jump} at {a1}");
+            }
+            last = Some(fly);
+        }
+        // A middle point that is the start (a move of zero length) saves nothing.
+        let plan = route([0.0, 0.0, 0.0, 0.0, 30.0, 0.0]);
+        assert_eq!(total(&plan, "z50"), total(&plan, "fine"));
     }
 
     #[test]
