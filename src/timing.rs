@@ -61,6 +61,9 @@ const MIN_STEPS: usize = 8;
 const FIRST_STEP_DEG: f64 = 4.0;
 /// The most steps a move is sampled with (reached only by a path that never converges).
 const MAX_STEPS: usize = 1 << 14;
+/// Relative difference under which the TCP's or the reorientation's time counts as a tie with
+/// the axes' (the axes then lead; the time is the larger either way).
+const TIE: f64 = 1e-9;
 
 /// What the time stage knows of the robot: its axes (speeds, accelerations), its forward
 /// kinematics and the tool's TCP, and the `vmax` of this robot.
@@ -262,9 +265,11 @@ pub fn move_time(
     } else {
         reorientation.map(|l| (reorientation_s, Limit::Reorientation, l))
     };
-    // Ties go to the axes.
+    // Ties go to the axes, also where rounding puts the other a hair above them: where the
+    // axis that accelerates least is on one quintic at its acceleration bound, a short TCP path
+    // or turn is on the same quintic (the same time, up to rounding).
     let (stop_s, limit, profile) = match speed_lead {
-        Some((t, limit, leg)) if t > axis_s => (
+        Some((t, limit, leg)) if t > axis_s * (1.0 + TIE) => (
             t,
             limit,
             match leg.cruise_ramp_s() {
@@ -272,7 +277,11 @@ pub fn move_time(
                 None => Profile::Quintic,
             },
         ),
-        _ => (axis_s, Limit::Axis, move_profile(from, to, model.axes)),
+        _ => (
+            axis_s.max(tcp_s).max(reorientation_s),
+            Limit::Axis,
+            move_profile(from, to, model.axes),
+        ),
     };
     // What flying through one end saves: the least over the limits (module doc, "Fly-by").
     let mut end_saving_s = 7.0 * stop_s / 30.0;
