@@ -1,13 +1,71 @@
 //! Manipulation time of a planned route (paper section 5, Fig. 9): the figure the paper uses,
-//! besides the number of moves, to compare its three search methods.
+//! besides the number of moves, to compare its three search methods; extended (issue 10) by the
+//! speeddata of each move and the fly-by at zoned waypoints.
 //!
-//! Every straight move is a `MoveAbsJ ... fine`: it starts and ends at rest, and the route's time
-//! is the sum of its moves' times. Within a move each axis k covers D_k = |delta_k| degrees
-//! under its maximum speed v_k and peak acceleration a_k (the controller file,
-//! `robot::controller`), and all axes start and stop together: the move takes as long as its
-//! slowest axis needs (the *leading* axis), and the others are slowed down (their profiles
-//! stretched in time) to finish with it. All six axes count: axes 4..6 move only on a leg's last
-//! move and only when a cell point gives its own wrist (see `plan`), but then they may lead.
+//! A move from rest to rest: within a move each axis k covers D_k = |delta_k| degrees under its
+//! maximum speed v_k and peak acceleration a_k (the controller file, `robot::controller`), and
+//! all axes start and stop together: the axes need as long as their slowest axis (the *leading*
+//! axis), and the others are slowed down (their profiles stretched in time) to finish with it.
+//! All six axes count: axes 4..6 move only on a leg's last move and only when a cell point gives
+//! its own wrist (see `plan`), but then they may lead. The route's time is the sum of its moves'
+//! times, less what the fly-by saves (below).
+//!
+//! # The speeddata (beyond the paper)
+//!
+//! A move takes the longest of three times ([`move_time`]):
+//!
+//! 1. **the axes**: the leading axis' profile (below), as in the paper;
+//! 2. **the TCP path** of length L (mm) at the speeddata's `v_tcp`;
+//! 3. **the reorientation**, the total angle Θ (deg) the TCP frame turns along the move, at
+//!    `v_ori`.
+//!
+//! Each of 2 and 3 is taken as one more "axis" of the move with the same profiles as an axis:
+//! distance L (or Θ), speed `v_tcp` (or `v_ori`), and the acceleration the axes allow the move's
+//! progress, min_k a_k / D_k (share of the move per s^2), times L (or Θ). So a TCP-limited move
+//! takes L / v_tcp plus one ramp at that speed (never less than L / v_tcp: the TCP never runs
+//! faster than `v_tcp` on average), its ramps are short at low speeds, and a move too short to
+//! reach `v_tcp` is one quintic. The three times are continuous in the move, so is their maximum.
+//! Ties go to the axes ([`Limit`] says which led, for the report).
+//!
+//! **The TCP path.** The module's moves are `MoveAbsJ`: every axis runs linearly from its start
+//! to its end value, so the TCP runs along the forward kinematics of the straight joint move
+//! (`Robot::tool0` through the tool's `tframe`; tool0, the flange centre, without a tool). L is
+//! the length of the polyline through equally spaced samples of the move, Θ the sum of the
+//! rotation angles between consecutive samples' TCP frames (the same for any `tframe` rotation).
+//! The samples start at one per 4 degrees of the largest axis motion, at least 8 steps (rounded
+//! up to a power of two), and the steps are halved until one halving changes L by at most
+//! [`PATH_TOL_MM`] (0.1 mm) and Θ by at most [`ANGLE_TOL_DEG`] (0.01 deg), at most 2^14 steps
+//! ([`tcp_path`]). A polyline never overestimates its curve, and for a smooth path the last
+//! halving's change is about three times the error left, so L is within about 0.05 mm of the
+//! path. Deterministic: the samples depend only on the move.
+//!
+//! **Speed names.** The speeddata of the move into waypoint k is `Plan::motion_into(k, points)`'s
+//! (a cell point's own or `motion.speed`; a via's that of its leg's end point). A predefined name
+//! (`v5` .. `v7000`, `vmax`, any case) has its values from [`crate::rapid_data`]; `vmax`'s
+//! `v_tcp` is the robot's maximum TCP speed where the robot files give one (none do yet), else
+//! the table's 5000 mm/s, which an IRB 1400 (about 2.1 m/s) never reaches: at `vmax` the axes
+//! lead. A name RAPID does not predefine (speeddata declared on the controller) is unknown here:
+//! those moves take the axes alone, and the load stage warns once per name
+//! (`pipeline::Loaded::warnings`).
+//!
+//! # Fly-by (beyond the paper)
+//!
+//! A waypoint between two moves whose move in has a fly-by zone (`motion::is_stop_zone` false:
+//! a predefined zone other than `fine`, or a zone name RAPID does not predefine) is flown
+//! through; the first and the last waypoint always stop. The model: at a stop point every axis
+//! ramps down to rest and up again; flying through, the robot keeps its speed instead. For one
+//! limit of a move (an axis, the TCP path, the reorientation) on ramp-cruise-ramp with its own
+//! time T_l and ramp r_l, stretched to the move's time t, holding the cruise speed instead of
+//! the last ramp saves r_l t / (2 T_l) (a ramp covers half the distance cruising would); on one
+//! quintic, holding its peak speed (15/8 of the mean) over the second half saves 7 t / 30. A
+//! move's end saving e is the least over its limits (7 t / 30 where none cruises): every axis
+//! must keep its pace, and the least is continuous in the move. A flown waypoint saves
+//! min(e_in, e_out) once, taken off both the move in and the move out; so a move is never
+//! shorter than its distance at its peak speed throughout (2 e <= r for a cruise), the time
+//! never exceeds the stop-point time, and it is strictly shorter when both moves move. The
+//! model ignores the zone's size (z1 saves as much as z200) and the corner's direction change;
+//! `docs/rapid.md` says what the controller does instead. A flown move keeps its profile's shape,
+//! compressed in time (for the preview).
 //!
 //! # One axis, one move: the two profiles of Fig. 9
 //!
@@ -40,7 +98,8 @@
 //! cost ~0.39 s per extra move). An axis without a stated acceleration gets the same 0.4 s ramp
 //! ([`crate::robot::controller::DEFAULT_RAMP_S`]). The result is a planning figure for comparing
 //! routes, not a cycle time: the real controller blends, limits torques and plans its own
-//! profiles.
+//! profiles (`docs/rapid.md`, "What the controller does that gen-rapid's time estimate does
+//! not").
 
 use crate::cell::Tool;
 use crate::place::PlacedPoint;
@@ -663,10 +722,17 @@ mod tests {
         // in the lead.
         let tcp_s = |v: f64| arc_mm / v + 15.0 * v * 90.0 / (8.0 * 515.625 * arc_mm);
         assert!(v100.stop_s >= arc_mm / 100.0 - 0.01, "{v100:?}");
-        assert!(close(v100.stop_s, tcp_s(100.0), PATH_TOL_MM / 100.0), "{v100:?}");
+        assert!(
+            close(v100.stop_s, tcp_s(100.0), PATH_TOL_MM / 100.0),
+            "{v100:?}"
+        );
         assert!(close(v1000.stop_s, tcp_s(1000.0), 1e-4), "{v1000:?}");
         assert!(close(vmax.stop_s, axis_s, 1e-9));
-        assert!(close(vmax.tcp_s, (10.0 * 90.0 / (3f64.sqrt() * 515.625)).sqrt(), 1e-9));
+        assert!(close(
+            vmax.tcp_s,
+            (10.0 * 90.0 / (3f64.sqrt() * 515.625)).sqrt(),
+            1e-9
+        ));
         assert_eq!(
             (v100.limit, v1000.limit, vmax.limit),
             (Limit::Tcp, Limit::Tcp, Limit::Axis)
@@ -706,7 +772,10 @@ mod tests {
             ..rapid_data::vmax_for(100.0)
         };
         let m = move_time(&from, &to, &model, Some(slow));
-        assert!(m.stop_s >= 120.0 / 20.0 && close(m.stop_s, 6.028571, 1e-5), "{m:?}");
+        assert!(
+            m.stop_s >= 120.0 / 20.0 && close(m.stop_s, 6.028571, 1e-5),
+            "{m:?}"
+        );
         assert_eq!(m.limit, Limit::Reorientation);
     }
 
@@ -765,12 +834,19 @@ mod tests {
         assert!(close(stops[0].end_saving_s, 0.2, 1e-9), "{stops:?}");
         // Move 2: axes 2 and 3 by 30 and 20 deg (30 deg: 15 D / (8 v) = 0.511 s against
         // D / v + T_r = 0.673 s: one quintic, and so is 20 deg): 7 t / 30.
-        assert!(close(stops[1].end_saving_s, 7.0 * stops[1].stop_s / 30.0, 1e-9));
+        assert!(close(
+            stops[1].end_saving_s,
+            7.0 * stops[1].stop_s / 30.0,
+            1e-9
+        ));
         for (k, m) in stops.iter().enumerate() {
             // Never shorter than the move at its peak speed throughout.
             assert!(2.0 * m.end_saving_s < m.stop_s, "move {k}");
         }
-        assert_eq!(fine.move_s, stops.iter().map(|m| m.stop_s).collect::<Vec<_>>());
+        assert_eq!(
+            fine.move_s,
+            stops.iter().map(|m| m.stop_s).collect::<Vec<_>>()
+        );
     }
 
     #[test]

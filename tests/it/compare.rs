@@ -63,7 +63,10 @@ fn trunk_moves_and_time_order_the_methods_as_in_the_paper() {
     // than full speed. At the cell's v300 the TCP's speed leads most moves (a longer time); at
     // vmax the axes lead, and a move takes at most its length at full speed plus one ramp.
     for r in [nb, df, ex] {
-        assert!(time(r) > num(r, "path_length_deg") / 110.0 / 3f64.sqrt(), "{r}");
+        assert!(
+            time(r) > num(r, "path_length_deg") / 110.0 / 3f64.sqrt(),
+            "{r}"
+        );
     }
     let dir = tempfile::tempdir().expect("tempdir");
     let vmax = dir.path().join("trunk.yaml");

@@ -39,7 +39,9 @@ fn header<'a>(module: &'a str, key: &str) -> &'a str {
 }
 
 fn time(module: &str) -> f64 {
-    header(module, "estimated time (s)").parse().expect("a number")
+    header(module, "estimated time (s)")
+        .parse()
+        .expect("a number")
 }
 
 fn xyz(v: &Value) -> [f64; 3] {
@@ -91,7 +93,11 @@ fn the_speeddata_sets_the_estimate_and_vmax_leaves_the_axes_alone() {
             .map(|m| m["time_s"].as_f64().expect("time"))
             .sum();
         let moves = r["totals"]["moves"].as_f64().expect("moves");
-        assert!((sum - time(m)).abs() <= 0.005 * moves + 1e-9, "{sum} vs {}", time(m));
+        assert!(
+            (sum - time(m)).abs() <= 0.005 * moves + 1e-9,
+            "{sum} vs {}",
+            time(m)
+        );
         assert_eq!(r["totals"]["estimated_time_s"].as_f64(), Some(time(m)));
     }
 }
@@ -147,7 +153,10 @@ fn a_zoned_cell_point_is_flown_through() {
     for (a, b) in per_move(&rz).iter().zip(per_move(&rf)) {
         assert!(*a <= b, "{a} > {b}");
     }
-    assert!(fly.contains("MoveAbsJ B\\NoEOffs, v300, z50, tool0;"), "{fly}");
+    assert!(
+        fly.contains("MoveAbsJ B\\NoEOffs, v300, z50, tool0;"),
+        "{fly}"
+    );
     // The last point always stops: a zone there changes nothing.
     let (last, _, _) = trunk(|t| {
         t.replace(
@@ -170,7 +179,10 @@ fn header_summary_and_report_state_the_zoned_vias_and_the_papers_method() {
     let paper = format!("{moves} moves, {t} s");
     assert_eq!(header(&module, "the paper's method alone"), paper);
     let summary = err.lines().last().expect("summary line");
-    assert!(summary.contains(&format!("zoned vias: {zoned}")), "{summary}");
+    assert!(
+        summary.contains(&format!("zoned vias: {zoned}")),
+        "{summary}"
+    );
     assert!(
         summary.contains(&format!("the paper's method alone: {paper}")),
         "{summary}"
