@@ -260,13 +260,13 @@ pub struct MoveTime {
 /// most at a speed and an acceleration (an axis: degrees; the TCP path: mm; the reorientation:
 /// degrees), with the paper's profiles.
 #[derive(Clone, Copy, Debug)]
-struct Leg1 {
+struct Course {
     d: f64,
     v: f64,
     a: f64,
 }
 
-impl Leg1 {
+impl Course {
     fn time_s(&self) -> f64 {
         axis_time_s(self.d, self.v, self.a)
     }
@@ -295,8 +295,8 @@ pub fn move_time(
 ) -> MoveTime {
     let axis_s = move_time_s(from, to, model.axes);
     let path = tcp_path(from, to, |q| model.tcp(q));
-    let axes: Vec<Leg1> = (0..6)
-        .map(|k| Leg1 {
+    let axes: Vec<Course> = (0..6)
+        .map(|k| Course {
             d: (to[k] - from[k]).abs(),
             v: model.axes[k].speed_deg_s,
             a: model.axes[k].acceleration(),
@@ -305,7 +305,7 @@ pub fn move_time(
         .collect();
     // The least acceleration of the move's progress (share of the move per s^2) any axis allows.
     let progress_acceleration = axes.iter().map(|l| l.a / l.d).fold(f64::INFINITY, f64::min);
-    let along = |d: f64, v: f64| Leg1 {
+    let along = |d: f64, v: f64| Course {
         d,
         v,
         a: progress_acceleration * d,
@@ -328,10 +328,10 @@ pub fn move_time(
     // axis that accelerates least is on one quintic at its acceleration bound, a short TCP path
     // or turn is on the same quintic (the same time, up to rounding).
     let (stop_s, limit, profile) = match speed_lead {
-        Some((t, limit, leg)) if t > axis_s * (1.0 + TIE) => (
+        Some((t, limit, course)) if t > axis_s * (1.0 + TIE) => (
             t,
             limit,
-            match leg.cruise_ramp_s() {
+            match course.cruise_ramp_s() {
                 Some(ramp_s) => Profile::Cruise { ramp_s },
                 None => Profile::Quintic,
             },
@@ -344,9 +344,9 @@ pub fn move_time(
     };
     // What flying through one end saves: the least over the limits (module doc, "Fly-by").
     let mut end_saving_s = 7.0 * stop_s / 30.0;
-    for leg in axes.iter().chain(tcp.iter()).chain(reorientation.iter()) {
-        if let Some(ramp_s) = leg.cruise_ramp_s() {
-            end_saving_s = end_saving_s.min(ramp_s * stop_s / (2.0 * leg.time_s()));
+    for course in axes.iter().chain(tcp.iter()).chain(reorientation.iter()) {
+        if let Some(ramp_s) = course.cruise_ramp_s() {
+            end_saving_s = end_saving_s.min(ramp_s * stop_s / (2.0 * course.time_s()));
         }
     }
     MoveTime {
