@@ -85,10 +85,12 @@ pub struct Leg {
     pub waypoints: Range<usize>,
 }
 
-/// The manipulation time of a route (paper section 5), filled by the time stage.
+/// The manipulation time of a route (paper section 5, with the speeddata and the fly-by at
+/// zoned waypoints: `timing`), filled by the time stage.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Estimate {
-    /// Per move, s.
+    /// Per move, s: from rest to rest, less what flying through a zoned waypoint at either end
+    /// saves.
     pub move_s: Vec<f64>,
     /// Per move, how its progress runs in time (for pictures of the motion).
     pub move_profile: Vec<Profile>,

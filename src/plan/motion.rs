@@ -7,7 +7,9 @@
 //! (the leg is one job: reaching that point) and [`VIA_ZONE`], a stop point, since a fly-by
 //! corner at a via is not proven to keep the clearance (issue 10 adds certified zones).
 //! The first waypoint's "move into" is the move from wherever the robot stands to the first
-//! point: the first point's motion.
+//! point: the first point's motion. [`is_stop_zone`] says whether a zone stops the robot (the
+//! time estimate flies through the others), [`Plan::zoned_vias`] counts the vias that fly by
+//! (the header's `zoned vias`).
 
 use super::{Plan, WaypointKind};
 use crate::place::{MoveMotion, PlacedPoint};
