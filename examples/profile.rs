@@ -61,7 +61,7 @@ fn main() {
         match pipeline::plan(&job, &placed, &inspected, m) {
             Ok(plan) => {
                 let planned = t.elapsed();
-                let plan = pipeline::time(&job, plan);
+                let plan = pipeline::time(&job, &placed, plan);
                 let text = pipeline::render(&job, &placed, &plan).map(|r| r.text.len());
                 eprintln!(
                     "{m}: plan {planned:?}, with time and render {:?}, {} moves, {:.1} deg, {} bytes",

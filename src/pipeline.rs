@@ -53,8 +53,40 @@ impl Loaded {
         }
     }
 
-    /// Warnings for stderr: the robot convention is never silent (issue 8).
+    /// Warnings for stderr: the robot convention is never silent (issue 8); a speeddata the
+    /// moves use that RAPID does not predefine, once per name (issue 10: the estimate cannot
+    /// know its values and takes those moves at full axis speed).
     pub fn warnings(&self) -> Vec<String> {
+        let mut warnings = self.controller_warning();
+        warnings.extend(self.speed_warnings());
+        warnings
+    }
+
+    /// The speeddata names the moves use (each point's own, else `motion.speed`) that RAPID does
+    /// not predefine, each once (ignoring case, in the cell's order), as warnings.
+    fn speed_warnings(&self) -> Vec<String> {
+        let cell = &self.cell;
+        let mut seen: Vec<String> = Vec::new();
+        for p in &cell.points {
+            let name = p.speed.as_deref().unwrap_or(&cell.motion.speed);
+            let known = crate::rapid_data::predefined_speed(name).is_some();
+            if !known && !seen.iter().any(|s| s.eq_ignore_ascii_case(name)) {
+                seen.push(name.to_string());
+            }
+        }
+        seen.iter()
+            .map(|name| {
+                excerpt::message(&format!(
+                    "warning: speed '{}' is not a predefined speeddata: the estimated time takes the moves that use it at full axis speed (its v_tcp and v_ori are declared on the controller, not known here)",
+                    excerpt::value(name)
+                ))
+                .into_owned()
+            })
+            .collect()
+    }
+
+    /// The robot convention is never silent (issue 8).
+    fn controller_warning(&self) -> Vec<String> {
         match &self.robot.controller.source {
             Some(_) => Vec::new(),
             // Bounded like every message (the path comes from the cell).
@@ -205,9 +237,23 @@ fn plan_error(job: &Loaded, source: plan::PlanError) -> Error {
     Error::Plan { source, loc }
 }
 
-/// Time: the manipulation time of every move (paper section 5), into the plan.
-pub fn time(job: &Loaded, mut plan: Plan) -> Plan {
-    plan.estimate = Some(timing::estimate(&plan, &job.robot.controller.axes));
+/// Time: the manipulation time of every move (paper section 5, with the speeddata of each move
+/// and the fly-by at zoned waypoints: `timing`), into the plan. `placed` holds the points the
+/// plan was made from (the speed and zone of each move).
+pub fn time(job: &Loaded, placed: &Placed, mut plan: Plan) -> Plan {
+    let model = timing::TimeModel::new(&job.robot, job.cell.tool.as_ref());
+    plan.estimate = Some(timing::estimate(&plan, &placed.points, &model));
+    plan
+}
+
+/// Keeps a timed plan's moves and time as the figure of the paper's method alone (`Plan::paper`),
+/// for the header and the summary line. Called on the plan stage's timed route, before any
+/// refinement of it.
+pub fn keep_paper_figure(mut plan: Plan) -> Plan {
+    plan.paper = plan.estimate.as_ref().map(|e| plan::PaperFigure {
+        moves: plan.moves(),
+        time_s: e.total_s,
+    });
     plan
 }
 
@@ -304,7 +350,8 @@ pub fn run_observed(
     let inspected = inspect_observed(job, &placed, grid_deg, progress);
     progress.stage("planning and proving the moves", 0);
     let plan = match plan(job, &placed, &inspected, method) {
-        Ok(plan) => time(job, plan),
+        // The paper's method alone: search, shorten, merge, every via a stop point, timed.
+        Ok(plan) => keep_paper_figure(time(job, &placed, plan)),
         Err(error) => {
             return Err(Halted {
                 error: Box::new(error),
@@ -342,7 +389,7 @@ pub fn compare(job: &Loaded, placed: &Placed, inspected: &Inspected) -> Vec<Atte
             let planning_time_ms = started.elapsed().as_secs_f64() * 1e3;
             Attempt {
                 method,
-                result: result.map(|p| time(job, p)),
+                result: result.map(|p| time(job, placed, p)),
                 planning_time_ms,
             }
         })

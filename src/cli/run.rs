@@ -88,9 +88,23 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
         Some(e) => format!(", about {:.2} s of motion", e.total_s),
         None => String::new(),
     };
+    let (zoned, vias) = out.plan.zoned_vias(&out.placed.points);
+    let zoned = format!(
+        ", zoned vias: {zoned} of {vias} (via zone {})",
+        out.rendered.program.header.via_zone
+    );
+    let paper = match out.plan.paper {
+        Some(p) => format!(
+            ", the paper's method alone: {} move{}, {:.2} s",
+            p.moves,
+            if p.moves == 1 { "" } else { "s" },
+            p.time_s
+        ),
+        None => String::new(),
+    };
     let moves = out.plan.moves();
     Ok(format!(
-        "gen-rapid: {}: {} move{}{time}, {}, {} on a {} deg grid, {:.2} s",
+        "gen-rapid: {}: {} move{}{time}{zoned}{paper}, {}, {} on a {} deg grid, {:.2} s",
         opts.cell.display(),
         moves,
         if moves == 1 { "" } else { "s" },

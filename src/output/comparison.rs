@@ -78,7 +78,7 @@ impl Comparison {
                 }
             }
         }
-        out += "(manipulation time: each move from rest to rest, quintic ramps and cruise or one quintic, paper section 5; planning time varies from run to run)\n";
+        out += "(manipulation time: each move from rest to rest, quintic ramps and cruise or one quintic, paper section 5, and no faster than the TCP path and the reorientation at the speeddata's v_tcp and v_ori; planning time varies from run to run)\n";
         out
     }
 }

@@ -2,7 +2,8 @@
 //! the speed and zone of the move into each (`Plan::motion_into`), the robtarget written beside
 //! each robtarget point, the tooldata and wobjdata the cell declares, the header facts (the cell
 //! file, the robot files and their convention, the planner and grid, the clearance asked for,
-//! the base used, the moves, the certified smallest clearance, the time estimate) and the
+//! the base used, the moves, the certified smallest clearance, the time estimate, the zoned vias
+//! and the via zone, the paper's method alone) and the
 //! robot's ranges for the renderer's last guard. Everything comes from the cell, the placed job,
 //! the plan and the [`RobotFacts`] the pipeline hands over; no text is produced here (`rapid`
 //! does).
@@ -93,6 +94,10 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             moves: plan.moves(),
             min_clearance_mm: plan.min_clearance.as_ref().map(|c| c.mm),
             estimated_time_s: plan.estimate.as_ref().map(|e| e.total_s),
+            zoned_vias: plan.zoned_vias(&placed.points),
+            // The zone a proven via gets: `fine` until the cell can give one (motion.via_zone).
+            via_zone: crate::plan::motion::VIA_ZONE.to_string(),
+            paper: plan.paper.map(|p| (p.moves, p.time_s)),
         },
         targets,
         // The tool block's name when there is one (the cell validation sees to it).

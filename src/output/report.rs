@@ -1,10 +1,11 @@
 //! The run's results as data (`--report FILE`, JSON): every waypoint (its module name, all six
 //! axes, the TCP and wrist-centre positions in the cell frame, cell point or via), every move
 //! (from, to, the certified smallest clearance along it with the link or tool shape and the
-//! obstacle, its estimated time, speed and zone), the base, the grid, the method, the totals and
-//! the tool and work object. `docs/report.schema.json` is its JSON Schema (draft 2020-12);
-//! `format` names the version of that layout (later versions add keys, for example the parts of
-//! a move's time once the estimate models the speeddata).
+//! obstacle, its estimated time and what limited it, speed and zone), the base, the grid, the
+//! method, the totals (with the zoned vias and the paper's method alone) and the tool and work
+//! object. `docs/report.schema.json` is its JSON Schema (draft 2020-12); `format` names the
+//! version of that layout (version 2 added each move's `limit`, `totals.zoned_vias` and
+//! `totals.paper_method`; later versions add keys and change the name).
 //!
 //! Goes beyond the paper (a script's view of a run). Made from the run's results only: the cell,
 //! the placed job, the plan and the module's content ([`Program`]: the names, speeds and zones
@@ -29,7 +30,7 @@ use crate::robot::Robot;
 use serde::{Serialize, Serializer};
 
 /// The layout's name and version (the `format` key).
-pub const FORMAT: &str = "gen-rapid report 1";
+pub const FORMAT: &str = "gen-rapid report 2";
 
 /// Why a report could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -108,6 +109,27 @@ pub struct Totals {
     pub estimated_time_s: Option<Fixed>,
     /// The smallest of the moves' clearances; `null` without obstacles.
     pub min_clearance: Option<ClearanceInfo>,
+    /// The vias that fly by (a zone other than a stop point) and the zone a proven via gets.
+    pub zoned_vias: ZonedVias,
+    /// The paper's method alone on the same cell; `null` when not known.
+    pub paper_method: Option<PaperMethod>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct ZonedVias {
+    /// Vias whose move in has a fly-by zone.
+    pub zoned: usize,
+    /// All vias.
+    pub vias: usize,
+    /// The zonedata a via gets where its corner is proven.
+    pub via_zone: String,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct PaperMethod {
+    pub moves: usize,
+    /// Its estimated time, s.
+    pub time_s: Fixed,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -133,6 +155,8 @@ pub struct MoveInfo {
     pub min_clearance: Option<ClearanceInfo>,
     /// Its estimated time, s.
     pub time_s: Option<Fixed>,
+    /// What set its time from rest to rest: `axis`, `tcp` or `reorientation`.
+    pub limit: Option<&'static str>,
     /// The speeddata and zonedata of its `MoveAbsJ`.
     pub speed: String,
     pub zone: String,
@@ -245,6 +269,11 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
                 )?),
                 None => None,
             },
+            limit: plan
+                .estimate
+                .as_ref()
+                .and_then(|e| e.move_limit.get(i))
+                .map(|l| l.name()),
             speed: target.map(|t| t.speed.clone()).unwrap_or_default(),
             zone: target.map(|t| t.zone.clone()).unwrap_or_default(),
         });
@@ -305,6 +334,22 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
             },
             min_clearance: match &plan.min_clearance {
                 Some(c) => Some(clearance(c, "the smallest clearance")?),
+                None => None,
+            },
+            zoned_vias: ZonedVias {
+                zoned: h.zoned_vias.0,
+                vias: h.zoned_vias.1,
+                via_zone: h.via_zone.clone(),
+            },
+            paper_method: match h.paper {
+                Some((moves, t)) => Some(PaperMethod {
+                    moves,
+                    time_s: fixed(
+                        || "the paper's method's time".into(),
+                        t,
+                        REPORT_TIME_DECIMALS,
+                    )?,
+                }),
                 None => None,
             },
         },

@@ -85,15 +85,50 @@ pub struct Leg {
     pub waypoints: Range<usize>,
 }
 
-/// The manipulation time of a route (paper section 5), filled by the time stage.
+/// The manipulation time of a route (paper section 5, with the speeddata and the fly-by at
+/// zoned waypoints: `timing`), filled by the time stage.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Estimate {
-    /// Per move, s.
+    /// Per move, s: from rest to rest, less what flying through a zoned waypoint at either end
+    /// saves.
     pub move_s: Vec<f64>,
     /// Per move, how its progress runs in time (for pictures of the motion).
     pub move_profile: Vec<Profile>,
+    /// Per move, what set its stop-to-stop time: the axes, the TCP speed or the reorientation
+    /// speed of its speeddata (`timing`).
+    pub move_limit: Vec<Limit>,
     /// The sum, s.
     pub total_s: f64,
+}
+
+/// What set a move's time (`timing`): the longest of the three.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Limit {
+    /// The axes' own speeds and accelerations (the leading axis' profile).
+    Axis,
+    /// The TCP path length at the speeddata's `v_tcp`.
+    Tcp,
+    /// The tool's reorientation angle at the speeddata's `v_ori`.
+    Reorientation,
+}
+
+impl Limit {
+    /// The name the report writes: `axis`, `tcp` or `reorientation`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Limit::Axis => "axis",
+            Limit::Tcp => "tcp",
+            Limit::Reorientation => "reorientation",
+        }
+    }
+}
+
+/// The route of the paper's method alone (search, shortening, merge, every via a stop point) and
+/// its estimated time: the figure a later refinement of the route is measured against.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PaperFigure {
+    pub moves: usize,
+    pub time_s: f64,
 }
 
 /// How a move's progress runs in time: the profile of its leading axis (paper Fig. 9, chosen by
@@ -157,6 +192,9 @@ pub struct Plan {
     pub move_clearances: Vec<Option<Clearance>>,
     /// The manipulation time, once the time stage has run.
     pub estimate: Option<Estimate>,
+    /// The paper's method alone on the same cell (moves and estimated time), kept by the pipeline
+    /// after the first time stage; `None` before.
+    pub paper: Option<PaperFigure>,
 }
 
 impl Plan {
@@ -398,6 +436,7 @@ pub fn route(
         min_clearance: None,
         move_clearances: Vec::new(),
         estimate: None,
+        paper: None,
     })
 }
 

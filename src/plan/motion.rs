@@ -7,13 +7,25 @@
 //! (the leg is one job: reaching that point) and [`VIA_ZONE`], a stop point, since a fly-by
 //! corner at a via is not proven to keep the clearance (issue 10 adds certified zones).
 //! The first waypoint's "move into" is the move from wherever the robot stands to the first
-//! point: the first point's motion.
+//! point: the first point's motion. [`is_stop_zone`] says whether a zone stops the robot (the
+//! time estimate flies through the others), [`Plan::zoned_vias`] counts the vias that fly by
+//! (the header's `zoned vias`).
 
 use super::{Plan, WaypointKind};
 use crate::place::{MoveMotion, PlacedPoint};
 
 /// The zone of every move into a via: a stop point.
 pub const VIA_ZONE: &str = "fine";
+
+/// Whether the robot comes to rest at the end of a move with zonedata `zone`: a predefined zone's
+/// `finep`; a name RAPID does not predefine (data declared on the controller) is taken as a
+/// fly-by zone unless it is `fine` (an empty name, which no move has, as a stop).
+pub fn is_stop_zone(zone: &str) -> bool {
+    match crate::rapid_data::predefined_zone(zone) {
+        Some(z) => z.finep,
+        None => zone.is_empty() || zone.eq_ignore_ascii_case("fine"),
+    }
+}
 
 impl Plan {
     /// The speed and zone of the move into waypoint `k` (module docs); `points` are the placed
@@ -36,6 +48,19 @@ impl Plan {
             },
             None => of(usize::MAX),
         }
+    }
+
+    /// The zoned vias: `(zoned, vias)`, the number of vias whose move in has a fly-by zone
+    /// ([`is_stop_zone`] false) and the number of all vias.
+    pub fn zoned_vias(&self, points: &[PlacedPoint]) -> (usize, usize) {
+        let vias: Vec<usize> = (0..self.waypoints.len())
+            .filter(|&k| matches!(self.waypoints[k].kind, WaypointKind::Via { .. }))
+            .collect();
+        let zoned = vias
+            .iter()
+            .filter(|&&k| !is_stop_zone(&self.motion_into(k, points).zone))
+            .count();
+        (zoned, vias.len())
     }
 }
 
@@ -88,6 +113,7 @@ mod tests {
             min_clearance: None,
             move_clearances: Vec::new(),
             estimate: None,
+            paper: None,
         };
         let got: Vec<(String, String)> = (0..kinds.len())
             .map(|k| {
@@ -104,5 +130,15 @@ mod tests {
             ("v2000", "fine"),
         ];
         assert_eq!(got, want.map(|(s, z)| (s.to_string(), z.to_string())));
+        // Three vias, all `fine` today.
+        assert_eq!(plan.zoned_vias(&points), (0, 3));
+    }
+
+    #[test]
+    fn stop_zones_are_fine_and_other_names_fly_by() {
+        assert!(is_stop_zone("fine") && is_stop_zone("FINE") && is_stop_zone(""));
+        for z in ["z0", "z10", "Z50", "z200", "zMine"] {
+            assert!(!is_stop_zone(z), "{z}");
+        }
     }
 }

@@ -203,7 +203,9 @@ fn the_same_point_twice_is_one_move_that_stays_put() {
     // The golden harness holds the module to the output of tests/ok/same_point_twice.yaml.
     let text = read("tests/ok/same_point_twice.mod");
     assert!(
-        text.contains("! moves: 1\n") && !text.contains("via"),
+        text.contains("! moves: 1\n")
+            && text.contains("! zoned vias: 0 of 0 ")
+            && !text.contains("jointtarget via"),
         "{text}"
     );
     let m = Module::parse(&text).expect("module");

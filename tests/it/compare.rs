@@ -60,12 +60,36 @@ fn trunk_moves_and_time_order_the_methods_as_in_the_paper() {
     assert!(time(ex) <= time(df) && time(df) < time(nb), "{j}");
     // Every time is plausible against the profile (wrist fixed on this cell; axes 1-3 at
     // 110 deg/s, 0.4 s ramps): a move's leading axis covers at least length / sqrt 3 at no more
-    // than full speed, and a move takes at most its length at full speed plus one ramp.
+    // than full speed. At the cell's v300 the TCP's speed leads most moves (a longer time); at
+    // vmax the axes lead, and a move takes at most its length at full speed plus one ramp.
     for r in [nb, df, ex] {
-        let (len, t, m) = (num(r, "path_length_deg"), time(r), moves(r));
-        assert!(t > len / 110.0 / 3f64.sqrt(), "{r}");
-        assert!(t <= len / 110.0 + 0.4 * m + 1e-9, "{r}");
+        assert!(
+            time(r) > num(r, "path_length_deg") / 110.0 / 3f64.sqrt(),
+            "{r}"
+        );
     }
+    let dir = tempfile::tempdir().expect("tempdir");
+    let vmax = dir.path().join("trunk.yaml");
+    let text = std::fs::read_to_string(root().join(TRUNK)).expect("trunk");
+    let urdf = root().join("robots/irb1400.urdf");
+    let text = text
+        .replace("../robots/irb1400.urdf", &urdf.display().to_string())
+        .replace("speed: v300", "speed: vmax");
+    assert!(text.contains("speed: vmax"));
+    std::fs::write(&vmax, text).expect("write");
+    let j_max = compare_json_of(&vmax.display().to_string(), &[]);
+    for method in ["neighboring", "depth-first", "extensile"] {
+        let (r, fast) = (row(&j, method), row(&j_max, method));
+        let (len, t, m) = (num(fast, "path_length_deg"), time(fast), moves(fast));
+        assert_eq!(m, moves(r), "the same route");
+        assert!(t > len / 110.0 / 3f64.sqrt(), "{fast}");
+        assert!(t <= len / 110.0 + 0.4 * m + 1e-9, "{fast}");
+        assert!(t <= time(r), "vmax is never slower than v300: {fast} {r}");
+    }
+    // The paper's order holds at vmax too.
+    let time_max = |m: &str| time(row(&j_max, m));
+    assert!(time_max("extensile") <= time_max("depth-first"));
+    assert!(time_max("depth-first") < time_max("neighboring"));
 }
 
 #[test]

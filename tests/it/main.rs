@@ -34,6 +34,7 @@ mod cli;
 mod common;
 mod compare;
 mod convention;
+mod estimate;
 mod fuzz;
 mod golden;
 mod locate;

@@ -13,7 +13,9 @@ MODULE AutoTcp
     ! frames: robtargets and the user frame are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above
     ! moves: 2
     ! min clearance (mm): 367.1
-    ! estimated time (s): 1.61
+    ! estimated time (s): 4.03
+    ! zoned vias: 0 of 0 (via zone fine)
+    ! the paper's method alone: 2 moves, 4.03 s
 
     PERS tooldata tGripper := [TRUE,[[0.000,0.000,180.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[1.000,[0.000,0.000,0.000],[1,0,0,0],0,0,0]];
 

@@ -7,10 +7,12 @@
 //! **Keyframes.** Move `i` starts when move `i - 1` ends and lasts the estimate's
 //! `move_s[i]`; within it all six axes run together along the straight joint move (`MoveAbsJ`)
 //! at the progress of the move's profile (`Profile::progress`, the leading axis' profile of the
-//! time stage). A move is sampled every [`KEYFRAME_STEP_S`] of time and every
-//! [`KEYFRAME_STEP_DEG`] of its largest axis change (whichever gives more samples, at least one),
-//! both ends included, so the page's linear interpolation between keyframes stays within about a
-//! millimetre of the kinematics (a test measures it).
+//! time stage: the leading axis', or the TCP path's when the speeddata leads). A move is sampled
+//! piece by piece (a ramp, the cruise, a ramp; or its one quintic) every [`KEYFRAME_STEP_S`] of
+//! time and every [`KEYFRAME_STEP_DEG`] of its largest axis change (whichever gives more
+//! samples), a ramp into at least [`RAMP_KEYFRAMES`] (a TCP-limited move's ramps are short and
+//! steep), both ends included, so the page's linear interpolation between keyframes stays within
+//! about a millimetre of the kinematics (a test measures it).
 //!
 //! **The smallest clearance** is the plan's certified figure, on the move, link and obstacle the
 //! plan names ([`Plan::move_clearances`]). Where on the move it occurs is only for the picture:
@@ -134,6 +136,40 @@ fn lerp6(a: &[f64; 6], b: &[f64; 6], s: f64) -> [f64; 6] {
     std::array::from_fn(|k| a[k] + s * (b[k] - a[k]))
 }
 
+/// Keyframes ramps are cut into at least (module docs).
+const RAMP_KEYFRAMES: f64 = 4.0;
+
+/// The times (s, after the move's start, the last `duration`) of a move's keyframes (module
+/// docs): each piece of the profile (a ramp, the cruise, a ramp; or the whole quintic) cut into
+/// equal steps of at most [`KEYFRAME_STEP_S`] and [`KEYFRAME_STEP_DEG`] of the largest axis
+/// change over the piece, a ramp into at least [`RAMP_KEYFRAMES`].
+fn keyframe_times(duration: f64, profile: Profile, largest_deg: f64) -> Vec<f64> {
+    let pieces: Vec<(f64, f64, f64)> = match profile {
+        Profile::Cruise { ramp_s } if ramp_s > 0.0 && 2.0 * ramp_s <= duration => vec![
+            (0.0, ramp_s, RAMP_KEYFRAMES),
+            (ramp_s, duration - ramp_s, 1.0),
+            (duration - ramp_s, duration, RAMP_KEYFRAMES),
+        ],
+        _ => vec![(0.0, duration, 1.0)],
+    };
+    let mut times = Vec::new();
+    for (a, b, least) in pieces {
+        let share = profile.progress(b, duration) - profile.progress(a, duration);
+        let n = ((b - a) / KEYFRAME_STEP_S)
+            .ceil()
+            .max((largest_deg * share / KEYFRAME_STEP_DEG).ceil())
+            .max(least) as usize;
+        times.extend((1..=n).map(|j| {
+            if j == n {
+                b
+            } else {
+                a + (b - a) * j as f64 / n as f64
+            }
+        }));
+    }
+    times
+}
+
 /// The title the page shows: the module and the cell file's name.
 fn title(cell: &Cell) -> (String, String) {
     let file = cell
@@ -177,12 +213,10 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
             let largest = (0..6)
                 .map(|a| (w.joints_deg[a] - from[a]).abs())
                 .fold(0.0, f64::max);
-            let n = ((duration / KEYFRAME_STEP_S).ceil())
-                .max((largest / KEYFRAME_STEP_DEG).ceil())
-                .max(1.0) as usize;
-            for j in 1..=n {
-                let t = duration * j as f64 / n as f64;
-                let axes = if j == n {
+            let times = keyframe_times(duration, profile, largest);
+            let last = times.len() - 1;
+            for (j, &t) in times.iter().enumerate() {
+                let axes = if j == last {
                     w.joints_deg
                 } else {
                     lerp6(from, &w.joints_deg, profile.progress(t, duration))

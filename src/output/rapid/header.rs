@@ -44,6 +44,12 @@ pub struct Header {
     pub min_clearance_mm: Option<f64>,
     /// Manipulation time estimate in seconds, when known (printed with 2 decimals).
     pub estimated_time_s: Option<f64>,
+    /// The vias whose move in has a fly-by zone, and all vias (`Plan::zoned_vias`).
+    pub zoned_vias: (usize, usize),
+    /// The zone a via gets where it is proven (the cell's via zone; `fine` until vias may fly by).
+    pub via_zone: String,
+    /// The paper's method alone on the same cell: its moves and estimated time (s), when known.
+    pub paper: Option<(usize, f64)>,
 }
 
 /// Header free text as printable ASCII on one line (see module doc).
@@ -90,6 +96,10 @@ pub struct Facts {
     pub min_clearance_mm: Option<String>,
     /// 2 decimals, or none when not estimated.
     pub estimated_time_s: Option<String>,
+    /// `N of M (via zone Z)`: the vias that fly by, of all vias, and the cell's via zone.
+    pub zoned_vias: String,
+    /// `n moves, t s` (t with 2 decimals): the paper's method alone, or none when not known.
+    pub paper_method: Option<String>,
 }
 
 impl Facts {
@@ -119,6 +129,10 @@ impl Facts {
         ));
         if let Some(t) = &self.estimated_time_s {
             lines.push(format!("estimated time (s): {t}"));
+        }
+        lines.push(format!("zoned vias: {}", self.zoned_vias));
+        if let Some(p) = &self.paper_method {
+            lines.push(format!("the paper's method alone: {p}"));
         }
         lines
     }
@@ -150,6 +164,14 @@ pub(super) fn facts(p: &Program) -> Result<Facts, RapidError> {
         )),
         None => None,
     };
+    let paper_method = match h.paper {
+        Some((moves, t)) => Some(format!(
+            "{moves} move{}, {} s",
+            if moves == 1 { "" } else { "s" },
+            format_fixed(finite("header paper time_s", t)?, TIME_DECIMALS)
+        )),
+        None => None,
+    };
     let coupling = match h.parallelogram {
         true => "parallelogram (axis 3 = URDF joint 3 + joint 2)",
         false => "serial (axes 1..6 = URDF joints 1..6)",
@@ -175,6 +197,13 @@ pub(super) fn facts(p: &Program) -> Result<Facts, RapidError> {
         moves: h.moves,
         min_clearance_mm,
         estimated_time_s,
+        zoned_vias: format!(
+            "{} of {} (via zone {})",
+            h.zoned_vias.0,
+            h.zoned_vias.1,
+            comment_text(&h.via_zone)
+        ),
+        paper_method,
     })
 }
 

@@ -32,6 +32,8 @@
 //!     ! moves: <moves>
 //!     ! min clearance (mm): <min_clearance_mm, 1 decimal, or `none (no obstacles)`>
 //!     ! estimated time (s): <estimated_time_s, 2 decimals>   (only when known)
+//!     ! zoned vias: <N> of <M> (via zone <zone>)
+//!     ! the paper's method alone: <n> moves, <t, 2 decimals> s   (only when known)
 //!
 //!     PERS tooldata <tool> := [TRUE,[[x,y,z],[q1,q2,q3,q4]],[mass,[cx,cy,cz],[1,0,0,0],0,0,0]];
 //!     PERS wobjdata <wobj> := [FALSE,TRUE,"",[[x,y,z],[q1,q2,q3,q4]],[[0,0,0],[1,0,0,0]]];

@@ -52,6 +52,9 @@ fn header(moves: usize) -> Header {
         moves,
         min_clearance_mm: Some(14.04),
         estimated_time_s: Some(3.456),
+        zoned_vias: (1, 2),
+        via_zone: "z50".to_string(),
+        paper: Some((moves + 1, 4.0)),
     }
 }
 
@@ -87,6 +90,8 @@ const SMALL_EXPECTED: &str = r"MODULE Trunk
     ! moves: 3
     ! min clearance (mm): 14.0
     ! estimated time (s): 3.46
+    ! zoned vias: 1 of 2 (via zone z50)
+    ! the paper's method alone: 4 moves, 4.00 s
 
     CONST jointtarget home := [[0.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[10.500,0.000,20.000,0.000,30.000,-180.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
@@ -139,6 +144,9 @@ fn awkward_program() -> Program {
             moves: targets.len() - 1,
             min_clearance_mm: Some(1e-20),
             estimated_time_s: None,
+            zoned_vias: (0, 1),
+            via_zone: "fine".to_string(),
+            paper: None,
         },
         targets: targets
             .into_iter()
@@ -288,6 +296,8 @@ fn render_without_targets() {
     p.targets.clear();
     p.header.moves = 0;
     p.header.estimated_time_s = None;
+    p.header.zoned_vias = (0, 0);
+    p.header.paper = None;
     let text = render(&p).unwrap();
     let expected = r"MODULE Trunk
     ! generator: gen-rapid 0.1.0
@@ -301,6 +311,7 @@ fn render_without_targets() {
     ! base: [0.0, -250.5, 12.3] yaw: -90.000
     ! moves: 0
     ! min clearance (mm): 14.0
+    ! zoned vias: 0 of 0 (via zone z50)
 
 
     PROC main()
@@ -570,6 +581,8 @@ const TCP_EXPECTED: &str = r#"MODULE Weld
     ! moves: 3
     ! min clearance (mm): 14.0
     ! estimated time (s): 3.46
+    ! zoned vias: 1 of 2 (via zone z50)
+    ! the paper's method alone: 4 moves, 4.00 s
 
     PERS tooldata tTorch := [TRUE,[[0.000,0.000,350.000],[0.923879533,0.000000000,0.382683432,0.000000000]],[2.500,[0.000,0.000,120.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjTrunk := [FALSE,TRUE,"",[[400.000,0.000,500.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];

@@ -127,7 +127,7 @@ pub fn plan_every_method(cell: &Cell, grid_deg: f64) -> Result<Vec<(String, Plan
         .into_iter()
         .map(|m| {
             let planned = match pipeline::plan(&job, &placed, &inspected, m)
-                .map(|p| pipeline::time(&job, p))
+                .map(|p| pipeline::time(&job, &placed, p))
                 .and_then(|p| pipeline::render(&job, &placed, &p))
             {
                 Ok(out) => Planned::Module(out.text),
