@@ -91,7 +91,12 @@ impl Drop for TerminalProgress {
         if let Some(watcher) = self.watcher.take() {
             let _ = watcher.join();
         }
-        self.bar.finish_and_clear();
+        if std::thread::panicking() {
+            // Leave the bar and the panic's message as they are on the screen.
+            self.bar.abandon();
+        } else {
+            self.bar.finish_and_clear();
+        }
     }
 }
 

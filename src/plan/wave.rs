@@ -22,7 +22,8 @@ use std::collections::VecDeque;
 /// What a wave and a search walk on: which free nodes of the grid they may use and which
 /// neighbour steps between them exist.
 pub trait Graph: Sync {
-    /// Whether a node free on the grid may be used. A wave asks at most once per node.
+    /// Whether a node free on the grid may be used. A wave asks at most once per node in each
+    /// numbering pass (a wave numbered again in wider words asks again).
     fn node_ok(&self, n: Node) -> bool;
     /// Whether the step between two neighbouring usable nodes exists. Must be symmetric.
     fn step_ok(&self, a: Node, b: Node) -> bool;
@@ -58,8 +59,10 @@ impl<F: Fn(Node, Node) -> bool + Sync> Graph for F {
 }
 
 /// A node's label word. A wave is numbered in `u16` words (2 bytes a node: half the memory and
-/// memory traffic of `u32`) and again in `u32` only if a number would not fit, which takes a
-/// path of over 65 000 steps: the numbers are the same either way.
+/// memory traffic of `u32`) and again in `u32` only if a number would not fit: when a node
+/// numbered 65 533 is expanded, i.e. the end's number would be 65 534 or more (or the end is
+/// unreachable from a component that deep, numbered again only to return `None`). The numbers
+/// are the same either way.
 trait Word: Copy + PartialEq + Default {
     /// The node was looked at and may not be used.
     const BLOCKED: Self;
@@ -439,5 +442,19 @@ mod tests {
         // A short wave stays in narrow words.
         let short = expand(&cs, &Open, [0, 0, 0], [9, 0, 0], Connectivity::TwentySix);
         assert!(matches!(short.map(|w| w.labels), Some(Labels::Narrow(_))));
+    }
+
+    /// The exact limit: an end numbered 65 533 stays in 16-bit words, one node further goes wide.
+    #[test]
+    fn the_narrow_words_hold_up_to_65533_exactly() {
+        for (last, wide) in [(65_532.0, false), (65_533.0, true)] {
+            let g = Grid::over([[0.0, last], [0.0, 0.0], [0.0, 0.0]], 1.0);
+            let cs = CSpace::from_fn(g, |_| true);
+            let end = [last as i32, 0, 0];
+            let w = expand(&cs, &Open, [0, 0, 0], end, Connectivity::Six).expect("a line");
+            assert_eq!(w.n(), last as u32 + 1);
+            assert_eq!(matches!(w.labels, Labels::Wide(_)), wide, "end at {last}");
+            assert_eq!(w.label([1000, 0, 0]), 1001);
+        }
     }
 }
