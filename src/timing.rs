@@ -290,6 +290,7 @@ mod tests {
             min_clearance: None,
             move_clearances: Vec::new(),
             estimate: None,
+            zones: Vec::new(),
         };
         let mut axes = [axis(110.0, 515.625); 6];
         for a in axes.iter_mut().skip(3) {

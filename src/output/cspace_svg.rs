@@ -358,6 +358,7 @@ mod tests {
             min_clearance: None,
             move_clearances: Vec::new(),
             estimate: None,
+            zones: Vec::new(),
         };
         let svg = render_svg(&cs, &|_| true, &points, &[&plan], "test").expect("svg");
         assert!(svg.starts_with("<svg"));

@@ -157,6 +157,11 @@ pub struct Plan {
     pub move_clearances: Vec<Option<Clearance>>,
     /// The manipulation time, once the time stage has run.
     pub estimate: Option<Estimate>,
+    /// The zone of the move into each waypoint as the refine stage certified it (issue 10:
+    /// a via's `motion.via_zone` where its corner is proven, a cell point's own zone where its
+    /// corner is proven, else `fine`; the first and last waypoints `fine`). Empty before that
+    /// stage: then [`Plan::motion_into`] gives the paper's rule (every via `fine`).
+    pub zones: Vec<String>,
 }
 
 impl Plan {
@@ -398,6 +403,7 @@ pub fn route(
         min_clearance: None,
         move_clearances: Vec::new(),
         estimate: None,
+        zones: Vec::new(),
     })
 }
 
