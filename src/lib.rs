@@ -37,6 +37,9 @@ pub mod plan;
 // time: manipulation time per move
 pub mod timing;
 
+// refine: the shortcut pass and the certified zones at waypoints (issue 10)
+pub mod refine;
+
 // render: the RAPID module, pictures, reports
 pub mod output;
 

@@ -14,6 +14,7 @@ Examples:
   gen-rapid cells/trunk.yaml > trunk.mod          plan the trunk cell, module on stdout
   gen-rapid cells/trunk.yaml -o trunk.mod         the same, written atomically to a file
   gen-rapid cells/trunk.yaml --planner depth-first --grid 2
+  gen-rapid cells/trunk.yaml --no-shortcut        the paper's method alone (no shortcut pass)
   gen-rapid cells/trunk.yaml --svg trunk.svg      also draw the route over the C-space
   gen-rapid cells/trunk.yaml --html trunk.html    also a 3D preview page (open it in a browser)
   gen-rapid cells/trunk.yaml --report trunk.json  also the results as JSON
@@ -32,7 +33,8 @@ A minimal cell (mm and degrees; joint values are the controller's, as in a joint
     - { name: P2, joints: [30, 0, 0] }
 Optional: robot.yaw, robot.wrist, robot.controller (a controller file for the URDF), points as
 xyz (wrist centre), base: auto, planner.method (extensile), planner.grid (1 deg),
-planner.clearance (10 mm), motion.speed/zone/tool/proc (v300, fine, tool0, main).
+planner.clearance (10 mm), planner.shortcut (true), motion.speed/zone/tool/proc (v300, fine,
+tool0, main), motion.via_zone (fine; e.g. z50: a via flies by where its corner is proven).
 
 A tool, a work object and points as TCP poses (robtargets; quaternions [w, x, y, z]):
   tool:                                  # the tooldata to declare, with its collision volumes
@@ -108,6 +110,10 @@ struct RunArgs {
     /// terminal (never when stderr is a pipe or a file).
     #[arg(short, long)]
     quiet: bool,
+    /// Keep the paper's method alone: no shortcut pass after its shortening and merge (as
+    /// planner.shortcut: false). Zones are certified either way.
+    #[arg(long)]
+    no_shortcut: bool,
 }
 
 #[derive(Subcommand)]
@@ -192,6 +198,7 @@ fn main() -> ExitCode {
             template: cli.run.template,
             proc_name: cli.run.proc_name,
             quiet: cli.run.quiet,
+            no_shortcut: cli.run.no_shortcut,
         }),
         Some(Command::Compare(a)) => compare(&CompareOptions {
             cell: a.cell,

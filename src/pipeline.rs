@@ -1,7 +1,7 @@
 //! The stages in order, for the command line, the tests and the benchmarks:
 //!
 //! ```text
-//! load (cell + robot files) -> place -> inspect -> plan -> time -> render
+//! load (cell + robot files) -> place -> inspect -> plan -> time -> refine -> time -> render
 //! ```
 //!
 //! Each stage is a function of the previous stages' results. Only [`load`] reads files (the cell,
@@ -20,6 +20,7 @@ use crate::place::{self, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
 use crate::plan::{self, Method, Plan};
 use crate::progress::{Progress, Silent};
+use crate::refine::{self, Refined};
 use crate::robot::{Coupling, Robot, RobotError};
 use crate::timing;
 use std::path::Path;
@@ -257,6 +258,27 @@ pub fn keep_paper_figure(mut plan: Plan) -> Plan {
     plan
 }
 
+/// Refine (issue 10): the shortcut pass (`planner.shortcut`) and the certified zones
+/// (`motion.via_zone`, the points' zones), each change kept only when the time estimate does not
+/// grow; then the time again. The warnings are for stderr (a point's zone written `fine`).
+pub fn refine(job: &Loaded, placed: &Placed, inspected: &Inspected, plan: Plan) -> Refined {
+    let settings = refine::Settings {
+        shortcut: job.cell.planner.shortcut,
+        via_zone: &job.cell.motion.via_zone,
+        explicit_zone: job.cell.points.iter().map(|p| p.zone.is_some()).collect(),
+    };
+    let model = timing::TimeModel::new(&job.robot, job.cell.tool.as_ref());
+    let time_s = |p: &Plan| timing::estimate(p, &placed.points, &model).total_s;
+    let paper = plan.paper;
+    let mut refined = refine::refine(plan, &inspected.model, &placed.points, &settings, &time_s);
+    // The paper's figure stays the one of the route before refinement.
+    refined.plan.paper = paper;
+    Refined {
+        plan: time(job, placed, refined.plan),
+        warnings: refined.warnings,
+    }
+}
+
 /// Render: the RAPID module of a plan, through the embedded template.
 pub fn render(job: &Loaded, placed: &Placed, plan: &Plan) -> Result<Rendered, Error> {
     render_with(job, placed, plan, &ModuleTemplate::embedded())
@@ -289,6 +311,8 @@ pub struct Outcome {
     pub inspected: Inspected,
     pub plan: Plan,
     pub rendered: Rendered,
+    /// Warnings of the refine stage, for stderr.
+    pub warnings: Vec<String>,
 }
 
 /// A run that stopped at a stage's error, with what the stages before it made that a picture of
@@ -349,7 +373,7 @@ pub fn run_observed(
     let placed = place(job)?;
     let inspected = inspect_observed(job, &placed, grid_deg, progress);
     progress.stage("planning and proving the moves", 0);
-    let plan = match plan(job, &placed, &inspected, method) {
+    let paper = match plan(job, &placed, &inspected, method) {
         // The paper's method alone: search, shorten, merge, every via a stop point, timed.
         Ok(plan) => keep_paper_figure(time(job, &placed, plan)),
         Err(error) => {
@@ -359,6 +383,8 @@ pub fn run_observed(
             })
         }
     };
+    progress.stage("shortening the route and proving the zones", 0);
+    let Refined { plan, warnings } = refine(job, &placed, &inspected, paper);
     progress.stage("writing the module", 0);
     let rendered = render_with(job, &placed, &plan, template)?;
     Ok(Outcome {
@@ -366,6 +392,7 @@ pub fn run_observed(
         inspected,
         plan,
         rendered,
+        warnings,
     })
 }
 
@@ -394,4 +421,28 @@ pub fn compare(job: &Loaded, placed: &Placed, inspected: &Inspected) -> Vec<Atte
             }
         })
         .collect()
+}
+
+/// The row beyond the paper in a comparison (issue 10): the extensile attempt's route through the
+/// refine stage with the shortcut pass (whatever `planner.shortcut` says), timed; with the
+/// wall-clock time of planning it (the extensile search's and the pass's). `None` when the
+/// extensile search failed.
+pub fn compare_shortcut(
+    job: &Loaded,
+    placed: &Placed,
+    inspected: &Inspected,
+    attempts: &[Attempt],
+) -> Option<(Plan, f64)> {
+    let extensile = attempts.iter().find(|a| a.method == Method::Extensile)?;
+    let paper = extensile.result.as_ref().ok()?.clone();
+    let started = Instant::now();
+    let mut job_shortcut = Loaded {
+        cell: job.cell.clone(),
+        text: String::new(),
+        robot: job.robot.clone(),
+    };
+    job_shortcut.cell.planner.shortcut = true;
+    let refined = refine(&job_shortcut, placed, inspected, paper);
+    let ms = extensile.planning_time_ms + started.elapsed().as_secs_f64() * 1e3;
+    Some((refined.plan, ms))
 }

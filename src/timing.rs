@@ -659,6 +659,7 @@ mod tests {
             move_clearances: Vec::new(),
             estimate: None,
             paper: None,
+            zones: Vec::new(),
         }
     }
 

@@ -208,6 +208,9 @@ pub struct Planner {
     pub method: Method,
     pub grid_deg: f64,
     pub clearance_mm: f64,
+    /// `planner.shortcut`: after the paper's method, the continuous shortcut pass (issue 10;
+    /// `refine`). `false` keeps the paper's method alone.
+    pub shortcut: bool,
 }
 
 /// The cell's `motion:` defaults.
@@ -225,6 +228,9 @@ pub struct Motion {
     pub proc: String,
     /// Where that name comes from.
     pub proc_from: ProcFrom,
+    /// `motion.via_zone`: the predefined zonedata a via gets where its corner is proven
+    /// (`refine::zones`); `fine` (the default) keeps every via a stop point.
+    pub via_zone: String,
 }
 
 /// Where the routine's name comes from.
@@ -262,6 +268,8 @@ pub mod defaults {
     pub const CLEARANCE_MM: f64 = 10.0;
     pub const SPEED: &str = "v300";
     pub const ZONE: &str = "fine";
+    pub const VIA_ZONE: &str = "fine";
+    pub const SHORTCUT: bool = true;
     pub const TOOL: &str = "tool0";
     /// The routine's name.
     pub const PROC: &str = "main";

@@ -113,6 +113,8 @@ pub struct RawPlanner {
     pub grid: Option<Spanned<f64>>,
     #[serde(default)]
     pub clearance: Option<Spanned<f64>>,
+    #[serde(default)]
+    pub shortcut: Option<Spanned<bool>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -126,6 +128,8 @@ pub struct RawMotion {
     pub tool: Option<Spanned<String>>,
     #[serde(default)]
     pub proc: Option<Spanned<String>>,
+    #[serde(default)]
+    pub via_zone: Option<Spanned<String>>,
 }
 
 /// A pose as RAPID writes it, `[[x, y, z], [q1, q2, q3, q4]]`.

@@ -19,7 +19,8 @@ fn defaults_fill_what_a_cell_leaves_out() {
         Planner {
             method: Method::Extensile,
             grid_deg: 1.0,
-            clearance_mm: 10.0
+            clearance_mm: 10.0,
+            shortcut: true,
         }
     );
     assert_eq!(
@@ -325,4 +326,63 @@ fn text_that_is_not_utf8_is_refused_at_its_byte() {
         "{err}"
     );
     assert!(err.to_string().contains("0xE9"), "{err}");
+}
+
+#[test]
+fn via_zone_and_shortcut_are_read_and_refused_at_their_place() {
+    let c = parse_str(MINIMAL).expect("valid");
+    assert_eq!(
+        (c.motion.via_zone.as_str(), c.planner.shortcut),
+        ("fine", true)
+    );
+    let c = parse_str(&format!(
+        "{MINIMAL}planner:\n  shortcut: false\nmotion:\n  via_zone: Z50\n"
+    ))
+    .expect("valid");
+    assert_eq!(
+        (c.motion.via_zone.as_str(), c.planner.shortcut),
+        ("z50", false)
+    );
+    // (text, needle, line, column): line 8 is the first line after MINIMAL's seven.
+    let cases = [
+        (
+            format!("{MINIMAL}motion:\n  via_zone: z7\n"),
+            "motion.via_zone 'z7' is not a predefined zonedata",
+            9,
+            13,
+        ),
+        (
+            format!("{MINIMAL}motion:\n  via_zone: myzone\n"),
+            "motion.via_zone 'myzone' is not a predefined zonedata",
+            9,
+            13,
+        ),
+        (
+            format!("{MINIMAL}motion:\n  via_zone: 9z\n"),
+            "motion.via_zone '9z' is not a valid RAPID name",
+            9,
+            13,
+        ),
+        (
+            format!("{MINIMAL}motion:\n  via_zone: [z50]\n"),
+            "expected string",
+            9,
+            13,
+        ),
+        (
+            format!("{MINIMAL}planner:\n  shortcut: maybe\n"),
+            "invalid boolean",
+            9,
+            13,
+        ),
+    ];
+    for (text, needle, line, column) in cases {
+        let err = parse_str(&text).expect_err(needle);
+        assert!(err.to_string().contains(needle), "'{err}' lacks '{needle}'");
+        assert_eq!(
+            err.loc().map(|l| (l.line, l.column)),
+            Some((line, column)),
+            "{err}"
+        );
+    }
 }

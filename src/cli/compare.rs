@@ -14,7 +14,7 @@ use crate::error::{Error, Failure};
 use crate::output::comparison::{Comparison, Row};
 use crate::output::cspace_svg::{self, Marked};
 use crate::pipeline;
-use crate::plan::Plan;
+use crate::plan::{Method, Plan};
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -47,13 +47,26 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
     })?;
     let inspected = pipeline::inspect(&job, &placed, grid_deg);
     let attempts = pipeline::compare(&job, &placed, &inspected);
-    let rows: Vec<Row> = attempts
+    let mut rows: Vec<Row> = attempts
         .iter()
         .map(|a| {
             let result = a.result.as_ref().map_err(|e| e.to_string());
             Row::of(a.method, result, a.planning_time_ms)
         })
         .collect();
+    // Beyond the paper: the extensile route with the shortcut pass (issue 10).
+    let shortcut = pipeline::compare_shortcut(&job, &placed, &inspected, &attempts);
+    rows.push(match &shortcut {
+        Some((plan, ms)) => Row::of(Method::Extensile, Ok(plan), *ms),
+        None => Row::of(
+            Method::Extensile,
+            Err("the extensile search found no route".into()),
+            0.0,
+        ),
+    });
+    if let Some(last) = rows.last_mut() {
+        last.method = format!("{} + shortcut", Method::Extensile.name());
+    }
     let failures: Vec<String> = attempts
         .iter()
         .filter_map(|a| {

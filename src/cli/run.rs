@@ -39,6 +39,8 @@ pub struct RunOptions {
     pub proc_name: Option<String>,
     /// No progress bar (`--quiet`; the caller also leaves out the summary line).
     pub quiet: bool,
+    /// `--no-shortcut`: the paper's method alone (overrides `planner.shortcut`).
+    pub no_shortcut: bool,
 }
 
 /// Runs the pipeline; on success the module (and the files asked for) are written and a summary
@@ -51,6 +53,9 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
         if let Err(e) = cell::override_proc(&mut job.cell, name) {
             return Err(job.fail(e.into()));
         }
+    }
+    if opts.no_shortcut {
+        job.cell.planner.shortcut = false;
     }
     let template = match &opts.template {
         Some(path) => pipeline::load_template(path)?,
@@ -80,6 +85,9 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
         write_atomically(path, text.as_bytes()).map_err(|e| job.fail(e))?;
     }
     emit(opts.output.as_deref(), out.rendered.text.as_bytes()).map_err(|e| job.fail(e))?;
+    for w in &out.warnings {
+        eprintln!("{w}");
+    }
     let clearance = match &out.plan.min_clearance {
         Some(c) => format!("smallest clearance {:.1} mm", c.mm),
         None => "no obstacles".to_string(),

@@ -55,6 +55,7 @@
 //! that every distance is computed on cell-sized shapes ([`CLIP_MARGIN_MM`]).
 
 mod column;
+mod corner;
 mod grid;
 mod parts;
 mod proof;
@@ -292,6 +293,16 @@ impl CollisionModel {
     /// The clearance every link and tool shape must keep from every box, mm.
     pub fn clearance_mm(&self) -> f64 {
         self.clearance_mm
+    }
+
+    /// The same model asking `extra_mm` more clearance of the moves it proves (the refine
+    /// stage's margin: a route that keeps it leaves room for the zones' corners). Only the
+    /// whole-move and corner proofs are meant to be asked of it; the boxes stay clipped for the
+    /// cell's clearance, so whatever it accepts is proven again on the cell's model.
+    pub fn with_margin(&self, extra_mm: f64) -> CollisionModel {
+        let mut m = self.clone();
+        m.clearance_mm += extra_mm.max(0.0);
+        m
     }
 
     /// Where the robot stands in the cell.

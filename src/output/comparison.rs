@@ -58,20 +58,20 @@ impl Comparison {
             self.free_nodes
         );
         out += &format!(
-            "{:<12} {:>6} {:>18} {:>22} {:>19}\n",
+            "{:<20} {:>6} {:>18} {:>22} {:>19}\n",
             "method", "moves", "path length (deg)", "manipulation time (s)", "planning time (ms)"
         );
         for r in &self.methods {
             match (r.moves, r.path_length_deg, r.manipulation_time_s) {
                 (Some(m), Some(l), Some(t)) => {
                     out += &format!(
-                        "{:<12} {:>6} {:>18.1} {:>22.2} {:>19.0}\n",
+                        "{:<20} {:>6} {:>18.1} {:>22.2} {:>19.0}\n",
                         r.method, m, l, t, r.planning_time_ms
                     )
                 }
                 _ => {
                     out += &format!(
-                        "{:<12} failed: {}\n",
+                        "{:<20} failed: {}\n",
                         r.method,
                         r.error.as_deref().unwrap_or("unknown reason")
                     )

@@ -359,6 +359,7 @@ mod tests {
             move_clearances: Vec::new(),
             estimate: None,
             paper: None,
+            zones: Vec::new(),
         };
         let svg = render_svg(&cs, &|_| true, &points, &[&plan], "test").expect("svg");
         assert!(svg.starts_with("<svg"));

@@ -95,8 +95,8 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             min_clearance_mm: plan.min_clearance.as_ref().map(|c| c.mm),
             estimated_time_s: plan.estimate.as_ref().map(|e| e.total_s),
             zoned_vias: plan.zoned_vias(&placed.points),
-            // The zone a proven via gets: `fine` until the cell can give one (motion.via_zone).
-            via_zone: crate::plan::motion::VIA_ZONE.to_string(),
+            // The zone a via gets where its corner is proven (`motion.via_zone`).
+            via_zone: cell.motion.via_zone.clone(),
             paper: plan.paper.map(|p| (p.moves, p.time_s)),
         },
         targets,

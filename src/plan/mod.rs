@@ -195,6 +195,11 @@ pub struct Plan {
     /// The paper's method alone on the same cell (moves and estimated time), kept by the pipeline
     /// after the first time stage; `None` before.
     pub paper: Option<PaperFigure>,
+    /// The zone of the move into each waypoint as the refine stage certified it (issue 10:
+    /// a via's `motion.via_zone` where its corner is proven, a cell point's own zone where its
+    /// corner is proven, else `fine`; the first and last waypoints `fine`). Empty before that
+    /// stage: then [`Plan::motion_into`] gives the paper's rule (every via `fine`).
+    pub zones: Vec<String>,
 }
 
 impl Plan {
@@ -437,6 +442,7 @@ pub fn route(
         move_clearances: Vec::new(),
         estimate: None,
         paper: None,
+        zones: Vec::new(),
     })
 }
 

@@ -5,7 +5,10 @@
 //! cell's `motion.speed`/`motion.zone` (the place stage resolves that into
 //! [`PlacedPoint::motion`]); the moves into a leg's vias use the speed of the leg's end point
 //! (the leg is one job: reaching that point) and [`VIA_ZONE`], a stop point, since a fly-by
-//! corner at a via is not proven to keep the clearance (issue 10 adds certified zones).
+//! corner at a via is not proven to keep the clearance. Issue 10: once the refine stage has
+//! certified the corners ([`Plan::zones`], `refine::zones`), its zone of each waypoint is the
+//! zone of the move into it: a via's `motion.via_zone` where its corner triangle is proven, a
+//! cell point's own zone where its corner is proven (else `fine`), the first and last `fine`.
 //! The first waypoint's "move into" is the move from wherever the robot stands to the first
 //! point: the first point's motion. [`is_stop_zone`] says whether a zone stops the robot (the
 //! time estimate flies through the others), [`Plan::zoned_vias`] counts the vias that fly by
@@ -41,10 +44,17 @@ impl Plan {
                 })
         };
         match self.waypoints.get(k).map(|w| w.kind) {
-            Some(WaypointKind::CellPoint(i)) => of(i),
+            Some(WaypointKind::CellPoint(i)) => MoveMotion {
+                zone: self.zones.get(k).cloned().unwrap_or(of(i).zone),
+                ..of(i)
+            },
             Some(WaypointKind::Via { leg, .. }) => MoveMotion {
                 speed: of(leg + 1).speed,
-                zone: VIA_ZONE.to_string(),
+                zone: self
+                    .zones
+                    .get(k)
+                    .cloned()
+                    .unwrap_or_else(|| VIA_ZONE.to_string()),
             },
             None => of(usize::MAX),
         }
@@ -114,6 +124,7 @@ mod tests {
             move_clearances: Vec::new(),
             estimate: None,
             paper: None,
+            zones: Vec::new(),
         };
         let got: Vec<(String, String)> = (0..kinds.len())
             .map(|k| {

@@ -11,22 +11,18 @@ MODULE TorchTrunk
     ! tool: tTorch (declared below; collision shapes: mount, neck, nozzle)
     ! wobj: wobjTrunk (declared below; robtargets are in its user frame)
     ! frames: robtargets and the user frame are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above
-    ! moves: 17
-    ! min clearance (mm): 10.5
-    ! estimated time (s): 33.13
-    ! zoned vias: 0 of 12 (via zone fine)
-    ! the paper's method alone: 17 moves, 33.13 s
+    ! moves: 15
+    ! min clearance (mm): 10.0
+    ! estimated time (s): 7.05
 
     PERS tooldata tTorch := [TRUE,[[116.673,0.000,336.673],[0.923879539,0.000000000,0.382683416,0.000000000]],[2.500,[0.000,0.000,120.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjTrunk := [FALSE,TRUE,"",[[-830.000,-380.000,100.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];
 
     CONST jointtarget home := [[90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_01 := [[64.000,-29.000,18.000,3.042,35.829,-43.594],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_02 := [[62.000,-31.000,20.000,3.339,36.397,-47.847],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_03 := [[59.000,-34.000,17.000,3.252,36.230,-46.593],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_04 := [[57.000,-32.000,18.000,3.602,36.900,-51.608],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_05 := [[56.000,-31.000,19.000,3.821,37.320,-54.751],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_06 := [[37.000,-12.000,19.000,6.302,42.073,-90.299],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_01 := [[62.000,-31.000,20.000,3.339,36.397,-47.847],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_02 := [[57.313,-31.844,18.234,3.598,36.894,-51.558],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_03 := [[56.000,-31.000,19.000,3.821,37.320,-54.751],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_04 := [[37.000,-12.000,19.000,6.302,42.073,-90.299],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget L1 := [[33.816,20.956,52.462,10.745,50.586,-153.966],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget L1_rt := [[330.000,280.000,0.000],[0.183012701,-0.683012702,-0.683012702,-0.183012701],[0,0,-2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget L2 := [[24.514,44.727,39.355,6.833,64.506,-159.180],[9E9,9E9,9E9,9E9,9E9,9E9]];
@@ -38,7 +34,7 @@ MODULE TorchTrunk
     CONST robtarget R1_rt := [[1330.000,630.000,0.000],[0.183012701,-0.683012702,-0.683012702,-0.183012701],[-1,-1,-3,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget R2 := [[-33.816,20.956,52.462,-10.745,50.586,-206.034],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget R2_rt := [[1330.000,280.000,0.000],[0.183012701,-0.683012702,-0.683012702,-0.183012701],[-1,-1,-3,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via05_01 := [[-41.000,-26.000,19.000,-5.425,40.393,-104.020],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via05_01 := [[-41.119,-24.876,20.046,-5.546,40.626,-106.349],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via05_02 := [[-52.000,-37.000,19.000,-3.989,37.642,-76.480],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via05_03 := [[-67.000,-23.000,19.000,-3.059,35.860,-58.649],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget home2 := [[-90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
@@ -49,8 +45,6 @@ MODULE TorchTrunk
         MoveAbsJ via01_02\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via01_03\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via01_04\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
-        MoveAbsJ via01_05\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
-        MoveAbsJ via01_06\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ L1\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ L2\NoEOffs, v50, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via03_01\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;

@@ -9,10 +9,8 @@ MODULE TrunkWeld
     ! clearance (mm): 10.0
     ! base: [0.0, -850.0, 0.0] yaw: 90.000
     ! moves: 10
-    ! min clearance (mm): 10.3
-    ! estimated time (s): 12.93
-    ! zoned vias: 0 of 5 (via zone fine)
-    ! the paper's method alone: 10 moves, 12.93 s
+    ! min clearance (mm): 10.0
+    ! estimated time (s): 4.33
 
     CONST jointtarget A := [[90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[49.000,-3.000,-12.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
@@ -22,7 +20,7 @@ MODULE TrunkWeld
     CONST jointtarget via03_01 := [[-4.000,15.000,1.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget D := [[-25.000,15.000,10.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget E := [[-30.000,20.000,10.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via05_01 := [[-40.000,6.000,-4.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via05_01 := [[-40.431,6.000,-3.676,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via05_02 := [[-54.000,-8.000,-15.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget F := [[-90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
 

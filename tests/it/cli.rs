@@ -174,8 +174,12 @@ fn a_cell_written_anywhere_finds_its_urdf_and_plans_depth_first() {
         text.contains("! min clearance (mm): none (no obstacles)"),
         "{text}"
     );
-    // Axis steps only: P -> (10, 0, 0) -> Q, or the other way round.
-    assert!(text.contains("! moves: 2"), "{text}");
+    // Axis steps only: P -> (10, 0, 0) -> Q, or the other way round; the shortcut pass then
+    // joins P and Q in one move (no obstacles).
+    assert!(text.contains("! moves: 1"), "{text}");
+    let o = gen_rapid(&[arg(&path), "--no-shortcut"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).contains("! moves: 2"), "{}", stdout(&o));
 }
 
 #[test]

@@ -134,7 +134,18 @@ fn compare_is_deterministic_except_the_planning_time() {
                 || l.starts_with("neighboring")
                 || l.starts_with("depth-first"))
             .count(),
-        3
+        4
+    );
+    // The row beyond the paper: the extensile route shortened, never longer.
+    let rows = a["methods"].as_array().expect("rows");
+    assert_eq!(rows.len(), 4);
+    assert_eq!(rows[3]["method"], "extensile + shortcut");
+    let (ex, sc) = (&rows[2], &rows[3]);
+    assert_eq!(ex["method"], "extensile");
+    assert!(sc["moves"].as_u64() <= ex["moves"].as_u64(), "{sc} {ex}");
+    assert!(
+        sc["manipulation_time_s"].as_f64() <= ex["manipulation_time_s"].as_f64(),
+        "{sc} {ex}"
     );
 }
 
@@ -297,8 +308,9 @@ fn run_states_the_time_in_the_header_and_draws_its_route() {
         .and_then(|s| s.parse().ok())
         .expect("a number");
     let j = compare_json(&["--grid", "2"]);
+    // A run writes the extensile route with the shortcut pass: the fourth row.
     assert!(
-        (t - num(row(&j, "extensile"), "manipulation_time_s")).abs() < 0.005,
+        (t - num(row(&j, "extensile + shortcut"), "manipulation_time_s")).abs() < 0.005,
         "{line}"
     );
     let pic = std::fs::read_to_string(&svg).expect("svg written");

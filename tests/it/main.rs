@@ -42,6 +42,7 @@ mod messages;
 mod pictures;
 mod preview_browser;
 mod random_cells;
+mod refine;
 mod report;
 mod safety;
 mod templates;

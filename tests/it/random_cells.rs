@@ -9,7 +9,9 @@
 //! method shows the first one's cells solvable. Deterministic (fixed seeds).
 
 use crate::common::dense::{check_module, Scene};
-use crate::common::library::{parse_cell, plan_every_method, Cell, Planned, Robot};
+use crate::common::library::{
+    paper_and_refined, parse_cell, plan_every_method, Cell, Planned, Robot,
+};
 use crate::common::root;
 
 struct Rng(u64);
@@ -172,18 +174,28 @@ fn random_cell_with(
     }
     yaml += "points:\n";
     for (i, p) in points.iter().enumerate() {
+        // Every third cell asks a fly-by zone at its second point (checked, else fine).
+        let zone = if index % 3 == 0 && i == 1 {
+            ", zone: z10"
+        } else {
+            ""
+        };
         yaml += &match &tool {
             Some(_) => format!(
-                "  - {{ name: P{i}, joints: [{}, {}, {}, {}, {}, {}] }}\n",
+                "  - {{ name: P{i}, joints: [{}, {}, {}, {}, {}, {}]{zone} }}\n",
                 p[0], p[1], p[2], p[3], p[4], p[5]
             ),
             None => format!(
-                "  - {{ name: P{i}, joints: [{}, {}, {}] }}\n",
+                "  - {{ name: P{i}, joints: [{}, {}, {}]{zone} }}\n",
                 p[0], p[1], p[2]
             ),
         };
     }
     yaml += &format!("planner:\n  clearance: {clearance}\n");
+    // Every other cell flies by its vias where their corners are proven (issue 10).
+    if index % 2 == 1 {
+        yaml += "motion:\n  via_zone: z50\n";
+    }
     Some(RandomCell {
         yaml,
         grid_deg: 3.0,
@@ -228,7 +240,7 @@ fn assert_searches_agree(results: &[(String, Planned)], what: &str) {
 fn random_cells_plan_safe_modules_or_fail_cleanly() {
     let robot = Robot::irb1400();
     let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
-    let (mut planned, mut failed, mut cells) = (0, 0, 0);
+    let (mut planned, mut failed, mut cells, mut corners) = (0, 0, 0, 0);
     let mut index = 0;
     while cells < 10 {
         index += 1;
@@ -241,6 +253,16 @@ fn random_cells_plan_safe_modules_or_fail_cleanly() {
         let results = plan_every_method(&cell, rc.grid_deg)
             .unwrap_or_else(|e| panic!("random cell {index}: unexpected error {e}\n{}", rc.yaml));
         assert_searches_agree(&results, &format!("random cell {index}\n{}", rc.yaml));
+        // The shortcut never lengthens a route, in moves or in estimated time.
+        if let Ok(r) = paper_and_refined(&cell, rc.grid_deg) {
+            assert!(
+                r.refined.0 <= r.paper.0 && r.refined.1 <= r.paper.1 + 1e-9,
+                "random cell {index}: paper {:?}, refined {:?}\n{}",
+                r.paper,
+                r.refined,
+                rc.yaml
+            );
+        }
         for (m, result) in results {
             match result {
                 Planned::Module(text) => {
@@ -248,13 +270,15 @@ fn random_cells_plan_safe_modules_or_fail_cleanly() {
                     let report = check_module(&cell, &robot, &text, &label)
                         .unwrap_or_else(|f| panic!("{}\n{}", f.join("\n"), rc.yaml));
                     assert_eq!(report.module.planner, m, "{label}");
+                    corners += report.corners;
                     planned += 1;
                 }
                 Planned::PlanningFailed(_) => failed += 1,
             }
         }
     }
-    eprintln!("{cells} random cells: {planned} modules planned and checked, {failed} plans failed cleanly");
+    eprintln!("{cells} random cells: {planned} modules planned and checked ({corners} zoned corners sampled), {failed} plans failed cleanly");
+    assert!(corners > 0, "no zoned corner to check");
     assert!(
         planned >= 15,
         "too few successes to mean anything: {planned} of {}",

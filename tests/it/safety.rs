@@ -262,10 +262,18 @@ fn the_tcp_check_sees_a_robtarget_its_jointtarget_misses() {
         ),
         (
             (
-                "MoveAbsJ W2\\NoEOffs, v100, z5,",
                 "MoveAbsJ W2\\NoEOffs, v100, fine,",
+                "MoveAbsJ W2\\NoEOffs, v200, fine,",
             ),
-            "expected v100, z5",
+            "expected v100",
+        ),
+        // The last point asks z5: the route ends at a stop point all the same (issue 10).
+        (
+            (
+                "MoveAbsJ W2\\NoEOffs, v100, fine,",
+                "MoveAbsJ W2\\NoEOffs, v100, z5,",
+            ),
+            "MoveAbsJ W2 with v100, z5",
         ),
         (
             (

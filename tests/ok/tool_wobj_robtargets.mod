@@ -29,6 +29,6 @@ MODULE TcpCase
     PROC main()
         MoveAbsJ P1\NoEOffs, v300, fine, tTorch\WObj:=wobjTable;
         MoveAbsJ W1\NoEOffs, v300, fine, tTorch\WObj:=wobjTable;
-        MoveAbsJ W2\NoEOffs, v100, z5, tTorch\WObj:=wobjTable;
+        MoveAbsJ W2\NoEOffs, v100, fine, tTorch\WObj:=wobjTable;
     ENDPROC
 ENDMODULE

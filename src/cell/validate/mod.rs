@@ -192,6 +192,7 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
         method: defaults::METHOD,
         grid_deg: defaults::GRID_DEG,
         clearance_mm: defaults::CLEARANCE_MM,
+        shortcut: defaults::SHORTCUT,
     };
     let Some(p) = p else {
         return Ok(planner);
@@ -218,6 +219,9 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
             ));
         }
         planner.clearance_mm = c.value;
+    }
+    if let Some(s) = &p.shortcut {
+        planner.shortcut = s.value;
     }
     Ok(planner)
 }
@@ -250,7 +254,33 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
         )?,
         proc,
         proc_from,
+        via_zone: match m.and_then(|m| m.via_zone.as_ref()) {
+            Some(z) => via_zone(z)?,
+            None => defaults::VIA_ZONE.to_string(),
+        },
     })
+}
+
+/// `motion.via_zone`: a RAPID name, and one of the predefined zonedata (`fine`, `z0` ..
+/// `z200`): the planner certifies a via's corner with the zone's geometry in mind, and a stop
+/// point must be told from a fly-by point, which only the predefined data say here. Written as
+/// the table spells it (`Z50` is `z50`).
+fn via_zone(z: &Spanned<String>) -> Result<String, CellError> {
+    data_name(z, "motion.via_zone")?;
+    match crate::rapid_data::PREDEFINED_ZONES
+        .iter()
+        .find(|(name, _)| name.eq_ignore_ascii_case(&z.value))
+    {
+        Some((name, _)) => Ok(name.to_string()),
+        None => Err(invalid_help(
+            loc(z),
+            format!(
+                "motion.via_zone '{}' is not a predefined zonedata",
+                excerpt::value(&z.value)
+            ),
+            "use fine (every via stops) or one of z0, z1, z5, z10, z15, z20, z30, z40, z50, z60, z80, z100, z150, z200",
+        )),
+    }
 }
 
 /// `--proc NAME` (module docs of `cell`): the identifier rule, then the name space again.
@@ -511,6 +541,9 @@ fn distinct_data(
         &motion.zone,
         raw.and_then(|m| m.zone.as_ref()),
     );
+    if let Some(z) = raw.and_then(|m| m.via_zone.as_ref()) {
+        given(1, "motion.via_zone".into(), &motion.via_zone, Some(z));
+    }
     if !tool_block {
         given(
             2,

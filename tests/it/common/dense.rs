@@ -44,6 +44,15 @@ const XYZ_TOL_MM: f64 = 0.05;
 const HEADER_ROUNDING_MM: f64 = 0.05;
 const HEADER_TOL_MM: f64 = 0.05;
 
+/// Most motion of any point of the arm or tool between neighbouring samples of a corner
+/// triangle, mm (a triangle is sampled over an area, so more coarsely than a move).
+const CORNER_STEP_MM: f64 = 4.0;
+
+/// The midpoint of two six-axis configurations.
+fn mid(a: &[f64; 6], b: &[f64; 6]) -> [f64; 6] {
+    std::array::from_fn(|k| 0.5 * (a[k] + b[k]))
+}
+
 struct Block {
     name: String,
     cuboid: Cuboid,
@@ -295,6 +304,38 @@ impl<'a> Scene<'a> {
         (best, n + 1)
     }
 
+    /// The nearest approach over the triangle `tri` of controller values, sampled on a
+    /// barycentric grid with at most `step_mm` of motion of any point between neighbouring
+    /// samples (each edge's joint turn, times the radius), with the number of samples.
+    pub fn nearest_over_triangle(&self, tri: &[[f64; 6]; 3], step_mm: f64) -> (Nearest, usize) {
+        let q: Vec<[f64; 6]> = tri.iter().map(|t| self.robot.urdf_joints_deg(t)).collect();
+        let turn = |a: usize, b: usize| -> f64 {
+            (0..6).map(|k| (q[b][k] - q[a][k]).abs().to_radians()).sum()
+        };
+        let widest = turn(0, 1).max(turn(1, 2)).max(turn(2, 0));
+        let n = (self.radius_mm() * widest / step_mm).ceil().max(1.0) as usize;
+        let mut best = Nearest {
+            mm: f64::INFINITY,
+            link: String::new(),
+            obstacle: String::new(),
+        };
+        let mut count = 0;
+        for i in 0..=n {
+            for j in 0..=(n - i) {
+                let (b, c) = (i as f64 / n as f64, j as f64 / n as f64);
+                let axes: [f64; 6] = std::array::from_fn(|k| {
+                    (1.0 - b - c) * tri[0][k] + b * tri[1][k] + c * tri[2][k]
+                });
+                let near = self.nearest(axes);
+                count += 1;
+                if near.mm < best.mm {
+                    best = near;
+                }
+            }
+        }
+        (best, count)
+    }
+
     /// Whether a link-1 cylinder whose lowest point is at `lowest_z` stands on `block` (module
     /// doc): the block wholly at or below the mounting plane, the cylinder wholly on or above
     /// the block's top.
@@ -359,8 +400,10 @@ fn lowest_point_z(a: Point3<f64>, b: Point3<f64>, dir: Vector3<f64>, r: f64) -> 
 #[derive(Debug)]
 pub struct Report {
     pub module: Module,
-    /// Poses measured along the moves.
+    /// Poses measured along the moves and over the zoned corners.
     pub samples: usize,
+    /// Corners written with a fly-by zone, each sampled over its triangle.
+    pub corners: usize,
     /// The nearest approach seen (infinite without boxes).
     pub smallest: Nearest,
     /// Cell points given as `xyz` whose written joints were held against them.
@@ -513,12 +556,46 @@ pub fn check_module(
         }
     }
 
+    // Every corner written with a fly-by zone (issue 10): the triangle of the midpoint of the
+    // move into the target, the target and the midpoint of the move out, sampled on a
+    // barycentric grid with at most CORNER_STEP_MM of motion of any point between neighbours.
+    let mut corners = 0;
+    let mut corner_smallest = f64::INFINITY;
+    for k in 1..module.targets.len().saturating_sub(1) {
+        let zone = module.move_args.get(k).map_or("fine", |m| m.zone.as_str());
+        if zone.eq_ignore_ascii_case("fine") {
+            continue;
+        }
+        corners += 1;
+        let (p, v, n) = (
+            module.targets[k - 1].1,
+            module.targets[k].1,
+            module.targets[k + 1].1,
+        );
+        let tri = [mid(&p, &v), v, mid(&v, &n)];
+        let (near, count) = scene.nearest_over_triangle(&tri, CORNER_STEP_MM);
+        samples += count;
+        if near.mm < cell.planner.clearance_mm - 1e-6 {
+            fail(format!(
+                "corner at {} ({zone}): {} is {:.3} mm from {}, below the clearance {} mm",
+                module.targets[k].0, near.link, near.mm, near.obstacle, cell.planner.clearance_mm
+            ));
+        }
+        corner_smallest = corner_smallest.min(near.mm);
+        if near.mm < smallest.mm {
+            smallest = near;
+        }
+    }
+
     // The header's min clearance is a lower bound within 0.05 mm of the true minimum, which lies
-    // at most 0.5 mm below the smallest sample (1 mm of motion between samples) and not above it.
+    // at most 0.5 mm below the smallest sample of a move (1 mm of motion between samples), at
+    // most CORNER_STEP_MM below that of a corner, and not above either.
     match (module.min_clearance_mm, smallest.mm.is_finite()) {
         (Some(h), true) => {
             let (lo, hi) = (
-                smallest.mm - 0.5 - HEADER_TOL_MM - HEADER_ROUNDING_MM,
+                (smallest.mm - 0.5).min(corner_smallest - CORNER_STEP_MM)
+                    - HEADER_TOL_MM
+                    - HEADER_ROUNDING_MM,
                 smallest.mm + HEADER_ROUNDING_MM,
             );
             if !(lo - 1e-9..=hi + 1e-9).contains(&h) {
@@ -546,6 +623,7 @@ pub fn check_module(
         Ok(Report {
             module,
             samples,
+            corners,
             smallest,
             xyz_points,
             tcp,

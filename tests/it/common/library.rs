@@ -128,6 +128,7 @@ pub fn plan_every_method(cell: &Cell, grid_deg: f64) -> Result<Vec<(String, Plan
         .map(|m| {
             let planned = match pipeline::plan(&job, &placed, &inspected, m)
                 .map(|p| pipeline::time(&job, &placed, p))
+                .map(|p| pipeline::refine(&job, &placed, &inspected, p).plan)
                 .and_then(|p| pipeline::render(&job, &placed, &p))
             {
                 Ok(out) => Planned::Module(out.text),
@@ -137,4 +138,42 @@ pub fn plan_every_method(cell: &Cell, grid_deg: f64) -> Result<Vec<(String, Plan
             Ok((m.name().to_string(), planned))
         })
         .collect()
+}
+
+/// The paper's route (plan and time, no refine stage) and the refined one (shortcut and zones,
+/// as a run writes it) of `cell` on a grid of `grid_deg`: `(moves, estimated s)` of each, and
+/// both module texts.
+pub struct PaperAndRefined {
+    pub paper: (usize, f64),
+    pub refined: (usize, f64),
+    pub paper_module: String,
+    pub refined_module: String,
+}
+
+pub fn paper_and_refined(cell: &Cell, grid_deg: f64) -> Result<PaperAndRefined, String> {
+    let robot = Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref())
+        .map_err(|e| e.to_string())?;
+    let job = pipeline::Loaded {
+        cell: cell.clone(),
+        text: String::new(),
+        robot,
+    };
+    let placed = pipeline::place(&job).map_err(|e| e.to_string())?;
+    let inspected = pipeline::inspect(&job, &placed, grid_deg);
+    let paper = pipeline::plan(&job, &placed, &inspected, cell.planner.method)
+        .map(|p| pipeline::time(&job, p))
+        .map_err(|e| e.to_string())?;
+    let refined = pipeline::refine(&job, &placed, &inspected, paper.clone()).plan;
+    let time = |p: &gen_rapid::plan::Plan| p.estimate.as_ref().map_or(f64::NAN, |e| e.total_s);
+    let text = |p| {
+        pipeline::render(&job, &placed, p)
+            .map(|r| r.text)
+            .map_err(|e| e.to_string())
+    };
+    Ok(PaperAndRefined {
+        paper: (paper.moves(), time(&paper)),
+        refined: (refined.moves(), time(&refined)),
+        paper_module: text(&paper)?,
+        refined_module: text(&refined)?,
+    })
 }

@@ -1,0 +1,104 @@
+//! The refine stage (issue 10; beyond the paper): after the paper's route is planned and timed,
+//! a continuous shortcut pass ([`shortcut`], `planner.shortcut`, on by default) and the
+//! certified zones at the waypoints ([`zones`], `motion.via_zone` and the cell points' own
+//! zones). Every move it writes is proven on the written (rounded) values; every zone it
+//! writes has its corner triangle proven (`collision::corner`).
+//!
+//! It knows no time model: the pipeline hands it the time estimate as a closure (the time stage,
+//! `timing`, lies to its left), and a change is kept only when that estimate does not grow.
+
+pub mod shortcut;
+pub mod zones;
+
+use crate::collision::CollisionModel;
+use crate::place::PlacedPoint;
+use crate::plan::{self, Plan};
+
+/// What the refine stage needs besides the plan.
+pub struct Settings<'a> {
+    /// Run the shortcut pass (`planner.shortcut`, `--no-shortcut`).
+    pub shortcut: bool,
+    /// `motion.via_zone`.
+    pub via_zone: &'a str,
+    /// Per cell point: it gives its own `zone` (for the warnings of [`zones`]).
+    pub explicit_zone: Vec<bool>,
+}
+
+/// The refined plan and the warnings for stderr.
+pub struct Refined {
+    pub plan: Plan,
+    pub warnings: Vec<String>,
+}
+
+/// Shortcut (when asked) and certified zones; `time_s` estimates a plan's manipulation time.
+pub fn refine(
+    plan: Plan,
+    model: &CollisionModel,
+    points: &[PlacedPoint],
+    settings: &Settings,
+    time_s: &dyn Fn(&Plan) -> f64,
+) -> Refined {
+    if !settings.shortcut {
+        return zoned(plan, model, points, settings, time_s);
+    }
+    let paper = plan.clone();
+    // A: the shortest route the proofs allow. B (a fly-by zone asked anywhere): the same pass
+    // keeping [`MARGIN_MM`] more clearance, which leaves room for the corners.
+    let mut candidates = vec![shortcut::shortcut(plan.clone(), model, time_s)];
+    let fly_by = zones::is_fly_by(settings.via_zone)
+        || points.iter().any(|p| zones::is_fly_by(&p.motion.zone));
+    if fly_by {
+        let margined = model.with_margin(MARGIN_MM);
+        candidates.push(shortcut::shortcut(plan, &margined, time_s));
+        // The paper's route too: on a tie in time, the most zoned corners win.
+        candidates.push(paper.clone());
+    }
+    let mut best: Option<(f64, usize, Refined)> = None;
+    for c in candidates {
+        // Every move proven on the cell's model, or the paper's route stays.
+        let c = if c.moves6().all(|(a, b)| model.move_is_safe(&a, &b)) {
+            c
+        } else {
+            paper.clone()
+        };
+        let c = if c.waypoints == paper.waypoints {
+            c
+        } else {
+            plan::certify(c, model)
+        };
+        let r = zoned(c, model, points, settings, time_s);
+        let t = time_s(&r.plan);
+        let z = r.plan.zones.iter().filter(|z| zones::is_fly_by(z)).count();
+        if best
+            .as_ref()
+            .is_none_or(|(bt, bz, _)| t < *bt || (t == *bt && z > *bz))
+        {
+            best = Some((t, z, r));
+        }
+    }
+    match best {
+        Some((_, _, r)) => r,
+        None => zoned(paper, model, points, settings, time_s),
+    }
+}
+
+/// The extra clearance of the shortcut pass's second candidate, mm (module doc).
+pub const MARGIN_MM: f64 = 5.0;
+
+/// `plan` with its zones certified.
+fn zoned(
+    mut plan: Plan,
+    model: &CollisionModel,
+    points: &[PlacedPoint],
+    settings: &Settings,
+    _time_s: &dyn Fn(&Plan) -> f64,
+) -> Refined {
+    let warnings = zones::certify_zones(
+        &mut plan,
+        model,
+        points,
+        &settings.explicit_zone,
+        settings.via_zone,
+    );
+    Refined { plan, warnings }
+}

@@ -1,0 +1,126 @@
+//! Certified zones (issue 10, item 2): which waypoints the robot may fly by.
+//!
+//! A waypoint asks for a fly-by zone when it is a via and `motion.via_zone` is not a stop point,
+//! or when it is a cell point whose zone (its own `zone`, else `motion.zone`) is not a stop point
+//! (a predefined zonedata with `finep`, i.e. `fine`; a zonedata the controller declares is taken
+//! as a fly-by zone, since only the predefined ones are known here). It gets the zone only where
+//! its corner triangle (the midpoint of the move into it, the waypoint, the midpoint of the move
+//! out of it; `collision::corner`) is proven to keep the clearance; otherwise it is written
+//! `fine`, and a cell point whose zone is dropped gets a warning. The first and last waypoints
+//! are always `fine`: the route starts from a stop and ends at one (a point's own zone there is
+//! dropped with a warning; `motion.zone` there is dropped silently, it is a default). Every
+//! zoned corner's smallest clearance is certified and joins the route's, so the header's
+//! smallest clearance covers everything the robot traverses.
+
+use crate::collision::CollisionModel;
+use crate::excerpt;
+use crate::place::PlacedPoint;
+use crate::plan::{Plan, WaypointKind, MIN_CLEARANCE_TOL_MM};
+use crate::rapid_data::predefined_zone;
+
+/// The zone of a stop point.
+pub const FINE: &str = "fine";
+
+/// Whether a zone name asks for a fly-by: anything but a predefined stop point.
+pub fn is_fly_by(zone: &str) -> bool {
+    !predefined_zone(zone).is_some_and(|z| z.finep)
+}
+
+/// The zone each waypoint asks for, `None` for a stop point (module doc); the first and last
+/// ask for none.
+pub fn wanted(plan: &Plan, points: &[PlacedPoint], via_zone: &str) -> Vec<Option<String>> {
+    let n = plan.waypoints.len();
+    plan.waypoints
+        .iter()
+        .enumerate()
+        .map(|(k, w)| {
+            if k == 0 || k + 1 >= n {
+                return None;
+            }
+            let zone = match w.kind {
+                WaypointKind::Via { .. } => via_zone,
+                WaypointKind::CellPoint(i) => points.get(i).map_or(FINE, |p| &p.motion.zone),
+            };
+            is_fly_by(zone).then(|| zone.to_string())
+        })
+        .collect()
+}
+
+/// The proof of the corner at waypoint `k` (`0 < k < n - 1`).
+pub fn corner_is_proven(plan: &Plan, model: &CollisionModel, k: usize) -> bool {
+    let w = &plan.waypoints;
+    k > 0
+        && k + 1 < w.len()
+        && model.corner_is_safe(&w[k - 1].joints_deg, &w[k].joints_deg, &w[k + 1].joints_deg)
+}
+
+/// Certifies the zones of `plan` into [`Plan::zones`] and folds every zoned corner's smallest
+/// clearance into [`Plan::min_clearance`]; returns the warnings for stderr. `explicit[i]`: cell
+/// point `i` gives its own `zone`.
+pub fn certify_zones(
+    plan: &mut Plan,
+    model: &CollisionModel,
+    points: &[PlacedPoint],
+    explicit: &[bool],
+    via_zone: &str,
+) -> Vec<String> {
+    let n = plan.waypoints.len();
+    let wanted = wanted(plan, points, via_zone);
+    let mut warnings = Vec::new();
+    let mut zones = vec![FINE.to_string(); n];
+    for k in 0..n {
+        let WaypointKind::CellPoint(i) = plan.waypoints[k].kind else {
+            if let Some(z) = &wanted[k] {
+                if corner_is_proven(plan, model, k) {
+                    zones[k] = z.clone();
+                }
+            }
+            continue;
+        };
+        let Some(p) = points.get(i) else { continue };
+        let own = &p.motion.zone;
+        if k == 0 || k + 1 == n {
+            if explicit.get(i).copied().unwrap_or(false) && is_fly_by(own) {
+                warnings.push(format!(
+                    "warning: point '{}' is the {} point: its zone {} is written fine (the route starts and ends at a stop point)",
+                    p.name,
+                    if k == 0 { "first" } else { "last" },
+                    excerpt::value(own)
+                ));
+            }
+            continue;
+        }
+        match &wanted[k] {
+            None => zones[k] = own.clone(),
+            Some(z) if corner_is_proven(plan, model, k) => zones[k] = z.clone(),
+            Some(z) => warnings.push(format!(
+                "warning: point '{}': the corner of its zone {} (between the midpoints of the moves into and out of it) could not be proven to keep the {} mm clearance; it is written fine",
+                p.name,
+                excerpt::value(z),
+                model.clearance_mm()
+            )),
+        }
+    }
+    for k in 1..n.saturating_sub(1) {
+        if !is_fly_by(&zones[k]) {
+            continue;
+        }
+        let w = &plan.waypoints;
+        let corner = model.min_clearance_over_corner(
+            &w[k - 1].joints_deg,
+            &w[k].joints_deg,
+            &w[k + 1].joints_deg,
+            MIN_CLEARANCE_TOL_MM,
+        );
+        if let Some(c) = corner {
+            if plan.min_clearance.as_ref().is_none_or(|m| c.mm < m.mm) {
+                plan.min_clearance = Some(c);
+            }
+        }
+    }
+    plan.zones = zones;
+    warnings
+        .into_iter()
+        .map(|w| excerpt::message(&w).into_owned())
+        .collect()
+}

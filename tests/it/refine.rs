@@ -1,0 +1,78 @@
+//! The refine stage (issue 10): the shortcut pass never lengthens a route (moves or estimated
+//! time) on the example cells and on random cells; without it the module is the paper's; the
+//! modules it writes pass the dense re-check (moves and zoned corners).
+
+use crate::common::dense::check_module;
+use crate::common::library::{load_cell, load_robot, paper_and_refined, parse_cell};
+use crate::common::{arg, gen_rapid, root, stdout};
+
+const EXAMPLES: [&str; 6] = [
+    "conveyor",
+    "gripper-pick",
+    "shelf",
+    "torch-trunk",
+    "trunk-auto",
+    "trunk",
+];
+
+#[test]
+fn the_shortcut_never_lengthens_an_example_cell_and_writes_only_checked_moves() {
+    let mut shorter = 0;
+    for name in EXAMPLES {
+        let path = root().join(format!("cells/{name}.yaml"));
+        let cell = load_cell(&path);
+        let r = paper_and_refined(&cell, cell.planner.grid_deg).expect(name);
+        assert!(
+            r.refined.0 <= r.paper.0 && r.refined.1 <= r.paper.1 + 1e-9,
+            "{name}: paper {:?}, refined {:?}",
+            r.paper,
+            r.refined
+        );
+        if r.refined.0 < r.paper.0 {
+            shorter += 1;
+        }
+        let robot = load_robot(&cell);
+        check_module(&cell, &robot, &r.refined_module, name)
+            .unwrap_or_else(|f| panic!("{}", f.join("\n")));
+        // With z50 at the vias: the same bounds, every zoned corner sampled.
+        let text = std::fs::read_to_string(&path).expect("cell");
+        let z50 = match text.contains("\nmotion:\n") {
+            true => text.replace("\nmotion:\n", "\nmotion:\n  via_zone: z50\n"),
+            false => format!("{text}\nmotion:\n  via_zone: z50\n"),
+        };
+        let zoned = parse_cell(&path, &z50).expect("z50 cell");
+        let z = paper_and_refined(&zoned, cell.planner.grid_deg).expect(name);
+        assert!(
+            z.refined.1 <= z.paper.1 + 1e-9,
+            "{name} z50: {:?} {:?}",
+            z.paper,
+            z.refined
+        );
+        let report = check_module(&zoned, &robot, &z.refined_module, &format!("{name} z50"))
+            .unwrap_or_else(|f| panic!("{}", f.join("\n")));
+        eprintln!(
+            "{name}: paper {:?}, shortcut {:?}, z50 {:?} with {} zoned corners",
+            r.paper, r.refined, z.refined, report.corners
+        );
+    }
+    assert!(
+        shorter >= 2,
+        "the shortcut dropped moves on only {shorter} cells"
+    );
+}
+
+#[test]
+fn without_the_shortcut_the_module_is_the_papers() {
+    let path = root().join("cells/trunk.yaml");
+    let cell = load_cell(&path);
+    let r = paper_and_refined(&cell, cell.planner.grid_deg).expect("trunk");
+    let o = gen_rapid(&[arg(&path), "--no-shortcut"]);
+    assert!(o.status.success());
+    assert_eq!(stdout(&o), r.paper_module, "--no-shortcut");
+    let text = std::fs::read_to_string(&path).expect("cell");
+    let off = text.replace("\nplanner:\n", "\nplanner:\n  shortcut: false\n");
+    assert_ne!(off, text, "the trunk cell has a planner block");
+    let cell = parse_cell(&path, &off).expect("shortcut: false");
+    let r = paper_and_refined(&cell, cell.planner.grid_deg).expect("trunk");
+    assert_eq!(r.refined_module, r.paper_module, "planner.shortcut: false");
+}
