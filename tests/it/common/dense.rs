@@ -48,6 +48,10 @@ const HEADER_TOL_MM: f64 = 0.05;
 /// triangle, mm (a triangle is sampled over an area, so more coarsely than a move).
 const CORNER_STEP_MM: f64 = 4.0;
 
+/// Most steps along a corner triangle's edge (a wide corner is sampled more coarsely than
+/// [`CORNER_STEP_MM`]; the header's bound is then held to the step reached).
+const MAX_CORNER_STEPS: usize = 150;
+
 /// The midpoint of two six-axis configurations.
 fn mid(a: &[f64; 6], b: &[f64; 6]) -> [f64; 6] {
     std::array::from_fn(|k| 0.5 * (a[k] + b[k]))
@@ -306,14 +310,20 @@ impl<'a> Scene<'a> {
 
     /// The nearest approach over the triangle `tri` of controller values, sampled on a
     /// barycentric grid with at most `step_mm` of motion of any point between neighbouring
-    /// samples (each edge's joint turn, times the radius), with the number of samples.
-    pub fn nearest_over_triangle(&self, tri: &[[f64; 6]; 3], step_mm: f64) -> (Nearest, usize) {
+    /// samples (each edge's joint turn, times the radius), but at most [`MAX_CORNER_STEPS`]
+    /// steps along an edge, with the number of samples and the motion between neighbouring
+    /// samples it reached, mm.
+    pub fn nearest_over_triangle(
+        &self,
+        tri: &[[f64; 6]; 3],
+        step_mm: f64,
+    ) -> (Nearest, usize, f64) {
         let q: Vec<[f64; 6]> = tri.iter().map(|t| self.robot.urdf_joints_deg(t)).collect();
         let turn = |a: usize, b: usize| -> f64 {
             (0..6).map(|k| (q[b][k] - q[a][k]).abs().to_radians()).sum()
         };
         let widest = turn(0, 1).max(turn(1, 2)).max(turn(2, 0));
-        let n = (self.radius_mm() * widest / step_mm).ceil().max(1.0) as usize;
+        let n = ((self.radius_mm() * widest / step_mm).ceil() as usize).clamp(1, MAX_CORNER_STEPS);
         let mut best = Nearest {
             mm: f64::INFINITY,
             link: String::new(),
@@ -333,7 +343,7 @@ impl<'a> Scene<'a> {
                 }
             }
         }
-        (best, count)
+        (best, count, self.radius_mm() * widest / n as f64)
     }
 
     /// Whether a link-1 cylinder whose lowest point is at `lowest_z` stands on `block` (module
@@ -573,7 +583,7 @@ pub fn check_module(
             module.targets[k + 1].1,
         );
         let tri = [mid(&p, &v), v, mid(&v, &n)];
-        let (near, count) = scene.nearest_over_triangle(&tri, CORNER_STEP_MM);
+        let (near, count, step) = scene.nearest_over_triangle(&tri, CORNER_STEP_MM);
         samples += count;
         if near.mm < cell.planner.clearance_mm - 1e-6 {
             fail(format!(
@@ -581,7 +591,7 @@ pub fn check_module(
                 module.targets[k].0, near.link, near.mm, near.obstacle, cell.planner.clearance_mm
             ));
         }
-        corner_smallest = corner_smallest.min(near.mm);
+        corner_smallest = corner_smallest.min(near.mm - step);
         if near.mm < smallest.mm {
             smallest = near;
         }
@@ -589,13 +599,11 @@ pub fn check_module(
 
     // The header's min clearance is a lower bound within 0.05 mm of the true minimum, which lies
     // at most 0.5 mm below the smallest sample of a move (1 mm of motion between samples), at
-    // most CORNER_STEP_MM below that of a corner, and not above either.
+    // most the step reached below that of a corner, and not above either.
     match (module.min_clearance_mm, smallest.mm.is_finite()) {
         (Some(h), true) => {
             let (lo, hi) = (
-                (smallest.mm - 0.5).min(corner_smallest - CORNER_STEP_MM)
-                    - HEADER_TOL_MM
-                    - HEADER_ROUNDING_MM,
+                (smallest.mm - 0.5).min(corner_smallest) - HEADER_TOL_MM - HEADER_ROUNDING_MM,
                 smallest.mm + HEADER_ROUNDING_MM,
             );
             if !(lo - 1e-9..=hi + 1e-9).contains(&h) {
