@@ -9,21 +9,21 @@ MODULE TrunkWeldAuto
     ! clearance (mm): 10.0
     ! base: [-5.0, -965.0, 0.0] yaw: 90.000
     ! moves: 10
-    ! min clearance (mm): 10.4
-    ! estimated time (s): 13.34
+    ! min clearance (mm): 10.0
+    ! estimated time (s): 12.96
     ! zoned vias: 0 of 5 (via zone fine)
     ! the paper's method alone: 10 moves, 13.34 s
 
     CONST jointtarget A := [[82.427,0.249,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[42.000,13.000,-13.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_02 := [[27.000,28.000,2.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_02 := [[27.586,27.514,1.582,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget B := [[27.006,30.553,6.300,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget C := [[22.325,25.605,6.979,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via03_01 := [[-5.000,19.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via03_01 := [[-4.628,19.532,0.539,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget D := [[-22.789,26.021,6.830,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget E := [[-27.436,31.080,6.078,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via05_01 := [[-37.000,17.000,-7.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via05_02 := [[-56.000,-2.000,-26.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via05_02 := [[-56.939,0.775,-20.376,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget F := [[-82.513,1.198,-0.010,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
 
     PROC main()

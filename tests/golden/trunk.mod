@@ -10,14 +10,16 @@ MODULE TrunkWeld
     ! base: [0.0, -850.0, 0.0] yaw: 90.000
     ! moves: 10
     ! min clearance (mm): 10.0
-    ! estimated time (s): 4.33
+    ! estimated time (s): 12.88
+    ! zoned vias: 0 of 5 (via zone fine)
+    ! the paper's method alone: 10 moves, 12.93 s
 
     CONST jointtarget A := [[90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[49.000,-3.000,-12.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_02 := [[30.000,16.000,7.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_02 := [[30.445,15.648,6.625,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget B := [[30.000,20.000,10.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget C := [[25.000,15.000,10.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via03_01 := [[-4.000,15.000,1.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via03_01 := [[-3.188,15.000,2.828,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget D := [[-25.000,15.000,10.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget E := [[-30.000,20.000,10.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via05_01 := [[-40.431,6.000,-3.676,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

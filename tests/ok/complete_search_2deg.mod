@@ -9,13 +9,13 @@ MODULE CompleteSearch
     ! clearance (mm): 25.0
     ! base: [0.0, 0.0, 0.0] yaw: 0.000
     ! moves: 3
-    ! min clearance (mm): 26.4
-    ! estimated time (s): 12.91
+    ! min clearance (mm): 25.2
+    ! estimated time (s): 12.79
     ! zoned vias: 0 of 2 (via zone fine)
     ! the paper's method alone: 3 moves, 12.91 s
 
     CONST jointtarget P := [[-34.000,34.000,36.000,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_01 := [[98.000,-56.000,-42.000,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_01 := [[96.281,-54.250,-40.438,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_02 := [[120.000,-34.000,-20.000,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget Q := [[120.000,30.000,40.000,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
 
