@@ -7,13 +7,21 @@
 use crate::common::{arg, gen_rapid, read, stderr, stdout, temp_cell};
 use serde_json::Value;
 
-/// The trunk cell with `edit` applied, planned on a 2 deg grid: (module, report, stderr).
+/// The trunk cell with `edit` applied, planned on a 2 deg grid by the paper's method alone
+/// (`--no-shortcut`: the route does not depend on the speed): (module, report, stderr).
 fn trunk(edit: impl Fn(String) -> String) -> (String, Value, String) {
+    trunk_with(&["--no-shortcut"], edit)
+}
+
+/// [`trunk`] with the command line's `flags`.
+fn trunk_with(flags: &[&str], edit: impl Fn(String) -> String) -> (String, Value, String) {
     let dir = tempfile::tempdir().expect("tempdir");
     let body = edit(read("cells/trunk.yaml").replace("../robots/irb1400.urdf", "URDF"));
     let cell = temp_cell(dir.path(), "trunk.yaml", &body);
     let report = dir.path().join("report.json");
-    let o = gen_rapid(&[arg(&cell), "--grid", "2", "--report", arg(&report)]);
+    let mut args = vec![arg(&cell), "--grid", "2", "--report", arg(&report)];
+    args.extend_from_slice(flags);
+    let o = gen_rapid(&args);
     assert!(o.status.success(), "{}", stderr(&o));
     let json = std::fs::read_to_string(&report).expect("report");
     (
@@ -169,6 +177,27 @@ fn a_zoned_cell_point_is_flown_through() {
 
 #[test]
 fn header_summary_and_report_state_the_zoned_vias_and_the_papers_method() {
+    // With the shortcut (the default), the paper's figure is the route before it: the same
+    // figure the paper's method alone gives as its own time, and never less than the result.
+    let (alone, ..) = trunk(|t| t);
+    let (shortcut, short_report, _) = trunk_with(&[], |t| t);
+    let paper = header(&shortcut, "the paper's method alone");
+    let alone_figure = format!(
+        "{} moves, {} s",
+        header(&alone, "moves"),
+        header(&alone, "estimated time (s)")
+    );
+    assert_eq!(paper, alone_figure);
+    let paper_s: f64 = paper
+        .trim_end_matches(" s")
+        .rsplit(' ')
+        .next()
+        .and_then(|t| t.parse().ok())
+        .expect("a time");
+    assert!(time(&shortcut) <= paper_s, "{shortcut}");
+    let paper_moves = short_report["totals"]["paper_method"]["moves"].as_u64();
+    assert!(paper_moves >= short_report["totals"]["moves"].as_u64());
+    // The paper's method alone: its own figure.
     let (module, report, err) = trunk(|t| t);
     let vias = report["totals"]["vias"].as_u64().expect("vias");
     let zoned = format!("0 of {vias} (via zone fine)");
