@@ -30,7 +30,7 @@
 //! `sum_j l_j N_P(q - v_j) <= sum_{j,l} l_j l_l N_P(v_l - v_j) <= e (1 - sum_j l_j^2)` and
 //! `sum_j l_j^2 >= 1/3`). The larger of the two is the triangle's bound. Each (part, box) pair is
 //! tried on the cheap lower bounds at the three vertices first; otherwise the triangle is split
-//! into four at its edge midpoints, recursively, on exact distances (lowered by the slack of
+//! in two at the midpoint of its longest edge (in `N_P`), recursively, on exact distances (lowered by the slack of
 //! `proof.rs`): a triangle whose bound keeps the clearance is done, a vertex closer than the
 //! clearance refuses the corner, and so does a triangle whose parts move less than
 //! [`CORNER_FLOOR_MM`] across it, a depth of [`CORNER_LEVELS`], or a pair that spends
@@ -49,12 +49,12 @@ use std::collections::BinaryHeap;
 /// unproven, refuses the corner, mm.
 pub const CORNER_FLOOR_MM: f64 = 0.05;
 
-/// Most levels of the four-way split.
-pub const CORNER_LEVELS: u32 = 14;
+/// Most levels of the bisection (two levels halve every edge, as one four-way split would).
+pub const CORNER_LEVELS: u32 = 40;
 
 /// Most triangles one (part, box) pair may split before the corner is refused (or, for the
 /// smallest clearance, its bound is returned as is).
-pub const MAX_TRIANGLES_PER_PAIR: usize = 1 << 13;
+pub const MAX_TRIANGLES_PER_PAIR: usize = 1 << 16;
 
 /// A triangle of controller values with the distances of one pair at its vertices.
 #[derive(Clone, Copy)]
@@ -196,7 +196,7 @@ impl CollisionModel {
         })
     }
 
-    /// The four-way split proof of one pair over a triangle (module doc).
+    /// The bisection proof of one pair over a triangle (module doc).
     fn certify_triangle(&self, p: usize, k: usize, root: Tri) -> bool {
         let c = self.clearance_mm;
         if root.d.iter().any(|&d| lowered(d) < c) {
@@ -227,36 +227,34 @@ impl CollisionModel {
         true
     }
 
-    /// The four triangles of `t` split at its edge midpoints, with the pair's distances.
-    fn split(&self, p: usize, k: usize, t: &Tri) -> [Tri; 4] {
-        let [a, b, c] = t.v;
-        let (ab, bc, ca) = (lerp(&a, &b, 0.5), lerp(&b, &c, 0.5), lerp(&c, &a, 0.5));
-        let (dab, dbc, dca) = (
-            self.pair_distance(p, k, &ab),
-            self.pair_distance(p, k, &bc),
-            self.pair_distance(p, k, &ca),
-        );
-        let [da, db, dc] = t.d;
+    /// The two triangles of `t` split at the midpoint of its longest edge (in `N_P`), with the
+    /// pair's distances: one new distance per split, and a thin triangle (a corner along a
+    /// nearly straight route) is cut across its length, like a move.
+    fn split(&self, p: usize, k: usize, t: &Tri) -> [Tri; 2] {
+        let r = self.part_reach(p);
+        let q: Vec<[f64; 6]> = t.v.iter().map(|x| self.robot.urdf_joints_deg(x)).collect();
+        let edge = |j: usize, l: usize| -> f64 {
+            (0..6)
+                .map(|i| r[i] * (q[l][i] - q[j][i]).abs().to_radians())
+                .sum()
+        };
+        // The longest edge `j -> j + 1`, opposite vertex `o`.
+        let j = (0..3)
+            .max_by(|&a, &b| edge(a, (a + 1) % 3).total_cmp(&edge(b, (b + 1) % 3)))
+            .unwrap_or(0);
+        let (l, o) = ((j + 1) % 3, (j + 2) % 3);
+        let m = lerp(&t.v[j], &t.v[l], 0.5);
+        let dm = self.pair_distance(p, k, &m);
         let level = t.level + 1;
         [
             Tri {
-                v: [a, ab, ca],
-                d: [da, dab, dca],
+                v: [t.v[j], m, t.v[o]],
+                d: [t.d[j], dm, t.d[o]],
                 level,
             },
             Tri {
-                v: [ab, b, bc],
-                d: [dab, db, dbc],
-                level,
-            },
-            Tri {
-                v: [ca, bc, c],
-                d: [dca, dbc, dc],
-                level,
-            },
-            Tri {
-                v: [ab, bc, ca],
-                d: [dab, dbc, dca],
+                v: [m, t.v[l], t.v[o]],
+                d: [dm, t.d[l], t.d[o]],
                 level,
             },
         ]

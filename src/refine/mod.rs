@@ -1,13 +1,14 @@
 //! The refine stage (issue 10; beyond the paper): after the paper's route is planned and timed,
 //! a continuous shortcut pass ([`shortcut`], `planner.shortcut`, on by default) and the
 //! certified zones at the waypoints ([`zones`], `motion.via_zone` and the cell points' own
-//! zones). Every move it writes is proven on the written (rounded) values; every zone it
+//! zones), with the vias whose corner comes too close split for room ([`split`]). Every move it writes is proven on the written (rounded) values; every zone it
 //! writes has its corner triangle proven (`collision::corner`).
 //!
 //! It knows no time model: the pipeline hands it the time estimate as a closure (the time stage,
 //! `timing`, lies to its left), and a change is kept only when that estimate does not grow.
 
 pub mod shortcut;
+pub mod split;
 pub mod zones;
 
 use crate::collision::CollisionModel;
@@ -43,7 +44,8 @@ pub fn refine(
     }
     let paper = plan.clone();
     // A: the shortest route the proofs allow. B (a fly-by zone asked anywhere): the same pass
-    // keeping [`MARGIN_MM`] more clearance, which leaves room for the corners.
+    // keeping [`MARGIN_MM`] more clearance, which leaves room for the corners. With a fly-by
+    // `via_zone`, each also with its tight via corners split (`split`).
     let mut candidates = vec![shortcut::shortcut(plan.clone(), model, time_s)];
     let fly_by = zones::is_fly_by(settings.via_zone)
         || points.iter().any(|p| zones::is_fly_by(&p.motion.zone));
@@ -53,8 +55,20 @@ pub fn refine(
         // The paper's route too: on a tie in time, the most zoned corners win.
         candidates.push(paper.clone());
     }
-    let mut best: Option<(f64, usize, Refined)> = None;
+    // Each candidate also with its unproven via corners split (`split`), where vias fly by.
+    let split_vias = zones::is_fly_by(settings.via_zone);
+    let mut all = Vec::new();
     for c in candidates {
+        if split_vias {
+            let s = split::split_corners(c.clone(), model, points, settings.via_zone, time_s);
+            if s.waypoints != c.waypoints {
+                all.push(s);
+            }
+        }
+        all.push(c);
+    }
+    let mut best: Option<(f64, usize, Refined)> = None;
+    for c in all {
         // Every move proven on the cell's model, or the paper's route stays.
         let c = if c.moves6().all(|(a, b)| model.move_is_safe(&a, &b)) {
             c

@@ -133,19 +133,19 @@ fn slide(plan: &Plan, k: usize, model: &CollisionModel) -> Option<Plan> {
 
 /// `plan` with leg `l`'s waypoints replaced by `leg` (both ends as before); the vias renumbered
 /// in order, the later legs' ranges shifted.
-fn with_leg(plan: &Plan, l: usize, leg: Vec<Waypoint>) -> Plan {
+pub(super) fn with_leg(plan: &Plan, l: usize, leg: Vec<Waypoint>) -> Plan {
     let range = plan.legs[l].waypoints.clone();
-    let shift = range.len() - leg.len();
+    let (old_len, new_len) = (range.len(), leg.len());
     let mut out = plan.clone();
     let mut leg = leg;
-    let n = leg.len();
-    for (index, w) in leg.iter_mut().enumerate().take(n - 1).skip(1) {
+    for (index, w) in leg.iter_mut().enumerate().take(new_len - 1).skip(1) {
         w.kind = WaypointKind::Via { leg: l, index };
     }
     out.waypoints.splice(range.clone(), leg);
-    out.legs[l].waypoints = range.start..range.end - shift;
+    out.legs[l].waypoints = range.start..range.start + new_len;
     for later in &mut out.legs[l + 1..] {
-        later.waypoints = later.waypoints.start - shift..later.waypoints.end - shift;
+        let r = &later.waypoints;
+        later.waypoints = (r.start + new_len - old_len)..(r.end + new_len - old_len);
     }
     out.move_clearances = Vec::new();
     out.min_clearance = None;

@@ -253,10 +253,13 @@ fn random_cells_plan_safe_modules_or_fail_cleanly() {
         let results = plan_every_method(&cell, rc.grid_deg)
             .unwrap_or_else(|e| panic!("random cell {index}: unexpected error {e}\n{}", rc.yaml));
         assert_searches_agree(&results, &format!("random cell {index}\n{}", rc.yaml));
-        // The shortcut never lengthens a route, in moves or in estimated time.
+        // The shortcut never lengthens a route, in moves or in estimated time; where the vias
+        // fly by (odd cells), a via whose corner is too tight may be split in three
+        // (`refine::split`), more moves for less time.
         if let Ok(r) = paper_and_refined(&cell, rc.grid_deg) {
+            let fly_by = index % 2 == 1;
             assert!(
-                r.refined.0 <= r.paper.0 && r.refined.1 <= r.paper.1 + 1e-9,
+                (fly_by || r.refined.0 <= r.paper.0) && r.refined.1 <= r.paper.1 + 1e-9,
                 "random cell {index}: paper {:?}, refined {:?}\n{}",
                 r.paper,
                 r.refined,

@@ -76,3 +76,36 @@ fn without_the_shortcut_the_module_is_the_papers() {
     let r = paper_and_refined(&cell, cell.planner.grid_deg).expect("trunk");
     assert_eq!(r.refined_module, r.paper_module, "planner.shortcut: false");
 }
+
+#[test]
+fn on_gripper_pick_z50_splits_the_vias_by_the_cabinet_and_beats_fine() {
+    // Both vias of the paper's route hug the cabinet: their corner triangles come within the
+    // clearance (sampled: 0 and 9.0 mm), so z50 flies by only where `refine::split` made room.
+    let path = root().join("cells/gripper-pick.yaml");
+    let cell = load_cell(&path);
+    let fine = paper_and_refined(&cell, cell.planner.grid_deg).expect("fine");
+    let text = std::fs::read_to_string(&path).expect("cell");
+    let z50 = text.replace("\nmotion:\n", "\nmotion:\n  via_zone: z50\n");
+    assert_ne!(z50, text, "gripper-pick has a motion block");
+    let zoned = parse_cell(&path, &z50).expect("z50 cell");
+    let z = paper_and_refined(&zoned, cell.planner.grid_deg).expect("z50");
+    assert!(
+        z.refined.1 < fine.refined.1,
+        "z50 {:?} not below fine {:?}",
+        z.refined,
+        fine.refined
+    );
+    let robot = load_robot(&zoned);
+    let report = check_module(&zoned, &robot, &z.refined_module, "gripper-pick z50")
+        .unwrap_or_else(|f| panic!("{}", f.join("\n")));
+    assert!(report.corners >= 1, "no zoned corner sampled");
+    let zoned_vias = z
+        .refined_module
+        .lines()
+        .find(|l| l.contains("zoned vias:"))
+        .expect("header line");
+    assert!(
+        !zoned_vias.contains("zoned vias: 0 "),
+        "no via zoned: {zoned_vias}"
+    );
+}
