@@ -250,9 +250,26 @@ pub fn time(job: &Loaded, placed: &Placed, mut plan: Plan) -> Plan {
 /// Keeps a timed plan's moves and time as the figure of the paper's method alone (`Plan::paper`),
 /// for the header and the summary line. Called on the plan stage's timed route, before any
 /// refinement of it.
-pub fn keep_paper_figure(mut plan: Plan) -> Plan {
-    plan.paper = plan.estimate.as_ref().map(|e| plan::PaperFigure {
-        moves: plan.moves(),
+pub fn keep_paper_figure(
+    job: &Loaded,
+    placed: &Placed,
+    inspected: &Inspected,
+    mut plan: Plan,
+) -> Plan {
+    // The paper's route as the module would write it: every via `fine`, a cell point's own
+    // fly-by zone only where its corner is proven (the refine stage's rule), then timed.
+    let mut alone = plan.clone();
+    let explicit: Vec<bool> = job.cell.points.iter().map(|p| p.zone.is_some()).collect();
+    let _ = refine::zones::certify_zones(
+        &mut alone,
+        &inspected.model,
+        &placed.points,
+        &explicit,
+        crate::plan::motion::VIA_ZONE,
+    );
+    let alone = time(job, placed, alone);
+    plan.paper = alone.estimate.as_ref().map(|e| plan::PaperFigure {
+        moves: alone.moves(),
         time_s: e.total_s,
     });
     plan
@@ -375,7 +392,7 @@ pub fn run_observed(
     progress.stage("planning and proving the moves", 0);
     let paper = match plan(job, &placed, &inspected, method) {
         // The paper's method alone: search, shorten, merge, every via a stop point, timed.
-        Ok(plan) => keep_paper_figure(time(job, &placed, plan)),
+        Ok(plan) => keep_paper_figure(job, &placed, &inspected, time(job, &placed, plan)),
         Err(error) => {
             return Err(Halted {
                 error: Box::new(error),

@@ -199,7 +199,7 @@ impl CollisionModel {
     /// The bisection proof of one pair over a triangle (module doc).
     fn certify_triangle(&self, p: usize, k: usize, root: Tri) -> bool {
         let c = self.clearance_mm;
-        if root.d.iter().any(|&d| lowered(d) < c) {
+        if root.d.iter().any(|&d| !d.is_finite() || lowered(d) < c) {
             return false;
         }
         let mut stack = vec![root];
@@ -297,6 +297,9 @@ impl CollisionModel {
     fn triangle_bound(&self, p: usize, v: &[[f64; 6]; 3], d: &[f64; 3]) -> f64 {
         let (m, e) = self.triangle_spans(p, v);
         let l = d.map(lowered);
+        if l.iter().any(|x| x.is_nan()) {
+            return f64::NEG_INFINITY;
+        }
         let least = l[0].min(l[1]).min(l[2]);
         let by_vertex = (0..3)
             .map(|j| l[j] - m[j])

@@ -112,7 +112,10 @@ pub fn certify_zones(
             &w[k + 1].joints_deg,
             MIN_CLEARANCE_TOL_MM,
         );
-        if let Some(c) = corner {
+        if let Some(mut c) = corner {
+            // The corner is proven to keep the clearance: a bound below it (a search budget
+            // spent) is raised to it, still a certified lower bound.
+            c.mm = c.mm.max(model.clearance_mm());
             if plan.min_clearance.as_ref().is_none_or(|m| c.mm < m.mm) {
                 plan.min_clearance = Some(c);
             }

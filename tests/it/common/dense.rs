@@ -569,6 +569,18 @@ pub fn check_module(
     // Every corner written with a fly-by zone (issue 10): the triangle of the midpoint of the
     // move into the target, the target and the midpoint of the move out, sampled on a
     // barycentric grid with at most CORNER_STEP_MM of motion of any point between neighbours.
+    // The route starts and ends at a stop: the first and last moves are `fine`.
+    let last = module.targets.len().saturating_sub(1);
+    for k in [0, last] {
+        if let Some(m) = module.move_args.get(k) {
+            if !m.zone.eq_ignore_ascii_case("fine") {
+                fail(format!(
+                    "the move to {} is {}, not fine",
+                    module.targets[k].0, m.zone
+                ));
+            }
+        }
+    }
     let mut corners = 0;
     let mut corner_smallest = f64::INFINITY;
     for k in 1..module.targets.len().saturating_sub(1) {

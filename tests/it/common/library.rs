@@ -161,7 +161,9 @@ pub fn paper_and_refined(cell: &Cell, grid_deg: f64) -> Result<PaperAndRefined, 
     let placed = pipeline::place(&job).map_err(|e| e.to_string())?;
     let inspected = pipeline::inspect(&job, &placed, grid_deg);
     let paper = pipeline::plan(&job, &placed, &inspected, cell.planner.method)
-        .map(|p| pipeline::keep_paper_figure(pipeline::time(&job, &placed, p)))
+        .map(|p| {
+            pipeline::keep_paper_figure(&job, &placed, &inspected, pipeline::time(&job, &placed, p))
+        })
         .map_err(|e| e.to_string())?;
     let refined = pipeline::refine(&job, &placed, &inspected, paper.clone()).plan;
     let time = |p: &gen_rapid::plan::Plan| p.estimate.as_ref().map_or(f64::NAN, |e| e.total_s);
