@@ -619,20 +619,10 @@ mod tests {
     }
 
     use crate::cell::{Frame, Loc};
-    use crate::place::{MoveMotion, Origin};
     use crate::plan::{Method, Waypoint, WaypointKind};
 
     fn point(speed: &str, zone: &str) -> PlacedPoint {
-        PlacedPoint {
-            name: "P".into(),
-            joints_deg: [0.0; 6],
-            loc: Loc::default(),
-            origin: Origin::Joints,
-            motion: MoveMotion {
-                speed: speed.into(),
-                zone: zone.into(),
-            },
-        }
+        crate::plan::motion::point_with_motion("P", speed, zone)
     }
 
     /// A plan through `joints`: the first and last cell points 0 and 1, vias of leg 0 between.

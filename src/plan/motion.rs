@@ -74,25 +74,27 @@ impl Plan {
     }
 }
 
+/// A placed point at the zero pose with this speed and zone (tests of the motion's readers).
+#[cfg(test)]
+pub(crate) fn point_with_motion(name: &str, speed: &str, zone: &str) -> PlacedPoint {
+    PlacedPoint {
+        name: name.into(),
+        joints_deg: [0.0; 6],
+        loc: crate::cell::Loc::default(),
+        origin: crate::place::Origin::Joints,
+        motion: MoveMotion {
+            speed: speed.into(),
+            zone: zone.into(),
+        },
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cell::Loc;
-    use crate::place::Origin;
     use crate::plan::{Method, Waypoint};
 
-    fn point(name: &str, speed: &str, zone: &str) -> PlacedPoint {
-        PlacedPoint {
-            name: name.into(),
-            joints_deg: [0.0; 6],
-            loc: Loc::default(),
-            origin: Origin::Joints,
-            motion: MoveMotion {
-                speed: speed.into(),
-                zone: zone.into(),
-            },
-        }
-    }
+    use super::point_with_motion as point;
 
     #[test]
     fn cell_points_keep_theirs_and_vias_take_the_legs_end_speed_and_fine() {

@@ -40,7 +40,7 @@ pub fn refine(
     time_s: &dyn Fn(&Plan) -> f64,
 ) -> Refined {
     if !settings.shortcut {
-        return zoned(plan, model, points, settings, time_s);
+        return zoned(plan, model, points, settings);
     }
     let paper = plan.clone();
     // A: the shortest route the proofs allow. B (a fly-by zone asked anywhere): the same pass
@@ -80,7 +80,7 @@ pub fn refine(
         } else {
             plan::certify(c, model)
         };
-        let r = zoned(c, model, points, settings, time_s);
+        let r = zoned(c, model, points, settings);
         let t = time_s(&r.plan);
         let z = r.plan.zones.iter().filter(|z| zones::is_fly_by(z)).count();
         if best
@@ -92,7 +92,7 @@ pub fn refine(
     }
     match best {
         Some((_, _, r)) => r,
-        None => zoned(paper, model, points, settings, time_s),
+        None => zoned(paper, model, points, settings),
     }
 }
 
@@ -105,7 +105,6 @@ fn zoned(
     model: &CollisionModel,
     points: &[PlacedPoint],
     settings: &Settings,
-    _time_s: &dyn Fn(&Plan) -> f64,
 ) -> Refined {
     let warnings = zones::certify_zones(
         &mut plan,

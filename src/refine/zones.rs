@@ -15,15 +15,16 @@
 use crate::collision::CollisionModel;
 use crate::excerpt;
 use crate::place::PlacedPoint;
+use crate::plan::motion::is_stop_zone;
 use crate::plan::{Plan, WaypointKind, MIN_CLEARANCE_TOL_MM};
-use crate::rapid_data::predefined_zone;
 
 /// The zone of a stop point.
 pub const FINE: &str = "fine";
 
-/// Whether a zone name asks for a fly-by: anything but a predefined stop point.
+/// Whether a zone name asks for a fly-by: anything but a stop point (the one rule,
+/// [`is_stop_zone`], which the time estimate reads too).
 pub fn is_fly_by(zone: &str) -> bool {
-    !predefined_zone(zone).is_some_and(|z| z.finep)
+    !is_stop_zone(zone)
 }
 
 /// The zone each waypoint asks for, `None` for a stop point (module doc); the first and last

@@ -8,6 +8,7 @@ pub use gen_rapid::robot::Robot;
 use gen_rapid::cell;
 use gen_rapid::error::Error;
 use gen_rapid::pipeline;
+use gen_rapid::place::Placed;
 use gen_rapid::plan::Method;
 use std::path::Path;
 
@@ -111,9 +112,11 @@ pub enum Planned {
     PlanningFailed(String),
 }
 
-/// Plans `cell` with every method on one inspected grid of `grid_deg`. Any error but a planning
-/// failure (the cell, the robot, a point, rendering) is `Err` with its message.
-pub fn plan_every_method(cell: &Cell, grid_deg: f64) -> Result<Vec<(String, Planned)>, String> {
+/// `cell` loaded with its robot, placed, and its grid of `grid_deg` inspected.
+fn placed_and_inspected(
+    cell: &Cell,
+    grid_deg: f64,
+) -> Result<(pipeline::Loaded, Placed, pipeline::Inspected), String> {
     let robot = Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref())
         .map_err(|e| e.to_string())?;
     let job = pipeline::Loaded {
@@ -123,6 +126,13 @@ pub fn plan_every_method(cell: &Cell, grid_deg: f64) -> Result<Vec<(String, Plan
     };
     let placed = pipeline::place(&job).map_err(|e| e.to_string())?;
     let inspected = pipeline::inspect(&job, &placed, grid_deg);
+    Ok((job, placed, inspected))
+}
+
+/// Plans `cell` with every method on one inspected grid of `grid_deg`. Any error but a planning
+/// failure (the cell, the robot, a point, rendering) is `Err` with its message.
+pub fn plan_every_method(cell: &Cell, grid_deg: f64) -> Result<Vec<(String, Planned)>, String> {
+    let (job, placed, inspected) = placed_and_inspected(cell, grid_deg)?;
     Method::ALL
         .into_iter()
         .map(|m| {
@@ -151,15 +161,7 @@ pub struct PaperAndRefined {
 }
 
 pub fn paper_and_refined(cell: &Cell, grid_deg: f64) -> Result<PaperAndRefined, String> {
-    let robot = Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref())
-        .map_err(|e| e.to_string())?;
-    let job = pipeline::Loaded {
-        cell: cell.clone(),
-        text: String::new(),
-        robot,
-    };
-    let placed = pipeline::place(&job).map_err(|e| e.to_string())?;
-    let inspected = pipeline::inspect(&job, &placed, grid_deg);
+    let (job, placed, inspected) = placed_and_inspected(cell, grid_deg)?;
     let paper = pipeline::plan(&job, &placed, &inspected, cell.planner.method)
         .map(|p| {
             pipeline::keep_paper_figure(&job, &placed, &inspected, pipeline::time(&job, &placed, p))
