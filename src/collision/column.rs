@@ -4,6 +4,7 @@
 //! does not depend on axis 3 is done once per column, boxes the links moved by axis 3 cannot
 //! come near are culled, and the coherence along the column skips boxes that stay far.
 
+use super::block::{ascending, Centre, Swept, SET};
 use super::grid::{GridCheck, COLUMN_LEVELS, DEPTH_LEVELS};
 use super::{link_clear_of_box, CylData};
 use crate::geometry::{
@@ -16,7 +17,7 @@ use nalgebra::Vector3;
 const CULL_MARGIN_MM: f64 = 1e-6;
 
 /// Obstacles per chunk of the per-column culling (the kept indices live on the stack).
-const CULL_CHUNK: usize = 64;
+const CULL_CHUNK: usize = SET;
 
 /// The arm-depth bits of a code.
 const ARM_BITS: u8 = 7;
@@ -93,8 +94,10 @@ impl GridCheck<'_> {
                 .urdf_joints_deg(&[a1_deg, a2_deg, a3, 0.0, 0.0, 0.0])[2]
                 .to_radians()
         };
+        // Runs of the column are proven at once where they can be (`block.rs`); that needs the
+        // axis-3 values in ascending order (the grid's are), else every node is looked at.
+        let runs = ascending(&a3_deg[..n]);
         for (i, cd) in model.cyl.iter().enumerate().filter(|(_, d)| d.joint == 2) {
-            let radius = model.robot.cylinders[i].radius_mm;
             let span = self.arm_span;
             let deep = self.deep_mm(span);
             let ends = cd.split.map(|[par, perp, cross]| {
@@ -107,13 +110,13 @@ impl GridCheck<'_> {
             for chunk in model.obstacles.chunks(CULL_CHUNK) {
                 // Boxes the cylinder's sweep keeps farther than the clearance from are culled;
                 // the nearest of them still bounds the depth of every node of the column.
-                let mut kept = [0usize; CULL_CHUNK];
+                let mut kept = [0u8; CULL_CHUNK];
                 let mut nk = 0;
                 let mut culled = f64::INFINITY;
                 for (k, o) in chunk.iter().enumerate() {
                     let gap = sweep_gap(&o.aabb, &origin, &axis, cd);
                     if gap <= c + CULL_MARGIN_MM {
-                        kept[nk] = k;
+                        kept[nk] = k as u8;
                         nk += 1;
                     } else {
                         culled = culled.min(gap - CULL_MARGIN_MM);
@@ -125,72 +128,36 @@ impl GridCheck<'_> {
                         *f = (*f & !ARM_BITS) | q.min(*f & ARM_BITS);
                     }
                 }
-                if nk == 0 {
-                    continue;
-                }
-                // Coherence along the column: the capsule distance to a box changes by at most
-                // `reach` per radian of joint 3 (`R[2][L]` of `proof.rs`; the capsule's points
-                // obey the same bound). A box whose last capsule distance `lb[j]`, taken at
-                // joint-3 angle `at[j]`, minus that motion still exceeds the clearance is clear
-                // here, as `cylinder_clear_of_aabb`'s fast accept would find; that lower bound
-                // serves the depth as it is (the depth is a lower bound, kept cheap: it matters
-                // only to the step check's fast path).
-                let reach = cd.reach_mm[2];
-                let mut lb = [f64::NEG_INFINITY; CULL_CHUNK];
-                let mut at = [0.0f64; CULL_CHUNK];
-                for (f, &a3) in out.iter_mut().zip(a3_deg) {
-                    if *f == 0 {
-                        continue;
-                    }
-                    let q3 = q3_of(a3);
-                    let mut cyl: Option<Cylinder> = None;
-                    let mut nearest = f64::INFINITY;
-                    for (slot, &k) in kept[..nk].iter().enumerate() {
-                        let coherent = lb[slot] - reach * (q3 - at[slot]).abs() - CULL_MARGIN_MM;
-                        if coherent > c {
-                            nearest = nearest.min(coherent);
-                            continue;
-                        }
-                        let cy = *cyl.get_or_insert_with(|| {
-                            let (s, co) = q3.sin_cos();
-                            Cylinder {
-                                a: ends[0].0 + ends[0].1 * co + ends[0].2 * s,
-                                b: ends[1].0 + ends[1].1 * co + ends[1].2 * s,
-                                radius,
-                            }
-                        });
-                        let b = &chunk[k].aabb;
-                        let lo = distance_capsule_aabb(&cy, b);
-                        lb[slot] = lo;
-                        at[slot] = q3;
-                        if lo <= c && !link_clear_of_box(&cy, b, c) {
-                            nearest = f64::NEG_INFINITY;
-                            break;
-                        }
-                        nearest = nearest.min(lo);
-                    }
-                    if nearest == f64::NEG_INFINITY {
-                        *f = 0;
-                    } else if nearest < deep {
-                        let q = self.depth(nearest, span).min(*f & ARM_BITS);
-                        *f = (*f & !ARM_BITS) | q;
-                    }
+                let swept = Swept {
+                    ends,
+                    radius: model.robot.cylinders[i].radius_mm,
+                    reach_mm: cd.reach_mm[2],
+                    boxes: chunk,
+                    deep,
+                    span,
+                };
+                if runs {
+                    self.arm_run(&swept, a3_deg, out, 0, n, &kept[..nk], &q3_of);
+                } else {
+                    self.arm_nodes(&swept, a3_deg, out, 0, n, &kept[..nk], &q3_of);
                 }
             }
         }
-        self.tool_codes(a3_deg, out, &origin, &j3, q3_of);
+        self.tool_codes(a3_deg, out, &origin, &j3, runs, &q3_of);
     }
 
     /// The tool's bits of the column's free nodes (`grid.rs`): the wrist centre `C` (a point of
     /// link 3, split about joint 3's axis as the cylinders' ends are), its distance to the
-    /// boxes less the tool's radius `R_T`, and from it the near bit and the tool's depth.
+    /// boxes less the tool's radius `R_T`, and from it the near bit and the tool's depth; by
+    /// runs where `runs` (`block.rs`), else node by node.
     fn tool_codes(
         &self,
         a3_deg: &[f64],
         out: &mut [u8],
         origin: &Point,
         j3: &nalgebra::Isometry3<f64>,
-        q3_of: impl Fn(f64) -> f64,
+        runs: bool,
+        q3_of: &impl Fn(f64) -> f64,
     ) {
         let model = self.model;
         let Some(tool) = &model.tool else {
@@ -199,37 +166,43 @@ impl GridCheck<'_> {
         let u = model.robot.joints[2].axis.into_inner();
         let par = u * u.dot(&tool.centre);
         let perp = tool.centre - par;
-        let (p0, p1, p2): (Point, Vector3<f64>, Vector3<f64>) = (
+        let split = (
             origin + j3.rotation * par,
             j3.rotation * perp,
             j3.rotation * u.cross(&perp),
         );
+        // Every free node starts with the tool far and deep; the boxes make it nearer.
+        for f in out.iter_mut().filter(|f| **f != 0) {
+            *f = Self::code(false, DEPTH_LEVELS, *f & ARM_BITS);
+        }
         // C stays within |par| + |perp| of joint 3's origin: boxes farther than that plus the
         // radius, the clearance and one step's motion never matter.
         let r_t = tool.radius_mm;
-        let deep = self.deep_mm(self.centre_span) + r_t;
+        let deep = self.deep_mm(self.centre_span);
         let sweep = par.norm() + perp.norm();
-        let boxes: Vec<&Aabb> = model
-            .obstacles
-            .iter()
-            .map(|o| &o.aabb)
-            .filter(|b| distance_point_aabb(origin, b) <= sweep + deep + CULL_MARGIN_MM)
-            .collect();
-        for (f, &a3) in out.iter_mut().zip(a3_deg) {
-            if *f == 0 {
-                continue;
+        let n = out.len();
+        for chunk in model.obstacles.chunks(CULL_CHUNK) {
+            let mut boxes: [&Aabb; CULL_CHUNK] = [&chunk[0].aabb; CULL_CHUNK];
+            let mut nk = 0;
+            for o in chunk {
+                if distance_point_aabb(origin, &o.aabb) <= sweep + deep + r_t + CULL_MARGIN_MM {
+                    boxes[nk] = &o.aabb;
+                    nk += 1;
+                }
             }
-            let (s, co) = q3_of(a3).sin_cos();
-            let centre = p0 + p1 * co + p2 * s;
-            let d = boxes
-                .iter()
-                .map(|b| distance_point_aabb(&centre, b))
-                .fold(f64::INFINITY, f64::min);
-            let f_t = d - r_t;
-            // Tool free for any wrist where f_t > c (with room for rounding).
-            let near = f_t.is_nan() || f_t <= model.clearance_mm + 1e-6 * (1.0 + f_t.abs());
-            let q_t = self.depth(f_t, self.centre_span);
-            *f = Self::code(near, q_t, *f & ARM_BITS);
+            let set: [u8; CULL_CHUNK] = std::array::from_fn(|k| k as u8);
+            let centre = Centre {
+                split,
+                reach_mm: tool.centre_reach_mm[2],
+                radius: r_t,
+                boxes: &boxes[..nk],
+                deep,
+            };
+            if runs {
+                self.tool_run(&centre, a3_deg, out, 0, n, &set[..nk], q3_of);
+            } else {
+                self.tool_nodes(&centre, a3_deg, out, 0, n, &set[..nk], q3_of);
+            }
         }
     }
 }

@@ -1,0 +1,318 @@
+//! Block inspection along a grid column (beyond the paper): a run of consecutive nodes
+//! `a3[lo..hi]` of one column is proven free, or blocked, at once by the motion bound of
+//! `proof.rs`, and split in halves only where neither proof holds, down to runs of
+//! [`LEAF_NODES`] nodes, which are inspected node by node (`column.rs`).
+//!
+//! *Motion over a run.* Within a column axes 1 and 2 are fixed, so between the run's middle
+//! angle `q_c` (URDF joint 3, the middle of its first and last node's values) and any of its
+//! nodes only joint 3 moves, by at most `h` = half the run's range: no point of a part with
+//! reach `R[2][P]` moves more than `M = R[2][P] h` (raised by 1e-9 relative and 1e-9 mm over its
+//! float value, as in `grid.rs`). The runs need the column's values in ascending order (the
+//! grid's are); a column that is not is inspected node by node.
+//!
+//! *Free and deep.* For a (cylinder, box) pair with capsule distance `l` at `q_c`, every node
+//! of the run keeps at least `l - M` from the box. Where `l - M` is at least `deep_mm` of the
+//! arm's scale (`grid.rs`: the distance from which the depth is `K`), the pair leaves every
+//! node of the run free with depth `K`, and it is dropped from the run's halves. A run without
+//! pairs left keeps its codes as they are (free with depth `K` as far as this cylinder goes):
+//! no per-node work at all. So the free bit stays the node test's (a dropped pair's exact test
+//! would answer free, far above the clearance), and every depth stays a lower bound.
+//!
+//! *Blocked.* A ball of radius `rho = min(r, L/2)` about a point of the cylinder's axis at
+//! least `rho` from both ends lies in the cylinder (the inner capsule of `geometry`). With `s`
+//! the least signed distance (negative inside) from the box of a few such points at `q_c`,
+//! every node of the run has a ball within `max(0, s + M)` of the box, hence a cylinder
+//! distance of at most `max(0, s + M - rho)`. Where `s + M - rho <= c - margin` the whole run
+//! is within the clearance (at distance 0 when `c` = 0): every node is blocked, as the node
+//! test would find (the margin, `1e-6 (1 mm + c)`, is far above the exact decision's rounding).
+//!
+//! *The tool.* The wrist centre `C` moves at most `R[2][C] h` over a run: a box whose distance
+//! from `C` at `q_c`, less that, less the tool's radius `R_T`, is at least `deep_mm` of the
+//! tool's scale leaves every node of the run with the tool far (bit 6 clear) and depth `K`.
+//!
+//! The codes a run's proofs give are the codes of the node-by-node path or better (deeper);
+//! the split points depend on the column alone, so the result does not depend on threads.
+
+use super::grid::{GridCheck, DEPTH_LEVELS};
+use super::link_clear_of_box;
+use crate::cell::Obstacle;
+use crate::geometry::{distance_capsule_aabb, distance_point_aabb, Aabb, Cylinder, Point};
+use nalgebra::Vector3;
+
+/// Runs of at most this many nodes are inspected node by node.
+pub(super) const LEAF_NODES: usize = 4;
+
+/// Most boxes one run looks at (the indices live on the stack): the column's chunk of boxes.
+pub(super) const SET: usize = 64;
+
+/// Margin (mm) of the proofs against the rounding of the distances.
+const MARGIN_MM: f64 = 1e-6;
+
+/// The arm-depth bits of a code.
+const ARM_BITS: u8 = 7;
+
+/// The tool-near bit and tool-depth bits of a code.
+const TOOL_BITS: u8 = 0x78;
+
+/// A point of link 3 (or an end of a cylinder's axis) split about joint 3's axis, cell frame:
+/// `p(q) = par + cos q perp + sin q cross` after a joint-3 rotation `q`.
+pub(super) type Split = (Point, Vector3<f64>, Vector3<f64>);
+
+#[inline]
+fn at(s: &Split, q: f64) -> Point {
+    let (sn, co) = q.sin_cos();
+    s.0 + s.1 * co + s.2 * sn
+}
+
+/// A cylinder moved by axis 3 in one column, and the chunk of boxes it is checked against.
+pub(super) struct Swept<'b> {
+    pub ends: [Split; 2],
+    pub radius: f64,
+    /// `R[2][L]`, mm.
+    pub reach_mm: f64,
+    pub boxes: &'b [Obstacle],
+    /// `deep_mm` of the arm's scale.
+    pub deep: f64,
+    pub span: f64,
+}
+
+impl Swept<'_> {
+    #[inline]
+    fn at(&self, q: f64) -> Cylinder {
+        let (sn, co) = q.sin_cos();
+        Cylinder {
+            a: self.ends[0].0 + self.ends[0].1 * co + self.ends[0].2 * sn,
+            b: self.ends[1].0 + self.ends[1].1 * co + self.ends[1].2 * sn,
+            radius: self.radius,
+        }
+    }
+}
+
+/// The wrist centre in one column, and the chunk of boxes the tool is checked against.
+pub(super) struct Centre<'b> {
+    pub split: Split,
+    /// `R[2][C]`, mm.
+    pub reach_mm: f64,
+    /// The tool's radius `R_T` about `C`, mm.
+    pub radius: f64,
+    pub boxes: &'b [&'b Aabb],
+    /// `deep_mm` of the tool's scale.
+    pub deep: f64,
+}
+
+/// Signed distance of a point from a box: the distance outside, minus the depth inside.
+#[inline]
+pub(super) fn signed_distance_point_aabb(p: &Point, b: &Aabb) -> f64 {
+    let e = (b.min - p).sup(&(p - b.max));
+    let out = e.sup(&Vector3::zeros()).norm();
+    out + e.x.max(e.y).max(e.z).min(0.0)
+}
+
+/// An upper bound of the distance between cylinder `c` and box `b` less `margin` that holds
+/// at every configuration within motion `m` (module doc, *Blocked*): `s + m - rho`, `s` the
+/// least signed distance of five points of the inner capsule's axis.
+#[inline]
+pub(super) fn blocked_bound(c: &Cylinder, b: &Aabb, m: f64) -> f64 {
+    let d = c.b - c.a;
+    let len = d.norm();
+    let r = c.radius.max(0.0);
+    let rho = r.min(0.5 * len);
+    let (p, q) = if len > 0.0 {
+        (c.a + d * (rho / len), c.b - d * (rho / len))
+    } else {
+        (c.a, c.a)
+    };
+    let s = [0.0, 0.25, 0.5, 0.75, 1.0]
+        .iter()
+        .map(|&t| signed_distance_point_aabb(&(p + (q - p) * t), b))
+        .fold(f64::INFINITY, f64::min);
+    s + m - rho
+}
+
+/// The motion bound over a run: `reach * h`, raised over its float value (module doc).
+#[inline]
+fn motion(reach: f64, h: f64) -> f64 {
+    (reach * h) * (1.0 + 1e-9) + 1e-9
+}
+
+/// Whether `v` is in ascending order (the runs need it).
+#[inline]
+pub(super) fn ascending(v: &[f64]) -> bool {
+    v.windows(2).all(|w| w[0] <= w[1])
+}
+
+impl GridCheck<'_> {
+    /// The codes of nodes `lo..hi` of a column for cylinder `s` against the boxes `set` (indices
+    /// into `s.boxes`): the run's proofs (module doc), else its halves, else node by node.
+    /// `a3` must be ascending; `q3_of` gives URDF joint 3 (rad) of an axis-3 value.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn arm_run(
+        &self,
+        s: &Swept<'_>,
+        a3: &[f64],
+        out: &mut [u8],
+        lo: usize,
+        hi: usize,
+        set: &[u8],
+        q3_of: &impl Fn(f64) -> f64,
+    ) {
+        if set.is_empty() || out[lo..hi].iter().all(|&f| f == 0) {
+            return;
+        }
+        if hi - lo <= LEAF_NODES {
+            self.arm_nodes(s, a3, out, lo, hi, set, q3_of);
+            return;
+        }
+        let (q0, q1) = (q3_of(a3[lo]), q3_of(a3[hi - 1]));
+        let m = motion(s.reach_mm, 0.5 * (q1 - q0).abs());
+        let cyl = s.at(0.5 * (q0 + q1));
+        let c = self.model.clearance_mm;
+        let mut kept = [0u8; SET];
+        let mut nk = 0;
+        for &k in set {
+            let b = &s.boxes[k as usize].aabb;
+            let lb = distance_capsule_aabb(&cyl, b);
+            if lb - m - MARGIN_MM >= s.deep {
+                continue;
+            }
+            if lb <= (c - m).max(0.0) && blocked_bound(&cyl, b, m) <= c - MARGIN_MM * (1.0 + c) {
+                out[lo..hi].fill(0);
+                return;
+            }
+            kept[nk] = k;
+            nk += 1;
+        }
+        if nk == 0 {
+            return;
+        }
+        let mid = lo + (hi - lo) / 2;
+        self.arm_run(s, a3, out, lo, mid, &kept[..nk], q3_of);
+        self.arm_run(s, a3, out, mid, hi, &kept[..nk], q3_of);
+    }
+
+    /// Nodes `lo..hi` one by one (the node test of `column.rs`), with the coherence along the
+    /// run: the capsule distance to a box changes by at most `R[2][L]` per radian of joint 3, so
+    /// a box whose last capsule distance less that motion still exceeds the clearance is clear,
+    /// as `link_clear_of_box`'s fast accept would find; that bound serves the depth.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn arm_nodes(
+        &self,
+        s: &Swept<'_>,
+        a3: &[f64],
+        out: &mut [u8],
+        lo: usize,
+        hi: usize,
+        set: &[u8],
+        q3_of: &impl Fn(f64) -> f64,
+    ) {
+        let c = self.model.clearance_mm;
+        let reach = s.reach_mm;
+        let mut lb = [f64::NEG_INFINITY; SET];
+        let mut at = [0.0f64; SET];
+        for (f, &a3) in out[lo..hi].iter_mut().zip(&a3[lo..hi]) {
+            if *f == 0 {
+                continue;
+            }
+            let q3 = q3_of(a3);
+            let mut cyl: Option<Cylinder> = None;
+            let mut nearest = f64::INFINITY;
+            for (slot, &k) in set.iter().enumerate() {
+                let coherent = lb[slot] - reach * (q3 - at[slot]).abs() - MARGIN_MM;
+                if coherent > c {
+                    nearest = nearest.min(coherent);
+                    continue;
+                }
+                let cy = *cyl.get_or_insert_with(|| s.at(q3));
+                let b = &s.boxes[k as usize].aabb;
+                let lo = distance_capsule_aabb(&cy, b);
+                lb[slot] = lo;
+                at[slot] = q3;
+                if lo <= c && !link_clear_of_box(&cy, b, c) {
+                    nearest = f64::NEG_INFINITY;
+                    break;
+                }
+                nearest = nearest.min(lo);
+            }
+            if nearest == f64::NEG_INFINITY {
+                *f = 0;
+            } else if nearest < s.deep {
+                let q = self.depth(nearest, s.span).min(*f & ARM_BITS);
+                *f = (*f & !ARM_BITS) | q;
+            }
+        }
+    }
+
+    /// The tool's bits of the free nodes `lo..hi` for the boxes `set` (indices into
+    /// `t.boxes`): a run whose boxes are all far is left as it is (tool far, depth `K`);
+    /// else its halves, else node by node. Each node's tool bits only get nearer and
+    /// shallower (the boxes come in chunks: the near bit is the OR, the depth the least).
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn tool_run(
+        &self,
+        t: &Centre<'_>,
+        a3: &[f64],
+        out: &mut [u8],
+        lo: usize,
+        hi: usize,
+        set: &[u8],
+        q3_of: &impl Fn(f64) -> f64,
+    ) {
+        if set.is_empty() || out[lo..hi].iter().all(|&f| f == 0) {
+            return;
+        }
+        if hi - lo > LEAF_NODES {
+            let (q0, q1) = (q3_of(a3[lo]), q3_of(a3[hi - 1]));
+            let m = motion(t.reach_mm, 0.5 * (q1 - q0).abs());
+            let centre = at(&t.split, 0.5 * (q0 + q1));
+            let mut kept = [0u8; SET];
+            let mut nk = 0;
+            for &k in set {
+                let f = distance_point_aabb(&centre, t.boxes[k as usize]) - t.radius;
+                if f - m - MARGIN_MM < t.deep {
+                    kept[nk] = k;
+                    nk += 1;
+                }
+            }
+            if nk > 0 {
+                let mid = lo + (hi - lo) / 2;
+                self.tool_run(t, a3, out, lo, mid, &kept[..nk], q3_of);
+                self.tool_run(t, a3, out, mid, hi, &kept[..nk], q3_of);
+            }
+            return;
+        }
+        self.tool_nodes(t, a3, out, lo, hi, set, q3_of);
+    }
+
+    /// The tool's bits of the free nodes `lo..hi`, node by node, for the boxes `set`.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn tool_nodes(
+        &self,
+        t: &Centre<'_>,
+        a3: &[f64],
+        out: &mut [u8],
+        lo: usize,
+        hi: usize,
+        set: &[u8],
+        q3_of: &impl Fn(f64) -> f64,
+    ) {
+        let clearance = self.model.clearance_mm;
+        for (f, &a3) in out[lo..hi].iter_mut().zip(&a3[lo..hi]) {
+            if *f == 0 {
+                continue;
+            }
+            let centre = at(&t.split, q3_of(a3));
+            let d = set
+                .iter()
+                .map(|&k| distance_point_aabb(&centre, t.boxes[k as usize]))
+                .fold(f64::INFINITY, f64::min);
+            let f_t = d - t.radius;
+            // Tool free for any wrist where f_t > c (with room for rounding).
+            let near = f_t.is_nan() || f_t <= clearance + 1e-6 * (1.0 + f_t.abs());
+            let q_t = self
+                .depth(f_t, self.centre_span)
+                .min((*f >> 3) & DEPTH_LEVELS);
+            let near = near || GridCheck::tool_near(*f);
+            *f = (*f & !TOOL_BITS) | Self::code(near, q_t, 0) & TOOL_BITS;
+        }
+    }
+}
