@@ -36,11 +36,13 @@
 use super::grid::{GridCheck, DEPTH_LEVELS};
 use super::link_clear_of_box;
 use crate::cell::Obstacle;
-use crate::geometry::{distance_capsule_aabb, distance_point_aabb, Aabb, Cylinder, Point};
+use crate::geometry::{
+    distance_capsule_aabb, distance_point_aabb, distance_segment_aabb, Aabb, Cylinder, Point,
+};
 use nalgebra::Vector3;
 
 /// Runs of at most this many nodes are inspected node by node.
-pub(super) const LEAF_NODES: usize = 4;
+pub(super) const LEAF_NODES: usize = 2;
 
 /// Most boxes one run looks at (the indices live on the stack): the column's chunk of boxes.
 pub(super) const SET: usize = 64;
@@ -122,10 +124,17 @@ pub(super) fn blocked_bound(c: &Cylinder, b: &Aabb, m: f64) -> f64 {
     } else {
         (c.a, c.a)
     };
-    let s = [0.0, 0.25, 0.5, 0.75, 1.0]
-        .iter()
-        .map(|&t| signed_distance_point_aabb(&(p + (q - p) * t), b))
-        .fold(f64::INFINITY, f64::min);
+    // Outside the box the least signed distance is the segment's distance; a segment that
+    // meets the box has a least signed distance of at most 0 and of at most each sample's.
+    let outside = distance_segment_aabb(&p, &q, b);
+    let s = if outside > 0.0 {
+        outside
+    } else {
+        [0.0, 0.25, 0.5, 0.75, 1.0]
+            .iter()
+            .map(|&t| signed_distance_point_aabb(&(p + (q - p) * t), b))
+            .fold(0.0, f64::min)
+    };
     s + m - rho
 }
 

@@ -55,6 +55,8 @@
 //! that every distance is computed on cell-sized shapes ([`CLIP_MARGIN_MM`]).
 
 mod block;
+#[cfg(test)]
+mod block_tests;
 mod column;
 mod corner;
 mod grid;

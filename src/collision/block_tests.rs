@@ -1,0 +1,322 @@
+//! Tests of the block inspection (`block.rs`) on random cells (random placements, boxes,
+//! clearances, with and without a tool): the run-wise codes' free bits are the node test's at
+//! every node; their depths are lower bounds of exact distances; every step the codes accept is
+//! accepted by the whole-move proof; a grid built on threads equals a column-by-column fill;
+//! and the blocked bound holds under random motions.
+
+use super::block::{blocked_bound, signed_distance_point_aabb};
+use super::grid::{COLUMN_LEVELS, DEPTH_LEVELS};
+use super::tool_tests::torch;
+use super::*;
+use crate::geometry::testing::Rng;
+use crate::plan::cspace::{CSpace, Grid};
+use nalgebra::{Point3, Rotation3, Unit};
+
+/// A random cell about a random placement of the IRB 1400: 1..6 boxes of 20..900 mm within
+/// reach (some through the arm's space, some thin), sometimes a floor, a clearance of 0..30 mm,
+/// the torch on half of them.
+fn random_model(rng: &mut Rng) -> CollisionModel {
+    let placement = Placement {
+        base_mm: [rng.range(-300.0, 300.0), rng.range(-300.0, 300.0), 0.0],
+        yaw_deg: rng.range(-180.0, 180.0),
+    };
+    let mut boxes = Vec::new();
+    if rng.below(2) == 0 {
+        boxes.push(Obstacle::new(
+            "floor",
+            Aabb::new(
+                Point3::new(-2000.0, -2000.0, -100.0),
+                Point3::new(2000.0, 2000.0, rng.range(-50.0, 300.0)),
+            ),
+        ));
+    }
+    for k in 0..1 + rng.below(6) {
+        let centre = Point3::new(
+            placement.base_mm[0] + rng.range(-1500.0, 1500.0),
+            placement.base_mm[1] + rng.range(-1500.0, 1500.0),
+            rng.range(0.0, 1800.0),
+        );
+        let half = [0, 1, 2].map(|_| {
+            if rng.below(4) == 0 {
+                rng.range(5.0, 40.0)
+            } else {
+                rng.range(10.0, 300.0)
+            }
+        });
+        let h = Vector3::from(half);
+        boxes.push(Obstacle::new(
+            &format!("box{k}"),
+            Aabb::new(centre - h, centre + h),
+        ));
+    }
+    let clearance = [0.0, 5.0, 10.0, 30.0][rng.below(4) as usize];
+    let tool = (rng.below(2) == 0).then(torch);
+    CollisionModel::new(
+        &Robot::irb1400(),
+        placement,
+        boxes,
+        clearance,
+        tool.as_ref(),
+    )
+}
+
+/// The axis-3 values of a column on a grid of spacing `step` (ascending, as the grid's).
+fn column_values(step: f64) -> Vec<f64> {
+    let g = Grid::over([[0.0, 0.0], [0.0, 0.0], [-65.0, 70.0]], step);
+    (0..g.dims[2] as i64).map(|i| g.value(2, i)).collect()
+}
+
+/// The least exact distance of part `p` to its boxes at `six`.
+fn part_distance(model: &CollisionModel, p: usize, six: &[f64; 6]) -> f64 {
+    let solids = model.solids(six);
+    model
+        .part_boxes(p)
+        .map(|(_, b)| solids[p].1.distance_aabb(b))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// On random cells, at every node of random columns: the free bit of the run-wise codes is
+/// `arm_is_free`; every arm and column depth is a lower bound of the exact distance; a node
+/// without the near bit has its wrist centre's ball clear, with the depth it claims. The
+/// node-by-node path (a column of one node) agrees on the free bit.
+#[test]
+fn run_wise_codes_match_the_node_test_and_bound_the_distances() {
+    let mut rng = Rng(0xB10C_0001_2345_6789);
+    let (mut free, mut blocked, mut deeper, mut shallower, mut with_tool) = (0, 0, 0, 0, 0);
+    let k = f64::from(DEPTH_LEVELS);
+    for cell in 0..120 {
+        let model = random_model(&mut rng);
+        let step = [1.0, 2.0, 2.5][cell % 3];
+        let check = model.grid_check(step);
+        let a3 = column_values(step);
+        let c = model.clearance_mm();
+        let mut codes = vec![0u8; a3.len()];
+        let mut column = vec![0u8; check.column_bytes()];
+        for _ in 0..8 {
+            let (a1, a2) = (
+                (rng.range(-170.0, 170.0) / step).round() * step,
+                (rng.range(-70.0, 70.0) / step).round() * step,
+            );
+            check.inspect_column(a1, a2, &a3, &mut codes, &mut column);
+            for (&v, &code) in a3.iter().zip(&codes) {
+                let axes = [a1, a2, v];
+                assert_eq!(code & CODE_FREE != 0, model.arm_is_free(&axes), "{axes:?}");
+                let mut one = [0u8];
+                let mut one_column = vec![0u8; check.column_bytes()];
+                check.inspect_column(a1, a2, &[v], &mut one, &mut one_column);
+                assert_eq!(one[0] & CODE_FREE, code & CODE_FREE, "{axes:?}");
+                if code == 0 {
+                    if model.robot().check_range3(&axes).is_ok() {
+                        blocked += 1;
+                    }
+                    continue;
+                }
+                free += 1;
+                match (code & 7).cmp(&(one[0] & 7)) {
+                    std::cmp::Ordering::Greater => deeper += 1,
+                    std::cmp::Ordering::Less => shallower += 1,
+                    _ => {}
+                }
+                let six = [a1, a2, v, 0.0, 0.0, 0.0];
+                for i in 0..model.cyl.len() {
+                    let (q, span, levels) = match check.fixed.iter().position(|&f| f == i) {
+                        Some(l) => (column[l], check.fixed_span[l], f64::from(COLUMN_LEVELS)),
+                        None => (code & 7, check.arm_span, k),
+                    };
+                    let need = c + f64::from(q) * span / levels;
+                    let d = part_distance(&model, i, &six);
+                    assert!(d >= need - 1e-6, "{axes:?} cylinder {i}: {d} < {need}");
+                }
+                if let Some(tool) = &model.tool {
+                    with_tool += 1;
+                    if !GridCheck::tool_near(code) {
+                        // The wrist centre, placed independently of the grid's split.
+                        let pose = model.cell_link_poses(&axes)[2];
+                        let centre = pose * Point::from(tool.centre);
+                        let f = model
+                            .obstacles()
+                            .iter()
+                            .map(|o| distance_point_aabb(&centre, &o.aabb))
+                            .fold(f64::INFINITY, f64::min)
+                            - tool.radius_mm;
+                        let q_t = f64::from((code >> 3) & 7);
+                        assert!(f > c, "{axes:?}: tool ball {f} within {c}");
+                        assert!(f >= c + q_t * check.centre_span / k - 1e-6, "{axes:?}");
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        free > 20_000 && blocked > 20_000 && with_tool > 10_000,
+        "{free} free, {blocked} blocked, {with_tool} with a tool"
+    );
+    // A column of one node measures every box at its node: the runs are never deeper, and
+    // shallower (where a run's halves reuse a bound along the column) at few nodes.
+    assert!(
+        deeper == 0 && shallower * 20 < free,
+        "{deeper} deeper, {shallower} shallower of {free}"
+    );
+}
+
+/// On random cells: every step between neighbouring free nodes (codes from whole columns)
+/// that the codes accept is accepted by the whole-move proof, links and tool (random wrists).
+#[test]
+fn steps_the_run_wise_codes_accept_are_accepted_by_the_proof() {
+    let mut rng = Rng(0xB10C_0002_5AFE_57E9);
+    let (mut tried, mut proven) = (0, 0);
+    for cell in 0..40 {
+        let model = random_model(&mut rng);
+        let step = [1.0, 2.0][cell % 2];
+        let check = model.grid_check(step);
+        let a3 = column_values(step);
+        let column = |a1: f64, a2: f64| {
+            let mut codes = vec![0u8; a3.len()];
+            let mut bytes = vec![0u8; check.column_bytes()];
+            check.inspect_column(a1, a2, &a3, &mut codes, &mut bytes);
+            (codes, bytes)
+        };
+        for _ in 0..6 {
+            let (a1, a2) = (
+                (rng.range(-168.0, 168.0) / step).round() * step,
+                (rng.range(-68.0, 68.0) / step).round() * step,
+            );
+            let o12 = [rng.below(3) as i32 - 1, rng.below(3) as i32 - 1];
+            let (b1, b2) = (a1 + f64::from(o12[0]) * step, a2 + f64::from(o12[1]) * step);
+            let (ca, cola) = column(a1, a2);
+            let (cb, colb) = column(b1, b2);
+            for _ in 0..60 {
+                let i = 1 + rng.below(a3.len() as u64 - 2) as usize;
+                let o3 = rng.below(3) as i32 - 1;
+                let o = [o12[0], o12[1], o3];
+                let j = (i as i32 + o3) as usize;
+                if o == [0, 0, 0] || ca[i] == 0 || cb[j] == 0 {
+                    continue;
+                }
+                tried += 1;
+                let (arm, tool) = check.proven_by_codes(
+                    Ends {
+                        code: ca[i],
+                        column: &cola,
+                    },
+                    Ends {
+                        code: cb[j],
+                        column: &colb,
+                    },
+                    o,
+                );
+                let w0 = [
+                    rng.range(-150.0, 150.0),
+                    rng.range(-115.0, 115.0),
+                    rng.range(-300.0, 300.0),
+                ];
+                let w1 = [0, 1, 2].map(|k| w0[k] + rng.range(-30.0, 30.0));
+                let from = [a1, a2, a3[i], w0[0], w0[1], w0[2]];
+                let to = [b1, b2, a3[j], w1[0], w1[1], w1[2]];
+                if arm {
+                    proven += 1;
+                    assert!(model.links_move_is_safe(&from, &to), "{from:?} -> {to:?}");
+                }
+                if tool && model.has_tool() {
+                    assert!(model.tool_move_is_safe(&from, &to), "{from:?} -> {to:?}");
+                }
+            }
+        }
+    }
+    assert!(
+        tried > 4000 && proven > 3000,
+        "{tried} tried, {proven} proven"
+    );
+}
+
+/// The grid built on threads holds the same codes and column bytes as a column-by-column fill
+/// on this thread (the runs depend on the column alone).
+#[test]
+fn a_grid_built_on_threads_equals_a_column_by_column_fill() {
+    let mut rng = Rng(0xB10C_0003_7412_0000);
+    for _ in 0..3 {
+        let model = random_model(&mut rng);
+        let grid = Grid::over([[-170.0, 170.0], [-70.0, 70.0], [-65.0, 70.0]], 5.0);
+        let check = model.grid_check(grid.step_deg);
+        let built = CSpace::build(grid, &check);
+        let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
+        let mut codes = vec![0u8; a3.len()];
+        let mut bytes = vec![0u8; check.column_bytes()];
+        for i1 in 0..grid.dims[0] {
+            for i2 in 0..grid.dims[1] {
+                let (a1, a2) = (grid.value(0, i1 as i64), grid.value(1, i2 as i64));
+                check.inspect_column(a1, a2, &a3, &mut codes, &mut bytes);
+                for (i3, &code) in codes.iter().enumerate() {
+                    let n = [i1 as i32, i2 as i32, i3 as i32];
+                    assert_eq!(built.code(n), code, "{n:?}");
+                }
+                let n = [i1 as i32, i2 as i32, 0];
+                assert_eq!(built.column(n), &bytes[..], "{n:?}");
+            }
+        }
+    }
+}
+
+/// The blocked bound of `block.rs` under random rigid motions of at most `m` per point: the
+/// moved cylinder's exact distance never exceeds `max(0, bound)`; the signed distance is the
+/// distance outside and minus the depth inside.
+#[test]
+fn the_blocked_bound_holds_under_bounded_motions() {
+    let mut rng = Rng(0xB10C_0004_0000_0001);
+    let b = Aabb::new(
+        Point3::new(-100.0, -50.0, 0.0),
+        Point3::new(100.0, 50.0, 300.0),
+    );
+    assert_eq!(
+        signed_distance_point_aabb(&Point3::new(0.0, 0.0, 10.0), &b),
+        -10.0
+    );
+    assert_eq!(
+        signed_distance_point_aabb(&Point3::new(0.0, 80.0, 340.0), &b),
+        50.0
+    );
+    assert_eq!(
+        signed_distance_point_aabb(&Point3::new(-100.0, 0.0, 100.0), &b),
+        0.0
+    );
+    let mut tight = 0;
+    for _ in 0..3000 {
+        let cyl = Cylinder {
+            a: rng.point(-400.0, 400.0),
+            b: rng.point(-400.0, 400.0),
+            radius: rng.range(0.0, 150.0),
+        };
+        let m = rng.range(0.0, 120.0);
+        let bound = blocked_bound(&cyl, &b, m);
+        // A rotation about the cylinder's middle and a translation, together moving no point
+        // of the cylinder more than m.
+        let half = 0.5 * (cyl.b - cyl.a).norm() + cyl.radius;
+        let mid = nalgebra::center(&cyl.a, &cyl.b);
+        let turn = rng.range(0.0, 1.0) * m;
+        let angle = if half > 0.0 {
+            (turn / half).min(0.5)
+        } else {
+            0.0
+        };
+        let axis = Unit::new_normalize(rng.point(-1.0, 1.0).coords + Vector3::new(1e-9, 0.0, 0.0));
+        let rot = Rotation3::from_axis_angle(&axis, angle);
+        let shift = rng.point(-1.0, 1.0).coords;
+        let shift = if shift.norm() > 0.0 {
+            shift * ((m - angle * half).max(0.0) / shift.norm()) * rng.range(0.0, 1.0)
+        } else {
+            shift
+        };
+        let moved = |p: Point| mid + rot * (p - mid) + shift;
+        let c2 = Cylinder {
+            a: moved(cyl.a),
+            b: moved(cyl.b),
+            radius: cyl.radius,
+        };
+        let d = Solid::Cylinder(c2).distance_aabb(&b);
+        assert!(d <= bound.max(0.0) + 1e-6, "{cyl:?} m {m}: {d} > {bound}");
+        if d > 0.0 && d > bound - 5.0 {
+            tight += 1;
+        }
+    }
+    assert!(tight > 40, "{tight}");
+}
