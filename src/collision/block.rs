@@ -20,7 +20,8 @@
 //!
 //! *Blocked.* A ball of radius `rho = min(r, L/2)` about a point of the cylinder's axis at
 //! least `rho` from both ends lies in the cylinder (the inner capsule of `geometry`). With `s`
-//! the least signed distance (negative inside) from the box of a few such points at `q_c`,
+//! an upper bound of the least signed distance (negative inside) from the box of such points
+//! at `q_c` (the segment's distance when it stays outside, else 0 or a deeper sample),
 //! every node of the run has a ball within `max(0, s + M)` of the box, hence a cylinder
 //! distance of at most `max(0, s + M - rho)`. Where `s + M - rho <= c - margin` the whole run
 //! is within the clearance (at distance 0 when `c` = 0): every node is blocked, as the node
@@ -30,8 +31,11 @@
 //! from `C` at `q_c`, less that, less the tool's radius `R_T`, is at least `deep_mm` of the
 //! tool's scale leaves every node of the run with the tool far (bit 6 clear) and depth `K`.
 //!
-//! The codes a run's proofs give are the codes of the node-by-node path or better (deeper);
-//! the split points depend on the column alone, so the result does not depend on threads.
+//! A run proven free gives its nodes depth `K` for the pairs it drops (what a node measured
+//! alone would get at most); nodes of halved runs get the node path's depths, where the second
+//! node of a 2-node run may reuse the first's bound (`block_tests.rs`: a few percent of the
+//! free nodes shallower than measured alone, none deeper). The split points depend on the
+//! column alone, so the result does not depend on the threads.
 
 use super::grid::{GridCheck, DEPTH_LEVELS};
 use super::link_clear_of_box;
@@ -110,9 +114,10 @@ pub(super) fn signed_distance_point_aabb(p: &Point, b: &Aabb) -> f64 {
     out + e.x.max(e.y).max(e.z).min(0.0)
 }
 
-/// An upper bound of the distance between cylinder `c` and box `b` less `margin` that holds
-/// at every configuration within motion `m` (module doc, *Blocked*): `s + m - rho`, `s` the
-/// least signed distance of five points of the inner capsule's axis.
+/// A bound `s + m - rho` whose positive part is an upper bound of the distance between
+/// cylinder `c` and box `b` at every pose where no point of `c` moved more than `m` (module
+/// doc, *Blocked*): `s` is the least signed distance of the inner capsule's axis from the box
+/// where the axis stays outside (the segment's distance), else the least of 0 and five samples.
 #[inline]
 pub(super) fn blocked_bound(c: &Cylinder, b: &Aabb, m: f64) -> f64 {
     let d = c.b - c.a;

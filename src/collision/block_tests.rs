@@ -45,7 +45,7 @@ fn random_model(rng: &mut Rng) -> CollisionModel {
         });
         let h = Vector3::from(half);
         boxes.push(Obstacle::new(
-            &format!("box{k}"),
+            format!("box{k}"),
             Aabb::new(centre - h, centre + h),
         ));
     }

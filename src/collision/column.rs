@@ -1,8 +1,12 @@
 //! Node inspection of a whole grid column at once: the hot path of the configuration-space
 //! grid (paper section 3). Per node it writes the code of `grid.rs`: the free bit is exactly
 //! [`CollisionModel::arm_is_free`]'s answer; the depths are lower bounds, quantised. The work that
-//! does not depend on axis 3 is done once per column, boxes the links moved by axis 3 cannot
-//! come near are culled, and the coherence along the column skips boxes that stay far.
+//! does not depend on axis 3 is done once per column (the range of axes 1 and 2, the links they
+//! move, the frame of joint 3) and boxes the links moved by axis 3 cannot come near are culled.
+//! The rest goes by runs of the column (`block.rs`, beyond the paper): a run whose motion bound
+//! proves it free with full depth, or blocked, costs one pose at its middle and no per-node
+//! work; only runs near an obstacle's boundary are halved down to the node test. The range
+//! checks stay per node.
 
 use super::block::{ascending, Centre, Swept, SET};
 use super::grid::{GridCheck, COLUMN_LEVELS, DEPTH_LEVELS};
@@ -29,9 +33,12 @@ impl GridCheck<'_> {
     /// Per column: the range of axes 1 and 2, the poses of links 1 and 2 and their cylinders'
     /// checks and depths, the frame of joint 3, and the culling of boxes the cylinders moved by
     /// axis 3 (and the tool's wrist centre) cannot come near: a sphere about joint 3 and a slab
-    /// along its axis hold their whole sweep. Per node: the range of axis 3, one `sin_cos`, the
-    /// end points and the remaining boxes. No allocation. Only `min(a3_deg.len(), out.len())`
-    /// nodes are inspected; any further entries of `out` are set to 0.
+    /// along its axis hold their whole sweep. Per node: the range of axis 3. The cylinders
+    /// moved by axis 3 and the tool's wrist centre by runs (`block.rs`; node by node when the
+    /// axis-3 values are not ascending): per run one `sin_cos` at its middle and the remaining
+    /// boxes; per node, in runs near a boundary, one `sin_cos`, the end points and the
+    /// remaining boxes. No allocation. Only `min(a3_deg.len(), out.len())` nodes are inspected;
+    /// any further entries of `out` are set to 0.
     pub fn inspect_column(
         &self,
         a1_deg: f64,
