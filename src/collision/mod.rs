@@ -583,14 +583,19 @@ fn stands_on_its_mounting_plane(robot: &Robot, c: &crate::robot::LinkCylinder) -
 }
 
 /// The node test used everywhere in this module: `true` when the cylinder keeps MORE than
-/// `clearance` from the box. [`cylinder_clear_of_aabb`] after two cheap extra bounds that keep
+/// `clearance` from the box. After the capsule bound, the alternating projections of
+/// `geometry::certify` (a certified separating plane or point pair: nearly every case), then
+/// for what they leave open [`cylinder_clear_of_aabb`] after two cheap extra bounds that keep
 /// most queries out of parry's GJK (the capsule bounds are loose where a flat cap faces a box):
 /// a lower bound from capsules around shortened axes that still contain the rim, and an upper
-/// bound from points of the cylinder. Both are valid bounds, so the answer is the same.
+/// bound from points of the cylinder. All are valid bounds, so the answer is the same.
 #[inline]
 fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
     if distance_capsule_aabb(c, b) > clearance {
         return true;
+    }
+    if let Some(clear) = crate::geometry::clear_by_projection(c, b, clearance) {
+        return clear;
     }
     let d = c.b - c.a;
     let len = d.norm();
