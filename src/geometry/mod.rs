@@ -95,7 +95,7 @@ fn excess(x: f64, lo: f64, hi: f64) -> f64 {
 
 /// Squared distance from a point to a box, mm².
 #[inline(always)]
-fn distance_sq_point_aabb(p: &Point, b: &Aabb) -> f64 {
+pub fn distance_sq_point_aabb(p: &Point, b: &Aabb) -> f64 {
     let ex = excess(p.x, b.min.x, b.max.x);
     let ey = excess(p.y, b.min.y, b.max.y);
     let ez = excess(p.z, b.min.z, b.max.z);
