@@ -94,7 +94,8 @@ impl Local {
     }
 
     /// A ball holding the shape (link-6 frame): its centre and radius, mm, the radius raised a
-    /// little over its float value. The cheap first look of the tool test (`CollisionModel::tool_is_free`).
+    /// little over its float value. The cheap first look of the tool test
+    /// (`CollisionModel::tool_is_free`).
     fn ball(&self) -> (Point, f64) {
         let (centre, radius) = match self {
             Local::Cylinder { a, b, radius } => (

@@ -105,7 +105,7 @@ fn run(c: &Cylinder, bx: &Aabb, mut enough: impl FnMut(f64, f64) -> bool) -> boo
         // from an extrapolated point (Nesterov); the box's clamp keeps it on the box.
         let z = clamp_to_box(&(x + (x - prev) * momentum), bx);
         let y = project_to_cylinder(&z, &c.a, &u, len, r);
-        let x_next = clamp_to_box(&y, bx);
+        let mut x_next = clamp_to_box(&y, bx);
         let gap = x_next - y;
         let dist = gap.norm();
         if dist <= 0.0 || !dist.is_finite() {
@@ -118,20 +118,45 @@ fn run(c: &Cylinder, bx: &Aabb, mut enough: impl FnMut(f64, f64) -> bool) -> boo
         } else {
             momentum = 0.0;
         }
+        // Directions to try: the pair's; where its box point lies on one face only, or its
+        // cylinder point on a cap, that face's or cap's normal (the separating direction at
+        // the closest pair in those cases).
         let n = gap / dist;
-        let mut best = separation(&n, c, &u, len, r, bx);
-        // Where the pair's box point lies on one face only, or its cylinder point on a cap
-        // inside the rim, that face's or cap's normal is the separating direction at the
-        // closest pair: try it too.
+        let mut best = (separation(&n, c, &u, len, r, bx), n);
+        let mut consider = |m: Vector3<f64>| {
+            let g = separation(&m, c, &u, len, r, bx);
+            if g > best.0 {
+                best = (g, m);
+            }
+        };
         if let Some(face) = face_normal(&x_next, &y, bx) {
-            best = best.max(separation(&face, c, &u, len, r, bx));
+            consider(face);
         }
         let along = (y - c.a).dot(&u);
         if along <= 0.0 || along >= len {
-            let cap = if along <= 0.0 { -u } else { u };
-            best = best.max(separation(&cap, c, &u, len, r, bx));
+            consider(if along <= 0.0 { -u } else { u });
         }
-        lower = lower.max(best - SLACK_MM);
+        lower = lower.max(best.0 - SLACK_MM);
+        // The cylinder's farthest point along the best direction and the box's point nearest
+        // it: another pair, exact at once where that direction is the closest pair's (a rim
+        // facing a face, which the projections alone approach slowly along the rim).
+        // Projected onto the cylinder: a point of it whatever the rounding of the support.
+        let y_s = project_to_cylinder(
+            &support_of_cylinder(&best.1, c, &u, len, r, bx),
+            &c.a,
+            &u,
+            len,
+            r,
+        );
+        let x_s = clamp_to_box(&y_s, bx);
+        let d_s = (x_s - y_s).norm();
+        if d_s + SLACK_MM < upper {
+            upper = d_s + SLACK_MM;
+            if d_s < dist {
+                x_next = x_s;
+                momentum = 0.0;
+            }
+        }
         if enough(lower.max(0.0), upper) {
             return true;
         }
@@ -166,6 +191,38 @@ fn face_normal(x: &Point, y: &Point, bx: &Aabb) -> Option<Vector3<f64>> {
         normal = Some(n);
     }
     normal
+}
+
+/// A point of the cylinder farthest along the unit `n` (a support point), chosen near the box
+/// where the farthest points form a whole cap: the cap end `n` points to, then across the axis
+/// the rim point towards `n`; when `n` is (within 1e-9) along the axis, the cap's point nearest
+/// the box point nearest the cap's centre.
+#[inline(always)]
+fn support_of_cylinder(
+    n: &Vector3<f64>,
+    c: &Cylinder,
+    u: &Vector3<f64>,
+    len: f64,
+    r: f64,
+    bx: &Aabb,
+) -> Point {
+    let nu = n.dot(u);
+    let end = if nu > 0.0 { c.a + u * len } else { c.a };
+    let across = n - u * nu;
+    // Once more against rounding: `across` must be square to the axis.
+    let across = across - u * across.dot(u);
+    let w = across.norm();
+    if w > 1e-9 {
+        return end + across * (r / w);
+    }
+    let to_box = clamp_to_box(&end, bx) - end;
+    let flat = to_box - u * to_box.dot(u);
+    let f = flat.norm();
+    if f > r {
+        end + flat * (r / f)
+    } else {
+        end + flat
+    }
 }
 
 /// The box's point nearest `p`.

@@ -420,3 +420,6 @@ pub(crate) mod testing {
 
 #[cfg(test)]
 mod tests;
+
+pub static STATS: [std::sync::atomic::AtomicUsize; 4] =
+    [const { std::sync::atomic::AtomicUsize::new(0) }; 4];
