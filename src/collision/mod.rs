@@ -74,7 +74,7 @@ pub use crate::cell::Obstacle;
 use crate::cell::{Cell, Tool};
 use crate::geometry::{
     cylinder_clear_of_aabb, distance_capsule_aabb, distance_point_aabb, distance_segment_aabb,
-    gap_sq_aabb_aabb, Aabb, Cylinder, Point, Solid,
+    distance_sq_point_aabb, gap_sq_aabb_aabb, Aabb, Cylinder, Point, Solid,
 };
 use crate::place::{Placement, PoseCheck};
 use crate::robot::{RangeViolation, Robot};
@@ -349,7 +349,9 @@ impl CollisionModel {
     }
 
     /// Whether every tool shape keeps MORE than the clearance from every box at `axes` (axes
-    /// 1..6); `true` without a tool. Neither the range nor the links are looked at.
+    /// 1..6); `true` without a tool. Neither the range nor the links are looked at. Per shape,
+    /// a box farther than the clearance from the shape's ball (`parts.rs`, one point placed) is
+    /// passed; then the shape's enclosing box, then the exact test.
     pub fn tool_is_free(&self, axes: &[f64; 6]) -> bool {
         let Some(tool) = &self.tool else {
             return true;
@@ -357,12 +359,22 @@ impl CollisionModel {
         let flange = self.flange_pose(axes);
         let c = self.clearance_mm;
         tool.shapes.iter().all(|s| {
-            let solid = s.local.placed(&flange);
-            // The enclosing box once per shape; most boxes are farther than that (the hot path
-            // of a leg's tool inspection).
-            let e = solid.enclosing_aabb();
+            // First the shape's ball (one point placed): most boxes are farther than that. Then
+            // the enclosing box of the shape, placed once, and the exact test.
+            let (centre, radius) = s.ball;
+            let centre = flange * centre;
+            let far = radius + c;
+            let mut placed: Option<(Solid, Aabb)> = None;
             self.obstacles.iter().all(|o| {
-                gap_sq_aabb_aabb(&e, &o.aabb) > c * c || solid_clear_of_box(&solid, &o.aabb, c)
+                if distance_sq_point_aabb(&centre, &o.aabb) > far * far {
+                    return true;
+                }
+                let (solid, e) = placed.get_or_insert_with(|| {
+                    let solid = s.local.placed(&flange);
+                    let e = solid.enclosing_aabb();
+                    (solid, e)
+                });
+                gap_sq_aabb_aabb(e, &o.aabb) > c * c || solid_clear_of_box(solid, &o.aabb, c)
             })
         })
     }
@@ -586,14 +598,19 @@ fn stands_on_its_mounting_plane(robot: &Robot, c: &crate::robot::LinkCylinder) -
 }
 
 /// The node test used everywhere in this module: `true` when the cylinder keeps MORE than
-/// `clearance` from the box. [`cylinder_clear_of_aabb`] after two cheap extra bounds that keep
+/// `clearance` from the box. After the capsule bound, the alternating projections of
+/// `geometry::certify` (a certified separating plane or point pair: nearly every case), then
+/// for what they leave open [`cylinder_clear_of_aabb`] after two cheap extra bounds that keep
 /// most queries out of parry's GJK (the capsule bounds are loose where a flat cap faces a box):
 /// a lower bound from capsules around shortened axes that still contain the rim, and an upper
-/// bound from points of the cylinder. Both are valid bounds, so the answer is the same.
+/// bound from points of the cylinder. All are valid bounds, so the answer is the same.
 #[inline]
 fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
     if distance_capsule_aabb(c, b) > clearance {
         return true;
+    }
+    if let Some(clear) = crate::geometry::clear_by_projection(c, b, clearance) {
+        return clear;
     }
     let d = c.b - c.a;
     let len = d.norm();

@@ -93,6 +93,21 @@ impl Local {
         }
     }
 
+    /// A ball holding the shape (link-6 frame): its centre and radius, mm, the radius raised a
+    /// little over its float value. The cheap first look of the tool test
+    /// (`CollisionModel::tool_is_free`).
+    fn ball(&self) -> (Point, f64) {
+        let (centre, radius) = match self {
+            Local::Cylinder { a, b, radius } => (
+                nalgebra::center(a, b),
+                (0.5 * (b - a).norm()).hypot(*radius),
+            ),
+            Local::Sphere { centre, radius } => (*centre, *radius),
+            Local::Box { centre, half, .. } => (*centre, half.norm()),
+        };
+        (centre, radius * (1.0 + 1e-9) + 1e-9)
+    }
+
     /// Points whose convex hull, grown by the radius returned, holds the shape.
     fn hull(&self) -> (Vec<Point>, f64) {
         match self {
@@ -137,6 +152,8 @@ impl Local {
 pub(super) struct ShapeData {
     pub name: String,
     pub local: Local,
+    /// A ball holding the shape: centre in the link-6 frame and radius, mm.
+    pub ball: (Point, f64),
     /// `R[i][S]` for joints 1..6 (module doc), mm.
     pub reach_mm: [f64; 6],
 }
@@ -189,6 +206,7 @@ impl ToolData {
                 radius_mm = radius_mm.max(off_axis + about_o5);
                 ShapeData {
                     name: s.name.clone(),
+                    ball: local.ball(),
                     local,
                     reach_mm,
                 }

@@ -698,3 +698,37 @@ fn steps_proven_by_the_codes_keep_the_clearance() {
         "{proven} proven, {near_proven} near"
     );
 }
+
+/// The tool's node test (shape balls first, then each shape's enclosing box and the exact test)
+/// against parry's smallest tool distance, at random poses and at clearances drawn around that
+/// distance: whenever parry is sure (beyond 1e-6 mm), the answers agree. Both answers occur.
+#[test]
+fn tool_is_free_agrees_with_parry_at_random_poses() {
+    let tool = torch();
+    let mut rng = Rng(0x7001_5AFE_0000_0B17);
+    let (mut clear, mut blocked) = (0, 0);
+    for k in 0..1200 {
+        let clearance = [5.0, 40.0, 150.0][k % 3];
+        let model = torch_model(clearance);
+        let axes = random_six(&mut rng, model.robot());
+        let (want, _) = parry_tool_min(&model, &tool, &axes);
+        if (want - clearance).abs() <= 1e-6 * (1.0 + want) {
+            continue;
+        }
+        let got = model.tool_is_free(&axes);
+        assert_eq!(
+            got,
+            want > clearance,
+            "{axes:?} at {clearance}: parry {want}"
+        );
+        if got {
+            clear += 1;
+        } else {
+            blocked += 1;
+        }
+    }
+    assert!(
+        clear > 100 && blocked > 100,
+        "{clear} clear, {blocked} blocked"
+    );
+}

@@ -9,10 +9,11 @@
 //! ([`distance_point_aabb`], [`distance_segment_aabb`], the two capsule
 //! bounds and [`cylinder_clear_of_aabb`]) are hand-written, closed-form,
 //! allocation-free and exact in `f64`. The exact cylinder–box distance has no
-//! closed form; it is delegated to parry3d's GJK
-//! ([`distance_cylinder_aabb_exact`]), which is only consulted when the two
-//! capsule bounds disagree. Every fast query is checked against parry3d in the
-//! tests of this module.
+//! closed form: where the two capsule bounds disagree, alternating projections
+//! between the two solids narrow a certified bracket (`certify.rs`: point pairs
+//! above, separating planes below), and parry3d's GJK
+//! ([`distance_cylinder_aabb_exact`]) answers only what they leave open. Every
+//! fast query is checked against parry3d in the tests of this module.
 //!
 //! The tool's shapes add a ball and an oriented box (`solids.rs`: exact closed forms, held
 //! against parry3d there), and [`Solid`], the one type for any placed part of the robot model.
@@ -23,7 +24,9 @@
 
 use nalgebra::{Point3, Vector3};
 
+mod certify;
 mod solids;
+pub use certify::{bracket_by_projection, clear_by_projection, Bracket};
 pub use solids::{distance_obb_aabb, distance_sphere_aabb, gap_sq_aabb_aabb, Obb, Solid, Sphere};
 
 /// A point of the cell frame, mm.
@@ -33,6 +36,12 @@ pub type Point = Point3<f64>;
 /// [`distance_cylinder_aabb`]: below this band width (mm) the lower bound is
 /// returned without calling parry.
 pub const BOUNDS_AGREE_TOL: f64 = 1e-9;
+
+/// [`distance_cylinder_aabb`] in the band: a bracket of the alternating projections narrower
+/// than this times `(1 mm + d)` gives its lower end as the distance. A tenth of the slack the
+/// collision proofs take off every distance (`collision::proof::DISTANCE_SLACK_REL`), so the
+/// bracket's width never decides a proof that the exact distance would not.
+pub const BRACKET_TOL_REL: f64 = 1e-7;
 
 /// Axis-aligned box in the cell frame, mm. Invariant: `min <= max` per axis.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -86,7 +95,7 @@ fn excess(x: f64, lo: f64, hi: f64) -> f64 {
 
 /// Squared distance from a point to a box, mm².
 #[inline(always)]
-fn distance_sq_point_aabb(p: &Point, b: &Aabb) -> f64 {
+pub fn distance_sq_point_aabb(p: &Point, b: &Aabb) -> f64 {
     let ex = excess(p.x, b.min.x, b.max.x);
     let ey = excess(p.y, b.min.y, b.max.y);
     let ez = excess(p.z, b.min.z, b.max.z);
@@ -312,8 +321,10 @@ fn parry_cylinder_aabb(c: &Cylinder, bx: &Aabb, u: &Vector3<f64>, len: f64, r: f
 /// `clearance` mm from the box.
 ///
 /// The capsule bound accepts fast (`lower > clearance`), the inner-capsule
-/// bound rejects fast (`upper <= clearance`); only when `clearance` lies in
-/// `[lower, upper)` is the parry query made, so the answer is exact except
+/// bound rejects fast (`upper <= clearance`); when `clearance` lies in
+/// `[lower, upper)` the alternating projections of `certify.rs` decide (a
+/// separating plane farther than `clearance`, or a point pair nearer), and
+/// only what they leave open goes to parry's GJK. The answer is exact except
 /// when the true distance is within parry's tolerance of `clearance` (see
 /// [`distance_cylinder_aabb_exact`]; there parry errs towards "clear").
 #[inline]
@@ -325,6 +336,10 @@ pub fn cylinder_clear_of_aabb(c: &Cylinder, bx: &Aabb, clearance: f64) -> bool {
     let hi = distance_inner_capsule_aabb(c, bx);
     if hi <= clearance {
         return false;
+    }
+    // Alternating projections decide nearly every case (`certify.rs`); GJK the rest.
+    if let Some(clear) = clear_by_projection(c, bx, clearance) {
+        return clear;
     }
     distance_cylinder_aabb_exact_in_band(c, bx, lo, hi) > clearance
 }
@@ -348,16 +363,31 @@ fn distance_cylinder_aabb_exact_in_band(c: &Cylinder, bx: &Aabb, lo: f64, hi: f6
 /// [`BOUNDS_AGREE_TOL`] of each other — then it is the exact distance to
 /// that tolerance; this is the common case where the closest point of the
 /// axis lies at least `r` from both ends, or the inner capsule touches the
-/// box (0). Otherwise it returns [`distance_cylinder_aabb_exact`], i.e. the
-/// parry value clamped into the bounds. The result is always within
-/// `[distance_capsule_aabb, distance_inner_capsule_aabb]`.
+/// box (0). Otherwise the lower end of the certified bracket of `certify.rs`
+/// when it is narrower than [`BRACKET_TOL_REL`] (so the result errs low, by
+/// less than that), else parry's value clamped into the bracket. The result is
+/// always within `[distance_capsule_aabb, distance_inner_capsule_aabb]`.
 #[inline]
 pub fn distance_cylinder_aabb(c: &Cylinder, bx: &Aabb) -> f64 {
     let (lo, hi) = bounds(c, bx);
     if hi - lo <= BOUNDS_AGREE_TOL {
         return lo;
     }
-    distance_cylinder_aabb_exact_in_band(c, bx, lo, hi)
+    distance_in_band(c, bx, lo, hi)
+}
+
+/// The distance in the band `lo < hi` of the capsule bounds: the lower end of the alternating
+/// projections' bracket (`certify.rs`) when it is within [`BRACKET_TOL_REL`]` (1 + d)` of its
+/// upper end, else parry's GJK clamped into the bracket.
+#[inline]
+fn distance_in_band(c: &Cylinder, bx: &Aabb, lo: f64, hi: f64) -> f64 {
+    let Some(b) = bracket_by_projection(c, bx, lo, hi, BRACKET_TOL_REL) else {
+        return distance_cylinder_aabb_exact_in_band(c, bx, lo, hi);
+    };
+    if b.upper - b.lower <= BRACKET_TOL_REL * (1.0 + b.upper) {
+        return b.lower;
+    }
+    distance_cylinder_aabb_exact_in_band(c, bx, b.lower, b.upper)
 }
 
 /// Shared by the tests of this crate's geometry and collision modules.
@@ -390,3 +420,6 @@ pub(crate) mod testing {
 
 #[cfg(test)]
 mod tests;
+
+pub static STATS: [std::sync::atomic::AtomicUsize; 4] =
+    [const { std::sync::atomic::AtomicUsize::new(0) }; 4];

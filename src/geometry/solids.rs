@@ -410,7 +410,9 @@ mod tests {
                 );
             }
             let (coarse, exact) = (solid.coarse_lower_bound_aabb(&b), solid.distance_aabb(&b));
-            assert!(coarse <= exact + 1e-9, "{solid:?}: {coarse} > {exact}");
+            // The cylinder's distance is a certified lower bound that keeps a rounding slack of
+            // 1e-9 mm (`certify.rs`): both are lower bounds, within the slack of each other.
+            assert!(coarse <= exact + 1e-8, "{solid:?}: {coarse} > {exact}");
             if coarse > 10.0 {
                 culled += 1;
             } else if exact > 10.0 {

@@ -293,10 +293,15 @@ fn clear_of_aabb_agrees_with_exact_distance() {
         } else {
             blocked += 1;
         }
-        // distance_cylinder_aabb returns the same value, or the (equal
-        // to within BOUNDS_AGREE_TOL) lower bound.
+        // distance_cylinder_aabb errs low (a certified lower bound, `certify.rs`) where GJK's
+        // point pair errs high: never above GJK, and within GJK's tolerance plus the bracket's
+        // width below it.
         let d = distance_cylinder_aabb(&c, &bx);
-        assert!((d - ex).abs() <= BOUNDS_AGREE_TOL, "case {k}: {d} vs {ex}");
+        assert!(d <= ex + BOUNDS_AGREE_TOL, "case {k}: {d} above GJK's {ex}");
+        assert!(
+            d >= ex - tol - BRACKET_TOL_REL * (1.0 + ex),
+            "case {k}: {d} vs {ex}"
+        );
     }
     assert!(
         clear > 300 && blocked > 300,
@@ -413,4 +418,106 @@ fn degenerate_and_extreme_inputs_do_not_panic() {
     };
     let ex = distance_cylinder_aabb_exact(&c, &bx);
     assert!((ex - 15.0).abs() < 1e-3, "{ex}");
+}
+
+/// The alternating projections' bracket (`certify.rs`) against parry's GJK on random cylinders
+/// and boxes whose capsule bounds disagree: GJK returns a point pair, so its value is at least the
+/// true distance, and the bracket's lower end must not exceed it; its upper end is a point pair
+/// too, at most GJK's value plus GJK's own error (measured here below 1e-4 mm on cell-sized
+/// shapes). And the steps settle almost every case: at least 97 % within the tolerance.
+#[test]
+fn projection_bracket_holds_parry_and_settles() {
+    let mut rng = Rng(12345);
+    let (mut cases, mut settled) = (0, 0);
+    while cases < 20_000 {
+        let bx = random_box(&mut rng);
+        let c = random_cylinder(&mut rng, &bx);
+        let lo = distance_capsule_aabb(&c, &bx);
+        let hi = distance_inner_capsule_aabb(&c, &bx);
+        if hi - lo <= BOUNDS_AGREE_TOL || hi <= 0.0 {
+            continue;
+        }
+        cases += 1;
+        let gjk = distance_cylinder_aabb_exact(&c, &bx);
+        let b = bracket_by_projection(&c, &bx, lo, hi, BRACKET_TOL_REL).expect("a real cylinder");
+        assert!(
+            b.lower <= gjk + 1e-9,
+            "{c:?} {bx:?}: {b:?} above GJK's {gjk}"
+        );
+        assert!(
+            b.upper >= gjk - 1e-4,
+            "{c:?} {bx:?}: {b:?} far below GJK's {gjk}"
+        );
+        assert!(
+            lo <= b.lower && b.lower <= b.upper && b.upper <= hi,
+            "{b:?} in [{lo}, {hi}]"
+        );
+        if b.upper - b.lower <= BRACKET_TOL_REL * (1.0 + b.upper) {
+            settled += 1;
+        }
+        // The node test's decision agrees with GJK's wherever GJK is sure.
+        let clearance = gjk + rng.range(-2.0, 2.0);
+        if (gjk - clearance).abs() > 1e-4 {
+            assert_eq!(
+                cylinder_clear_of_aabb(&c, &bx, clearance),
+                gjk > clearance,
+                "{c:?} {bx:?} at clearance {clearance}, GJK {gjk}"
+            );
+        }
+    }
+    assert!(
+        settled * 1000 >= cases * 995,
+        "{settled} of {cases} settled"
+    );
+}
+
+/// Hand cases the projections must get exactly (no GJK): a cylinder standing on a box face
+/// (its flat cap 7 mm above), one lying along a face (side 12 mm away), a rim over a box edge
+/// (distance from the rim circle's nearest point to the edge, by hand), and one meeting a box.
+#[test]
+fn projection_bracket_hand_cases() {
+    let bx = Aabb::new(p(0.0, 0.0, 0.0), p(100.0, 100.0, 100.0));
+    let exact = |c: &Cylinder, d: f64| {
+        let b = bracket_by_projection(c, &bx, 0.0, f64::INFINITY, 1e-12).expect("cylinder");
+        assert!(b.lower <= d + 1e-9 && b.upper >= d - 1e-9, "{b:?} vs {d}");
+        assert!(b.upper - b.lower < 1e-6, "{b:?} not settled");
+    };
+    // Standing on the top face, axis vertical, cap 7 mm above it (partly overhanging).
+    exact(
+        &Cylinder {
+            a: p(90.0, 50.0, 107.0),
+            b: p(90.0, 50.0, 300.0),
+            radius: 30.0,
+        },
+        7.0,
+    );
+    // Lying along y beside the x = 100 face, its side 12 mm off.
+    exact(
+        &Cylinder {
+            a: p(152.0, -50.0, 50.0),
+            b: p(152.0, 150.0, 50.0),
+            radius: 40.0,
+        },
+        12.0,
+    );
+    // Axis along z above the edge x = 100, z = 100 (parallel to y): cap centre at (130, 50,
+    // 120), radius 20: the rim's nearest point to the edge is (110, 50, 120), 10 mm in x and
+    // 20 mm in z from it: sqrt(500).
+    exact(
+        &Cylinder {
+            a: p(130.0, 50.0, 120.0),
+            b: p(130.0, 50.0, 400.0),
+            radius: 20.0,
+        },
+        500f64.sqrt(),
+    );
+    // Through the box.
+    exact(
+        &Cylinder {
+            a: p(50.0, 50.0, 50.0),
+            b: p(50.0, 50.0, 400.0),
+            radius: 20.0,
+        },
+        0.0,
+    );
 }
