@@ -251,7 +251,8 @@ struct TooLong;
 
 /// The expansion in words `W`: the labels when `end` was numbered, `Ok(None)` when it cannot
 /// be reached, `Err(TooLong)` when a number does not fit in `W`. Row by row
-/// ([`number_rows`]) when every step between usable nodes is a wave step, else node by node
+/// ([`number_rows`]) for 26 neighbours when every step between usable nodes is a wave step
+/// (the optimistic wave, the common one), else node by node
 /// ([`number_scalar`]). The numbers below the end's are the same either way (each node's
 /// distance in steps from the start node, plus one); of the nodes numbered like the end,
 /// either may number more or fewer, and nobody reads those (a walk back from the end only
@@ -264,13 +265,13 @@ fn number<W: Word, G: Graph + ?Sized>(
     connectivity: Connectivity,
 ) -> Result<Option<Vec<W>>, TooLong> {
     if graph.wave_steps_all() && connectivity == Connectivity::TwentySix {
-        number_rows(cs, graph, start, end, connectivity)
+        number_rows(cs, graph, start, end)
     } else {
         number_scalar(cs, graph, start, end, connectivity)
     }
 }
 
-/// [`number`] level by level on bit sets of axis-3 rows (a row: the nodes of fixed axes 1 and
+/// [`number`] for 26 neighbours, level by level on bit sets of axis-3 rows (a row: the nodes of fixed axes 1 and
 /// 2, one bit each, axis-3 index `64 j + b` at bit `b` of word `j`). The nodes next numbered
 /// are the front's neighbours (a row's front shifted by one along axis 3 and spread to the
 /// neighbouring rows) not yet decided; each of those is looked at once (free on the grid,
@@ -282,7 +283,6 @@ fn number_rows<W: Word, G: Graph + ?Sized>(
     graph: &G,
     start: Node,
     end: Node,
-    connectivity: Connectivity,
 ) -> Result<Option<Vec<W>>, TooLong> {
     let g = &cs.grid;
     let mut labels = vec![W::default(); g.len()];
@@ -302,10 +302,11 @@ fn number_rows<W: Word, G: Graph + ?Sized>(
     };
     // Decided nodes: numbered, not free, or not usable.
     let mut decided = vec![0u64; rows * words];
-    // The next level's candidates, gathered per row, and the rows that have some.
-    let mut cand = vec![0u64; rows * words];
-    let mut marked = vec![false; rows];
+    // The next level's candidates, gathered per row: the rows that have some (`touched`),
+    // their words (`words` each, in that order), and each row's place in that order.
     let mut touched: Vec<u32> = Vec::new();
+    let mut cand: Vec<u64> = Vec::new();
+    let mut slot = vec![u32::MAX; rows];
     // The front: its rows and their words (`words` per row, in the rows' order).
     let (r0, j0, b0) = (
         start_index / d2,
@@ -326,7 +327,8 @@ fn number_rows<W: Word, G: Graph + ?Sized>(
             let f = &front_bits[k * words..(k + 1) * words];
             let r = r as usize;
             let (i0, i1) = (r / d1, r % d1);
-            // Along axis 3: the row itself shifted both ways (and, for 26 neighbours, kept).
+            // Along axis 3: the row shifted both ways (its own row's neighbours); with the row
+            // itself, the neighbouring rows' ones.
             for j in 0..words {
                 let lo = (f[j] << 1) | if j > 0 { f[j - 1] >> 63 } else { 0 };
                 let hi = (f[j] >> 1) | if j + 1 < words { f[j + 1] << 63 } else { 0 };
@@ -342,37 +344,31 @@ fn number_rows<W: Word, G: Graph + ?Sized>(
                     if t1 < 0 || t1 >= d1 as i32 {
                         continue;
                     }
-                    let six = connectivity == Connectivity::Six;
-                    if six && a != 0 && b != 0 {
-                        continue; // no diagonal across rows
-                    }
                     let t = t0 as usize * d1 + t1 as usize;
-                    let c = &mut cand[t * words..(t + 1) * words];
-                    for j in 0..words {
-                        c[j] |= match (a, b, six) {
-                            (0, 0, _) => spread[j],
-                            (_, _, true) => f[j],
-                            _ => spread[j] | f[j],
-                        };
-                    }
-                    if !marked[t] {
-                        marked[t] = true;
+                    if slot[t] == u32::MAX {
+                        slot[t] = touched.len() as u32;
                         touched.push(t as u32);
+                        cand.resize(cand.len() + words, 0);
+                    }
+                    let at = slot[t] as usize * words;
+                    let c = &mut cand[at..at + words];
+                    let own = a == 0 && b == 0;
+                    for j in 0..words {
+                        c[j] |= if own { spread[j] } else { spread[j] | f[j] };
                     }
                 }
             }
         }
         // Look at the candidates not decided yet, row by row.
-        for &t in &touched {
+        for (k, &t) in touched.iter().enumerate() {
             let t = t as usize;
-            marked[t] = false;
+            slot[t] = u32::MAX;
             let (i0, i1) = (t / d1, t % d1);
             let mut any = 0u64;
             let at = next_bits.len();
             for j in 0..words {
                 let w = t * words + j;
-                let mut c = cand[w] & !decided[w];
-                cand[w] = 0;
+                let mut c = cand[k * words + j] & !decided[w];
                 if j + 1 == words {
                     c &= last_mask;
                 }
@@ -404,6 +400,7 @@ fn number_rows<W: Word, G: Graph + ?Sized>(
             }
         }
         touched.clear();
+        cand.clear();
         std::mem::swap(&mut front_rows, &mut next_rows);
         std::mem::swap(&mut front_bits, &mut next_bits);
         next_rows.clear();
