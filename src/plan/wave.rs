@@ -7,6 +7,11 @@
 //! `search`). It stops once the end node is numbered: every node numbered below n is then final,
 //! and those are the only ones a search back from the end node visits.
 //!
+//! Beyond the paper, for speed only: the 26-neighbour wave over a graph whose every step between
+//! usable nodes counts (the optimistic wave of a leg, the common one) is numbered a level at a
+//! time on bit sets of axis-3 rows (`number_rows`), the others node by node from a queue. The
+//! numbers below n are the same (each node's breadth-first distance, plus one).
+//!
 //! Beyond the paper: the wave runs on a [`Graph`], whose nodes are the grid's free nodes that the
 //! graph accepts (a leg's tool at its wrist) and whose edges are the neighbour steps it accepts
 //! (the whole-move check). So the numbers count accepted steps, and every numbered node but the
@@ -271,13 +276,13 @@ fn number<W: Word, G: Graph + ?Sized>(
     }
 }
 
-/// [`number`] for 26 neighbours, level by level on bit sets of axis-3 rows (a row: the nodes of fixed axes 1 and
-/// 2, one bit each, axis-3 index `64 j + b` at bit `b` of word `j`). The nodes next numbered
-/// are the front's neighbours (a row's front shifted by one along axis 3 and spread to the
-/// neighbouring rows) not yet decided; each of those is looked at once (free on the grid,
-/// [`Graph::node_ok_coded`]) and numbered or decided unusable. Only rows near the front are
-/// touched, and the labels are only written, so a level costs a few word operations per row
-/// it reaches and one look per node it numbers.
+/// [`number`] for 26 neighbours, level by level on bit sets of axis-3 rows (a row: the nodes of
+/// fixed axes 1 and 2, one bit each, axis-3 index `64 j + b` at bit `b` of word `j`). The nodes
+/// next numbered are the front's neighbours (a row's front shifted by one along axis 3 and
+/// spread to the neighbouring rows) not yet decided; each of those is looked at once (free on
+/// the grid, [`Graph::node_ok_coded`]) and numbered or decided unusable. Only rows near the
+/// front are touched, and the labels are only written, so a level costs a few word operations
+/// per row it reaches and one look per node it numbers.
 fn number_rows<W: Word, G: Graph + ?Sized>(
     cs: &CSpace,
     graph: &G,
@@ -613,8 +618,8 @@ mod tests {
                 let w = expand(&cs, &Holes(every), start, end, Connectivity::TwentySix)
                     .expect("joined");
                 assert_eq!(w.n(), n);
-                for i in 0..g.len() {
-                    let (l, d) = (w.label(g.node(i)), dist[i]);
+                for (i, &d) in dist.iter().enumerate() {
+                    let l = w.label(g.node(i));
                     if d < n {
                         assert_eq!(l, d, "{:?} every {every}", g.node(i));
                     } else {
