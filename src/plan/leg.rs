@@ -140,13 +140,10 @@ impl LegGraph<'_> {
     pub fn usable(&self, n: Node) -> bool {
         self.cs.is_free(n) && self.node_ok(n)
     }
-}
 
-impl Graph for LegGraph<'_> {
-    fn node_ok(&self, n: Node) -> bool {
-        if !GridCheck::tool_near(self.cs.code(n)) {
-            return true;
-        }
+    /// Whether the tool is clear at node `n` (a node whose code says it may come near a box),
+    /// looked at once per node for the leg ([`ToolMemo`]).
+    fn tool_clear(&self, n: Node) -> bool {
         let slot = self.memo.0.get(self.cs.grid.index(n));
         match slot.map(|m| m.load(Ordering::Relaxed)) {
             Some(TOOL_CLEAR) => true,
@@ -162,6 +159,24 @@ impl Graph for LegGraph<'_> {
                 clear
             }
         }
+    }
+}
+
+impl Graph for LegGraph<'_> {
+    fn node_ok(&self, n: Node) -> bool {
+        self.node_ok_coded(n, self.cs.code(n))
+    }
+
+    #[inline]
+    fn node_ok_coded(&self, n: Node, code: u8) -> bool {
+        if !GridCheck::tool_near(code) {
+            return true;
+        }
+        self.tool_clear(n)
+    }
+
+    fn wave_steps_all(&self) -> bool {
+        !self.eager
     }
 
     fn wave_step_ok(&self, a: Node, b: Node) -> bool {

@@ -7,6 +7,11 @@
 //! `search`). It stops once the end node is numbered: every node numbered below n is then final,
 //! and those are the only ones a search back from the end node visits.
 //!
+//! Beyond the paper, for speed only: the 26-neighbour wave over a graph whose every step between
+//! usable nodes counts (the optimistic wave of a leg, the common one) is numbered a level at a
+//! time on bit sets of axis-3 rows (`number_rows`), the others node by node from a queue. The
+//! numbers below n are the same (each node's breadth-first distance, plus one).
+//!
 //! Beyond the paper: the wave runs on a [`Graph`], whose nodes are the grid's free nodes that the
 //! graph accepts (a leg's tool at its wrist) and whose edges are the neighbour steps it accepts
 //! (the whole-move check). So the numbers count accepted steps, and every numbered node but the
@@ -16,8 +21,7 @@
 //! expanded, the step numbered the other), so every accepted step down from a node numbered `l`
 //! leads to `l - 1`.
 
-use crate::plan::cspace::{CSpace, Node};
-use std::collections::VecDeque;
+use crate::plan::cspace::{CSpace, Node, FREE};
 
 /// What a wave and a search walk on: which free nodes of the grid they may use and which
 /// neighbour steps between them exist.
@@ -33,6 +37,17 @@ pub trait Graph: Sync {
     fn wave_step_ok(&self, a: Node, b: Node) -> bool {
         self.step_ok(a, b)
     }
+    /// [`node_ok`](Self::node_ok) for a node whose grid code is `code` (the wave has read it
+    /// already): the same answer; a graph may decide from the code alone.
+    #[inline]
+    fn node_ok_coded(&self, n: Node, _code: u8) -> bool {
+        self.node_ok(n)
+    }
+    /// Whether [`wave_step_ok`](Self::wave_step_ok) accepts every step between usable
+    /// neighbours (then the wave need not ask it, and need not look twice at a node).
+    fn wave_steps_all(&self) -> bool {
+        false
+    }
 }
 
 /// The grid's own graph: every free node, every step between free neighbours (the paper's).
@@ -44,6 +59,9 @@ impl Graph for Open {
         true
     }
     fn step_ok(&self, _: Node, _: Node) -> bool {
+        true
+    }
+    fn wave_steps_all(&self) -> bool {
         true
     }
 }
@@ -236,9 +254,170 @@ pub fn expand<G: Graph + ?Sized>(
 /// A number outgrew the label word.
 struct TooLong;
 
-/// The expansion itself in words `W`: the labels when `end` was numbered, `Ok(None)` when it
-/// cannot be reached, `Err(TooLong)` when a number does not fit in `W`.
+/// The expansion in words `W`: the labels when `end` was numbered, `Ok(None)` when it cannot
+/// be reached, `Err(TooLong)` when a number does not fit in `W`. Row by row
+/// ([`number_rows`]) for 26 neighbours when every step between usable nodes is a wave step
+/// (the optimistic wave, the common one), else node by node
+/// ([`number_scalar`]). The numbers below the end's are the same either way (each node's
+/// distance in steps from the start node, plus one); of the nodes numbered like the end,
+/// either may number more or fewer, and nobody reads those (a walk back from the end only
+/// steps to lower numbers).
 fn number<W: Word, G: Graph + ?Sized>(
+    cs: &CSpace,
+    graph: &G,
+    start: Node,
+    end: Node,
+    connectivity: Connectivity,
+) -> Result<Option<Vec<W>>, TooLong> {
+    if graph.wave_steps_all() && connectivity == Connectivity::TwentySix {
+        number_rows(cs, graph, start, end)
+    } else {
+        number_scalar(cs, graph, start, end, connectivity)
+    }
+}
+
+/// [`number`] for 26 neighbours, level by level on bit sets of axis-3 rows (a row: the nodes of
+/// fixed axes 1 and 2, one bit each, axis-3 index `64 j + b` at bit `b` of word `j`). The nodes
+/// next numbered are the front's neighbours (a row's front shifted by one along axis 3 and
+/// spread to the neighbouring rows) not yet decided; each of those is looked at once (free on
+/// the grid, [`Graph::node_ok_coded`]) and numbered or decided unusable. Only rows near the
+/// front are touched, and the labels are only written, so a level costs a few word operations
+/// per row it reaches and one look per node it numbers.
+fn number_rows<W: Word, G: Graph + ?Sized>(
+    cs: &CSpace,
+    graph: &G,
+    start: Node,
+    end: Node,
+) -> Result<Option<Vec<W>>, TooLong> {
+    let g = &cs.grid;
+    let mut labels = vec![W::default(); g.len()];
+    let start_index = g.index(start);
+    let end_index = g.index(end);
+    labels[start_index] = W::ONE;
+    if start_index == end_index {
+        return Ok(Some(labels));
+    }
+    let [d0, d1, d2] = g.dims;
+    let words = d2.div_ceil(64);
+    let rows = d0 * d1;
+    // The bits of a row's last word that are nodes.
+    let last_mask = match d2 % 64 {
+        0 => u64::MAX,
+        r => (1u64 << r) - 1,
+    };
+    // Decided nodes: numbered, not free, or not usable.
+    let mut decided = vec![0u64; rows * words];
+    // The next level's candidates, gathered per row: the rows that have some (`touched`),
+    // their words (`words` each, in that order), and each row's place in that order.
+    let mut touched: Vec<u32> = Vec::new();
+    let mut cand: Vec<u64> = Vec::new();
+    let mut slot = vec![u32::MAX; rows];
+    // The front: its rows and their words (`words` per row, in the rows' order).
+    let (r0, j0, b0) = (
+        start_index / d2,
+        (start_index % d2) / 64,
+        (start_index % d2) % 64,
+    );
+    decided[r0 * words + j0] |= 1 << b0;
+    let mut front_rows: Vec<u32> = vec![r0 as u32];
+    let mut front_bits: Vec<u64> = vec![0; words];
+    front_bits[j0] = 1 << b0;
+    let (mut next_rows, mut next_bits) = (Vec::new(), Vec::new());
+    let mut spread = vec![0u64; words];
+    let mut level = W::ONE;
+    while !front_rows.is_empty() {
+        let next = level.next().ok_or(TooLong)?;
+        // Gather: every front row's neighbours into `cand`.
+        for (k, &r) in front_rows.iter().enumerate() {
+            let f = &front_bits[k * words..(k + 1) * words];
+            let r = r as usize;
+            let (i0, i1) = (r / d1, r % d1);
+            // Along axis 3: the row shifted both ways (its own row's neighbours); with the row
+            // itself, the neighbouring rows' ones.
+            for j in 0..words {
+                let lo = (f[j] << 1) | if j > 0 { f[j - 1] >> 63 } else { 0 };
+                let hi = (f[j] >> 1) | if j + 1 < words { f[j + 1] << 63 } else { 0 };
+                spread[j] = lo | hi;
+            }
+            for a in -1i32..=1 {
+                let t0 = i0 as i32 + a;
+                if t0 < 0 || t0 >= d0 as i32 {
+                    continue;
+                }
+                for b in -1i32..=1 {
+                    let t1 = i1 as i32 + b;
+                    if t1 < 0 || t1 >= d1 as i32 {
+                        continue;
+                    }
+                    let t = t0 as usize * d1 + t1 as usize;
+                    if slot[t] == u32::MAX {
+                        slot[t] = touched.len() as u32;
+                        touched.push(t as u32);
+                        cand.resize(cand.len() + words, 0);
+                    }
+                    let at = slot[t] as usize * words;
+                    let c = &mut cand[at..at + words];
+                    let own = a == 0 && b == 0;
+                    for j in 0..words {
+                        c[j] |= if own { spread[j] } else { spread[j] | f[j] };
+                    }
+                }
+            }
+        }
+        // Look at the candidates not decided yet, row by row.
+        for (k, &t) in touched.iter().enumerate() {
+            let t = t as usize;
+            slot[t] = u32::MAX;
+            let (i0, i1) = (t / d1, t % d1);
+            let mut any = 0u64;
+            let at = next_bits.len();
+            for j in 0..words {
+                let w = t * words + j;
+                let mut c = cand[k * words + j] & !decided[w];
+                if j + 1 == words {
+                    c &= last_mask;
+                }
+                decided[w] |= c;
+                let mut numbered = 0u64;
+                while c != 0 {
+                    let b = c.trailing_zeros() as usize;
+                    c &= c - 1;
+                    let i = t * d2 + j * 64 + b;
+                    let code = cs.code_index(i);
+                    if code & FREE == 0
+                        || !graph.node_ok_coded([i0 as i32, i1 as i32, (j * 64 + b) as i32], code)
+                    {
+                        continue;
+                    }
+                    labels[i] = next;
+                    if i == end_index {
+                        return Ok(Some(labels));
+                    }
+                    numbered |= 1 << b;
+                }
+                next_bits.push(numbered);
+                any |= numbered;
+            }
+            if any == 0 {
+                next_bits.truncate(at);
+            } else {
+                next_rows.push(t as u32);
+            }
+        }
+        touched.clear();
+        cand.clear();
+        std::mem::swap(&mut front_rows, &mut next_rows);
+        std::mem::swap(&mut front_bits, &mut next_bits);
+        next_rows.clear();
+        next_bits.clear();
+        level = next;
+    }
+    Ok(None)
+}
+
+/// [`number`] node by node: a first-in first-out queue, each node's neighbours in the order of
+/// [`offsets`], the wave's steps asked of the graph.
+fn number_scalar<W: Word, G: Graph + ?Sized>(
     cs: &CSpace,
     graph: &G,
     start: Node,
@@ -247,7 +426,7 @@ fn number<W: Word, G: Graph + ?Sized>(
 ) -> Result<Option<Vec<W>>, TooLong> {
     let g = &cs.grid;
     let mut labels = vec![W::default(); g.len()];
-    let mut queue = VecDeque::new();
+    let mut queue = std::collections::VecDeque::new();
     labels[g.index(start)] = W::ONE;
     queue.push_back(start);
     let offs = offsets(connectivity);
@@ -289,10 +468,11 @@ fn number<W: Word, G: Graph + ?Sized>(
             }
             let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
             if l == W::default() {
-                if !cs.is_free_index(i) {
+                let code = cs.code_index(i);
+                if code & FREE == 0 {
                     continue;
                 }
-                if !graph.node_ok(m) {
+                if !graph.node_ok_coded(m, code) {
                     labels[i] = W::BLOCKED;
                     continue;
                 }
@@ -316,6 +496,7 @@ fn number<W: Word, G: Graph + ?Sized>(
 mod tests {
     use super::*;
     use crate::plan::cspace::Grid;
+    use std::collections::VecDeque;
 
     fn open(n: f64) -> CSpace {
         let g = Grid::over([[0.0, n], [0.0, n], [0.0, n]], 1.0);
@@ -378,6 +559,73 @@ mod tests {
                     "{n:?} numbered {l} has no neighbour numbered {}",
                     l - 1
                 );
+            }
+        }
+    }
+
+    /// Free nodes and usable ones scattered pseudo-randomly; every step between usable nodes
+    /// exists. The wave row by row (`wave_steps_all`) and node by node (not) both give every
+    /// node below the end's number its breadth-first distance (a plain queue over the 26
+    /// neighbours), number nothing else below it, and agree on n.
+    #[test]
+    fn row_and_node_waves_number_the_breadth_first_distances() {
+        struct Holes(bool);
+        fn hash(n: Node) -> u32 {
+            let h = (n[0] as u32).wrapping_mul(73_856_093)
+                ^ (n[1] as u32).wrapping_mul(19_349_663)
+                ^ (n[2] as u32).wrapping_mul(83_492_791);
+            h.wrapping_mul(2_654_435_761) >> 7
+        }
+        impl Graph for Holes {
+            fn node_ok(&self, n: Node) -> bool {
+                hash(n) % 7 != 0
+            }
+            fn step_ok(&self, _: Node, _: Node) -> bool {
+                true
+            }
+            fn wave_steps_all(&self) -> bool {
+                self.0
+            }
+        }
+        // 70 nodes along axis 3: two words a row, the second partly used.
+        let g = Grid::over([[0.0, 23.0], [0.0, 17.0], [0.0, 69.0]], 1.0);
+        let cs = CSpace::from_fn(g, |n| hash([n[2], n[0], n[1]]) % 4 != 0);
+        let usable = |n: Node| cs.is_free(n) && Holes(true).node_ok(n);
+        let mut dist = vec![0u32; g.len()];
+        let start = (0..g.len())
+            .map(|i| g.node(i))
+            .find(|&n| usable(n))
+            .expect("a start");
+        dist[g.index(start)] = 1;
+        let mut queue = VecDeque::from([start]);
+        while let Some(n) = queue.pop_front() {
+            for o in offsets(Connectivity::TwentySix) {
+                let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
+                if g.contains(m) && usable(m) && dist[g.index(m)] == 0 {
+                    dist[g.index(m)] = dist[g.index(n)] + 1;
+                    queue.push_back(m);
+                }
+            }
+        }
+        let far = (0..g.len())
+            .max_by_key(|&i| (dist[i], i))
+            .map(|i| g.node(i));
+        let mid = (0..g.len()).find(|&i| dist[i] == dist[g.index(far.unwrap())] / 2);
+        for end in [far.unwrap(), g.node(mid.unwrap())] {
+            let n = dist[g.index(end)];
+            assert!(n > 10, "too near to test: {n}");
+            for every in [true, false] {
+                let w = expand(&cs, &Holes(every), start, end, Connectivity::TwentySix)
+                    .expect("joined");
+                assert_eq!(w.n(), n);
+                for (i, &d) in dist.iter().enumerate() {
+                    let l = w.label(g.node(i));
+                    if d < n {
+                        assert_eq!(l, d, "{:?} every {every}", g.node(i));
+                    } else {
+                        assert!(l == 0 || (l == n && d == n), "{:?}: {l}", g.node(i));
+                    }
+                }
             }
         }
     }
