@@ -353,10 +353,14 @@ impl CollisionModel {
     /// a box farther than the clearance from the shape's ball (`parts.rs`, one point placed) is
     /// passed; then the shape's enclosing box, then the exact test.
     pub fn tool_is_free(&self, axes: &[f64; 6]) -> bool {
+        self.tool.is_none() || self.tool_is_free_at(&self.flange_pose(axes))
+    }
+
+    /// [`tool_is_free`](Self::tool_is_free) with link 6 at `flange` (cell frame).
+    fn tool_is_free_at(&self, flange: &Isometry3<f64>) -> bool {
         let Some(tool) = &self.tool else {
             return true;
         };
-        let flange = self.flange_pose(axes);
         let c = self.clearance_mm;
         tool.shapes.iter().all(|s| {
             // First the shape's ball (one point placed): most boxes are farther than that. Then
@@ -370,13 +374,64 @@ impl CollisionModel {
                     return true;
                 }
                 let (solid, e) = placed.get_or_insert_with(|| {
-                    let solid = s.local.placed(&flange);
+                    let solid = s.local.placed(flange);
                     let e = solid.enclosing_aabb();
                     (solid, e)
                 });
                 gap_sq_aabb_aabb(e, &o.aabb) > c * c || solid_clear_of_box(solid, &o.aabb, c)
             })
         })
+    }
+
+    /// The tool at `axes` for a leg's search: whether it is clear ([`tool_is_free`]'s answer)
+    /// and a margin, mm: how much more than the clearance every tool shape keeps from every box
+    /// at least, from each shape's ball (`parts.rs`, one point placed per shape), after the
+    /// slack of `proof.rs`; 0 where the balls do not show the tool clear (`INFINITY` without a
+    /// tool or boxes). The exact test runs only where the margin is not positive. With
+    /// [`tool_motion_mm`](Self::tool_motion_mm), a margin `m` proves the tool clear at every
+    /// pose a straight move of motion below `m` away (`plan::leg` spreads a leg's answers so).
+    ///
+    /// [`tool_is_free`]: Self::tool_is_free
+    pub fn tool_look(&self, axes: &[f64; 6]) -> (bool, f64) {
+        let Some(tool) = &self.tool else {
+            return (true, f64::INFINITY);
+        };
+        let flange = self.flange_pose(axes);
+        let mut nearest = f64::INFINITY;
+        for s in &tool.shapes {
+            let (centre, radius) = s.ball;
+            let centre = flange * centre;
+            for o in &self.obstacles {
+                nearest = nearest.min(distance_point_aabb(&centre, &o.aabb) - radius);
+            }
+        }
+        let margin = proof::lowered(nearest) - self.clearance_mm;
+        if margin > 0.0 {
+            (true, margin)
+        } else {
+            (self.tool_is_free_at(&flange), 0.0)
+        }
+    }
+
+    /// The most any point of any tool shape moves over a straight move of `delta_deg`
+    /// (controller axes 1..6, deg; axes 1..3 signed, as the coupling of axis 3 mixes them, axes
+    /// 4..6 as magnitudes): `max_S sum_i R[i][S] |Dq_i|` over the
+    /// robot's joints (`proof.rs`), raised a little over its float value; 0 without a tool.
+    pub fn tool_motion_mm(&self, delta_deg: &[f64; 6]) -> f64 {
+        let Some(tool) = &self.tool else {
+            return 0.0;
+        };
+        let dq = self.robot.urdf_joints_deg(delta_deg);
+        tool.shapes
+            .iter()
+            .map(|s| {
+                (0..6)
+                    .map(|i| s.reach_mm[i] * dq[i].abs().to_radians())
+                    .sum::<f64>()
+            })
+            .fold(0.0, f64::max)
+            * (1.0 + 1e-9)
+            + 1e-9
     }
 
     /// Node test of a whole pose: all six axes in range (the coupled axis-3 range included),

@@ -38,6 +38,7 @@ use crate::place::PlacedPoint;
 use crate::plan::cspace::{CSpace, Node};
 use crate::precision::quantize_joints;
 use std::sync::atomic::{AtomicU8, Ordering};
+use std::sync::OnceLock;
 
 /// The wrist schedule of a leg (module doc).
 #[derive(Clone, Debug, PartialEq)]
@@ -80,6 +81,19 @@ impl WristSchedule {
         }))
     }
 
+    /// The most the progress `s` can change between two axes-1..3 positions `dq_deg` apart.
+    pub fn progress_change(&self, dq_deg: &[f64; 3]) -> f64 {
+        if self.len2 <= 0.0 {
+            return 0.0;
+        }
+        (0..3).map(|k| dq_deg[k] * self.dir[k]).sum::<f64>().abs() / self.len2
+    }
+
+    /// How far each wrist axis turns over the whole leg, deg.
+    pub fn wrist_span(&self) -> [f64; 3] {
+        std::array::from_fn(|k| (self.w_to[k] - self.w_from[k]).abs())
+    }
+
     /// All six axes at `q`.
     pub fn six(&self, q: &[f64; 3]) -> [f64; 6] {
         let w = self.wrist_at(q);
@@ -92,7 +106,7 @@ impl WristSchedule {
 /// optimistic one): per node 0 (not looked at yet), [`TOOL_CLEAR`] or [`TOOL_BLOCKED`]. Empty
 /// without a tool (then no node needs a look). Filled in any order, by any thread: the answer
 /// at a node is a pure function of the node and the leg, so a race only repeats the work.
-pub struct ToolMemo(Vec<AtomicU8>);
+pub struct ToolMemo(Vec<AtomicU8>, OnceLock<Vec<(f64, [i32; 3])>>);
 
 const TOOL_CLEAR: u8 = 1;
 const TOOL_BLOCKED: u8 = 2;
@@ -105,7 +119,7 @@ impl ToolMemo {
         } else {
             0
         };
-        ToolMemo((0..n).map(|_| AtomicU8::new(0)).collect())
+        ToolMemo((0..n).map(|_| AtomicU8::new(0)).collect(), OnceLock::new())
     }
 }
 
@@ -149,18 +163,74 @@ impl LegGraph<'_> {
             Some(TOOL_CLEAR) => true,
             Some(TOOL_BLOCKED) => false,
             _ => {
-                let clear = self.check.model().tool_is_free(&self.six(n));
+                let model = self.check.model();
+                let six = self.six(n);
+                // Cheap bounds first; where they leave a margin, it proves the nodes around too.
+                let (clear, margin) = model.tool_look(&six);
                 if let Some(m) = slot {
                     m.store(
                         if clear { TOOL_CLEAR } else { TOOL_BLOCKED },
                         Ordering::Relaxed,
                     );
                 }
+                if margin > 0.0 && margin.is_finite() {
+                    self.spread_clear(n, margin);
+                }
                 clear
             }
         }
     }
+
+    /// Marks the tool clear at the nodes around `n`, up to [`SPREAD_STEPS`] steps out on each
+    /// axis, that the tool reaches from `n` by a straight six-axis move of motion below
+    /// `margin` (`CollisionModel::tool_motion_mm`): axes 1..3 by the offset, the wrist by the
+    /// most the leg's schedule turns it over that offset plus the rounding of both wrists to
+    /// 0.001 deg. Such a node's tool keeps more than the clearance, so the exact test would
+    /// answer clear there too: the memo holds the same answers, found with fewer placements of
+    /// the tool. The offsets' motions are the same at every node of the leg: reckoned once, in
+    /// increasing order, so a node visits only the offsets it proves (and one more).
+    fn spread_clear(&self, n: Node, margin: f64) {
+        let grid = &self.cs.grid;
+        let offsets = self.memo.1.get_or_init(|| {
+            let model = self.check.model();
+            let step = grid.step_deg;
+            let span = self.schedule.wrist_span();
+            let r = SPREAD_STEPS;
+            let mut all = Vec::new();
+            for i in -r..=r {
+                for j in -r..=r {
+                    for k in -r..=r {
+                        if (i, j, k) == (0, 0, 0) {
+                            continue;
+                        }
+                        let dq = [i, j, k].map(|o| f64::from(o) * step);
+                        let ds = self.schedule.progress_change(&dq);
+                        let dw = span.map(|w| if ds > 0.0 { ds * w + 1e-3 } else { 0.0 });
+                        let motion =
+                            model.tool_motion_mm(&[dq[0], dq[1], dq[2], dw[0], dw[1], dw[2]]);
+                        all.push((motion, [i, j, k]));
+                    }
+                }
+            }
+            all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+            all
+        });
+        for &(motion, o) in offsets {
+            if motion >= margin {
+                break;
+            }
+            let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
+            if grid.contains(m) {
+                if let Some(slot) = self.memo.0.get(grid.index(m)) {
+                    slot.store(TOOL_CLEAR, Ordering::Relaxed);
+                }
+            }
+        }
+    }
 }
+
+/// How many grid steps out a tool answer is spread ([`LegGraph::spread_clear`]).
+const SPREAD_STEPS: i32 = 2;
 
 impl Graph for LegGraph<'_> {
     fn node_ok(&self, n: Node) -> bool {

@@ -343,3 +343,68 @@ fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_acce
         }
     }
 }
+
+/// The tool answers a leg spreads from a node with a margin (`LegGraph::spread_clear`) are the
+/// exact test's: visit every seventh node of a 3 deg grid in a scattered order, then every node
+/// the memo holds clear (most of them never visited) must have its tool clear by the six-axis
+/// node test, at the leg's wrist there. The spreading must have happened (clear nodes beyond
+/// those visited), and the exact test must block some nodes, so both answers are exercised.
+#[test]
+fn tool_answers_spread_from_a_margin_are_the_exact_tests() {
+    // A long leg, and a short one whose wrist turns far per grid step (the wrist's share of
+    // the spread's motion bound matters there).
+    for (from, to) in [
+        (
+            [-60.0, -10.0, 0.0, -30.0, -60.0, 20.0],
+            [60.0, 40.0, 40.0, 120.0, 70.0, 200.0],
+        ),
+        (
+            [-3.0, 10.0, 20.0, -150.0, -110.0, -300.0],
+            [3.0, 10.0, 20.0, 150.0, 110.0, 300.0],
+        ),
+    ] {
+        spread_answers_are_exact(&WristSchedule::new(&from, &to));
+    }
+}
+
+fn spread_answers_are_exact(schedule: &WristSchedule) {
+    let m = model(true, false);
+    let g = Grid::over([[-90.0, 90.0], [-60.0, 70.0], [-60.0, 70.0]], 3.0);
+    let check = m.grid_check(g.step_deg);
+    let cs = CSpace::build(g, &check);
+    let memo = ToolMemo::new(&cs, &check);
+    let graph = LegGraph {
+        cs: &cs,
+        check: &check,
+        schedule,
+        eager: false,
+        memo: &memo,
+    };
+    let mut visited = vec![false; g.len()];
+    for i in (0..g.len()).step_by(7).map(|i| (i * 7919) % g.len()) {
+        visited[i] = true;
+        let _ = graph.node_ok(g.node(i));
+    }
+    let (mut clear, mut spread, mut blocked) = (0, 0, 0);
+    for i in 0..g.len() {
+        match memo.0[i].load(Ordering::Relaxed) {
+            TOOL_CLEAR => {
+                let six = graph.six(g.node(i));
+                assert!(
+                    m.tool_is_free(&six),
+                    "marked clear, tool blocked at {six:?}"
+                );
+                clear += 1;
+                if !visited[i] {
+                    spread += 1;
+                }
+            }
+            TOOL_BLOCKED => blocked += 1,
+            _ => {}
+        }
+    }
+    assert!(
+        spread > clear / 4 && blocked > 100,
+        "{clear} clear ({spread} spread), {blocked} blocked"
+    );
+}
