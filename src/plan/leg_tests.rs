@@ -386,7 +386,7 @@ fn spread_answers_are_exact(schedule: &WristSchedule) {
         let _ = graph.node_ok(g.node(i));
     }
     let (mut clear, mut spread, mut blocked) = (0, 0, 0);
-    for i in 0..g.len() {
+    for (i, seen) in visited.iter().enumerate() {
         match memo.0[i].load(Ordering::Relaxed) {
             TOOL_CLEAR => {
                 let six = graph.six(g.node(i));
@@ -395,7 +395,7 @@ fn spread_answers_are_exact(schedule: &WristSchedule) {
                     "marked clear, tool blocked at {six:?}"
                 );
                 clear += 1;
-                if !visited[i] {
+                if !seen {
                     spread += 1;
                 }
             }
