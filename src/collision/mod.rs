@@ -401,9 +401,12 @@ impl CollisionModel {
         for s in &tool.shapes {
             let (centre, radius) = s.ball;
             let centre = flange * centre;
-            for o in &self.obstacles {
-                nearest = nearest.min(distance_point_aabb(&centre, &o.aabb) - radius);
-            }
+            let sq = self
+                .obstacles
+                .iter()
+                .map(|o| distance_sq_point_aabb(&centre, &o.aabb))
+                .fold(f64::INFINITY, f64::min);
+            nearest = nearest.min(sq.sqrt() - radius);
         }
         let margin = proof::lowered(nearest) - self.clearance_mm;
         if margin > 0.0 {
