@@ -92,7 +92,12 @@ fn run(c: &Cylinder, bx: &Aabb, mut enough: impl FnMut(f64, f64) -> bool) -> boo
     if !(len > 0.0 && r > 0.0 && len.is_finite() && r.is_finite()) {
         return false;
     }
-    let u = d / len;
+    let cyl = Solid {
+        a: c.a,
+        u: d / len,
+        len,
+        r,
+    };
     // Start from the box point nearest the axis' midpoint.
     let mid = nalgebra::center(&c.a, &c.b);
     let mut x = clamp_to_box(&mid, bx);
@@ -104,7 +109,7 @@ fn run(c: &Cylinder, bx: &Aabb, mut enough: impl FnMut(f64, f64) -> bool) -> boo
         // Projected gradient step on half the squared distance to the cylinder over the box,
         // from an extrapolated point (Nesterov); the box's clamp keeps it on the box.
         let z = clamp_to_box(&(x + (x - prev) * momentum), bx);
-        let y = project_to_cylinder(&z, &c.a, &u, len, r);
+        let y = cyl.project(&z);
         let mut x_next = clamp_to_box(&y, bx);
         let gap = x_next - y;
         let dist = gap.norm();
@@ -122,9 +127,9 @@ fn run(c: &Cylinder, bx: &Aabb, mut enough: impl FnMut(f64, f64) -> bool) -> boo
         // cylinder point on a cap, that face's or cap's normal (the separating direction at
         // the closest pair in those cases).
         let n = gap / dist;
-        let mut best = (separation(&n, c, &u, len, r, bx), n);
+        let mut best = (separation(&n, &cyl, bx), n);
         let mut consider = |m: Vector3<f64>| {
-            let g = separation(&m, c, &u, len, r, bx);
+            let g = separation(&m, &cyl, bx);
             if g > best.0 {
                 best = (g, m);
             }
@@ -132,22 +137,16 @@ fn run(c: &Cylinder, bx: &Aabb, mut enough: impl FnMut(f64, f64) -> bool) -> boo
         if let Some(face) = face_normal(&x_next, &y, bx) {
             consider(face);
         }
-        let along = (y - c.a).dot(&u);
+        let along = (y - c.a).dot(&cyl.u);
         if along <= 0.0 || along >= len {
-            consider(if along <= 0.0 { -u } else { u });
+            consider(if along <= 0.0 { -cyl.u } else { cyl.u });
         }
         lower = lower.max(best.0 - SLACK_MM);
         // The cylinder's farthest point along the best direction and the box's point nearest
         // it: another pair, exact at once where that direction is the closest pair's (a rim
         // facing a face, which the projections alone approach slowly along the rim).
         // Projected onto the cylinder: a point of it whatever the rounding of the support.
-        let y_s = project_to_cylinder(
-            &support_of_cylinder(&best.1, c, &u, len, r, bx),
-            &c.a,
-            &u,
-            len,
-            r,
-        );
+        let y_s = cyl.project(&cyl.support(&best.1, bx));
         let x_s = clamp_to_box(&y_s, bx);
         let d_s = (x_s - y_s).norm();
         if d_s + SLACK_MM < upper {
@@ -169,8 +168,8 @@ fn run(c: &Cylinder, bx: &Aabb, mut enough: impl FnMut(f64, f64) -> bool) -> boo
     false
 }
 
-/// The outward normal of the face `x` lies on when `x` (on the box) is clamped on exactly one
-/// axis towards `y`, else `None`.
+/// The face's normal pointing into the box (from `y` towards the box) when `x`, the box's
+/// point nearest `y`, lies on exactly one face (clamped on one axis only), else `None`.
 #[inline(always)]
 fn face_normal(x: &Point, y: &Point, bx: &Aabb) -> Option<Vector3<f64>> {
     let mut normal = None;
@@ -185,44 +184,12 @@ fn face_normal(x: &Point, y: &Point, bx: &Aabb) -> Option<Vector3<f64>> {
         if normal.is_some() {
             return None;
         }
-        // The normal points from the cylinder towards the box: against the face's outside.
+        // From the cylinder towards the box: against the face's outward normal.
         let mut n = Vector3::zeros();
         n[k] = -side;
         normal = Some(n);
     }
     normal
-}
-
-/// A point of the cylinder farthest along the unit `n` (a support point), chosen near the box
-/// where the farthest points form a whole cap: the cap end `n` points to, then across the axis
-/// the rim point towards `n`; when `n` is (within 1e-9) along the axis, the cap's point nearest
-/// the box point nearest the cap's centre.
-#[inline(always)]
-fn support_of_cylinder(
-    n: &Vector3<f64>,
-    c: &Cylinder,
-    u: &Vector3<f64>,
-    len: f64,
-    r: f64,
-    bx: &Aabb,
-) -> Point {
-    let nu = n.dot(u);
-    let end = if nu > 0.0 { c.a + u * len } else { c.a };
-    let across = n - u * nu;
-    // Once more against rounding: `across` must be square to the axis.
-    let across = across - u * across.dot(u);
-    let w = across.norm();
-    if w > 1e-9 {
-        return end + across * (r / w);
-    }
-    let to_box = clamp_to_box(&end, bx) - end;
-    let flat = to_box - u * to_box.dot(u);
-    let f = flat.norm();
-    if f > r {
-        end + flat * (r / f)
-    } else {
-        end + flat
-    }
 }
 
 /// The box's point nearest `p`.
@@ -235,32 +202,76 @@ fn clamp_to_box(p: &Point, bx: &Aabb) -> Point {
     )
 }
 
-/// The solid cylinder's point nearest `p` (axis from `a` along unit `u`, length `len`, radius
-/// `r`): the axial coordinate clamped into `[0, len]`, the radial vector to length `r`.
-#[inline(always)]
-fn project_to_cylinder(p: &Point, a: &Point, u: &Vector3<f64>, len: f64, r: f64) -> Point {
-    let w = p - a;
-    let t = w.dot(u);
-    let radial = w - u * t;
-    let rho = radial.norm();
-    let radial = if rho > r { radial * (r / rho) } else { radial };
-    a + u * t.clamp(0.0, len) + radial
+/// The solid cylinder as the steps use it: axis from `a` along the unit `u`, length `len`,
+/// radius `r` (both positive), mm.
+struct Solid {
+    a: Point,
+    u: Vector3<f64>,
+    len: f64,
+    r: f64,
+}
+
+impl Solid {
+    /// The cylinder's point nearest `p`: the axial coordinate clamped into `[0, len]`, the
+    /// radial vector to length `r` (the solid is an interval along its axis times a disc).
+    #[inline(always)]
+    fn project(&self, p: &Point) -> Point {
+        let w = p - self.a;
+        let t = w.dot(&self.u);
+        let radial = w - self.u * t;
+        let rho = radial.norm();
+        let radial = if rho > self.r {
+            radial * (self.r / rho)
+        } else {
+            radial
+        };
+        self.a + self.u * t.clamp(0.0, self.len) + radial
+    }
+
+    /// A point farthest along the unit `n` (a support point), chosen near the box where the
+    /// farthest points form a whole cap: the cap end `n` points to, then across the axis the
+    /// rim point towards `n`; when `n` is (within 1e-9) along the axis, the cap's point
+    /// nearest the box point nearest the cap's centre. Callers project it back onto the
+    /// cylinder ([`project`](Self::project)) against rounding.
+    #[inline(always)]
+    fn support(&self, n: &Vector3<f64>, bx: &Aabb) -> Point {
+        let u = &self.u;
+        let nu = n.dot(u);
+        let end = if nu > 0.0 {
+            self.a + u * self.len
+        } else {
+            self.a
+        };
+        let across = n - u * nu;
+        // Once more against rounding: `across` must be square to the axis.
+        let across = across - u * across.dot(u);
+        let w = across.norm();
+        if w > 1e-9 {
+            return end + across * (self.r / w);
+        }
+        let to_box = clamp_to_box(&end, bx) - end;
+        let flat = to_box - u * to_box.dot(u);
+        let f = flat.norm();
+        if f > self.r {
+            end + flat * (self.r / f)
+        } else {
+            end + flat
+        }
+    }
+
+    /// `max_{y in C} n.y` for a unit `n`: the cap end `n` leans to, and the rim across.
+    #[inline(always)]
+    fn reach_along(&self, n: &Vector3<f64>) -> f64 {
+        let nu = n.dot(&self.u);
+        n.dot(&self.a.coords) + (self.len * nu).max(0.0) + self.r * (1.0 - nu * nu).max(0.0).sqrt()
+    }
 }
 
 /// `min_{x in B} n.x - max_{y in C} n.y` for a unit `n`: the gap between the two solids'
 /// support planes across `n`, a lower bound of their distance (negative when they overlap
 /// along `n`).
 #[inline(always)]
-fn separation(
-    n: &Vector3<f64>,
-    c: &Cylinder,
-    u: &Vector3<f64>,
-    len: f64,
-    r: f64,
-    bx: &Aabb,
-) -> f64 {
-    let nu = n.dot(u);
-    let cyl = n.dot(&c.a.coords) + (len * nu).max(0.0) + r * (1.0 - nu * nu).max(0.0).sqrt();
+fn separation(n: &Vector3<f64>, cyl: &Solid, bx: &Aabb) -> f64 {
     let boxed: f64 = (0..3)
         .map(|k| {
             if n[k] > 0.0 {
@@ -270,5 +281,5 @@ fn separation(
             }
         })
         .sum();
-    boxed - cyl
+    boxed - cyl.reach_along(n)
 }
