@@ -1,8 +1,9 @@
 //! Timing of the hand-written geometry queries against parry3d.
 use criterion::{criterion_group, criterion_main, Criterion};
 use gen_rapid::geometry::{
-    cylinder_clear_of_aabb, distance_cylinder_aabb_exact, distance_segment_aabb, Aabb, Cylinder,
-    Point,
+    bracket_by_projection, clear_by_projection, cylinder_clear_of_aabb, distance_capsule_aabb,
+    distance_cylinder_aabb, distance_cylinder_aabb_exact, distance_inner_capsule_aabb,
+    distance_segment_aabb, Aabb, Cylinder, Point, BRACKET_TOL_REL,
 };
 use parry3d::math::{Pose, Vector};
 use std::hint::black_box;
@@ -85,5 +86,62 @@ fn bench(cr: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, bench);
+/// The cases of [`cases`] whose capsule bounds disagree (the band), with a clearance inside the
+/// band: where the node test used to call GJK.
+fn band(cs: &[(Cylinder, Aabb)]) -> Vec<(Cylinder, Aabb, f64)> {
+    cs.iter()
+        .filter_map(|&(c, bx)| {
+            let (lo, hi) = (
+                distance_capsule_aabb(&c, &bx),
+                distance_inner_capsule_aabb(&c, &bx),
+            );
+            (hi - lo > 1e-6).then_some((c, bx, 0.5 * (lo + hi)))
+        })
+        .collect()
+}
+
+/// The band's decision and distance: the alternating projections (`certify.rs`) against
+/// parry's GJK, which they replace in the band.
+fn bench_band(cr: &mut Criterion) {
+    let cs = band(&cases());
+    let n = cs.len();
+    assert!(n > 20, "{n} band cases");
+    let mut i = 0usize;
+    cr.bench_function("band_clear_by_projection", |bn| {
+        bn.iter(|| {
+            i = (i + 1) % n;
+            let (c, bx, cl) = &cs[i];
+            clear_by_projection(black_box(c), black_box(bx), *cl)
+        })
+    });
+    cr.bench_function("band_bracket_by_projection", |bn| {
+        bn.iter(|| {
+            i = (i + 1) % n;
+            let (c, bx, _) = &cs[i];
+            bracket_by_projection(
+                black_box(c),
+                black_box(bx),
+                0.0,
+                f64::INFINITY,
+                BRACKET_TOL_REL,
+            )
+        })
+    });
+    cr.bench_function("band_distance_cylinder_aabb", |bn| {
+        bn.iter(|| {
+            i = (i + 1) % n;
+            let (c, bx, _) = &cs[i];
+            distance_cylinder_aabb(black_box(c), black_box(bx))
+        })
+    });
+    cr.bench_function("band_gjk_exact", |bn| {
+        bn.iter(|| {
+            i = (i + 1) % n;
+            let (c, bx, _) = &cs[i];
+            distance_cylinder_aabb_exact(black_box(c), black_box(bx))
+        })
+    });
+}
+
+criterion_group!(benches, bench, bench_band);
 criterion_main!(benches);

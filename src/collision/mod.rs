@@ -73,8 +73,8 @@ pub use proof::{Clearance, DISTANCE_SLACK_REL, MOVE_FLOOR_MM};
 pub use crate::cell::Obstacle;
 use crate::cell::{Cell, Tool};
 use crate::geometry::{
-    cylinder_clear_of_aabb, distance_capsule_aabb, distance_point_aabb, distance_segment_aabb,
-    distance_sq_point_aabb, gap_sq_aabb_aabb, Aabb, Cylinder, Point, Solid,
+    distance_capsule_aabb, distance_cylinder_aabb_exact, distance_point_aabb,
+    distance_segment_aabb, distance_sq_point_aabb, gap_sq_aabb_aabb, Aabb, Cylinder, Point, Solid,
 };
 use crate::place::{Placement, PoseCheck};
 use crate::robot::{RangeViolation, Robot};
@@ -658,10 +658,9 @@ fn stands_on_its_mounting_plane(robot: &Robot, c: &crate::robot::LinkCylinder) -
 /// The node test used everywhere in this module: `true` when the cylinder keeps MORE than
 /// `clearance` from the box. After the capsule bound, the alternating projections of
 /// `geometry::certify` (a certified separating plane or point pair: nearly every case), then
-/// for what they leave open [`cylinder_clear_of_aabb`] after two cheap extra bounds that keep
-/// most queries out of parry's GJK (the capsule bounds are loose where a flat cap faces a box):
-/// a lower bound from capsules around shortened axes that still contain the rim, and an upper
-/// bound from points of the cylinder. All are valid bounds, so the answer is the same.
+/// for what they leave open two cheap extra bounds (a lower bound from capsules around
+/// shortened axes that still contain the rim, an upper bound from points of the cylinder) and
+/// parry's GJK. All are valid bounds, so the answer is the exact test's.
 #[inline]
 fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
     if distance_capsule_aabb(c, b) > clearance {
@@ -707,7 +706,8 @@ fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
             return false;
         }
     }
-    cylinder_clear_of_aabb(c, b, clearance)
+    // What the projections left open (a distance within their slack of the clearance): GJK.
+    distance_cylinder_aabb_exact(c, b) > clearance
 }
 
 /// The place stage's question: why a pose (an IK solution, or a point given as joints) cannot be

@@ -420,6 +420,3 @@ pub(crate) mod testing {
 
 #[cfg(test)]
 mod tests;
-
-pub static STATS: [std::sync::atomic::AtomicUsize; 4] =
-    [const { std::sync::atomic::AtomicUsize::new(0) }; 4];

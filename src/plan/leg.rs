@@ -21,10 +21,10 @@
 //! margin from every box (`CollisionModel::tool_look`), that margin also answers the nodes
 //! around, up to two steps out, whose straight six-axis move from the node (the wrist as the
 //! schedule turns it, plus its rounding) moves the tool less than the margin: the same answers
-//! as the exact test, found with about a fifth of the tool placements on `torch-trunk`. Its steps are the neighbour steps whose
-//! six-axis move the step check accepts (`GridCheck::step_is_safe`: node depths first, the
-//! whole-move proof where they do not suffice), asked with the two ends in index order so the
-//! answer is symmetric. Without a tool this costs nothing beyond the step check.
+//! as the exact test, found with about a fifth of the tool placements on `torch-trunk`. Its
+//! steps are the neighbour steps whose six-axis move the step check accepts
+//! (`GridCheck::step_is_safe`: node depths first, the whole-move proof where they do not
+//! suffice), asked with the two ends in index order so the answer is symmetric. Without a tool this costs nothing beyond the step check.
 //!
 //! # The leg
 //!
@@ -110,6 +110,8 @@ impl WristSchedule {
 /// optimistic one): per node 0 (not looked at yet), [`TOOL_CLEAR`] or [`TOOL_BLOCKED`]. Empty
 /// without a tool (then no node needs a look). Filled in any order, by any thread: the answer
 /// at a node is a pure function of the node and the leg, so a race only repeats the work.
+/// Beside it, made on the first spread ([`LegGraph::spread_clear`]), the neighbour offsets with
+/// the tool's motion over each, in increasing motion: the same at every node of the leg.
 pub struct ToolMemo(Vec<AtomicU8>, OnceLock<Vec<(f64, [i32; 3])>>);
 
 const TOOL_CLEAR: u8 = 1;
@@ -189,7 +191,7 @@ impl LegGraph<'_> {
     /// axis, that the tool reaches from `n` by a straight six-axis move of motion below
     /// `margin` (`CollisionModel::tool_motion_mm`): axes 1..3 by the offset, the wrist by the
     /// most the leg's schedule turns it over that offset plus the rounding of both wrists to
-    /// 0.001 deg. Such a node's tool keeps more than the clearance, so the exact test would
+    /// 0.001 deg (whenever the leg turns that wrist axis at all). Such a node's tool keeps more than the clearance, so the exact test would
     /// answer clear there too: the memo holds the same answers, found with fewer placements of
     /// the tool. The offsets' motions are the same at every node of the leg: reckoned once, in
     /// increasing order, so a node visits only the offsets it proves (and one more).
@@ -209,7 +211,9 @@ impl LegGraph<'_> {
                         }
                         let dq = [i, j, k].map(|o| f64::from(o) * step);
                         let ds = self.schedule.progress_change(&dq);
-                        let dw = span.map(|w| if ds > 0.0 { ds * w + 1e-3 } else { 0.0 });
+                        // The rounding of both wrists: 0.001 deg whenever the wrist turns on the leg at
+                        // all (two nodes of equal computed progress can still differ by an ulp).
+                        let dw = span.map(|w| if w > 0.0 { ds * w + 1e-3 } else { 0.0 });
                         let motion =
                             model.tool_motion_mm(&[dq[0], dq[1], dq[2], dw[0], dw[1], dw[2]]);
                         all.push((motion, [i, j, k]));
