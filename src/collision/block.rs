@@ -37,7 +37,7 @@
 //! free nodes shallower than measured alone, none deeper). The split points depend on the
 //! column alone, so the result does not depend on the threads.
 
-use super::grid::{GridCheck, DEPTH_LEVELS};
+use super::grid::{GridCheck, ARM_BITS, DEPTH_LEVELS};
 use super::link_clear_of_box;
 use crate::cell::Obstacle;
 use crate::geometry::{
@@ -54,9 +54,6 @@ pub(super) const SET: usize = 64;
 /// Margin (mm) of the proofs against the rounding of the distances.
 const MARGIN_MM: f64 = 1e-6;
 
-/// The arm-depth bits of a code.
-const ARM_BITS: u8 = 7;
-
 /// The tool-near bit and tool-depth bits of a code.
 const TOOL_BITS: u8 = 0x78;
 
@@ -67,6 +64,12 @@ pub(super) type Split = (Point, Vector3<f64>, Vector3<f64>);
 #[inline]
 fn at(s: &Split, q: f64) -> Point {
     let (sn, co) = q.sin_cos();
+    turned(s, sn, co)
+}
+
+/// `p(q)` of a split point from `sin q` and `cos q`.
+#[inline]
+fn turned(s: &Split, sn: f64, co: f64) -> Point {
     s.0 + s.1 * co + s.2 * sn
 }
 
@@ -87,8 +90,8 @@ impl Swept<'_> {
     fn at(&self, q: f64) -> Cylinder {
         let (sn, co) = q.sin_cos();
         Cylinder {
-            a: self.ends[0].0 + self.ends[0].1 * co + self.ends[0].2 * sn,
-            b: self.ends[1].0 + self.ends[1].1 * co + self.ends[1].2 * sn,
+            a: turned(&self.ends[0], sn, co),
+            b: turned(&self.ends[1], sn, co),
             radius: self.radius,
         }
     }

@@ -9,11 +9,10 @@
 //! checks stay per node.
 
 use super::block::{ascending, Centre, Swept, SET};
-use super::grid::{GridCheck, COLUMN_LEVELS, DEPTH_LEVELS};
+use super::grid::{GridCheck, ARM_BITS, COLUMN_LEVELS, DEPTH_LEVELS};
+use super::proof::tight_lower_bound;
 use super::{link_clear_of_box, CylData};
-use crate::geometry::{
-    distance_capsule_aabb, distance_point_aabb, distance_segment_aabb, Aabb, Cylinder, Point,
-};
+use crate::geometry::{distance_capsule_aabb, distance_point_aabb, Aabb, Cylinder, Point, Solid};
 use crate::robot::RangeViolation;
 use nalgebra::Vector3;
 
@@ -22,9 +21,6 @@ const CULL_MARGIN_MM: f64 = 1e-6;
 
 /// Obstacles per chunk of the per-column culling (the kept indices live on the stack).
 const CULL_CHUNK: usize = SET;
-
-/// The arm-depth bits of a code.
-const ARM_BITS: u8 = 7;
 
 impl GridCheck<'_> {
     /// The hot path of the grid build: the node code (`grid.rs`) of `[a1, a2, a3[k]]` for one
@@ -216,26 +212,14 @@ impl GridCheck<'_> {
 
 /// A lower bound of the cylinder–box distance good enough for the depth: the capsule distance
 /// `capsule` where it is already `deep` (the depth is then K anyway), else also the capsules
-/// about shortened axes that still hold the cap rims (as in `link_clear_of_box`), which are much
+/// about shortened axes that still hold the cap rims (`proof::tight_lower_bound`), which are much
 /// closer where a flat cap faces the box.
 #[inline]
 fn depth_bound(c: &Cylinder, b: &Aabb, capsule: f64, deep: f64) -> f64 {
     if capsule >= deep {
         return capsule;
     }
-    let d = c.b - c.a;
-    let len = d.norm();
-    let r = c.radius.max(0.0);
-    let mut best = capsule;
-    if len > 0.0 && r > 0.0 {
-        let u = d / len;
-        for k in [1.0, 2.5, 6.0] {
-            let s = (k * r).min(0.5 * len);
-            let lb = distance_segment_aabb(&(c.a + u * s), &(c.b - u * s), b) - r.hypot(s);
-            best = best.max(lb);
-        }
-    }
-    best
+    tight_lower_bound(&Solid::Cylinder(*c), b, capsule)
 }
 
 /// A lower bound of the distance between box `b` and every point a cylinder about joint 3

@@ -58,6 +58,9 @@ const CODE_TOOL_NEAR: u8 = 0x40;
 /// `K` of the node codes: depth is quantised to `0 ..= K` steps of `S / K`.
 pub const DEPTH_LEVELS: u8 = 7;
 
+/// The arm-depth bits of a code (bits 0..2).
+pub(super) const ARM_BITS: u8 = 7;
+
 /// `K` of the column bytes (one byte per link not moved by axis 3).
 pub const COLUMN_LEVELS: u8 = 100;
 

@@ -82,15 +82,15 @@ pub fn bracket_by_projection(
 }
 
 /// The steps: calls `enough(lower, upper)` after each with the bounds so far (best of all
-/// steps), stops when it says so or after [`MAX_STEPS`]; `true` when `enough` said so. `false`
-/// at once for a cylinder without radius or length, or a non-finite input.
+/// steps), stops when it says so or after [`MAX_STEPS`]. Nothing at all for a cylinder
+/// without radius or length, or a non-finite one.
 #[inline]
-fn run(c: &Cylinder, bx: &Aabb, mut enough: impl FnMut(f64, f64) -> bool) -> bool {
+fn run(c: &Cylinder, bx: &Aabb, mut enough: impl FnMut(f64, f64) -> bool) {
     let d = c.b - c.a;
     let len = d.norm();
     let r = c.radius;
     if !(len > 0.0 && r > 0.0 && len.is_finite() && r.is_finite()) {
-        return false;
+        return;
     }
     let cyl = Solid {
         a: c.a,
@@ -115,7 +115,8 @@ fn run(c: &Cylinder, bx: &Aabb, mut enough: impl FnMut(f64, f64) -> bool) -> boo
         let dist = gap.norm();
         if dist <= 0.0 || !dist.is_finite() {
             // The point pair coincides: the solids meet.
-            return enough(0.0, upper.min(dist.max(0.0) + SLACK_MM));
+            enough(0.0, upper.min(dist.max(0.0) + SLACK_MM));
+            return;
         }
         if dist + SLACK_MM < upper {
             upper = dist + SLACK_MM;
@@ -157,7 +158,7 @@ fn run(c: &Cylinder, bx: &Aabb, mut enough: impl FnMut(f64, f64) -> bool) -> boo
             }
         }
         if enough(lower.max(0.0), upper) {
-            return true;
+            return;
         }
         if x_next == x {
             break;
@@ -165,7 +166,6 @@ fn run(c: &Cylinder, bx: &Aabb, mut enough: impl FnMut(f64, f64) -> bool) -> boo
         prev = x;
         x = x_next;
     }
-    false
 }
 
 /// The face's normal pointing into the box (from `y` towards the box) when `x`, the box's

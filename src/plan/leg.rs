@@ -112,7 +112,12 @@ impl WristSchedule {
 /// at a node is a pure function of the node and the leg, so a race only repeats the work.
 /// Beside it, made on the first spread ([`LegGraph::spread_clear`]), the neighbour offsets with
 /// the tool's motion over each, in increasing motion: the same at every node of the leg.
-pub struct ToolMemo(Vec<AtomicU8>, OnceLock<Vec<(f64, [i32; 3])>>);
+pub struct ToolMemo {
+    /// Per node of the grid: 0, [`TOOL_CLEAR`] or [`TOOL_BLOCKED`].
+    answers: Vec<AtomicU8>,
+    /// The neighbour offsets and the tool's motion over each, in increasing motion.
+    spread: OnceLock<Vec<(f64, [i32; 3])>>,
+}
 
 const TOOL_CLEAR: u8 = 1;
 const TOOL_BLOCKED: u8 = 2;
@@ -125,7 +130,10 @@ impl ToolMemo {
         } else {
             0
         };
-        ToolMemo((0..n).map(|_| AtomicU8::new(0)).collect(), OnceLock::new())
+        ToolMemo {
+            answers: (0..n).map(|_| AtomicU8::new(0)).collect(),
+            spread: OnceLock::new(),
+        }
     }
 }
 
@@ -164,7 +172,7 @@ impl LegGraph<'_> {
     /// Whether the tool is clear at node `n` (a node whose code says it may come near a box),
     /// looked at once per node for the leg ([`ToolMemo`]).
     fn tool_clear(&self, n: Node) -> bool {
-        let slot = self.memo.0.get(self.cs.grid.index(n));
+        let slot = self.memo.answers.get(self.cs.grid.index(n));
         match slot.map(|m| m.load(Ordering::Relaxed)) {
             Some(TOOL_CLEAR) => true,
             Some(TOOL_BLOCKED) => false,
@@ -197,7 +205,7 @@ impl LegGraph<'_> {
     /// increasing order, so a node visits only the offsets it proves (and one more).
     fn spread_clear(&self, n: Node, margin: f64) {
         let grid = &self.cs.grid;
-        let offsets = self.memo.1.get_or_init(|| {
+        let offsets = self.memo.spread.get_or_init(|| {
             let model = self.check.model();
             let step = grid.step_deg;
             let span = self.schedule.wrist_span();
@@ -229,7 +237,7 @@ impl LegGraph<'_> {
             }
             let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
             if grid.contains(m) {
-                if let Some(slot) = self.memo.0.get(grid.index(m)) {
+                if let Some(slot) = self.memo.answers.get(grid.index(m)) {
                     slot.store(TOOL_CLEAR, Ordering::Relaxed);
                 }
             }

@@ -387,7 +387,7 @@ fn spread_answers_are_exact(schedule: &WristSchedule) {
     }
     let (mut clear, mut spread, mut blocked) = (0, 0, 0);
     for (i, seen) in visited.iter().enumerate() {
-        match memo.0[i].load(Ordering::Relaxed) {
+        match memo.answers[i].load(Ordering::Relaxed) {
             TOOL_CLEAR => {
                 let six = graph.six(g.node(i));
                 assert!(
