@@ -521,3 +521,55 @@ fn projection_bracket_hand_cases() {
         0.0,
     );
 }
+
+/// The branch-free `excess` gives the values of its definition (below: `x - lo`, above:
+/// `x - hi`, else 0), infinities included, and reads a NaN coordinate as inside (0), as the
+/// branching form did.
+#[test]
+fn excess_matches_its_definition() {
+    let by_cases = |x: f64, lo: f64, hi: f64| {
+        if x < lo {
+            x - lo
+        } else if x > hi {
+            x - hi
+        } else {
+            0.0
+        }
+    };
+    let mut rng = Rng(0x5EED_0F_E8CE55);
+    let special = [
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        1e-300,
+        1e300,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for k in 0..20_000 {
+        let pick = |rng: &mut Rng| {
+            if rng.below(4) == 0 {
+                special[rng.below(special.len() as u64) as usize]
+            } else {
+                rng.range(-1000.0, 1000.0)
+            }
+        };
+        let (u, v) = (pick(&mut rng), pick(&mut rng));
+        let (lo, hi) = (u.min(v), u.max(v));
+        let x = if k % 3 == 0 { lo } else { pick(&mut rng) };
+        let (ours, theirs) = (excess(x, lo, hi), by_cases(x, lo, hi));
+        assert!(
+            ours == theirs || (ours.is_nan() && theirs.is_nan()),
+            "x {x} in [{lo}, {hi}]: {ours} != {theirs}"
+        );
+    }
+    assert_eq!(excess(f64::NAN, 0.0, 1.0), 0.0);
+    assert_eq!(
+        distance_point_aabb(
+            &p(f64::NAN, 5.0, 0.5),
+            &Aabb::new(p(0.0, 0.0, 0.0), p(1.0, 1.0, 1.0))
+        ),
+        4.0
+    );
+}
