@@ -536,7 +536,7 @@ fn excess_matches_its_definition() {
             0.0
         }
     };
-    let mut rng = Rng(0x5EED_0F_E8CE55);
+    let mut rng = Rng(0x5EED_0FE8_CE55);
     let special = [
         0.0,
         -0.0,
