@@ -233,8 +233,10 @@ fn steps_the_run_wise_codes_accept_are_accepted_by_the_proof() {
 /// on this thread (the runs depend on the column alone).
 #[test]
 fn a_grid_built_on_threads_equals_a_column_by_column_fill() {
+    // The build goes slice by slice (link 1's checks once per slice of axis 1): it must equal
+    // the columns inspected alone, also where link 1 meets a box in some slices only.
     let mut rng = Rng(0xB10C_0003_7412_0000);
-    for _ in 0..3 {
+    for _ in 0..8 {
         let model = random_model(&mut rng);
         let grid = Grid::over([[-170.0, 170.0], [-70.0, 70.0], [-65.0, 70.0]], 5.0);
         let check = model.grid_check(grid.step_deg);
@@ -319,4 +321,63 @@ fn the_blocked_bound_holds_under_bounded_motions() {
         }
     }
     assert!(tight > 40, "{tight}");
+}
+
+/// The slice-wise build (link 1's checks once per slice of axis 1) against the node test at
+/// every node, with link 1's cylinder moved off axis 1 (the IRB 1400's stands on it, so its
+/// checks are the same in every slice and a slice mix-up would not show): boxes beside the base
+/// block some slices of axis 1 and not others, and every free bit must be `arm_is_free`'s.
+#[test]
+fn a_slice_wise_build_keeps_an_off_axis_link_1_exact() {
+    let mut rng = Rng(0x511C_E0FF_A815_0001);
+    let mut robot = Robot::irb1400();
+    let l1 = robot
+        .cylinders
+        .iter()
+        .position(|c| c.joint_index == 0)
+        .expect("the IRB 1400 has a link-1 cylinder");
+    robot.cylinders[l1].a.x += 400.0;
+    robot.cylinders[l1].b.x += 400.0;
+    let (mut slices_blocked, mut slices_open) = (0, 0);
+    for _ in 0..4 {
+        let placement = Placement {
+            base_mm: [0.0, 0.0, 0.0],
+            yaw_deg: rng.range(-180.0, 180.0),
+        };
+        // Posts around the base, as high as link 1 reaches, at random angles.
+        let boxes: Vec<Obstacle> = (0..3)
+            .map(|k| {
+                let t = rng.range(-3.2, 3.2);
+                let r = rng.range(600.0, 900.0);
+                let c = Point3::new(r * t.cos(), r * t.sin(), 300.0);
+                let h = Vector3::new(80.0, 80.0, 300.0);
+                Obstacle::new(format!("post{k}"), Aabb::new(c - h, c + h))
+            })
+            .collect();
+        let model = CollisionModel::new(&robot, placement, boxes, 10.0, None);
+        let grid = Grid::over([[-170.0, 170.0], [-70.0, 70.0], [-65.0, 70.0]], 10.0);
+        let check = model.grid_check(grid.step_deg);
+        let built = CSpace::build(grid, &check);
+        for i1 in 0..grid.dims[0] {
+            let mut any_free = false;
+            for i2 in 0..grid.dims[1] {
+                for i3 in 0..grid.dims[2] {
+                    let n = [i1 as i32, i2 as i32, i3 as i32];
+                    let axes = [0, 1, 2].map(|k| grid.value(k, n[k] as i64));
+                    let free = model.arm_is_free(&axes);
+                    assert_eq!(built.is_free(n), free, "{axes:?}");
+                    any_free |= free;
+                }
+            }
+            if any_free {
+                slices_open += 1;
+            } else {
+                slices_blocked += 1;
+            }
+        }
+    }
+    assert!(
+        slices_blocked > 0 && slices_open > 0,
+        "{slices_blocked} blocked, {slices_open} open"
+    );
 }

@@ -19,6 +19,13 @@ use nalgebra::Vector3;
 /// Safety margin (mm) of the per-column culling of boxes.
 const CULL_MARGIN_MM: f64 = 1e-6;
 
+/// Most fixed cylinders (links 1 and 2) whose slice answers are kept (more are checked per
+/// column).
+pub(super) const MAX_FIXED: usize = 8;
+
+/// Per fixed cylinder, the slice's answer for link 1 (`GridCheck::slice_bytes`).
+pub(super) type SliceBytes = [Option<Option<u8>>; MAX_FIXED];
+
 /// Obstacles per chunk of the per-column culling (the kept indices live on the stack).
 const CULL_CHUNK: usize = SET;
 
@@ -43,6 +50,81 @@ impl GridCheck<'_> {
         out: &mut [u8],
         column: &mut [u8],
     ) {
+        self.inspect_column_in(
+            a1_deg,
+            a2_deg,
+            a3_deg,
+            out,
+            column,
+            &self.slice_bytes(a1_deg),
+        );
+    }
+
+    /// [`inspect_column`](Self::inspect_column) for every column `[a1, a2[j], a3[k]]` of a slice
+    /// of axis 1 (layout of `cspace::Inspector::inspect_slice`), link 1's checks done once.
+    pub fn inspect_slice(
+        &self,
+        a1_deg: f64,
+        a2_deg: &[f64],
+        a3_deg: &[f64],
+        code: &mut [u8],
+        column: &mut [u8],
+    ) {
+        let slice = self.slice_bytes(a1_deg);
+        let width = self.column_bytes();
+        let rows = code.chunks_mut(a3_deg.len().max(1));
+        for (j, (&a2, codes)) in a2_deg.iter().zip(rows).enumerate() {
+            let at = (j * width).min(column.len());
+            let own = &mut column[at..][..width];
+            self.inspect_column_in(a1_deg, a2, a3_deg, codes, own, &slice);
+        }
+    }
+
+    /// What the cylinders of link 1 (moved by axis 1 alone) give every column of the slice at
+    /// `a1_deg`: per fixed cylinder, in the order of `fixed`, `Some(Some(byte))` (its column
+    /// byte: clear of every box), `Some(None)` (within the clearance: every node of the slice is
+    /// blocked) or `None` (a link-2 cylinder, which each column checks itself).
+    pub(super) fn slice_bytes(&self, a1_deg: f64) -> SliceBytes {
+        let model = self.model;
+        let poses = model.cell_link_poses(&[a1_deg, 0.0, 0.0]);
+        let mut bytes = [None; MAX_FIXED];
+        for (l, &i) in self.fixed.iter().enumerate().take(MAX_FIXED) {
+            if model.cyl[i].joint == 0 {
+                bytes[l] = Some(self.fixed_byte(l, &model.cylinder_in(i, &poses)));
+            }
+        }
+        bytes
+    }
+
+    /// Fixed cylinder `l` (index into `fixed`) placed as `cyl`: its column byte, or `None` when
+    /// it comes within the clearance of a box.
+    fn fixed_byte(&self, l: usize, cyl: &Cylinder) -> Option<u8> {
+        let model = self.model;
+        let c = model.clearance_mm;
+        let span = self.fixed_span[l];
+        let deep = self.deep_mm(span);
+        let mut nearest = f64::INFINITY;
+        for (_, b) in model.checked_boxes(self.fixed[l]) {
+            let lo = distance_capsule_aabb(cyl, b);
+            if lo <= c && !link_clear_of_box(cyl, b, c) {
+                return None;
+            }
+            nearest = nearest.min(depth_bound(cyl, b, lo, deep));
+        }
+        Some(self.depth_of(nearest, span, COLUMN_LEVELS))
+    }
+
+    /// [`inspect_column`](Self::inspect_column) with the slice's link-1 answers
+    /// ([`slice_bytes`](Self::slice_bytes) of the same `a1_deg`) given.
+    pub(super) fn inspect_column_in(
+        &self,
+        a1_deg: f64,
+        a2_deg: f64,
+        a3_deg: &[f64],
+        out: &mut [u8],
+        column: &mut [u8],
+        slice: &SliceBytes,
+    ) {
         let model = self.model;
         column.fill(0);
         let n = a3_deg.len().min(out.len());
@@ -58,6 +140,11 @@ impl GridCheck<'_> {
             out.fill(0);
             return;
         }
+        // A link-1 cylinder within the clearance blocks the whole slice.
+        if slice.contains(&Some(None)) {
+            out.fill(0);
+            return;
+        }
         let deepest = Self::code(false, DEPTH_LEVELS, DEPTH_LEVELS);
         for (f, &a3) in out.iter_mut().zip(a3_deg) {
             *f = match model.robot.check_range3(&[a1_deg, a2_deg, a3]) {
@@ -68,23 +155,19 @@ impl GridCheck<'_> {
         let poses = model.cell_link_poses(&[a1_deg, a2_deg, 0.0]);
         let c = model.clearance_mm;
         // Cylinders that axis 3 does not move: their test holds for the whole column, and their
-        // depths go into the column's bytes.
+        // depths go into the column's bytes (link 1's are the slice's).
         for (l, &i) in self.fixed.iter().enumerate() {
-            let cyl = model.cylinder_in(i, &poses);
-            let span = self.fixed_span[l];
-            let deep = self.deep_mm(span);
-            let mut nearest = f64::INFINITY;
-            for (_, b) in model.checked_boxes(i) {
-                let lo = distance_capsule_aabb(&cyl, b);
-                if lo <= c && !link_clear_of_box(&cyl, b, c) {
-                    out.fill(0);
-                    column.fill(0);
-                    return;
-                }
-                nearest = nearest.min(depth_bound(&cyl, b, lo, deep));
-            }
+            let answer = match slice.get(l).copied().flatten() {
+                Some(known) => known,
+                None => self.fixed_byte(l, &model.cylinder_in(i, &poses)),
+            };
+            let Some(byte) = answer else {
+                out.fill(0);
+                column.fill(0);
+                return;
+            };
             if let Some(slot) = column.get_mut(l) {
-                *slot = self.depth_of(nearest, span, COLUMN_LEVELS);
+                *slot = byte;
             }
         }
         // Frame of joint 3 (before its rotation), cell frame.

@@ -157,6 +157,29 @@ pub trait Inspector: Sync {
         code: &mut [u8],
         column: &mut [u8],
     );
+    /// The columns `[a1, a2[j], a3[k]]` of one slice of axis 1: column `j`'s codes into
+    /// `code[j * a3.len()..][..a3.len()]` and its own bytes into
+    /// `column[j * column_bytes()..][..column_bytes()]`. By default column by column; an
+    /// inspector overrides it to do once what the whole slice shares.
+    fn inspect_slice(
+        &self,
+        a1_deg: f64,
+        a2_deg: &[f64],
+        a3_deg: &[f64],
+        code: &mut [u8],
+        column: &mut [u8],
+    ) {
+        let width = self.column_bytes();
+        for (j, (&a2, codes)) in a2_deg
+            .iter()
+            .zip(code.chunks_mut(a3_deg.len().max(1)))
+            .enumerate()
+        {
+            let at = (j * width).min(column.len());
+            let own = &mut column[at..][..width];
+            self.inspect_column(a1_deg, a2, a3_deg, codes, own);
+        }
+    }
 }
 
 /// The inspected grid.
@@ -199,6 +222,7 @@ impl CSpace {
             .unwrap_or(1)
             .min(grid.dims[0].max(1));
         let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
+        let a2: Vec<f64> = (0..grid.dims[1] as i64).map(|i| grid.value(1, i)).collect();
         let slices_per_thread = grid.dims[0].div_ceil(threads);
         // Per-column bytes in chunks that match the code chunks (never empty, for `zip`).
         let col_slice = (grid.dims[1] * width).max(1);
@@ -210,7 +234,7 @@ impl CSpace {
                 .zip(columns.chunks_mut(slices_per_thread * col_slice))
                 .enumerate()
             {
-                let a3 = &a3;
+                let (a2, a3) = (&a2, &a3);
                 s.spawn(move || {
                     for (j, (slab, colslab)) in chunk
                         .chunks_mut(slice)
@@ -218,10 +242,13 @@ impl CSpace {
                         .enumerate()
                     {
                         let a1 = grid.value(0, (t * slices_per_thread + j) as i64);
-                        for (i2, codes) in slab.chunks_mut(grid.dims[2]).enumerate() {
-                            let own = &mut colslab[(i2 * width).min(col_slice)..][..width];
-                            inspector.inspect_column(a1, grid.value(1, i2 as i64), a3, codes, own);
-                        }
+                        inspector.inspect_slice(
+                            a1,
+                            a2,
+                            a3,
+                            slab,
+                            &mut colslab[..grid.dims[1] * width],
+                        );
                         progress.advance(1);
                     }
                 });

@@ -315,6 +315,16 @@ impl cspace::Inspector for GridCheck<'_> {
     ) {
         GridCheck::inspect_column(self, a1_deg, a2_deg, a3_deg, code, column)
     }
+    fn inspect_slice(
+        &self,
+        a1_deg: f64,
+        a2_deg: &[f64],
+        a3_deg: &[f64],
+        code: &mut [u8],
+        column: &mut [u8],
+    ) {
+        GridCheck::inspect_slice(self, a1_deg, a2_deg, a3_deg, code, column)
+    }
 }
 
 /// Plans the route through `points` (at least two), in order, on the inspected grid `cs` of the
