@@ -146,11 +146,25 @@ impl GridCheck<'_> {
             return;
         }
         let deepest = Self::code(false, DEPTH_LEVELS, DEPTH_LEVELS);
-        for (f, &a3) in out.iter_mut().zip(a3_deg) {
-            *f = match model.robot.check_range3(&[a1_deg, a2_deg, a3]) {
-                Ok(()) => deepest,
-                Err(_) => 0,
-            };
+        // Axes 1 and 2 are in range (above): per node axis 3 and the coupled range, which on
+        // ascending values (the grid's) hold on one run of the column, found by bisection.
+        let runs = ascending(&a3_deg[..n]);
+        if runs {
+            let robot = &model.robot;
+            let first = a3_deg[..n].partition_point(|&v| robot.axis3_below(a2_deg, v));
+            let end = a3_deg[..n].partition_point(|&v| !robot.axis3_above(a2_deg, v));
+            out.fill(0);
+            if first < end {
+                out[first..end].fill(deepest);
+            }
+        } else {
+            for (f, &a3) in out.iter_mut().zip(a3_deg) {
+                *f = if model.robot.axis3_in_range(a2_deg, a3) {
+                    deepest
+                } else {
+                    0
+                };
+            }
         }
         let poses = model.cell_link_poses(&[a1_deg, a2_deg, 0.0]);
         let c = model.clearance_mm;
@@ -182,7 +196,6 @@ impl GridCheck<'_> {
         };
         // Runs of the column are proven at once where they can be (`block.rs`); that needs the
         // axis-3 values in ascending order (the grid's are), else every node is looked at.
-        let runs = ascending(&a3_deg[..n]);
         for (i, cd) in model.cyl.iter().enumerate().filter(|(_, d)| d.joint == 2) {
             let span = self.arm_span;
             let deep = self.deep_mm(span);

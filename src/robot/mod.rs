@@ -208,6 +208,30 @@ impl Robot {
         Ok(())
     }
 
+    /// The part of [`check_range3`](Self::check_range3) that axis 3 changes, for axes 1 and 2
+    /// known to be in range: axis 3's own range and the coupled one. The grid's per-node check
+    /// (axes 1 and 2 are checked once per column).
+    #[inline]
+    pub fn axis3_in_range(&self, a2_deg: f64, a3_deg: f64) -> bool {
+        !self.axis3_below(a2_deg, a3_deg) && !self.axis3_above(a2_deg, a3_deg)
+    }
+
+    /// Whether axis 3 at `a3_deg` lies below its own range or below the coupled one (with axis
+    /// 2 at `a2_deg`). Monotone in `a3_deg`: true, then false, as it grows.
+    #[inline]
+    pub fn axis3_below(&self, a2_deg: f64, a3_deg: f64) -> bool {
+        a3_deg < self.controller.axes[2].min_deg
+            || matches!(self.controller.coupled_axis3_deg, Some([lo, _]) if a3_deg - a2_deg < lo)
+    }
+
+    /// Whether axis 3 at `a3_deg` lies above its own range or above the coupled one. Monotone
+    /// in `a3_deg`: false, then true, as it grows.
+    #[inline]
+    pub fn axis3_above(&self, a2_deg: f64, a3_deg: f64) -> bool {
+        a3_deg > self.controller.axes[2].max_deg
+            || matches!(self.controller.coupled_axis3_deg, Some([_, hi]) if a3_deg - a2_deg > hi)
+    }
+
     /// Checks axes 4..6 alone against the controller ranges (`robot.wrist`).
     pub fn check_wrist(&self, wrist_deg: &[f64; 3]) -> Result<(), RangeViolation> {
         for (k, &v) in wrist_deg.iter().enumerate() {
@@ -283,6 +307,52 @@ impl Robot {
 
 #[cfg(test)]
 mod tests {
+    /// `axis3_in_range` answers as `check_range3` wherever axes 1 and 2 are in range: values
+    /// about every bound, NaN included.
+    #[test]
+    fn axis3_in_range_agrees_with_check_range3() {
+        let robot = super::Robot::irb1400();
+        let ax = &robot.controller.axes;
+        let near = |lo: f64, hi: f64| {
+            [
+                lo - 1.0,
+                lo - 1e-9,
+                lo,
+                lo + 1e-9,
+                0.5 * (lo + hi),
+                hi - 1e-9,
+                hi,
+                hi + 1e-9,
+                hi + 1.0,
+            ]
+        };
+        let mut a3s = near(ax[2].min_deg, ax[2].max_deg).to_vec();
+        a3s.push(f64::NAN);
+        let (mut inside, mut outside) = (0, 0);
+        for a1 in near(ax[0].min_deg, ax[0].max_deg) {
+            for a2 in near(ax[1].min_deg, ax[1].max_deg) {
+                let own = |v: f64, k: usize| v >= ax[k].min_deg && v <= ax[k].max_deg;
+                if !own(a1, 0) || !own(a2, 1) {
+                    continue;
+                }
+                let mut values = a3s.clone();
+                if let Some([lo, hi]) = robot.controller.coupled_axis3_deg {
+                    values.extend(near(lo + a2, hi + a2));
+                }
+                for a3 in values {
+                    let whole = robot.check_range3(&[a1, a2, a3]).is_ok();
+                    assert_eq!(robot.axis3_in_range(a2, a3), whole, "{a1} {a2} {a3}");
+                    if whole {
+                        inside += 1;
+                    } else {
+                        outside += 1;
+                    }
+                }
+            }
+        }
+        assert!(inside > 100 && outside > 100, "{inside} {outside}");
+    }
+
     use super::*;
 
     fn close(a: f64, b: f64, tol: f64) -> bool {
