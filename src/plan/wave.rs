@@ -48,6 +48,13 @@ pub trait Graph: Sync {
     fn wave_steps_all(&self) -> bool {
         false
     }
+    /// The code bits on which [`node_ok_coded`](Self::node_ok_coded) may depend: a free node
+    /// whose code has none of them set must be usable (`node_ok_coded` true), and then the
+    /// row-by-row wave numbers it without asking. `None` (the default): every free node is
+    /// asked. A graph whose answer depends on more than its code's bits keeps `None`.
+    fn look_bits(&self) -> Option<u8> {
+        None
+    }
 }
 
 /// The grid's own graph: every free node, every step between free neighbours (the paper's).
@@ -63,6 +70,9 @@ impl Graph for Open {
     }
     fn wave_steps_all(&self) -> bool {
         true
+    }
+    fn look_bits(&self) -> Option<u8> {
+        Some(0)
     }
 }
 
@@ -282,7 +292,11 @@ fn number<W: Word, G: Graph + ?Sized>(
 /// spread to the neighbouring rows) not yet decided; each of those is looked at once (free on
 /// the grid, [`Graph::node_ok_coded`]) and numbered or decided unusable. Only rows near the
 /// front are touched, and the labels are only written, so a level costs a few word operations
-/// per row it reaches and one look per node it numbers.
+/// per row it reaches and one look per node it numbers. When the graph names the code bits its
+/// answer depends on ([`Graph::look_bits`]), the free nodes without them come a word at a time
+/// from the grid's row bit set ([`CSpace::row_bits`]): numbered without a look; only the other
+/// candidates (blocked, or with those bits) are looked at one by one. No node past the end in
+/// the end's word is looked at.
 fn number_rows<W: Word, G: Graph + ?Sized>(
     cs: &CSpace,
     graph: &G,
@@ -305,6 +319,13 @@ fn number_rows<W: Word, G: Graph + ?Sized>(
         0 => u64::MAX,
         r => (1u64 << r) - 1,
     };
+    // The end's word, its bit, and its bits up to the end's.
+    let end_word = (end_index / d2) * words + (end_index % d2) / 64;
+    let end_bit = 1u64 << ((end_index % d2) % 64);
+    let upto_end = end_bit | (end_bit - 1);
+    // The free nodes usable without a look, when the graph says which those are.
+    let rows_kept = graph.look_bits().map(|bits| cs.row_bits(bits));
+    let plain = rows_kept.as_deref().map(|r| r.plain.as_slice());
     // Decided nodes: numbered, not free, or not usable.
     let mut decided = vec![0u64; rows * words];
     // The next level's candidates, gathered per row: the rows that have some (`touched`),
@@ -377,23 +398,34 @@ fn number_rows<W: Word, G: Graph + ?Sized>(
                 if j + 1 == words {
                     c &= last_mask;
                 }
+                if w == end_word && c & end_bit != 0 {
+                    c &= upto_end;
+                }
                 decided[w] |= c;
-                let mut numbered = 0u64;
-                while c != 0 {
-                    let b = c.trailing_zeros() as usize;
-                    c &= c - 1;
-                    let i = t * d2 + j * 64 + b;
-                    let code = cs.code_index(i);
-                    if code & FREE == 0
-                        || !graph.node_ok_coded([i0 as i32, i1 as i32, (j * 64 + b) as i32], code)
+                let base = t * d2 + j * 64;
+                // The usable candidates: the plain ones at once, the others looked at.
+                let (mut numbered, mut look) = match &plain {
+                    Some(p) => (c & p[w], c & !p[w]),
+                    None => (0, c),
+                };
+                while look != 0 {
+                    let b = look.trailing_zeros() as usize;
+                    look &= look - 1;
+                    let code = cs.code_index(base + b);
+                    if code & FREE != 0
+                        && graph.node_ok_coded([i0 as i32, i1 as i32, (j * 64 + b) as i32], code)
                     {
-                        continue;
+                        numbered |= 1 << b;
                     }
-                    labels[i] = next;
-                    if i == end_index {
-                        return Ok(Some(labels));
-                    }
-                    numbered |= 1 << b;
+                }
+                let mut m = numbered;
+                while m != 0 {
+                    let b = m.trailing_zeros() as usize;
+                    m &= m - 1;
+                    labels[base + b] = next;
+                }
+                if w == end_word && numbered & end_bit != 0 {
+                    return Ok(Some(labels));
                 }
                 next_bits.push(numbered);
                 any |= numbered;
@@ -628,6 +660,127 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Random codes: free or blocked, and free nodes with or without a "look" bit (0x40, like
+    /// the tool-near bit); a graph that refuses a third of the nodes with the bit, pseudo-
+    /// randomly, and accepts every other free node. The row wave that numbers the nodes without
+    /// the bit from the grid's row bit set (`look_bits` `Some(0x40)`) and the one that looks at
+    /// every node (`None`) give every node below the end's number its breadth-first distance
+    /// over the usable nodes. A graph that wrongly says its answer needs no bits
+    /// (`Some(0)`) numbers refused nodes, and the same check catches it.
+    #[test]
+    fn row_wave_from_the_row_bits_numbers_like_the_look_at_every_node() {
+        fn hash(n: Node, salt: u32) -> u32 {
+            let h = (n[0] as u32).wrapping_mul(73_856_093)
+                ^ (n[1] as u32).wrapping_mul(19_349_663)
+                ^ (n[2] as u32).wrapping_mul(83_492_791)
+                ^ salt.wrapping_mul(2_246_822_519);
+            h.wrapping_mul(2_654_435_761) >> 5
+        }
+        struct Codes;
+        impl crate::plan::cspace::Inspector for Codes {
+            fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], code: &mut [u8], _: &mut [u8]) {
+                for (c, &z) in code.iter_mut().zip(a3) {
+                    let h = hash([a1 as i32, a2 as i32, z as i32], 1);
+                    *c = if h % 5 == 0 {
+                        0
+                    } else {
+                        FREE | (h >> 8) as u8 & 0x7f
+                    };
+                }
+            }
+        }
+        struct Tool<'a>(&'a CSpace, Option<u8>);
+        impl Graph for Tool<'_> {
+            fn node_ok(&self, n: Node) -> bool {
+                self.node_ok_coded(n, self.0.code(n))
+            }
+            fn node_ok_coded(&self, n: Node, code: u8) -> bool {
+                code & 0x40 == 0 || hash(n, 2) % 3 != 0
+            }
+            fn step_ok(&self, _: Node, _: Node) -> bool {
+                true
+            }
+            fn wave_steps_all(&self) -> bool {
+                true
+            }
+            fn look_bits(&self) -> Option<u8> {
+                self.1
+            }
+        }
+        // 130 nodes along axis 3: three words a row, the last partly used.
+        let g = Grid::over([[0.0, 19.0], [0.0, 15.0], [0.0, 129.0]], 1.0);
+        let cs = CSpace::build(g, &Codes);
+        let looked = (0..g.len())
+            .filter(|&i| cs.code_index(i) & (FREE | 0x40) == FREE | 0x40)
+            .count();
+        assert!(looked > g.len() / 4, "too few nodes with the bit: {looked}");
+        let usable = |n: Node| cs.is_free(n) && Tool(&cs, None).node_ok(n);
+        let start = (0..g.len())
+            .map(|i| g.node(i))
+            .find(|&n| usable(n))
+            .expect("a start");
+        let dist = bfs(&g, start, usable);
+        let far = (0..g.len()).max_by_key(|&i| (dist[i], i)).expect("nodes");
+        let mid = (0..g.len())
+            .find(|&i| dist[i] == dist[far] / 2)
+            .expect("a middle");
+        // The labels below n against the distances: how many disagree.
+        let wrong = |w: &Wave, n: u32| {
+            (0..g.len())
+                .filter(|&i| {
+                    let l = w.label(g.node(i));
+                    if dist[i] < n {
+                        l != dist[i]
+                    } else {
+                        !(l == 0 || (l == n && dist[i] == n))
+                    }
+                })
+                .count()
+        };
+        for end in [far, mid] {
+            let n = dist[end];
+            assert!(n > 10, "too near to test: {n}");
+            for bits in [Some(0x40), None] {
+                let w = expand(
+                    &cs,
+                    &Tool(&cs, bits),
+                    start,
+                    g.node(end),
+                    Connectivity::TwentySix,
+                )
+                .expect("joined");
+                assert_eq!(w.n(), n, "{bits:?}");
+                assert_eq!(wrong(&w, n), 0, "{bits:?}");
+            }
+            let lying = expand(
+                &cs,
+                &Tool(&cs, Some(0)),
+                start,
+                g.node(end),
+                Connectivity::TwentySix,
+            );
+            assert!(lying.is_none_or(|w| w.n() != n || wrong(&w, n) > 0));
+        }
+    }
+
+    /// Breadth-first distances (plus one, 0 = not reached) over the usable nodes of `g` and
+    /// their 26 neighbours, from `start`.
+    fn bfs(g: &Grid, start: Node, usable: impl Fn(Node) -> bool) -> Vec<u32> {
+        let mut dist = vec![0u32; g.len()];
+        dist[g.index(start)] = 1;
+        let mut queue = VecDeque::from([start]);
+        while let Some(n) = queue.pop_front() {
+            for o in offsets(Connectivity::TwentySix) {
+                let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
+                if g.contains(m) && usable(m) && dist[g.index(m)] == 0 {
+                    dist[g.index(m)] = dist[g.index(n)] + 1;
+                    queue.push_back(m);
+                }
+            }
+        }
+        dist
     }
 
     /// A serpentine corridor over 80 000 steps long: the numbers outgrow the 16-bit words and
