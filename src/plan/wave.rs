@@ -22,6 +22,7 @@
 //! leads to `l - 1`.
 
 use crate::plan::cspace::{CSpace, Node, FREE};
+use std::sync::Mutex;
 
 /// What a wave and a search walk on: which free nodes of the grid they may use and which
 /// neighbour steps between them exist.
@@ -91,7 +92,7 @@ impl<F: Fn(Node, Node) -> bool + Sync> Graph for F {
 /// numbered 65 533 is expanded, i.e. the end's number would be 65 534 or more (or the end is
 /// unreachable from a component that deep, numbered again only to return `None`). The numbers
 /// are the same either way.
-trait Word: Copy + PartialEq + Default {
+trait Word: Copy + PartialEq + Default + Send + 'static {
     /// The node was looked at and may not be used.
     const BLOCKED: Self;
     /// The node may be used but no accepted step has reached it yet.
@@ -102,7 +103,12 @@ trait Word: Copy + PartialEq + Default {
     fn wide(self) -> u32;
     /// The next number, `None` when it would reach the sentinels.
     fn next(self) -> Option<Self>;
+    /// The cleared label buffers kept for the next waves ([`Kept`]).
+    fn pool() -> &'static Mutex<Vec<Vec<Self>>>;
 }
+
+static POOL16: Mutex<Vec<Vec<u16>>> = Mutex::new(Vec::new());
+static POOL32: Mutex<Vec<Vec<u32>>> = Mutex::new(Vec::new());
 
 impl Word for u16 {
     const BLOCKED: u16 = u16::MAX;
@@ -113,6 +119,9 @@ impl Word for u16 {
     }
     fn next(self) -> Option<u16> {
         (self + 1 < Self::CHECKED).then_some(self + 1)
+    }
+    fn pool() -> &'static Mutex<Vec<Vec<u16>>> {
+        &POOL16
     }
 }
 
@@ -126,13 +135,82 @@ impl Word for u32 {
     fn next(self) -> Option<u32> {
         (self + 1 < Self::CHECKED).then_some(self + 1)
     }
+    fn pool() -> &'static Mutex<Vec<Vec<u32>>> {
+        &POOL32
+    }
+}
+
+/// How many cleared label buffers are kept (a leg's two waves).
+const POOL_BUFFERS: usize = 2;
+
+/// The largest label buffer kept, bytes. Below it the allocator would hand a freed buffer back
+/// and clear it whole (or fault fresh pages in); above it a fresh buffer's pages cost memory
+/// only where the wave writes, which a kept buffer, written by earlier waves, would not.
+const POOL_MAX_BYTES: usize = 64 << 20;
+
+/// A wave's label words, and where the row wave may have written them (`written`: a per-row bit
+/// set, `row_words` words a row of `d2` nodes; empty for the node-by-node wave). Dropped, a row
+/// wave's buffer is cleared where written and kept for the next wave over a grid of the same
+/// size (so a wave neither clears nor faults in a whole buffer): outputs do not depend on it.
+#[derive(Clone, Debug)]
+struct Kept<W: Word> {
+    words: Vec<W>,
+    written: Vec<u64>,
+    row_words: usize,
+    d2: usize,
+}
+
+impl<W: Word> Kept<W> {
+    /// Labels written node by node (not kept).
+    fn plain(words: Vec<W>) -> Kept<W> {
+        Kept {
+            words,
+            written: Vec::new(),
+            row_words: 0,
+            d2: 0,
+        }
+    }
+
+    /// A zeroed buffer of `len` words: a kept one, else a new one.
+    fn zeroed(len: usize) -> Vec<W> {
+        if len * std::mem::size_of::<W>() <= POOL_MAX_BYTES {
+            let mut pool = W::pool().lock().unwrap_or_else(|p| p.into_inner());
+            while let Some(v) = pool.pop() {
+                if v.len() == len {
+                    return v;
+                }
+            }
+        }
+        vec![W::default(); len]
+    }
+}
+
+impl<W: Word> Drop for Kept<W> {
+    fn drop(&mut self) {
+        if self.written.is_empty() || self.words.len() * std::mem::size_of::<W>() > POOL_MAX_BYTES {
+            return;
+        }
+        for (w, &bits) in self.written.iter().enumerate() {
+            let base = (w / self.row_words) * self.d2 + (w % self.row_words) * 64;
+            let mut m = bits;
+            while m != 0 {
+                let b = m.trailing_zeros() as usize;
+                m &= m - 1;
+                self.words[base + b] = W::default();
+            }
+        }
+        let mut pool = W::pool().lock().unwrap_or_else(|p| p.into_inner());
+        if pool.len() < POOL_BUFFERS {
+            pool.push(std::mem::take(&mut self.words));
+        }
+    }
 }
 
 /// The labels of a wave, in the narrowest word that held them.
 #[derive(Clone, Debug)]
 enum Labels {
-    Narrow(Vec<u16>),
-    Wide(Vec<u32>),
+    Narrow(Kept<u16>),
+    Wide(Kept<u32>),
 }
 
 impl Labels {
@@ -140,8 +218,8 @@ impl Labels {
     #[inline]
     fn number(&self, i: usize) -> u32 {
         match self {
-            Labels::Narrow(l) => number_of(l[i]),
-            Labels::Wide(l) => number_of(l[i]),
+            Labels::Narrow(l) => number_of(l.words[i]),
+            Labels::Wide(l) => number_of(l.words[i]),
         }
     }
 }
@@ -278,7 +356,7 @@ fn number<W: Word, G: Graph + ?Sized>(
     start: Node,
     end: Node,
     connectivity: Connectivity,
-) -> Result<Option<Vec<W>>, TooLong> {
+) -> Result<Option<Kept<W>>, TooLong> {
     if graph.wave_steps_all() && connectivity == Connectivity::TwentySix {
         // The row's word count as a constant where it is small (the loops over a row's words
         // unrolled): 3 at 1 deg, 5 at 0.5 deg, 9 at 0.25 deg over the IRB 1400's axis 3.
@@ -312,15 +390,17 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
     graph: &G,
     start: Node,
     end: Node,
-) -> Result<Option<Vec<W>>, TooLong> {
+) -> Result<Option<Kept<W>>, TooLong> {
     let g = &cs.grid;
-    let mut labels = vec![W::default(); g.len()];
     let start_index = g.index(start);
     let end_index = g.index(end);
-    labels[start_index] = W::ONE;
     if start_index == end_index {
+        let mut labels = Kept::plain(vec![W::default(); g.len()]);
+        labels.words[start_index] = W::ONE;
         return Ok(Some(labels));
     }
+    let mut labels: Vec<W> = Kept::zeroed(g.len());
+    labels[start_index] = W::ONE;
     let [d0, d1, d2] = g.dims;
     let words = if K == 0 { d2.div_ceil(64) } else { K };
     debug_assert_eq!(words, d2.div_ceil(64));
@@ -356,9 +436,20 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
     front_bits[j0] = 1 << b0;
     let (mut next_rows, mut next_bits) = (Vec::new(), Vec::new());
     let mut spread = vec![0u64; words];
+    // Every way out: the labels with where they were written (`decided` holds every node
+    // numbered).
+    let kept = |labels, written| Kept {
+        words: labels,
+        written,
+        row_words: words,
+        d2,
+    };
     let mut level = W::ONE;
     while !front_rows.is_empty() {
-        let next = level.next().ok_or(TooLong)?;
+        let Some(next) = level.next() else {
+            drop(kept(labels, decided));
+            return Err(TooLong);
+        };
         // Gather: every front row's neighbours into `cand`: the row spread by one along axis 3
         // (itself included: it is decided) into the 3 x 3 rows around it, each run of rows
         // along axis 2 a run of words.
@@ -428,7 +519,7 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
                     labels[base + b] = next;
                 }
                 if w == end_word && numbered & end_bit != 0 {
-                    return Ok(Some(labels));
+                    return Ok(Some(kept(labels, decided)));
                 }
                 next_bits.push(numbered);
                 any |= numbered;
@@ -446,6 +537,7 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
         next_bits.clear();
         level = next;
     }
+    drop(kept(labels, decided));
     Ok(None)
 }
 
@@ -457,7 +549,7 @@ fn number_scalar<W: Word, G: Graph + ?Sized>(
     start: Node,
     end: Node,
     connectivity: Connectivity,
-) -> Result<Option<Vec<W>>, TooLong> {
+) -> Result<Option<Kept<W>>, TooLong> {
     let g = &cs.grid;
     let mut labels = vec![W::default(); g.len()];
     let mut queue = std::collections::VecDeque::new();
@@ -523,7 +615,7 @@ fn number_scalar<W: Word, G: Graph + ?Sized>(
             queue.push_back(m);
         }
     }
-    Ok(found.then_some(labels))
+    Ok(found.then_some(Kept::plain(labels)))
 }
 
 #[cfg(test)]
@@ -768,6 +860,36 @@ mod tests {
                 assert!(lying.is_none_or(|w| w.n() != n || wrong(&w, n) > 0));
             }
         }
+    }
+
+    /// A row wave's buffer is kept for the next wave when dropped, cleared where it was
+    /// written: a wave that numbers nearly the whole grid, then short waves over the same grid
+    /// (which take its buffer) number nothing past their end's level, and every node below it
+    /// its Chebyshev distance plus one.
+    #[test]
+    fn a_kept_label_buffer_is_cleared_for_the_next_wave() {
+        let cs = open_dims(13, 11, 70);
+        let far = expand(&cs, &Open, [0, 0, 0], [13, 11, 70], Connectivity::TwentySix);
+        assert_eq!(far.map(|w| w.numbered()), Some(cs.grid.len()));
+        for (start, end) in [([0, 0, 0], [2, 1, 1]), ([13, 11, 70], [11, 11, 69])] {
+            let w = expand(&cs, &Open, start, end, Connectivity::TwentySix).expect("open");
+            let n = w.n();
+            for i in 0..cs.grid.len() {
+                let m = cs.grid.node(i);
+                let d = (0..3).map(|k| (m[k] - start[k]).abs()).max().unwrap_or(0) as u32 + 1;
+                let l = w.label(m);
+                if d < n {
+                    assert_eq!(l, d, "{m:?}");
+                } else {
+                    assert!(l == 0 || (l == n && d == n), "{m:?}: {l}");
+                }
+            }
+        }
+    }
+
+    fn open_dims(a: usize, b: usize, c: usize) -> CSpace {
+        let g = Grid::over([[0.0, a as f64], [0.0, b as f64], [0.0, c as f64]], 1.0);
+        CSpace::from_fn(g, |_| true)
     }
 
     /// Breadth-first distances (plus one, 0 = not reached) over the usable nodes of `g` and
