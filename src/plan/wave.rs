@@ -10,7 +10,11 @@
 //! Beyond the paper, for speed only: the 26-neighbour wave over a graph whose every step between
 //! usable nodes counts (the optimistic wave of a leg, the common one) is numbered a level at a
 //! time on bit sets of axis-3 rows (`number_rows`), the others node by node from a queue. The
-//! numbers below n are the same (each node's breadth-first distance, plus one).
+//! numbers below n are the same (each node's breadth-first distance, plus one). In the row wave,
+//! the free nodes a graph need not look at ([`Graph::look_bits`]: for a leg, those whose code
+//! says the tool stays clear) come a word at a time from the grid's row bit set
+//! ([`CSpace::row_bits`]), and a dropped wave's label buffer is cleared where it was written and
+//! kept for the next wave (no 2-byte-a-node buffer zeroed or faulted in per wave).
 //!
 //! Beyond the paper: the wave runs on a [`Graph`], whose nodes are the grid's free nodes that the
 //! graph accepts (a leg's tool at its wrist) and whose edges are the neighbour steps it accepts
@@ -139,6 +143,11 @@ impl Word for u32 {
         &POOL32
     }
 }
+
+/// The largest row bit set the row wave asks of the grid ([`CSpace::row_bits`]), bytes: the
+/// set holds a bit a node for the rest of the run, which at 0.25 deg over the IRB 1400's ranges
+/// (52 MB) would raise the peak; there every candidate is looked at (the same numbers).
+const ROW_BITS_MAX_BYTES: usize = 32 << 20;
 
 /// How many cleared label buffers are kept (a leg's two waves).
 const POOL_BUFFERS: usize = 2;
@@ -415,7 +424,10 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
     let end_bit = 1u64 << ((end_index % d2) % 64);
     let upto_end = end_bit | (end_bit - 1);
     // The free nodes usable without a look, when the graph says which those are.
-    let rows_kept = graph.look_bits().map(|bits| cs.row_bits(bits));
+    let rows_kept = graph
+        .look_bits()
+        .filter(|_| g.len() / 8 <= ROW_BITS_MAX_BYTES)
+        .map(|bits| cs.row_bits(bits));
     let plain = rows_kept.as_deref().map(|r| r.plain.as_slice());
     // Decided nodes: numbered, not free, or not usable.
     let mut decided = vec![0u64; rows * words];
@@ -465,9 +477,9 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
             let (b0, b1) = (i1.saturating_sub(1), (i1 + 1).min(d1 - 1));
             for t0 in i0.saturating_sub(1)..=(i0 + 1).min(d0 - 1) {
                 let (first, last) = (t0 * d1 + b0, t0 * d1 + b1);
-                for t in first..=last {
-                    if !mark[t] {
-                        mark[t] = true;
+                for (t, m) in (first..=last).zip(&mut mark[first..=last]) {
+                    if !*m {
+                        *m = true;
                         touched.push(t as u32);
                     }
                 }
