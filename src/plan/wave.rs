@@ -391,7 +391,8 @@ fn number<W: Word, G: Graph + ?Sized>(
 /// front are touched, and the labels are only written, so a level costs a few word operations
 /// per row it reaches and one look per node it numbers. When the graph names the code bits its
 /// answer depends on ([`Graph::look_bits`]), the free nodes without them come a word at a time
-/// from the grid's row bit set ([`CSpace::row_bits`]): numbered without a look; only the other
+/// from the grid's row bit set ([`CSpace::row_bits`], grids up to [`ROW_BITS_MAX_BYTES`] of
+/// it): numbered without a look; only the other
 /// candidates (blocked, or with those bits) are looked at one by one. No node past the end in
 /// the end's word is looked at. `K`: the words a row, or 0 for any number.
 fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
