@@ -174,6 +174,10 @@ impl<'a> GridCheck<'a> {
         code & CODE_TOOL_NEAR != 0
     }
 
+    /// The code bits [`tool_near`](Self::tool_near) reads: a code with none of them set is not
+    /// tool-near.
+    pub const TOOL_NEAR_BITS: u8 = CODE_TOOL_NEAR;
+
     /// The depth `q` of a lower bound `d` of a part's distance to the nearest box, for a part
     /// that moves at most `span` mm over one step, on `levels` levels: the largest
     /// `q <= levels` with `d - c >= q span / levels` (after the slack of `proof.rs`).

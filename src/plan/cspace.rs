@@ -13,6 +13,7 @@
 //! what does not depend on axis 3).
 
 use crate::progress::{Progress, Silent};
+use std::sync::{Arc, Mutex};
 
 /// A grid node: indices along axes 1..3 (0-based within the grid).
 pub type Node = [i32; 3];
@@ -190,6 +191,30 @@ pub struct CSpace {
     /// The inspector's bytes per column, `column_bytes` each, columns in index order.
     column: Vec<u8>,
     column_bytes: usize,
+    /// The row bit sets made so far ([`CSpace::row_bits`]).
+    rows: RowCache,
+}
+
+/// A per-row bit set of some of the grid's free nodes, for the wave (`wave::number_rows`). A row holds
+/// the nodes of fixed axes 1 and 2, `words` words each, rows in index order; axis-3 index
+/// `64 j + b` is bit `b` of the row's word `j`, and the bits past the row's last node are clear.
+#[derive(Debug, PartialEq, Eq)]
+pub struct RowBits {
+    /// Words per row: `dims[2]` bits rounded up to whole words.
+    pub words: usize,
+    /// The free nodes whose code has none of the bits asked for ([`CSpace::row_bits`]).
+    pub plain: Vec<u64>,
+}
+
+/// The row bit sets made so far, one per set of code bits asked for; a copy of the grid starts
+/// with none.
+#[derive(Debug, Default)]
+struct RowCache(Mutex<Vec<(u8, Arc<RowBits>)>>);
+
+impl Clone for RowCache {
+    fn clone(&self) -> RowCache {
+        RowCache::default()
+    }
 }
 
 impl CSpace {
@@ -215,6 +240,7 @@ impl CSpace {
                 code,
                 column,
                 column_bytes: width,
+                rows: RowCache::default(),
             };
         }
         let threads = std::thread::available_parallelism()
@@ -259,6 +285,7 @@ impl CSpace {
             code,
             column,
             column_bytes: width,
+            rows: RowCache::default(),
         }
     }
 
@@ -273,6 +300,7 @@ impl CSpace {
             code,
             column: Vec::new(),
             column_bytes: 0,
+            rows: RowCache::default(),
         }
     }
 
@@ -312,6 +340,54 @@ impl CSpace {
 
     pub fn free_count(&self) -> usize {
         self.code.iter().filter(|&&c| c & FREE != 0).count()
+    }
+
+    /// The grid's free nodes whose code has none of `bits` set, as a per-row bit set
+    /// ([`RowBits`], one bit a node). Made on the first ask for these `bits` and kept for the
+    /// next (every wave of every leg asks the same): one pass over the codes, 8 at a time.
+    pub fn row_bits(&self, bits: u8) -> Arc<RowBits> {
+        // A poisoned lock only means another thread panicked while making a set: the sets
+        // kept are whole (pushed after they were made).
+        let mut made = self.rows.0.lock().unwrap_or_else(|p| p.into_inner());
+        if let Some((_, r)) = made.iter().find(|(b, _)| *b == bits) {
+            return Arc::clone(r);
+        }
+        let r = Arc::new(self.make_row_bits(bits));
+        made.push((bits, Arc::clone(&r)));
+        r
+    }
+
+    fn make_row_bits(&self, bits: u8) -> RowBits {
+        let d2 = self.grid.dims[2];
+        let words = d2.div_ceil(64);
+        let rows = self.grid.dims[0] * self.grid.dims[1];
+        let mut plain = vec![0u64; rows * words];
+        const HIGH: u64 = 0x8080_8080_8080_8080;
+        const LOW7: u64 = 0x7f7f_7f7f_7f7f_7f7f;
+        // Each byte's high bit, gathered into the top byte (bit 7 of byte k to bit 56 + k).
+        const GATHER: u64 = 0x0102_0408_1020_4080;
+        const _: () = assert!(FREE == 0x80, "the free bit is each byte's high bit");
+        let spread = u64::from_ne_bytes([bits; 8]);
+        let top = |x: u64| ((x >> 7) & 0x0101_0101_0101_0101).wrapping_mul(GATHER) >> 56;
+        if d2 == 0 {
+            return RowBits { words, plain };
+        }
+        for (r, codes) in self.code.chunks_exact(d2).enumerate() {
+            for (j, chunk) in codes.chunks(64).enumerate() {
+                let mut p = 0u64;
+                for (k, eight) in chunk.chunks(8).enumerate() {
+                    let mut b = [0u8; 8];
+                    b[..eight.len()].copy_from_slice(eight);
+                    let x = u64::from_le_bytes(b);
+                    let hit = x & spread;
+                    // The high bit of each byte of `hit` that is not zero.
+                    let any = ((hit & LOW7).wrapping_add(LOW7) | hit) & HIGH;
+                    p |= top(x & HIGH & !any) << (8 * k);
+                }
+                plain[r * words + j] = p;
+            }
+        }
+        RowBits { words, plain }
     }
 }
 
@@ -373,5 +449,54 @@ mod tests {
         });
         assert_eq!(built.code, direct.code);
         assert!(built.free_count() < g.len());
+    }
+
+    /// The row bit set, made 8 codes at a time, against each node's code read alone: random
+    /// codes (free or not, any other bits), rows of 1 to 130 nodes (partly used last words,
+    /// whole words, several words), several sets of bits asked for; a second ask returns the
+    /// set kept.
+    #[test]
+    fn row_bits_match_each_nodes_code() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        for d2 in [1usize, 7, 63, 64, 65, 70, 128, 130] {
+            let g = Grid::over([[0.0, 2.0], [0.0, 3.0], [0.0, (d2 - 1) as f64]], 1.0);
+            let mut cs = CSpace::from_fn(g, |_| false);
+            for c in cs.code.iter_mut() {
+                let r = next();
+                // Blocked nodes have code 0; free ones any other bits.
+                *c = if r & 3 == 0 {
+                    0
+                } else {
+                    FREE | (r >> 8) as u8 & 0x7f
+                };
+            }
+            for bits in [0u8, 0x40, 0x41, 0x7f, 0x08] {
+                let r = cs.row_bits(bits);
+                assert_eq!(r.words, d2.div_ceil(64));
+                for i in 0..g.len() {
+                    let (row, z) = (i / d2, i % d2);
+                    let w = row * r.words + z / 64;
+                    let bit = |set: &[u64]| set[w] >> (z % 64) & 1 == 1;
+                    let code = cs.code[i];
+                    assert_eq!(
+                        bit(&r.plain),
+                        code & FREE != 0 && code & bits == 0,
+                        "d2 {d2} bits {bits:#x} node {i} code {code:#x}"
+                    );
+                }
+                for row in 0..g.dims[0] * g.dims[1] {
+                    let last = row * r.words + r.words - 1;
+                    let past = if d2 % 64 == 0 { 0 } else { !0u64 << (d2 % 64) };
+                    assert_eq!(r.plain[last] & past, 0);
+                }
+                assert!(Arc::ptr_eq(&r, &cs.row_bits(bits)));
+            }
+        }
     }
 }

@@ -265,6 +265,11 @@ impl Graph for LegGraph<'_> {
         !self.eager
     }
 
+    /// `node_ok_coded` answers from the tool-near bit alone unless it is set.
+    fn look_bits(&self) -> Option<u8> {
+        Some(GridCheck::TOOL_NEAR_BITS)
+    }
+
     fn wave_step_ok(&self, a: Node, b: Node) -> bool {
         !self.eager || self.step_ok(a, b)
     }

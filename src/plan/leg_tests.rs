@@ -82,12 +82,16 @@ fn per_leg_inspection_is_the_six_axis_node_test_at_every_node() {
         eager: true,
         memo: &memo,
     };
+    // The code bits the row wave trusts (`Graph::look_bits`): a free node without them is free
+    // on all six axes.
+    let look = graph.look_bits().expect("the leg names its look bits");
     let (mut arm_free, mut looked, mut tool_blocked) = (0, 0, 0);
     for i in 0..g.len() {
         let n = g.node(i);
         let six = graph.six(n);
         assert_eq!(graph.usable(n), m.is_free(&six), "{six:?}");
         if cs.is_free(n) {
+            assert!(cs.code(n) & look != 0 || m.is_free(&six), "{six:?}");
             arm_free += 1;
             if GridCheck::tool_near(cs.code(n)) {
                 looked += 1;

@@ -10,7 +10,11 @@
 //! Beyond the paper, for speed only: the 26-neighbour wave over a graph whose every step between
 //! usable nodes counts (the optimistic wave of a leg, the common one) is numbered a level at a
 //! time on bit sets of axis-3 rows (`number_rows`), the others node by node from a queue. The
-//! numbers below n are the same (each node's breadth-first distance, plus one).
+//! numbers below n are the same (each node's breadth-first distance, plus one). In the row wave,
+//! the free nodes a graph need not look at ([`Graph::look_bits`]: for a leg, those whose code
+//! says the tool stays clear) come a word at a time from the grid's row bit set
+//! ([`CSpace::row_bits`]), and a dropped wave's label buffer is cleared where it was written and
+//! kept for the next wave (no 2-byte-a-node buffer zeroed or faulted in per wave).
 //!
 //! Beyond the paper: the wave runs on a [`Graph`], whose nodes are the grid's free nodes that the
 //! graph accepts (a leg's tool at its wrist) and whose edges are the neighbour steps it accepts
@@ -22,6 +26,7 @@
 //! leads to `l - 1`.
 
 use crate::plan::cspace::{CSpace, Node, FREE};
+use std::sync::Mutex;
 
 /// What a wave and a search walk on: which free nodes of the grid they may use and which
 /// neighbour steps between them exist.
@@ -48,6 +53,13 @@ pub trait Graph: Sync {
     fn wave_steps_all(&self) -> bool {
         false
     }
+    /// The code bits on which [`node_ok_coded`](Self::node_ok_coded) may depend: a free node
+    /// whose code has none of them set must be usable (`node_ok_coded` true), and then the
+    /// row-by-row wave numbers it without asking. `None` (the default): every free node is
+    /// asked. A graph whose answer depends on more than its code's bits keeps `None`.
+    fn look_bits(&self) -> Option<u8> {
+        None
+    }
 }
 
 /// The grid's own graph: every free node, every step between free neighbours (the paper's).
@@ -63,6 +75,9 @@ impl Graph for Open {
     }
     fn wave_steps_all(&self) -> bool {
         true
+    }
+    fn look_bits(&self) -> Option<u8> {
+        Some(0)
     }
 }
 
@@ -81,7 +96,7 @@ impl<F: Fn(Node, Node) -> bool + Sync> Graph for F {
 /// numbered 65 533 is expanded, i.e. the end's number would be 65 534 or more (or the end is
 /// unreachable from a component that deep, numbered again only to return `None`). The numbers
 /// are the same either way.
-trait Word: Copy + PartialEq + Default {
+trait Word: Copy + PartialEq + Default + Send + 'static {
     /// The node was looked at and may not be used.
     const BLOCKED: Self;
     /// The node may be used but no accepted step has reached it yet.
@@ -92,7 +107,12 @@ trait Word: Copy + PartialEq + Default {
     fn wide(self) -> u32;
     /// The next number, `None` when it would reach the sentinels.
     fn next(self) -> Option<Self>;
+    /// The cleared label buffers kept for the next waves ([`Kept`]).
+    fn pool() -> &'static Mutex<Vec<Vec<Self>>>;
 }
+
+static POOL16: Mutex<Vec<Vec<u16>>> = Mutex::new(Vec::new());
+static POOL32: Mutex<Vec<Vec<u32>>> = Mutex::new(Vec::new());
 
 impl Word for u16 {
     const BLOCKED: u16 = u16::MAX;
@@ -103,6 +123,9 @@ impl Word for u16 {
     }
     fn next(self) -> Option<u16> {
         (self + 1 < Self::CHECKED).then_some(self + 1)
+    }
+    fn pool() -> &'static Mutex<Vec<Vec<u16>>> {
+        &POOL16
     }
 }
 
@@ -116,13 +139,87 @@ impl Word for u32 {
     fn next(self) -> Option<u32> {
         (self + 1 < Self::CHECKED).then_some(self + 1)
     }
+    fn pool() -> &'static Mutex<Vec<Vec<u32>>> {
+        &POOL32
+    }
+}
+
+/// The largest row bit set the row wave asks of the grid ([`CSpace::row_bits`]), bytes: the
+/// set holds a bit a node for the rest of the run, which at 0.25 deg over the IRB 1400's ranges
+/// (52 MB) would raise the peak; there every candidate is looked at (the same numbers).
+const ROW_BITS_MAX_BYTES: usize = 32 << 20;
+
+/// How many cleared label buffers are kept (a leg's two waves).
+const POOL_BUFFERS: usize = 2;
+
+/// The largest label buffer kept, bytes. Below it the allocator would hand a freed buffer back
+/// and clear it whole (or fault fresh pages in); above it a fresh buffer's pages cost memory
+/// only where the wave writes, which a kept buffer, written by earlier waves, would not.
+const POOL_MAX_BYTES: usize = 64 << 20;
+
+/// A wave's label words, and where the row wave may have written them (`written`: a per-row bit
+/// set, `row_words` words a row of `d2` nodes; empty for the node-by-node wave). Dropped, a row
+/// wave's buffer is cleared where written and kept for the next wave over a grid of the same
+/// size (so a wave neither clears nor faults in a whole buffer): outputs do not depend on it.
+#[derive(Clone, Debug)]
+struct Kept<W: Word> {
+    words: Vec<W>,
+    written: Vec<u64>,
+    row_words: usize,
+    d2: usize,
+}
+
+impl<W: Word> Kept<W> {
+    /// Labels written node by node (not kept).
+    fn plain(words: Vec<W>) -> Kept<W> {
+        Kept {
+            words,
+            written: Vec::new(),
+            row_words: 0,
+            d2: 0,
+        }
+    }
+
+    /// A zeroed buffer of `len` words: a kept one, else a new one.
+    fn zeroed(len: usize) -> Vec<W> {
+        if len * std::mem::size_of::<W>() <= POOL_MAX_BYTES {
+            let mut pool = W::pool().lock().unwrap_or_else(|p| p.into_inner());
+            while let Some(v) = pool.pop() {
+                if v.len() == len {
+                    return v;
+                }
+            }
+        }
+        vec![W::default(); len]
+    }
+}
+
+impl<W: Word> Drop for Kept<W> {
+    fn drop(&mut self) {
+        if self.written.is_empty() || self.words.len() * std::mem::size_of::<W>() > POOL_MAX_BYTES {
+            return;
+        }
+        for (w, &bits) in self.written.iter().enumerate() {
+            let base = (w / self.row_words) * self.d2 + (w % self.row_words) * 64;
+            let mut m = bits;
+            while m != 0 {
+                let b = m.trailing_zeros() as usize;
+                m &= m - 1;
+                self.words[base + b] = W::default();
+            }
+        }
+        let mut pool = W::pool().lock().unwrap_or_else(|p| p.into_inner());
+        if pool.len() < POOL_BUFFERS {
+            pool.push(std::mem::take(&mut self.words));
+        }
+    }
 }
 
 /// The labels of a wave, in the narrowest word that held them.
 #[derive(Clone, Debug)]
 enum Labels {
-    Narrow(Vec<u16>),
-    Wide(Vec<u32>),
+    Narrow(Kept<u16>),
+    Wide(Kept<u32>),
 }
 
 impl Labels {
@@ -130,8 +227,8 @@ impl Labels {
     #[inline]
     fn number(&self, i: usize) -> u32 {
         match self {
-            Labels::Narrow(l) => number_of(l[i]),
-            Labels::Wide(l) => number_of(l[i]),
+            Labels::Narrow(l) => number_of(l.words[i]),
+            Labels::Wide(l) => number_of(l.words[i]),
         }
     }
 }
@@ -268,9 +365,19 @@ fn number<W: Word, G: Graph + ?Sized>(
     start: Node,
     end: Node,
     connectivity: Connectivity,
-) -> Result<Option<Vec<W>>, TooLong> {
+) -> Result<Option<Kept<W>>, TooLong> {
     if graph.wave_steps_all() && connectivity == Connectivity::TwentySix {
-        number_rows(cs, graph, start, end)
+        // The row's word count as a constant where it is small (the loops over a row's words
+        // unrolled): 3 at 1 deg, 5 at 0.5 deg, 9 at 0.25 deg over the IRB 1400's axis 3.
+        match cs.grid.dims[2].div_ceil(64) {
+            1 => number_rows::<W, G, 1>(cs, graph, start, end),
+            2 => number_rows::<W, G, 2>(cs, graph, start, end),
+            3 => number_rows::<W, G, 3>(cs, graph, start, end),
+            4 => number_rows::<W, G, 4>(cs, graph, start, end),
+            5 => number_rows::<W, G, 5>(cs, graph, start, end),
+            9 => number_rows::<W, G, 9>(cs, graph, start, end),
+            _ => number_rows::<W, G, 0>(cs, graph, start, end),
+        }
     } else {
         number_scalar(cs, graph, start, end, connectivity)
     }
@@ -282,36 +389,54 @@ fn number<W: Word, G: Graph + ?Sized>(
 /// spread to the neighbouring rows) not yet decided; each of those is looked at once (free on
 /// the grid, [`Graph::node_ok_coded`]) and numbered or decided unusable. Only rows near the
 /// front are touched, and the labels are only written, so a level costs a few word operations
-/// per row it reaches and one look per node it numbers.
-fn number_rows<W: Word, G: Graph + ?Sized>(
+/// per row it reaches and one look per node it numbers. When the graph names the code bits its
+/// answer depends on ([`Graph::look_bits`]), the free nodes without them come a word at a time
+/// from the grid's row bit set ([`CSpace::row_bits`], grids up to [`ROW_BITS_MAX_BYTES`] of
+/// it): numbered without a look; only the other
+/// candidates (blocked, or with those bits) are looked at one by one. No node past the end in
+/// the end's word is looked at. `K`: the words a row, or 0 for any number.
+fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
     cs: &CSpace,
     graph: &G,
     start: Node,
     end: Node,
-) -> Result<Option<Vec<W>>, TooLong> {
+) -> Result<Option<Kept<W>>, TooLong> {
     let g = &cs.grid;
-    let mut labels = vec![W::default(); g.len()];
     let start_index = g.index(start);
     let end_index = g.index(end);
-    labels[start_index] = W::ONE;
     if start_index == end_index {
+        let mut labels = Kept::plain(vec![W::default(); g.len()]);
+        labels.words[start_index] = W::ONE;
         return Ok(Some(labels));
     }
+    let mut labels: Vec<W> = Kept::zeroed(g.len());
+    labels[start_index] = W::ONE;
     let [d0, d1, d2] = g.dims;
-    let words = d2.div_ceil(64);
+    let words = if K == 0 { d2.div_ceil(64) } else { K };
+    debug_assert_eq!(words, d2.div_ceil(64));
     let rows = d0 * d1;
     // The bits of a row's last word that are nodes.
     let last_mask = match d2 % 64 {
         0 => u64::MAX,
         r => (1u64 << r) - 1,
     };
+    // The end's word, its bit, and its bits up to the end's.
+    let end_word = (end_index / d2) * words + (end_index % d2) / 64;
+    let end_bit = 1u64 << ((end_index % d2) % 64);
+    let upto_end = end_bit | (end_bit - 1);
+    // The free nodes usable without a look, when the graph says which those are.
+    let rows_kept = graph
+        .look_bits()
+        .filter(|_| g.len() / 8 <= ROW_BITS_MAX_BYTES)
+        .map(|bits| cs.row_bits(bits));
+    let plain = rows_kept.as_deref().map(|r| r.plain.as_slice());
     // Decided nodes: numbered, not free, or not usable.
     let mut decided = vec![0u64; rows * words];
-    // The next level's candidates, gathered per row: the rows that have some (`touched`),
-    // their words (`words` each, in that order), and each row's place in that order.
+    // The next level's candidates, gathered per row (`words` each, every row; cleared as they
+    // are looked at), the rows that have some (`touched`), and whether a row is among those.
     let mut touched: Vec<u32> = Vec::new();
-    let mut cand: Vec<u64> = Vec::new();
-    let mut slot = vec![u32::MAX; rows];
+    let mut cand = vec![0u64; rows * words];
+    let mut mark = vec![false; rows];
     // The front: its rows and their words (`words` per row, in the rows' order).
     let (r0, j0, b0) = (
         start_index / d2,
@@ -324,76 +449,90 @@ fn number_rows<W: Word, G: Graph + ?Sized>(
     front_bits[j0] = 1 << b0;
     let (mut next_rows, mut next_bits) = (Vec::new(), Vec::new());
     let mut spread = vec![0u64; words];
+    // Every way out: the labels with where they were written (`decided` holds every node
+    // numbered).
+    let kept = |labels, written| Kept {
+        words: labels,
+        written,
+        row_words: words,
+        d2,
+    };
     let mut level = W::ONE;
     while !front_rows.is_empty() {
-        let next = level.next().ok_or(TooLong)?;
-        // Gather: every front row's neighbours into `cand`.
+        let Some(next) = level.next() else {
+            drop(kept(labels, decided));
+            return Err(TooLong);
+        };
+        // Gather: every front row's neighbours into `cand`: the row spread by one along axis 3
+        // (itself included: it is decided) into the 3 x 3 rows around it, each run of rows
+        // along axis 2 a run of words.
         for (k, &r) in front_rows.iter().enumerate() {
             let f = &front_bits[k * words..(k + 1) * words];
             let r = r as usize;
             let (i0, i1) = (r / d1, r % d1);
-            // Along axis 3: the row shifted both ways (its own row's neighbours); with the row
-            // itself, the neighbouring rows' ones.
             for j in 0..words {
                 let lo = (f[j] << 1) | if j > 0 { f[j - 1] >> 63 } else { 0 };
                 let hi = (f[j] >> 1) | if j + 1 < words { f[j + 1] << 63 } else { 0 };
-                spread[j] = lo | hi;
+                spread[j] = f[j] | lo | hi;
             }
-            for a in -1i32..=1 {
-                let t0 = i0 as i32 + a;
-                if t0 < 0 || t0 >= d0 as i32 {
-                    continue;
-                }
-                for b in -1i32..=1 {
-                    let t1 = i1 as i32 + b;
-                    if t1 < 0 || t1 >= d1 as i32 {
-                        continue;
-                    }
-                    let t = t0 as usize * d1 + t1 as usize;
-                    if slot[t] == u32::MAX {
-                        slot[t] = touched.len() as u32;
+            let (b0, b1) = (i1.saturating_sub(1), (i1 + 1).min(d1 - 1));
+            for t0 in i0.saturating_sub(1)..=(i0 + 1).min(d0 - 1) {
+                let (first, last) = (t0 * d1 + b0, t0 * d1 + b1);
+                for (t, m) in (first..=last).zip(&mut mark[first..=last]) {
+                    if !*m {
+                        *m = true;
                         touched.push(t as u32);
-                        cand.resize(cand.len() + words, 0);
                     }
-                    let at = slot[t] as usize * words;
-                    let c = &mut cand[at..at + words];
-                    let own = a == 0 && b == 0;
-                    for j in 0..words {
-                        c[j] |= if own { spread[j] } else { spread[j] | f[j] };
+                }
+                for c in cand[first * words..(last + 1) * words].chunks_exact_mut(words) {
+                    for (c, s) in c.iter_mut().zip(&spread) {
+                        *c |= s;
                     }
                 }
             }
         }
         // Look at the candidates not decided yet, row by row.
-        for (k, &t) in touched.iter().enumerate() {
+        for &t in &touched {
             let t = t as usize;
-            slot[t] = u32::MAX;
+            mark[t] = false;
             let (i0, i1) = (t / d1, t % d1);
             let mut any = 0u64;
             let at = next_bits.len();
             for j in 0..words {
                 let w = t * words + j;
-                let mut c = cand[k * words + j] & !decided[w];
+                let mut c = cand[w] & !decided[w];
+                cand[w] = 0;
                 if j + 1 == words {
                     c &= last_mask;
                 }
+                if w == end_word && c & end_bit != 0 {
+                    c &= upto_end;
+                }
                 decided[w] |= c;
-                let mut numbered = 0u64;
-                while c != 0 {
-                    let b = c.trailing_zeros() as usize;
-                    c &= c - 1;
-                    let i = t * d2 + j * 64 + b;
-                    let code = cs.code_index(i);
-                    if code & FREE == 0
-                        || !graph.node_ok_coded([i0 as i32, i1 as i32, (j * 64 + b) as i32], code)
+                let base = t * d2 + j * 64;
+                // The usable candidates: the plain ones at once, the others looked at.
+                let (mut numbered, mut look) = match &plain {
+                    Some(p) => (c & p[w], c & !p[w]),
+                    None => (0, c),
+                };
+                while look != 0 {
+                    let b = look.trailing_zeros() as usize;
+                    look &= look - 1;
+                    let code = cs.code_index(base + b);
+                    if code & FREE != 0
+                        && graph.node_ok_coded([i0 as i32, i1 as i32, (j * 64 + b) as i32], code)
                     {
-                        continue;
+                        numbered |= 1 << b;
                     }
-                    labels[i] = next;
-                    if i == end_index {
-                        return Ok(Some(labels));
-                    }
-                    numbered |= 1 << b;
+                }
+                let mut m = numbered;
+                while m != 0 {
+                    let b = m.trailing_zeros() as usize;
+                    m &= m - 1;
+                    labels[base + b] = next;
+                }
+                if w == end_word && numbered & end_bit != 0 {
+                    return Ok(Some(kept(labels, decided)));
                 }
                 next_bits.push(numbered);
                 any |= numbered;
@@ -405,13 +544,13 @@ fn number_rows<W: Word, G: Graph + ?Sized>(
             }
         }
         touched.clear();
-        cand.clear();
         std::mem::swap(&mut front_rows, &mut next_rows);
         std::mem::swap(&mut front_bits, &mut next_bits);
         next_rows.clear();
         next_bits.clear();
         level = next;
     }
+    drop(kept(labels, decided));
     Ok(None)
 }
 
@@ -423,7 +562,7 @@ fn number_scalar<W: Word, G: Graph + ?Sized>(
     start: Node,
     end: Node,
     connectivity: Connectivity,
-) -> Result<Option<Vec<W>>, TooLong> {
+) -> Result<Option<Kept<W>>, TooLong> {
     let g = &cs.grid;
     let mut labels = vec![W::default(); g.len()];
     let mut queue = std::collections::VecDeque::new();
@@ -489,7 +628,7 @@ fn number_scalar<W: Word, G: Graph + ?Sized>(
             queue.push_back(m);
         }
     }
-    Ok(found.then_some(labels))
+    Ok(found.then_some(Kept::plain(labels)))
 }
 
 #[cfg(test)]
@@ -628,6 +767,160 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Random codes: free or blocked, and free nodes with or without a "look" bit (0x40, like
+    /// the tool-near bit); a graph that refuses a third of the nodes with the bit, pseudo-
+    /// randomly, and accepts every other free node. The row wave that numbers the nodes without
+    /// the bit from the grid's row bit set (`look_bits` `Some(0x40)`) and the one that looks at
+    /// every node (`None`) give every node below the end's number its breadth-first distance
+    /// over the usable nodes. A graph that wrongly says its answer needs no bits
+    /// (`Some(0)`) numbers refused nodes, and the same check catches it.
+    #[test]
+    fn row_wave_from_the_row_bits_numbers_like_the_look_at_every_node() {
+        fn hash(n: Node, salt: u32) -> u32 {
+            let h = (n[0] as u32).wrapping_mul(73_856_093)
+                ^ (n[1] as u32).wrapping_mul(19_349_663)
+                ^ (n[2] as u32).wrapping_mul(83_492_791)
+                ^ salt.wrapping_mul(2_246_822_519);
+            h.wrapping_mul(2_654_435_761) >> 5
+        }
+        struct Codes;
+        impl crate::plan::cspace::Inspector for Codes {
+            fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], code: &mut [u8], _: &mut [u8]) {
+                for (c, &z) in code.iter_mut().zip(a3) {
+                    let h = hash([a1 as i32, a2 as i32, z as i32], 1);
+                    *c = if h % 5 == 0 {
+                        0
+                    } else {
+                        FREE | (h >> 8) as u8 & 0x7f
+                    };
+                }
+            }
+        }
+        struct Tool<'a>(&'a CSpace, Option<u8>);
+        impl Graph for Tool<'_> {
+            fn node_ok(&self, n: Node) -> bool {
+                self.node_ok_coded(n, self.0.code(n))
+            }
+            fn node_ok_coded(&self, n: Node, code: u8) -> bool {
+                code & 0x40 == 0 || hash(n, 2) % 3 != 0
+            }
+            fn step_ok(&self, _: Node, _: Node) -> bool {
+                true
+            }
+            fn wave_steps_all(&self) -> bool {
+                true
+            }
+            fn look_bits(&self) -> Option<u8> {
+                self.1
+            }
+        }
+        // 130 nodes along axis 3: three words a row, the last partly used (the row words a
+        // constant); 450: eight words (their number read at run time).
+        for d2 in [130usize, 450] {
+            let g = Grid::over([[0.0, 19.0], [0.0, 15.0], [0.0, (d2 - 1) as f64]], 1.0);
+            let cs = CSpace::build(g, &Codes);
+            let looked = (0..g.len())
+                .filter(|&i| cs.code_index(i) & (FREE | 0x40) == FREE | 0x40)
+                .count();
+            assert!(looked > g.len() / 4, "too few nodes with the bit: {looked}");
+            let usable = |n: Node| cs.is_free(n) && Tool(&cs, None).node_ok(n);
+            let start = (0..g.len())
+                .map(|i| g.node(i))
+                .find(|&n| usable(n))
+                .expect("a start");
+            let dist = bfs(&g, start, usable);
+            let far = (0..g.len()).max_by_key(|&i| (dist[i], i)).expect("nodes");
+            let mid = (0..g.len())
+                .find(|&i| dist[i] == dist[far] / 2)
+                .expect("a middle");
+            // The labels below n against the distances: how many disagree.
+            let wrong = |w: &Wave, n: u32| {
+                (0..g.len())
+                    .filter(|&i| {
+                        let l = w.label(g.node(i));
+                        if dist[i] < n {
+                            l != dist[i]
+                        } else {
+                            !(l == 0 || (l == n && dist[i] == n))
+                        }
+                    })
+                    .count()
+            };
+            for end in [far, mid] {
+                let n = dist[end];
+                assert!(n > 10, "too near to test: {n}");
+                for bits in [Some(0x40), None] {
+                    let w = expand(
+                        &cs,
+                        &Tool(&cs, bits),
+                        start,
+                        g.node(end),
+                        Connectivity::TwentySix,
+                    )
+                    .expect("joined");
+                    assert_eq!(w.n(), n, "{bits:?}");
+                    assert_eq!(wrong(&w, n), 0, "{bits:?}");
+                }
+                let lying = expand(
+                    &cs,
+                    &Tool(&cs, Some(0)),
+                    start,
+                    g.node(end),
+                    Connectivity::TwentySix,
+                );
+                assert!(lying.is_none_or(|w| w.n() != n || wrong(&w, n) > 0));
+            }
+        }
+    }
+
+    /// A row wave's buffer is kept for the next wave when dropped, cleared where it was
+    /// written: a wave that numbers nearly the whole grid, then short waves over the same grid
+    /// (which take its buffer) number nothing past their end's level, and every node below it
+    /// its Chebyshev distance plus one.
+    #[test]
+    fn a_kept_label_buffer_is_cleared_for_the_next_wave() {
+        let cs = open_dims(13, 11, 70);
+        let far = expand(&cs, &Open, [0, 0, 0], [13, 11, 70], Connectivity::TwentySix);
+        assert_eq!(far.map(|w| w.numbered()), Some(cs.grid.len()));
+        for (start, end) in [([0, 0, 0], [2, 1, 1]), ([13, 11, 70], [11, 11, 69])] {
+            let w = expand(&cs, &Open, start, end, Connectivity::TwentySix).expect("open");
+            let n = w.n();
+            for i in 0..cs.grid.len() {
+                let m = cs.grid.node(i);
+                let d = (0..3).map(|k| (m[k] - start[k]).abs()).max().unwrap_or(0) as u32 + 1;
+                let l = w.label(m);
+                if d < n {
+                    assert_eq!(l, d, "{m:?}");
+                } else {
+                    assert!(l == 0 || (l == n && d == n), "{m:?}: {l}");
+                }
+            }
+        }
+    }
+
+    fn open_dims(a: usize, b: usize, c: usize) -> CSpace {
+        let g = Grid::over([[0.0, a as f64], [0.0, b as f64], [0.0, c as f64]], 1.0);
+        CSpace::from_fn(g, |_| true)
+    }
+
+    /// Breadth-first distances (plus one, 0 = not reached) over the usable nodes of `g` and
+    /// their 26 neighbours, from `start`.
+    fn bfs(g: &Grid, start: Node, usable: impl Fn(Node) -> bool) -> Vec<u32> {
+        let mut dist = vec![0u32; g.len()];
+        dist[g.index(start)] = 1;
+        let mut queue = VecDeque::from([start]);
+        while let Some(n) = queue.pop_front() {
+            for o in offsets(Connectivity::TwentySix) {
+                let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
+                if g.contains(m) && usable(m) && dist[g.index(m)] == 0 {
+                    dist[g.index(m)] = dist[g.index(n)] + 1;
+                    queue.push_back(m);
+                }
+            }
+        }
+        dist
     }
 
     /// A serpentine corridor over 80 000 steps long: the numbers outgrow the 16-bit words and
