@@ -77,7 +77,7 @@ use crate::geometry::{
     distance_segment_aabb, distance_sq_point_aabb, gap_sq_aabb_aabb, Aabb, Cylinder, Point, Solid,
 };
 use crate::place::{Placement, PoseCheck};
-use crate::robot::{RangeViolation, Robot};
+use crate::robot::{MilliDegSinCos, RangeViolation, Robot, SinCosChain};
 use nalgebra::{Isometry3, Vector3};
 use parts::ToolData;
 
@@ -186,7 +186,15 @@ pub struct CollisionModel {
     cyl: Vec<CylData>,
     /// The tool's shapes (none: no tool volume).
     tool: Option<ToolData>,
+    /// With a tool: the chain that places the flange from the joints' sines and cosines, in the
+    /// cell frame (the tool looks of a leg's search, [`tool_look_sincos`](Self::tool_look_sincos)).
+    chain: Option<(SinCosChain, MilliDegSinCos)>,
 }
+
+/// How much a flange pose from [`SinCosChain`] may be trusted to differ from
+/// [`Robot::link_poses`] at a tool ball's centre, mm: far above the rounding (about 1e-12 mm
+/// at a metre, held to 1e-9 mm by the chain's tests), taken off the margin its ball test gives.
+const SINCOS_POSE_SLACK_MM: f64 = 1e-6;
 
 /// The poses a configuration puts the parts at: links 1..3, and link 6 (the flange) when the
 /// model has a tool; cell frame.
@@ -261,6 +269,21 @@ impl CollisionModel {
                 }
             })
             .collect();
+        let chain = tool.as_ref().map(|_| {
+            let wrist = &robot.controller.axes[3..6];
+            let lo = wrist
+                .iter()
+                .map(|a| a.min_deg)
+                .fold(f64::INFINITY, f64::min);
+            let hi = wrist
+                .iter()
+                .map(|a| a.max_deg)
+                .fold(f64::NEG_INFINITY, f64::max);
+            (
+                SinCosChain::new(robot, &cell_from_robot),
+                MilliDegSinCos::new(lo, hi),
+            )
+        });
         CollisionModel {
             robot: robot.clone(),
             placement,
@@ -269,6 +292,7 @@ impl CollisionModel {
             clearance_mm: clearance_mm.max(0.0),
             cyl,
             tool,
+            chain,
         }
     }
 
@@ -393,14 +417,24 @@ impl CollisionModel {
     ///
     /// [`tool_is_free`]: Self::tool_is_free
     pub fn tool_look(&self, axes: &[f64; 6]) -> (bool, f64) {
-        let Some(tool) = &self.tool else {
+        let arm = [0, 1, 2].map(|k| axes[k].to_radians().sin_cos());
+        self.tool_look_sincos(axes, &arm)
+    }
+
+    /// [`tool_look`](Self::tool_look) with the sines and cosines of controller axes 1..3 given
+    /// (`arm_sincos`, from a table of the grid's values; they must be those of `axes`): the
+    /// flange is placed by [`SinCosChain`] (the wrist's sines and cosines from a table of the
+    /// written 0.001 deg), which agrees with [`Robot::link_poses`] to rounding; the balls'
+    /// margin is lowered by [`SINCOS_POSE_SLACK_MM`] for it. Where the balls do not show the
+    /// tool clear, the exact test of [`tool_is_free`](Self::tool_is_free) runs on that flange.
+    pub fn tool_look_sincos(&self, axes: &[f64; 6], arm_sincos: &[(f64, f64); 3]) -> (bool, f64) {
+        let (Some(tool), Some(flange)) = (&self.tool, self.flange_sincos(axes, arm_sincos)) else {
             return (true, f64::INFINITY);
         };
-        let flange = self.flange_pose(axes);
         let mut nearest = f64::INFINITY;
         for s in &tool.shapes {
             let (centre, radius) = s.ball;
-            let centre = flange * centre;
+            let centre = Point::from(flange.apply(&centre.coords.into()));
             let sq = self
                 .obstacles
                 .iter()
@@ -408,12 +442,41 @@ impl CollisionModel {
                 .fold(f64::INFINITY, f64::min);
             nearest = nearest.min(sq.sqrt() - radius);
         }
-        let margin = proof::lowered(nearest) - self.clearance_mm;
+        let margin = proof::lowered(nearest) - self.clearance_mm - SINCOS_POSE_SLACK_MM;
         if margin > 0.0 {
             (true, margin)
         } else {
-            (self.tool_is_free_at(&flange), 0.0)
+            (self.tool_is_free_at(&flange.isometry()), 0.0)
         }
+    }
+
+    /// The flange's pose (link 6, cell frame) from the chain of sines and cosines, the arm's
+    /// given, the wrist's from the table (`None` without a tool).
+    #[inline]
+    fn flange_sincos(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+    ) -> Option<crate::robot::Pose> {
+        let (chain, table) = self.chain.as_ref()?;
+        let wrist = [3, 4, 5].map(|k| table.get(axes[k]));
+        Some(chain.pose6(&self.robot.urdf_arm_sincos(arm_sincos), &wrist))
+    }
+
+    /// [`flange_sincos`](Self::flange_sincos) as an isometry (for tests).
+    #[cfg(test)]
+    pub(crate) fn flange_sincos_for_test(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+    ) -> Option<Isometry3<f64>> {
+        self.flange_sincos(axes, arm_sincos).map(|p| p.isometry())
+    }
+
+    /// The flange's pose (link 6, cell frame) by [`Robot::link_poses`] (for tests).
+    #[cfg(test)]
+    pub(crate) fn flange_pose_for_test(&self, axes: &[f64; 6]) -> Isometry3<f64> {
+        self.flange_pose(axes)
     }
 
     /// The most any point of any tool shape moves over a straight move of `delta_deg`

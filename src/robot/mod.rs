@@ -10,6 +10,7 @@
 //! degrees (what a RAPID `jointtarget` holds); [`Robot::urdf_joints_deg`] is the one place that
 //! applies the controller's coupling ([`controller`]) to get URDF joint values.
 
+mod chain;
 pub mod controller;
 pub mod ik;
 pub mod urdf;
@@ -17,6 +18,7 @@ pub mod urdf;
 use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
 use std::path::{Path, PathBuf};
 
+pub use chain::{Frame, MilliDegSinCos, Pose, SinCosChain};
 pub use controller::{AxisSpec, Controller, Coupling};
 
 /// Controller values of axes 1..6, degrees.
