@@ -189,6 +189,37 @@ pub struct CollisionModel {
     /// With a tool: the chain that places the flange from the joints' sines and cosines, in the
     /// cell frame (the tool looks of a leg's search, [`tool_look_sincos`](Self::tool_look_sincos)).
     chain: Option<(SinCosChain, MilliDegSinCos)>,
+    /// The boxes' bounds by coordinate, `[min x, min y, min z, max x, max y, max z]` per box
+    /// index, for the tool looks' ball distances in one pass ([`least_sq_distance`]).
+    bounds: [Vec<f64>; 6],
+}
+
+/// The least squared distance from `p` to the boxes of `bounds` (`CollisionModel::bounds`):
+/// per box the same number as `geometry::distance_sq_point_aabb` (each axis's excess is the
+/// same up to its sign, which the square drops), laid out so the loop runs without branches.
+#[inline]
+fn least_sq_distance(p: &Point, bounds: &[Vec<f64>; 6]) -> f64 {
+    let [x0, y0, z0, x1, y1, z1] = bounds;
+    let n = x0.len();
+    let (x0, y0, z0, x1, y1, z1) = (&x0[..n], &y0[..n], &z0[..n], &x1[..n], &y1[..n], &z1[..n]);
+    let excess = |x: f64, lo: f64, hi: f64| {
+        let (a, b) = (lo - x, x - hi);
+        let e = if a > b { a } else { b };
+        if e > 0.0 {
+            e
+        } else {
+            0.0
+        }
+    };
+    let mut least = f64::INFINITY;
+    for k in 0..n {
+        let ex = excess(p.x, x0[k], x1[k]);
+        let ey = excess(p.y, y0[k], y1[k]);
+        let ez = excess(p.z, z0[k], z1[k]);
+        let d = ex * ex + ey * ey + ez * ez;
+        least = if d < least { d } else { least };
+    }
+    least
 }
 
 /// How much a flange pose from [`SinCosChain`] may be trusted to differ from
@@ -284,7 +315,20 @@ impl CollisionModel {
                 MilliDegSinCos::new(lo, hi),
             )
         });
+        let bounds = std::array::from_fn(|k| {
+            obstacles
+                .iter()
+                .map(|o| {
+                    if k < 3 {
+                        o.aabb.min[k]
+                    } else {
+                        o.aabb.max[k - 3]
+                    }
+                })
+                .collect()
+        });
         CollisionModel {
+            bounds,
             robot: robot.clone(),
             placement,
             cell_from_robot,
@@ -435,11 +479,7 @@ impl CollisionModel {
         for s in &tool.shapes {
             let (centre, radius) = s.ball;
             let centre = Point::from(flange.apply(&centre.coords.into()));
-            let sq = self
-                .obstacles
-                .iter()
-                .map(|o| distance_sq_point_aabb(&centre, &o.aabb))
-                .fold(f64::INFINITY, f64::min);
+            let sq = least_sq_distance(&centre, &self.bounds);
             nearest = nearest.min(sq.sqrt() - radius);
         }
         let margin = proof::lowered(nearest) - self.clearance_mm - SINCOS_POSE_SLACK_MM;
