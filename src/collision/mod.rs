@@ -186,11 +186,22 @@ pub struct CollisionModel {
     cyl: Vec<CylData>,
     /// The tool's shapes (none: no tool volume).
     tool: Option<ToolData>,
-    /// With a tool: the chain that places the flange from the joints' sines and cosines, in the
-    /// cell frame (the tool looks of a leg's search, [`tool_look_sincos`](Self::tool_look_sincos)).
-    chain: Option<(SinCosChain, MilliDegSinCos)>,
+    /// With a tool: the chain that places the flange from the joints' sines and cosines, and
+    /// the boxes by coordinate (the tool looks of a leg's search,
+    /// [`tool_look_sincos`](Self::tool_look_sincos)).
+    look: Option<Box<ToolLook>>,
+}
+
+/// What the tool looks of a leg's search use besides the shapes
+/// ([`CollisionModel::tool_look_sincos`]).
+#[derive(Clone, Debug)]
+struct ToolLook {
+    /// The chain that places the flange, in the cell frame.
+    chain: SinCosChain,
+    /// The wrist angles' sines and cosines on the 0.001 deg lattice.
+    wrist: MilliDegSinCos,
     /// The boxes' bounds by coordinate, `[min x, min y, min z, max x, max y, max z]` per box
-    /// index, for the tool looks' ball distances in one pass ([`least_sq_distance`]).
+    /// index, for the balls' distances in one pass ([`least_sq_distance`]).
     bounds: [Vec<f64>; 6],
 }
 
@@ -300,7 +311,7 @@ impl CollisionModel {
                 }
             })
             .collect();
-        let chain = tool.as_ref().map(|_| {
+        let look = tool.as_ref().map(|_| {
             let wrist = &robot.controller.axes[3..6];
             let lo = wrist
                 .iter()
@@ -310,25 +321,24 @@ impl CollisionModel {
                 .iter()
                 .map(|a| a.max_deg)
                 .fold(f64::NEG_INFINITY, f64::max);
-            (
-                SinCosChain::new(robot, &cell_from_robot),
-                MilliDegSinCos::new(lo, hi),
-            )
-        });
-        let bounds = std::array::from_fn(|k| {
-            obstacles
-                .iter()
-                .map(|o| {
-                    if k < 3 {
-                        o.aabb.min[k]
-                    } else {
-                        o.aabb.max[k - 3]
-                    }
-                })
-                .collect()
+            Box::new(ToolLook {
+                chain: SinCosChain::new(robot, &cell_from_robot),
+                wrist: MilliDegSinCos::new(lo, hi),
+                bounds: std::array::from_fn(|k| {
+                    obstacles
+                        .iter()
+                        .map(|o| {
+                            if k < 3 {
+                                o.aabb.min[k]
+                            } else {
+                                o.aabb.max[k - 3]
+                            }
+                        })
+                        .collect()
+                }),
+            })
         });
         CollisionModel {
-            bounds,
             robot: robot.clone(),
             placement,
             cell_from_robot,
@@ -336,7 +346,7 @@ impl CollisionModel {
             clearance_mm: clearance_mm.max(0.0),
             cyl,
             tool,
-            chain,
+            look,
         }
     }
 
@@ -472,14 +482,16 @@ impl CollisionModel {
     /// margin is lowered by [`SINCOS_POSE_SLACK_MM`] for it. Where the balls do not show the
     /// tool clear, the exact test of [`tool_is_free`](Self::tool_is_free) runs on that flange.
     pub fn tool_look_sincos(&self, axes: &[f64; 6], arm_sincos: &[(f64, f64); 3]) -> (bool, f64) {
-        let (Some(tool), Some(flange)) = (&self.tool, self.flange_sincos(axes, arm_sincos)) else {
+        let (Some(tool), Some(look), Some(flange)) =
+            (&self.tool, &self.look, self.flange_sincos(axes, arm_sincos))
+        else {
             return (true, f64::INFINITY);
         };
         let mut nearest = f64::INFINITY;
         for s in &tool.shapes {
             let (centre, radius) = s.ball;
             let centre = Point::from(flange.apply(&centre.coords.into()));
-            let sq = least_sq_distance(&centre, &self.bounds);
+            let sq = least_sq_distance(&centre, &look.bounds);
             nearest = nearest.min(sq.sqrt() - radius);
         }
         let margin = proof::lowered(nearest) - self.clearance_mm - SINCOS_POSE_SLACK_MM;
@@ -498,9 +510,12 @@ impl CollisionModel {
         axes: &[f64; 6],
         arm_sincos: &[(f64, f64); 3],
     ) -> Option<crate::robot::Pose> {
-        let (chain, table) = self.chain.as_ref()?;
-        let wrist = [3, 4, 5].map(|k| table.get(axes[k]));
-        Some(chain.pose6(&self.robot.urdf_arm_sincos(arm_sincos), &wrist))
+        let look = self.look.as_ref()?;
+        let wrist = [3, 4, 5].map(|k| look.wrist.get(axes[k]));
+        Some(
+            look.chain
+                .pose6(&self.robot.urdf_arm_sincos(arm_sincos), &wrist),
+        )
     }
 
     /// [`flange_sincos`](Self::flange_sincos) as an isometry (for tests).
