@@ -715,7 +715,7 @@ fn the_tool_looks_least_distance_is_distance_sq_point_aabb_to_the_bit() {
                     b.z = a.z; // flat
                 }
                 let (lo, hi) = (a.inf(&b), a.sup(&b));
-                Obstacle::new(&format!("b{k}"), Aabb::new(lo, hi))
+                Obstacle::new(format!("b{k}"), Aabb::new(lo, hi))
             })
             .collect();
         let bounds: [Vec<f64>; 6] = std::array::from_fn(|k| {

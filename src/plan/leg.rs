@@ -21,8 +21,10 @@
 //! margin from every box (`CollisionModel::tool_look`), that margin also answers the nodes
 //! around, up to two steps out, whose straight six-axis move from the node (the wrist as the
 //! schedule turns it, plus its rounding) moves the tool less than the margin: the same answers
-//! as the exact test, found with about a fifth of the tool placements on `torch-trunk`. Its
-//! steps are the neighbour steps whose six-axis move the step check accepts
+//! as the exact test, found with about a fifth of the tool placements on `torch-trunk`. A look
+//! places the flange from sines and cosines (`CollisionModel::tool_look_sincos`): those of axes
+//! 1..3 from the memo's tables of the grid's values, so a look takes no `sin_cos`. The
+//! graph's steps are the neighbour steps whose six-axis move the step check accepts
 //! (`GridCheck::step_is_safe`: node depths first, the whole-move proof where they do not
 //! suffice), asked with the two ends in index order so the answer is symmetric. Without a tool this costs nothing beyond the step check.
 //!

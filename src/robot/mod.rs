@@ -8,7 +8,9 @@
 //! Units: the URDF speaks metres and radians; [`urdf`] converts once, at load, to millimetres
 //! and degrees. Every joint value that crosses this module's API is a **controller value** in
 //! degrees (what a RAPID `jointtarget` holds); [`Robot::urdf_joints_deg`] is the one place that
-//! applies the controller's coupling ([`controller`]) to get URDF joint values.
+//! applies the controller's coupling ([`controller`]) to get URDF joint values (and
+//! [`Robot::urdf_arm_sincos`] the same coupling on sines and cosines, for `chain.rs`: the
+//! forward kinematics from sines and cosines the tool looks of a leg use).
 
 mod chain;
 pub mod controller;
