@@ -1,5 +1,9 @@
 //! Timing of the collision model on the trunk-like scene of the paper's section 6: the grid
-//! build's hot path (`inspect_column`, one column of 136 axis-3 values) and the whole-move check.
+//! build's hot path (`inspect_column`, one column of 136 axis-3 values) and the whole-move check;
+//! and the leg's tool look on `cells/torch-trunk.yaml` (`tool_look_sincos`, the arm's sines
+//! and cosines from a table as `plan::leg` gives them, against `tool_look`, which takes
+//! `sin_cos` of the arm, and the exact `tool_is_free`, which places the flange by
+//! `Robot::link_poses`).
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use gen_rapid::cell::Obstacle;
 use gen_rapid::collision::CollisionModel;
@@ -101,5 +105,91 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+fn bench_tool(c: &mut Criterion) {
+    let job = match gen_rapid::pipeline::load(std::path::Path::new("cells/torch-trunk.yaml")) {
+        Ok(job) => job,
+        Err(f) => panic!("{}", f.render()),
+    };
+    let placement = Placement {
+        base_mm: [0.0, -850.0, 0.0],
+        yaw_deg: 90.0,
+    };
+    let model = CollisionModel::of_cell(&job.cell, &job.robot, placement);
+    // Nodes over the trunk at 1 deg, the wrist as a leg turns it (0.001 deg values).
+    let poses: Vec<[f64; 6]> = (-40..=40)
+        .step_by(4)
+        .flat_map(|a1| (0..=40).step_by(4).map(move |a2| (a1, a2)))
+        .flat_map(|(a1, a2)| {
+            (-20..=40).step_by(6).map(move |a3| {
+                let s = f64::from(a1 + a2 + a3) * 0.001;
+                [
+                    f64::from(a1),
+                    f64::from(a2),
+                    f64::from(a3),
+                    12.345 + s,
+                    30.5 - s,
+                    -7.25 + s,
+                ]
+            })
+        })
+        .collect();
+    let sincos: Vec<[(f64, f64); 3]> = poses
+        .iter()
+        .map(|p| [0, 1, 2].map(|k| p[k].to_radians().sin_cos()))
+        .collect();
+    let mut g = c.benchmark_group("tool");
+    g.throughput(Throughput::Elements(poses.len() as u64));
+    g.bench_function("tool_look_sincos", |b| {
+        b.iter(|| {
+            poses
+                .iter()
+                .zip(&sincos)
+                .filter(|(p, sc)| model.tool_look_sincos(black_box(p), black_box(sc)).0)
+                .count()
+        })
+    });
+    g.bench_function("tool_look", |b| {
+        b.iter(|| {
+            poses
+                .iter()
+                .filter(|p| model.tool_look(black_box(p)).0)
+                .count()
+        })
+    });
+    g.bench_function("tool_is_free", |b| {
+        b.iter(|| {
+            poses
+                .iter()
+                .filter(|p| model.tool_is_free(black_box(p)))
+                .count()
+        })
+    });
+    // The flange alone: six quaternions (`link_poses`) against the chain of sines and cosines.
+    let robot = &job.robot;
+    let chain = gen_rapid::robot::SinCosChain::new(robot, &placement.cell_from_robot());
+    g.bench_function("flange_link_poses", |b| {
+        b.iter(|| {
+            poses
+                .iter()
+                .map(|p| robot.link_poses(black_box(p))[5].translation.x)
+                .sum::<f64>()
+        })
+    });
+    g.bench_function("flange_sincos_chain", |b| {
+        b.iter(|| {
+            poses
+                .iter()
+                .zip(&sincos)
+                .map(|(p, sc)| {
+                    let wrist = [3, 4, 5].map(|k| p[k].to_radians().sin_cos());
+                    let arm = robot.urdf_arm_sincos(black_box(sc));
+                    chain.pose6(&arm, &wrist).apply(&[0.0; 3])[0]
+                })
+                .sum::<f64>()
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench, bench_tool);
 criterion_main!(benches);

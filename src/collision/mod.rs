@@ -77,7 +77,7 @@ use crate::geometry::{
     distance_segment_aabb, distance_sq_point_aabb, gap_sq_aabb_aabb, Aabb, Cylinder, Point, Solid,
 };
 use crate::place::{Placement, PoseCheck};
-use crate::robot::{RangeViolation, Robot};
+use crate::robot::{MilliDegSinCos, RangeViolation, Robot, SinCosChain};
 use nalgebra::{Isometry3, Vector3};
 use parts::ToolData;
 
@@ -186,7 +186,57 @@ pub struct CollisionModel {
     cyl: Vec<CylData>,
     /// The tool's shapes (none: no tool volume).
     tool: Option<ToolData>,
+    /// With a tool: the chain that places the flange from the joints' sines and cosines, and
+    /// the boxes by coordinate (the tool looks of a leg's search,
+    /// [`tool_look_sincos`](Self::tool_look_sincos)).
+    look: Option<Box<ToolLook>>,
 }
+
+/// What the tool looks of a leg's search use besides the shapes
+/// ([`CollisionModel::tool_look_sincos`]).
+#[derive(Clone, Debug)]
+struct ToolLook {
+    /// The chain that places the flange, in the cell frame.
+    chain: SinCosChain,
+    /// The wrist angles' sines and cosines on the 0.001 deg lattice.
+    wrist: MilliDegSinCos,
+    /// The boxes' bounds by coordinate, `[min x, min y, min z, max x, max y, max z]` per box
+    /// index, for the balls' distances in one pass ([`least_sq_distance`]).
+    bounds: [Vec<f64>; 6],
+}
+
+/// The least squared distance from `p` to the boxes of `bounds` (`CollisionModel::bounds`):
+/// per box the same number as `geometry::distance_sq_point_aabb` (each axis's excess is the
+/// same up to its sign, which the square drops), laid out so the loop runs without branches.
+#[inline]
+fn least_sq_distance(p: &Point, bounds: &[Vec<f64>; 6]) -> f64 {
+    let [x0, y0, z0, x1, y1, z1] = bounds;
+    let n = x0.len();
+    let (x0, y0, z0, x1, y1, z1) = (&x0[..n], &y0[..n], &z0[..n], &x1[..n], &y1[..n], &z1[..n]);
+    let excess = |x: f64, lo: f64, hi: f64| {
+        let (a, b) = (lo - x, x - hi);
+        let e = if a > b { a } else { b };
+        if e > 0.0 {
+            e
+        } else {
+            0.0
+        }
+    };
+    let mut least = f64::INFINITY;
+    for k in 0..n {
+        let ex = excess(p.x, x0[k], x1[k]);
+        let ey = excess(p.y, y0[k], y1[k]);
+        let ez = excess(p.z, z0[k], z1[k]);
+        let d = ex * ex + ey * ey + ez * ez;
+        least = if d < least { d } else { least };
+    }
+    least
+}
+
+/// How much a flange pose from [`SinCosChain`] may be trusted to differ from
+/// [`Robot::link_poses`] at a tool ball's centre, mm: far above the rounding (about 1e-12 mm
+/// at a metre, held to 1e-9 mm by the chain's tests), taken off the margin its ball test gives.
+const SINCOS_POSE_SLACK_MM: f64 = 1e-6;
 
 /// The poses a configuration puts the parts at: links 1..3, and link 6 (the flange) when the
 /// model has a tool; cell frame.
@@ -261,6 +311,33 @@ impl CollisionModel {
                 }
             })
             .collect();
+        let look = tool.as_ref().map(|_| {
+            let wrist = &robot.controller.axes[3..6];
+            let lo = wrist
+                .iter()
+                .map(|a| a.min_deg)
+                .fold(f64::INFINITY, f64::min);
+            let hi = wrist
+                .iter()
+                .map(|a| a.max_deg)
+                .fold(f64::NEG_INFINITY, f64::max);
+            Box::new(ToolLook {
+                chain: SinCosChain::new(robot, &cell_from_robot),
+                wrist: MilliDegSinCos::new(lo, hi),
+                bounds: std::array::from_fn(|k| {
+                    obstacles
+                        .iter()
+                        .map(|o| {
+                            if k < 3 {
+                                o.aabb.min[k]
+                            } else {
+                                o.aabb.max[k - 3]
+                            }
+                        })
+                        .collect()
+                }),
+            })
+        });
         CollisionModel {
             robot: robot.clone(),
             placement,
@@ -269,6 +346,7 @@ impl CollisionModel {
             clearance_mm: clearance_mm.max(0.0),
             cyl,
             tool,
+            look,
         }
     }
 
@@ -393,27 +471,67 @@ impl CollisionModel {
     ///
     /// [`tool_is_free`]: Self::tool_is_free
     pub fn tool_look(&self, axes: &[f64; 6]) -> (bool, f64) {
-        let Some(tool) = &self.tool else {
+        let arm = [0, 1, 2].map(|k| axes[k].to_radians().sin_cos());
+        self.tool_look_sincos(axes, &arm)
+    }
+
+    /// [`tool_look`](Self::tool_look) with the sines and cosines of controller axes 1..3 given
+    /// (`arm_sincos`, from a table of the grid's values; they must be those of `axes`): the
+    /// flange is placed by [`SinCosChain`] (the wrist's sines and cosines from a table of the
+    /// written 0.001 deg), which agrees with [`Robot::link_poses`] to rounding; the balls'
+    /// margin is lowered by [`SINCOS_POSE_SLACK_MM`] for it. Where the balls do not show the
+    /// tool clear, the exact test of [`tool_is_free`](Self::tool_is_free) runs on that flange.
+    pub fn tool_look_sincos(&self, axes: &[f64; 6], arm_sincos: &[(f64, f64); 3]) -> (bool, f64) {
+        let (Some(tool), Some(look), Some(flange)) =
+            (&self.tool, &self.look, self.flange_sincos(axes, arm_sincos))
+        else {
             return (true, f64::INFINITY);
         };
-        let flange = self.flange_pose(axes);
         let mut nearest = f64::INFINITY;
         for s in &tool.shapes {
             let (centre, radius) = s.ball;
-            let centre = flange * centre;
-            let sq = self
-                .obstacles
-                .iter()
-                .map(|o| distance_sq_point_aabb(&centre, &o.aabb))
-                .fold(f64::INFINITY, f64::min);
+            let centre = Point::from(flange.apply(&centre.coords.into()));
+            let sq = least_sq_distance(&centre, &look.bounds);
             nearest = nearest.min(sq.sqrt() - radius);
         }
-        let margin = proof::lowered(nearest) - self.clearance_mm;
+        let margin = proof::lowered(nearest) - self.clearance_mm - SINCOS_POSE_SLACK_MM;
         if margin > 0.0 {
             (true, margin)
         } else {
-            (self.tool_is_free_at(&flange), 0.0)
+            (self.tool_is_free_at(&flange.isometry()), 0.0)
         }
+    }
+
+    /// The flange's pose (link 6, cell frame) from the chain of sines and cosines, the arm's
+    /// given, the wrist's from the table (`None` without a tool).
+    #[inline]
+    fn flange_sincos(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+    ) -> Option<crate::robot::Pose> {
+        let look = self.look.as_ref()?;
+        let wrist = [3, 4, 5].map(|k| look.wrist.get(axes[k]));
+        Some(
+            look.chain
+                .pose6(&self.robot.urdf_arm_sincos(arm_sincos), &wrist),
+        )
+    }
+
+    /// [`flange_sincos`](Self::flange_sincos) as an isometry (for tests).
+    #[cfg(test)]
+    pub(crate) fn flange_sincos_for_test(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+    ) -> Option<Isometry3<f64>> {
+        self.flange_sincos(axes, arm_sincos).map(|p| p.isometry())
+    }
+
+    /// The flange's pose (link 6, cell frame) by [`Robot::link_poses`] (for tests).
+    #[cfg(test)]
+    pub(crate) fn flange_pose_for_test(&self, axes: &[f64; 6]) -> Isometry3<f64> {
+        self.flange_pose(axes)
     }
 
     /// The most any point of any tool shape moves over a straight move of `delta_deg`

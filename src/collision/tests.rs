@@ -700,3 +700,43 @@ fn a_base_cylinder_below_its_mounting_plane_is_not_exempt() {
             .is_free(&s6([0.0, 0.0, 0.0]))
     );
 }
+
+#[test]
+fn the_tool_looks_least_distance_is_distance_sq_point_aabb_to_the_bit() {
+    // The branch-free pass over the bounds against the per-box function, on points inside,
+    // beside and far from the boxes, flat boxes included; and no boxes at all.
+    let mut rng = Rng(11);
+    for _ in 0..200 {
+        let boxes: Vec<Obstacle> = (0..rng.below(12))
+            .map(|k| {
+                let a = rng.point(-1000.0, 1000.0);
+                let mut b = rng.point(-1000.0, 1000.0);
+                if k % 4 == 0 {
+                    b.z = a.z; // flat
+                }
+                let (lo, hi) = (a.inf(&b), a.sup(&b));
+                Obstacle::new(format!("b{k}"), Aabb::new(lo, hi))
+            })
+            .collect();
+        let bounds: [Vec<f64>; 6] = std::array::from_fn(|k| {
+            boxes
+                .iter()
+                .map(|o| {
+                    if k < 3 {
+                        o.aabb.min[k]
+                    } else {
+                        o.aabb.max[k - 3]
+                    }
+                })
+                .collect()
+        });
+        for _ in 0..50 {
+            let p = rng.point(-1500.0, 1500.0);
+            let want = boxes
+                .iter()
+                .map(|o| distance_sq_point_aabb(&p, &o.aabb))
+                .fold(f64::INFINITY, f64::min);
+            assert_eq!(least_sq_distance(&p, &bounds).to_bits(), want.to_bits());
+        }
+    }
+}

@@ -21,8 +21,10 @@
 //! margin from every box (`CollisionModel::tool_look`), that margin also answers the nodes
 //! around, up to two steps out, whose straight six-axis move from the node (the wrist as the
 //! schedule turns it, plus its rounding) moves the tool less than the margin: the same answers
-//! as the exact test, found with about a fifth of the tool placements on `torch-trunk`. Its
-//! steps are the neighbour steps whose six-axis move the step check accepts
+//! as the exact test, found with about a fifth of the tool placements on `torch-trunk`. A look
+//! places the flange from sines and cosines (`CollisionModel::tool_look_sincos`): those of axes
+//! 1..3 from the memo's tables of the grid's values, so a look takes no `sin_cos`. The
+//! graph's steps are the neighbour steps whose six-axis move the step check accepts
 //! (`GridCheck::step_is_safe`: node depths first, the whole-move proof where they do not
 //! suffice), asked with the two ends in index order so the answer is symmetric. Without a tool this costs nothing beyond the step check.
 //!
@@ -117,6 +119,9 @@ pub struct ToolMemo {
     answers: Vec<AtomicU8>,
     /// The neighbour offsets and the tool's motion over each, in increasing motion.
     spread: OnceLock<Vec<(f64, [i32; 3])>>,
+    /// Per axis 1..3, per grid index along it: the sine and cosine of the controller value
+    /// (`CollisionModel::tool_look_sincos`); empty without a tool.
+    arm_sincos: [Vec<(f64, f64)>; 3],
 }
 
 const TOOL_CLEAR: u8 = 1;
@@ -130,10 +135,28 @@ impl ToolMemo {
         } else {
             0
         };
+        let arm_sincos = std::array::from_fn(|k| {
+            let along = if n > 0 { cs.grid.dims[k] } else { 0 };
+            (0..along)
+                .map(|i| cs.grid.value(k, i as i64).to_radians().sin_cos())
+                .collect()
+        });
         ToolMemo {
             answers: (0..n).map(|_| AtomicU8::new(0)).collect(),
             spread: OnceLock::new(),
+            arm_sincos,
         }
+    }
+
+    /// The sines and cosines of node `n`'s controller axes 1..3 (`None` without a tool).
+    #[inline]
+    fn arm_sincos(&self, n: Node) -> Option<[(f64, f64); 3]> {
+        let [a1, a2, a3] = &self.arm_sincos;
+        Some([
+            *a1.get(usize::try_from(n[0]).ok()?)?,
+            *a2.get(usize::try_from(n[1]).ok()?)?,
+            *a3.get(usize::try_from(n[2]).ok()?)?,
+        ])
     }
 }
 
@@ -180,7 +203,10 @@ impl LegGraph<'_> {
                 let model = self.check.model();
                 let six = self.six(n);
                 // Cheap bounds first; where they leave a margin, it proves the nodes around too.
-                let (clear, margin) = model.tool_look(&six);
+                let (clear, margin) = match self.memo.arm_sincos(n) {
+                    Some(sc) => model.tool_look_sincos(&six, &sc),
+                    None => model.tool_look(&six),
+                };
                 if let Some(m) = slot {
                     m.store(
                         if clear { TOOL_CLEAR } else { TOOL_BLOCKED },

@@ -412,3 +412,42 @@ fn spread_answers_are_exact(schedule: &WristSchedule) {
         "{clear} clear ({spread} spread), {blocked} blocked"
     );
 }
+
+#[test]
+fn the_tool_looks_place_the_flange_where_link_poses_does_at_every_node() {
+    // A placed, turned robot (the chain folds the placement in) and a grid whose origin is
+    // off zero on every axis: the memo's tables, indexed by the node, with the leg's wrist,
+    // give the flange `link_poses` gives, to 1e-9 mm at points 300 mm out.
+    let tool = torch();
+    let m = CollisionModel::new(
+        &Robot::irb1400(),
+        Placement {
+            base_mm: [250.0, -850.0, 40.0],
+            yaw_deg: 90.0,
+        },
+        vec![bx("table", [600.0, -900.0, 0.0], [1500.0, 900.0, 500.0])],
+        10.0,
+        Some(&tool),
+    );
+    let g = Grid::over([[-169.0, 160.0], [-67.0, 68.0], [-61.0, 69.0]], 7.0);
+    let check = m.grid_check(g.step_deg);
+    let cs = CSpace::build(g, &check);
+    let memo = ToolMemo::new(&cs, &check);
+    let schedule = WristSchedule::new(
+        &[-40.0, 0.0, 10.0, -170.0, -80.0, 33.3333],
+        &[40.0, 30.0, 30.0, 90.0, 80.0, 280.0],
+    );
+    let probes = [[0.0, 0.0, 0.0], [300.0, 0.0, 0.0], [0.0, -200.0, 220.0]].map(Point::from);
+    for i in 0..g.len() {
+        let n = g.node(i);
+        let six = schedule.six(&g.axes_deg(n));
+        let sc = memo.arm_sincos(n).expect("a memo with a tool has tables");
+        let fast = m
+            .flange_sincos_for_test(&six, &sc)
+            .expect("a model with a tool");
+        let slow = m.flange_pose_for_test(&six);
+        for p in &probes {
+            assert!((fast * p - slow * p).norm() < 1e-9, "node {n:?}, {six:?}");
+        }
+    }
+}

@@ -8,8 +8,11 @@
 //! Units: the URDF speaks metres and radians; [`urdf`] converts once, at load, to millimetres
 //! and degrees. Every joint value that crosses this module's API is a **controller value** in
 //! degrees (what a RAPID `jointtarget` holds); [`Robot::urdf_joints_deg`] is the one place that
-//! applies the controller's coupling ([`controller`]) to get URDF joint values.
+//! applies the controller's coupling ([`controller`]) to get URDF joint values (and
+//! [`Robot::urdf_arm_sincos`] the same coupling on sines and cosines, for `chain.rs`: the
+//! forward kinematics from sines and cosines the tool looks of a leg use).
 
+mod chain;
 pub mod controller;
 pub mod ik;
 pub mod urdf;
@@ -17,6 +20,7 @@ pub mod urdf;
 use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
 use std::path::{Path, PathBuf};
 
+pub use chain::{Frame, MilliDegSinCos, Pose, SinCosChain};
 pub use controller::{AxisSpec, Controller, Coupling};
 
 /// Controller values of axes 1..6, degrees.
