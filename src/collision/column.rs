@@ -1,12 +1,14 @@
 //! Node inspection of a whole grid column at once: the hot path of the configuration-space
 //! grid (paper section 3). Per node it writes the code of `grid.rs`: the free bit is exactly
 //! [`CollisionModel::arm_is_free`]'s answer; the depths are lower bounds, quantised. The work that
-//! does not depend on axis 3 is done once per column (the range of axes 1 and 2, the links they
-//! move, the frame of joint 3) and boxes the links moved by axis 3 cannot come near are culled.
-//! The rest goes by runs of the column (`block.rs`, beyond the paper): a run whose motion bound
-//! proves it free with full depth, or blocked, costs one pose at its middle and no per-node
-//! work; only runs near an obstacle's boundary are halved down to the node test. The range
-//! checks stay per node.
+//! depends on axis 1 alone is done once per slice of axis 1 (link 1's checks,
+//! [`GridCheck::slice_bytes`]); the work that does not depend on axis 3 once per column (the
+//! range of axes 1 and 2, link 2's checks, the frame of joint 3), and boxes the links moved by
+//! axis 3 cannot come near are culled. Axis 3's range and the coupled one hold on one run of the
+//! column's ascending values, found by two bisections (node by node where the values are not
+//! ascending). The rest goes by runs of the column (`block.rs`, beyond the paper): a run whose
+//! motion bound proves it free with full depth, or blocked, costs one pose at its middle and no
+//! per-node work; only runs near an obstacle's boundary are halved down to the node test.
 
 use super::block::{ascending, Centre, Swept, SET};
 use super::grid::{GridCheck, ARM_BITS, COLUMN_LEVELS, DEPTH_LEVELS};
@@ -21,10 +23,10 @@ const CULL_MARGIN_MM: f64 = 1e-6;
 
 /// Most fixed cylinders (links 1 and 2) whose slice answers are kept (more are checked per
 /// column).
-pub(super) const MAX_FIXED: usize = 8;
+pub const MAX_FIXED: usize = 8;
 
 /// Per fixed cylinder, the slice's answer for link 1 (`GridCheck::slice_bytes`).
-pub(super) type SliceBytes = [Option<Option<u8>>; MAX_FIXED];
+pub type SliceBytes = [Option<Option<u8>>; MAX_FIXED];
 
 /// Obstacles per chunk of the per-column culling (the kept indices live on the stack).
 const CULL_CHUNK: usize = SET;
@@ -60,31 +62,11 @@ impl GridCheck<'_> {
         );
     }
 
-    /// [`inspect_column`](Self::inspect_column) for every column `[a1, a2[j], a3[k]]` of a slice
-    /// of axis 1 (layout of `cspace::Inspector::inspect_slice`), link 1's checks done once.
-    pub fn inspect_slice(
-        &self,
-        a1_deg: f64,
-        a2_deg: &[f64],
-        a3_deg: &[f64],
-        code: &mut [u8],
-        column: &mut [u8],
-    ) {
-        let slice = self.slice_bytes(a1_deg);
-        let width = self.column_bytes();
-        let rows = code.chunks_mut(a3_deg.len().max(1));
-        for (j, (&a2, codes)) in a2_deg.iter().zip(rows).enumerate() {
-            let at = (j * width).min(column.len());
-            let own = &mut column[at..][..width];
-            self.inspect_column_in(a1_deg, a2, a3_deg, codes, own, &slice);
-        }
-    }
-
     /// What the cylinders of link 1 (moved by axis 1 alone) give every column of the slice at
     /// `a1_deg`: per fixed cylinder, in the order of `fixed`, `Some(Some(byte))` (its column
     /// byte: clear of every box), `Some(None)` (within the clearance: every node of the slice is
     /// blocked) or `None` (a link-2 cylinder, which each column checks itself).
-    pub(super) fn slice_bytes(&self, a1_deg: f64) -> SliceBytes {
+    pub fn slice_bytes(&self, a1_deg: f64) -> SliceBytes {
         let model = self.model;
         let poses = model.cell_link_poses(&[a1_deg, 0.0, 0.0]);
         let mut bytes = [None; MAX_FIXED];
@@ -116,7 +98,7 @@ impl GridCheck<'_> {
 
     /// [`inspect_column`](Self::inspect_column) with the slice's link-1 answers
     /// ([`slice_bytes`](Self::slice_bytes) of the same `a1_deg`) given.
-    pub(super) fn inspect_column_in(
+    pub fn inspect_column_in(
         &self,
         a1_deg: f64,
         a2_deg: f64,

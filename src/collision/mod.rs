@@ -205,7 +205,23 @@ struct ToolLook {
     bounds: [Vec<f64>; 6],
 }
 
-/// The least squared distance from `p` to the boxes of `bounds` (`CollisionModel::bounds`):
+/// The boxes' bounds by coordinate (the layout of `ToolLook::bounds`).
+fn bounds_by_coordinate(obstacles: &[Obstacle]) -> [Vec<f64>; 6] {
+    std::array::from_fn(|k| {
+        obstacles
+            .iter()
+            .map(|o| {
+                if k < 3 {
+                    o.aabb.min[k]
+                } else {
+                    o.aabb.max[k - 3]
+                }
+            })
+            .collect()
+    })
+}
+
+/// The least squared distance from `p` to the boxes of `bounds` ([`bounds_by_coordinate`]):
 /// per box the same number as `geometry::distance_sq_point_aabb` (each axis's excess is the
 /// same up to its sign, which the square drops), laid out so the loop runs without branches.
 #[inline]
@@ -324,18 +340,7 @@ impl CollisionModel {
             Box::new(ToolLook {
                 chain: SinCosChain::new(robot, &cell_from_robot),
                 wrist: MilliDegSinCos::new(lo, hi),
-                bounds: std::array::from_fn(|k| {
-                    obstacles
-                        .iter()
-                        .map(|o| {
-                            if k < 3 {
-                                o.aabb.min[k]
-                            } else {
-                                o.aabb.max[k - 3]
-                            }
-                        })
-                        .collect()
-                }),
+                bounds: bounds_by_coordinate(&obstacles),
             })
         });
         CollisionModel {
@@ -461,8 +466,9 @@ impl CollisionModel {
         })
     }
 
-    /// The tool at `axes` for a leg's search: whether it is clear ([`tool_is_free`]'s answer)
-    /// and a margin, mm: how much more than the clearance every tool shape keeps from every box
+    /// The tool at `axes` for a leg's search: whether it is clear ([`tool_is_free`]'s answer,
+    /// on the flange placed from sines and cosines, within about 1e-7 mm of `link_poses`'; every
+    /// move is proven again on `link_poses`) and a margin, mm: how much more than the clearance every tool shape keeps from every box
     /// at least, from each shape's ball (`parts.rs`, one point placed per shape), after the
     /// slack of `proof.rs`; 0 where the balls do not show the tool clear (`INFINITY` without a
     /// tool or boxes). The exact test runs only where the margin is not positive. With

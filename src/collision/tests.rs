@@ -718,18 +718,7 @@ fn the_tool_looks_least_distance_is_distance_sq_point_aabb_to_the_bit() {
                 Obstacle::new(format!("b{k}"), Aabb::new(lo, hi))
             })
             .collect();
-        let bounds: [Vec<f64>; 6] = std::array::from_fn(|k| {
-            boxes
-                .iter()
-                .map(|o| {
-                    if k < 3 {
-                        o.aabb.min[k]
-                    } else {
-                        o.aabb.max[k - 3]
-                    }
-                })
-                .collect()
-        });
+        let bounds = bounds_by_coordinate(&boxes);
         for _ in 0..50 {
             let p = rng.point(-1500.0, 1500.0);
             let want = boxes

@@ -116,9 +116,7 @@ pub fn distance_point_aabb(p: &Point, b: &Aabb) -> f64 {
 /// breakpoint inside it narrows (the sign of `g'` there says which end it
 /// replaces). After the six breakpoints no breakpoint is left inside the
 /// bracket, so `g'` is linear on it, and the minimiser is the root of that
-/// line, clamped to the bracket. No sorting, no iteration, no allocation
-/// (`segment_closest_param_by_pieces` in the tests walks the sorted pieces
-/// instead, as a reference).
+/// line, clamped to the bracket. No sorting, no iteration, no allocation.
 #[inline]
 fn closest_param_segment_aabb(a: &Point, d: &Vector3<f64>, bx: &Aabb) -> f64 {
     let slope = |t: f64| {
@@ -167,7 +165,7 @@ fn closest_param_segment_aabb(a: &Point, d: &Vector3<f64>, bx: &Aabb) -> f64 {
         let x = a[i] + mid * di;
         // The face plane the coordinate is beyond, if any (selects, not branches).
         let bound = x.max(bx.min[i]).min(bx.max[i]);
-        let outside = x != bound;
+        let outside = x < bx.min[i] || x > bx.max[i];
         ca += if outside { di * di } else { 0.0 };
         cb += if outside { di * (a[i] - bound) } else { 0.0 };
     }

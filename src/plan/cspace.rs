@@ -170,16 +170,30 @@ pub trait Inspector: Sync {
         code: &mut [u8],
         column: &mut [u8],
     ) {
-        let width = self.column_bytes();
-        for (j, (&a2, codes)) in a2_deg
-            .iter()
-            .zip(code.chunks_mut(a3_deg.len().max(1)))
-            .enumerate()
-        {
-            let at = (j * width).min(column.len());
-            let own = &mut column[at..][..width];
-            self.inspect_column(a1_deg, a2, a3_deg, codes, own);
-        }
+        each_column(
+            a2_deg,
+            a3_deg.len(),
+            self.column_bytes(),
+            code,
+            column,
+            |a2, codes, own| self.inspect_column(a1_deg, a2, a3_deg, codes, own),
+        );
+    }
+}
+
+/// The columns of one slice (layout of [`Inspector::inspect_slice`]): `each(a2, codes, own)`
+/// for every `a2_deg[j]` with column `j`'s `len` codes and `width` own bytes.
+pub fn each_column(
+    a2_deg: &[f64],
+    len: usize,
+    width: usize,
+    code: &mut [u8],
+    column: &mut [u8],
+    mut each: impl FnMut(f64, &mut [u8], &mut [u8]),
+) {
+    for (j, (&a2, codes)) in a2_deg.iter().zip(code.chunks_mut(len.max(1))).enumerate() {
+        let at = (j * width).min(column.len());
+        each(a2, codes, &mut column[at..][..width]);
     }
 }
 

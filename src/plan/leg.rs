@@ -21,7 +21,8 @@
 //! margin from every box (`CollisionModel::tool_look`), that margin also answers the nodes
 //! around, up to two steps out, whose straight six-axis move from the node (the wrist as the
 //! schedule turns it, plus its rounding) moves the tool less than the margin: the same answers
-//! as the exact test, found with about a fifth of the tool placements on `torch-trunk`. A look
+//! as the exact test (up to the flange pose's rounding, far inside the margin's slack; every
+//! move is proven again on `link_poses`), found with about a fifth of the tool placements on `torch-trunk`. A look
 //! places the flange from sines and cosines (`CollisionModel::tool_look_sincos`): those of axes
 //! 1..3 from the memo's tables of the grid's values, so a look takes no `sin_cos`. The
 //! graph's steps are the neighbour steps whose six-axis move the step check accepts

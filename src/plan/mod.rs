@@ -323,7 +323,17 @@ impl cspace::Inspector for GridCheck<'_> {
         code: &mut [u8],
         column: &mut [u8],
     ) {
-        GridCheck::inspect_slice(self, a1_deg, a2_deg, a3_deg, code, column)
+        // Link 1's checks once for the slice (`collision::column`).
+        let slice = self.slice_bytes(a1_deg);
+        let width = GridCheck::column_bytes(self);
+        cspace::each_column(
+            a2_deg,
+            a3_deg.len(),
+            width,
+            code,
+            column,
+            |a2, codes, own| self.inspect_column_in(a1_deg, a2, a3_deg, codes, own, &slice),
+        );
     }
 }
 

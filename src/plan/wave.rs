@@ -427,7 +427,7 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
     // The free nodes usable without a look, when the graph says which those are.
     let rows_kept = graph
         .look_bits()
-        .filter(|_| g.len() / 8 <= ROW_BITS_MAX_BYTES)
+        .filter(|_| g.dims[0] * g.dims[1] * g.dims[2].div_ceil(64) * 8 <= ROW_BITS_MAX_BYTES)
         .map(|bits| cs.row_bits(bits));
     let plain = rows_kept.as_deref().map(|r| r.plain.as_slice());
     // Decided nodes: numbered, not free, or not usable.
@@ -730,22 +730,11 @@ mod tests {
         let g = Grid::over([[0.0, 23.0], [0.0, 17.0], [0.0, 69.0]], 1.0);
         let cs = CSpace::from_fn(g, |n| hash([n[2], n[0], n[1]]) % 4 != 0);
         let usable = |n: Node| cs.is_free(n) && Holes(true).node_ok(n);
-        let mut dist = vec![0u32; g.len()];
         let start = (0..g.len())
             .map(|i| g.node(i))
             .find(|&n| usable(n))
             .expect("a start");
-        dist[g.index(start)] = 1;
-        let mut queue = VecDeque::from([start]);
-        while let Some(n) = queue.pop_front() {
-            for o in offsets(Connectivity::TwentySix) {
-                let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
-                if g.contains(m) && usable(m) && dist[g.index(m)] == 0 {
-                    dist[g.index(m)] = dist[g.index(n)] + 1;
-                    queue.push_back(m);
-                }
-            }
-        }
+        let dist = bfs(&g, start, usable);
         let far = (0..g.len())
             .max_by_key(|&i| (dist[i], i))
             .map(|i| g.node(i));
@@ -818,7 +807,7 @@ mod tests {
         }
         // 130 nodes along axis 3: three words a row, the last partly used (the row words a
         // constant); 450: eight words (their number read at run time).
-        for d2 in [130usize, 450] {
+        for d2 in [128usize, 130, 450] {
             let g = Grid::over([[0.0, 19.0], [0.0, 15.0], [0.0, (d2 - 1) as f64]], 1.0);
             let cs = CSpace::build(g, &Codes);
             let looked = (0..g.len())

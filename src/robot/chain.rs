@@ -190,7 +190,9 @@ impl SinCosChain {
 /// Sines and cosines of angles on the written 0.001 deg lattice (`precision`), from a table
 /// of whole degrees and one of thousandths by the angle-sum formulas: a leg's wrist angles are
 /// rounded to that lattice, so the tool's looks need no `sin_cos` (rounding about 1e-16, as
-/// the chain's). Any other angle, or one outside the table, gets `sin_cos`.
+/// the chain's). An angle within 1e-9 deg of the lattice is read as on it: at most 1.7e-11 rad,
+/// under 1e-7 mm of motion at 2 m of reach, inside the 1e-6 mm by which the looks' margins are
+/// lowered. Any other angle, or one outside the table, gets `sin_cos`.
 #[derive(Clone, Debug)]
 pub struct MilliDegSinCos {
     lo_deg: i64,
