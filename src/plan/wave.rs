@@ -889,6 +889,40 @@ mod tests {
         }
     }
 
+    /// A dropped row wave's buffer comes back from `Kept::zeroed` cleared where the wave wrote
+    /// it: the buffer is seen to come back (same allocation; other tests share the pool, so a
+    /// few tries) and then holds no label.
+    #[test]
+    fn a_dropped_row_buffer_comes_back_cleared() {
+        // 3 rows of 130 nodes, 3 words a row; a length no other test's grid has.
+        let (d2, row_words, rows) = (130usize, 3usize, 3usize);
+        let len = rows * d2;
+        let mut reused = 0;
+        for attempt in 0..50 {
+            let mut words = Kept::<u16>::zeroed(len);
+            let mut written = vec![0u64; rows * row_words];
+            for k in 0..40 {
+                let i = (attempt * 37 + k * 11) % len;
+                words[i] = 7;
+                let (r, x) = (i / d2, i % d2);
+                written[r * row_words + x / 64] |= 1 << (x % 64);
+            }
+            let at = words.as_ptr();
+            drop(Kept {
+                words,
+                written,
+                row_words,
+                d2,
+            });
+            let again = Kept::<u16>::zeroed(len);
+            if again.as_ptr() == at {
+                reused += 1;
+                assert!(again.iter().all(|&w| w == 0), "attempt {attempt}");
+            }
+        }
+        assert!(reused > 0, "the buffer never came back");
+    }
+
     fn open_dims(a: usize, b: usize, c: usize) -> CSpace {
         let g = Grid::over([[0.0, a as f64], [0.0, b as f64], [0.0, c as f64]], 1.0);
         CSpace::from_fn(g, |_| true)
