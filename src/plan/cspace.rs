@@ -209,9 +209,10 @@ pub struct CSpace {
     rows: RowCache,
 }
 
-/// A per-row bit set of some of the grid's free nodes, for the wave (`wave::number_rows`). A row holds
-/// the nodes of fixed axes 1 and 2, `words` words each, rows in index order; axis-3 index
-/// `64 j + b` is bit `b` of the row's word `j`, and the bits past the row's last node are clear.
+/// A per-row bit set of some of the grid's free nodes, for the wave (`wave::number_rows`). A
+/// row holds the nodes of fixed axes 1 and 2, `words` words each, rows in index order; axis-3
+/// index `64 j + b` is bit `b` of the row's word `j`, and the bits past the row's last node are
+/// clear.
 #[derive(Debug, PartialEq, Eq)]
 pub struct RowBits {
     /// Words per row: `dims[2]` bits rounded up to whole words.

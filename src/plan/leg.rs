@@ -22,12 +22,13 @@
 //! around, up to two steps out, whose straight six-axis move from the node (the wrist as the
 //! schedule turns it, plus its rounding) moves the tool less than the margin: the same answers
 //! as the exact test (up to the flange pose's rounding, far inside the margin's slack; every
-//! move is proven again on `link_poses`), found with about a fifth of the tool placements on `torch-trunk`. A look
-//! places the flange from sines and cosines (`CollisionModel::tool_look_sincos`): those of axes
-//! 1..3 from the memo's tables of the grid's values, so a look takes no `sin_cos`. The
-//! graph's steps are the neighbour steps whose six-axis move the step check accepts
-//! (`GridCheck::step_is_safe`: node depths first, the whole-move proof where they do not
-//! suffice), asked with the two ends in index order so the answer is symmetric. Without a tool this costs nothing beyond the step check.
+//! move is proven again on `link_poses`), found with about a fifth of the tool placements on
+//! `torch-trunk`. A look places the flange from sines and cosines
+//! (`CollisionModel::tool_look_sincos`): those of axes 1..3 from the memo's tables of the grid's
+//! values, so a look takes no `sin_cos`. The graph's steps are the neighbour steps whose
+//! six-axis move the step check accepts (`GridCheck::step_is_safe`: node depths first, the
+//! whole-move proof where they do not suffice), asked with the two ends in index order so the
+//! answer is symmetric. Without a tool this costs nothing beyond the step check.
 //!
 //! # The leg
 //!
@@ -226,8 +227,8 @@ impl LegGraph<'_> {
     /// axis, that the tool reaches from `n` by a straight six-axis move of motion below
     /// `margin` (`CollisionModel::tool_motion_mm`): axes 1..3 by the offset, the wrist by the
     /// most the leg's schedule turns it over that offset plus the rounding of both wrists to
-    /// 0.001 deg (whenever the leg turns that wrist axis at all). Such a node's tool keeps more than the clearance, so the exact test would
-    /// answer clear there too: the memo holds the same answers, found with fewer placements of
+    /// 0.001 deg (whenever the leg turns that wrist axis at all). Such a node's tool keeps more
+    /// than the clearance, so the exact test would answer clear there too: the memo holds the same answers, found with fewer placements of
     /// the tool. The offsets' motions are the same at every node of the leg: reckoned once, in
     /// increasing order, so a node visits only the offsets it proves (and one more).
     fn spread_clear(&self, n: Node, margin: f64) {
@@ -246,8 +247,9 @@ impl LegGraph<'_> {
                         }
                         let dq = [i, j, k].map(|o| f64::from(o) * step);
                         let ds = self.schedule.progress_change(&dq);
-                        // The rounding of both wrists: 0.001 deg whenever the wrist turns on the leg at
-                        // all (two nodes of equal computed progress can still differ by an ulp).
+                        // The rounding of both wrists: 0.001 deg whenever the wrist turns
+                        // on the leg at all (two nodes of equal computed progress can still
+                        // differ by an ulp).
                         let dw = span.map(|w| if w > 0.0 { ds * w + 1e-3 } else { 0.0 });
                         let motion =
                             model.tool_motion_mm(&[dq[0], dq[1], dq[2], dw[0], dw[1], dw[2]]);

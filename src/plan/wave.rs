@@ -805,8 +805,8 @@ mod tests {
                 self.1
             }
         }
-        // 130 nodes along axis 3: three words a row, the last partly used (the row words a
-        // constant); 450: eight words (their number read at run time).
+        // 128 nodes along axis 3: two whole words a row; 130: three words, the last partly
+        // used (the row words a constant); 450: eight words (their number read at run time).
         for d2 in [128usize, 130, 450] {
             let g = Grid::over([[0.0, 19.0], [0.0, 15.0], [0.0, (d2 - 1) as f64]], 1.0);
             let cs = CSpace::build(g, &Codes);
@@ -866,7 +866,8 @@ mod tests {
 
     /// A row wave's buffer is kept for the next wave when dropped, cleared where it was
     /// written: a wave that numbers nearly the whole grid, then short waves over the same grid
-    /// (which take its buffer) number nothing past their end's level, and every node below it
+    /// (which take its buffer unless another test's wave took it first: see
+    /// `a_dropped_row_buffer_comes_back_cleared`) number nothing past their end's level, and every node below it
     /// its Chebyshev distance plus one.
     #[test]
     fn a_kept_label_buffer_is_cleared_for_the_next_wave() {

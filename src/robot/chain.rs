@@ -10,30 +10,7 @@
 //! to 1e-9 mm on random poses). Beyond the paper: a speed device only.
 
 use super::Robot;
-use nalgebra::{Isometry3, Matrix3, Point3, Rotation3, Translation3, UnitQuaternion, Vector3};
-
-/// A rigid frame as a rotation matrix and a translation, mm.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Frame {
-    pub rot: Matrix3<f64>,
-    pub tr: Vector3<f64>,
-}
-
-impl Frame {
-    /// The frame of an isometry.
-    pub fn of(iso: &Isometry3<f64>) -> Frame {
-        Frame {
-            rot: iso.rotation.to_rotation_matrix().into_inner(),
-            tr: iso.translation.vector,
-        }
-    }
-
-    /// `p` (in this frame) in the parent frame.
-    #[inline]
-    pub fn apply(&self, p: &Point3<f64>) -> Point3<f64> {
-        Point3::from(self.rot * p.coords + self.tr)
-    }
-}
+use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3};
 
 /// A 3x3 matrix as rows, for the hand-unrolled products of the chain.
 type M3 = [[f64; 3]; 3];
@@ -55,8 +32,8 @@ struct Joint {
     aligned: Option<(usize, f64)>,
 }
 
-/// A pose of the chain (rotation rows and translation): [`Frame`] without nalgebra's types,
-/// for placing points in the unrolled products.
+/// A pose of the chain (rotation rows and translation, mm), without nalgebra's types, for
+/// placing points in the unrolled products.
 #[derive(Clone, Copy, Debug)]
 pub struct Pose {
     r: M3,
@@ -78,13 +55,6 @@ impl Pose {
     pub fn apply(&self, x: &[f64; 3]) -> [f64; 3] {
         let (r, t) = (&self.r, &self.t);
         std::array::from_fn(|k| t[k] + r[k][0] * x[0] + r[k][1] * x[1] + r[k][2] * x[2])
-    }
-
-    fn frame(&self) -> Frame {
-        Frame {
-            rot: Matrix3::from_fn(|r, c| self.r[r][c]),
-            tr: Vector3::from(self.t),
-        }
     }
 }
 
@@ -165,25 +135,14 @@ impl SinCosChain {
         self.step(&p2, 2, sc[2])
     }
 
-    /// The pose of link 6 for the sines and cosines of URDF joints 1..3 (`arm`) and 4..6
-    /// (`wrist`): [`link6`](Self::link6) as a [`Pose`].
+    /// The pose of link 6 (the flange's link) for the sines and cosines of URDF joints 1..3
+    /// (`arm`) and 4..6 (`wrist`).
     #[inline(always)]
     pub fn pose6(&self, arm: &[(f64, f64); 3], wrist: &[(f64, f64); 3]) -> Pose {
         let p3 = self.pose3(arm);
         let p4 = self.step(&p3, 3, wrist[0]);
         let p5 = self.step(&p4, 4, wrist[1]);
         self.step(&p5, 5, wrist[2])
-    }
-
-    /// The pose of link 3 (child of joint 3) for the sines and cosines of URDF joints 1..3.
-    pub fn link3(&self, sc: &[(f64, f64); 3]) -> Frame {
-        self.pose3(sc).frame()
-    }
-
-    /// The pose of link 6 (the flange's link) for the sines and cosines of URDF joints 1..3
-    /// (`arm`) and 4..6 (`wrist`).
-    pub fn link6(&self, arm: &[(f64, f64); 3], wrist: &[(f64, f64); 3]) -> Frame {
-        self.pose6(arm, wrist).frame()
     }
 }
 
@@ -258,6 +217,7 @@ impl Robot {
 mod tests {
     use super::*;
     use crate::robot::Coupling;
+    use nalgebra::Point3;
 
     /// A small deterministic generator (xorshift), uniform in `[lo, hi)`.
     struct Rng(u64);
@@ -274,8 +234,9 @@ mod tests {
         deg.to_radians().sin_cos()
     }
 
-    /// Largest distance between the points a ring of probes 300 mm out takes under two frames.
-    fn gap_mm(f: &Frame, iso: &Isometry3<f64>) -> f64 {
+    /// Largest distance between the points a ring of probes 300 mm out takes when placed by
+    /// `place` and by `iso`.
+    fn gap_mm(place: impl Fn(&Point3<f64>) -> Point3<f64>, iso: &Isometry3<f64>) -> f64 {
         [
             [0.0, 0.0, 0.0],
             [300.0, 0.0, 0.0],
@@ -286,9 +247,14 @@ mod tests {
         .iter()
         .map(|p| {
             let p = Point3::from(*p);
-            (f.apply(&p) - iso * p).norm()
+            (place(&p) - iso * p).norm()
         })
         .fold(0.0, f64::max)
+    }
+
+    /// `p` placed by a chain's pose.
+    fn by(pose: &Pose) -> impl Fn(&Point3<f64>) -> Point3<f64> + '_ {
+        |p| Point3::from(pose.apply(&p.coords.into()))
     }
 
     fn check(robot: &Robot, base: &Isometry3<f64>, seed: u64) {
@@ -300,8 +266,8 @@ mod tests {
             // Controller axes' sines and cosines, coupled as the controller says.
             let arm = robot.urdf_arm_sincos(&[sc(axes[0]), sc(axes[1]), sc(axes[2])]);
             let wrist = [sc(axes[3]), sc(axes[4]), sc(axes[5])];
-            let l3 = chain.link3(&arm);
-            let l6 = chain.link6(&arm, &wrist);
+            let l3 = chain.pose3(&arm);
+            let l6 = chain.pose6(&arm, &wrist);
             let probe = [[0.0, 0.0, 0.0], [120.0, -40.0, 300.0]];
             let pose = chain.pose6(&arm, &wrist);
             for p in &probe {
@@ -309,13 +275,19 @@ mod tests {
                 let got = Point3::from(pose.apply(p));
                 assert!((got - want).norm() < 1e-9, "pose6 at {axes:?}");
             }
-            let iso = Frame::of(&pose.isometry());
+            let iso = pose.isometry();
             assert!(
-                gap_mm(&iso, &(base * poses[5])) < 1e-9,
+                gap_mm(|p| iso * p, &(base * poses[5])) < 1e-9,
                 "isometry at {axes:?}"
             );
-            assert!(gap_mm(&l3, &(base * poses[2])) < 1e-9, "link 3 at {axes:?}");
-            assert!(gap_mm(&l6, &(base * poses[5])) < 1e-9, "link 6 at {axes:?}");
+            assert!(
+                gap_mm(by(&l3), &(base * poses[2])) < 1e-9,
+                "link 3 at {axes:?}"
+            );
+            assert!(
+                gap_mm(by(&l6), &(base * poses[5])) < 1e-9,
+                "link 6 at {axes:?}"
+            );
         }
     }
 
@@ -387,10 +359,10 @@ mod tests {
         let axes = [10.0, 20.0, 30.0, 40.0, 50.0, 60.0];
         let poses = robot.link_poses(&axes);
         let arm = robot.urdf_arm_sincos(&[sc(10.0), sc(20.0), sc(30.0)]);
-        let swapped = chain.link6(&arm, &[sc(50.0), sc(40.0), sc(60.0)]);
-        assert!(gap_mm(&swapped, &poses[5]) > 1.0);
+        let swapped = chain.pose6(&arm, &[sc(50.0), sc(40.0), sc(60.0)]);
+        assert!(gap_mm(by(&swapped), &poses[5]) > 1.0);
         // And the coupling left out moves link 3.
-        let uncoupled = chain.link3(&[sc(10.0), sc(20.0), sc(30.0)]);
-        assert!(gap_mm(&uncoupled, &poses[2]) > 1.0);
+        let uncoupled = chain.pose3(&[sc(10.0), sc(20.0), sc(30.0)]);
+        assert!(gap_mm(by(&uncoupled), &poses[2]) > 1.0);
     }
 }

@@ -20,7 +20,7 @@ pub mod urdf;
 use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
 use std::path::{Path, PathBuf};
 
-pub use chain::{Frame, MilliDegSinCos, Pose, SinCosChain};
+pub use chain::{MilliDegSinCos, Pose, SinCosChain};
 pub use controller::{AxisSpec, Controller, Coupling};
 
 /// Controller values of axes 1..6, degrees.
