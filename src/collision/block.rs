@@ -146,6 +146,13 @@ pub(super) fn blocked_bound(c: &Cylinder, b: &Aabb, m: f64) -> f64 {
     s + m - rho
 }
 
+/// The least tool distance `f` that is not near for `tool_nodes` whatever its size: `f > c +
+/// 1e-6 (1 + f)` holds for every `f` above it.
+#[inline]
+fn not_near(c: f64) -> f64 {
+    (c + 1e-6) / (1.0 - 1e-6) + 1e-9
+}
+
 /// The motion bound over a run: `reach * h`, raised over its float value (module doc).
 #[inline]
 fn motion(reach: f64, h: f64) -> f64 {
@@ -190,6 +197,15 @@ impl GridCheck<'_> {
             let b = &s.boxes[k as usize].aabb;
             let lb = distance_capsule_aabb(&cyl, b);
             if lb - m - MARGIN_MM >= s.deep {
+                continue;
+            }
+            if lb - m - MARGIN_MM > c {
+                let q = self.depth(lb - m - MARGIN_MM, s.span);
+                for f in out[lo..hi].iter_mut() {
+                    if *f != 0 && *f & ARM_BITS > q {
+                        *f = (*f & !ARM_BITS) | q;
+                    }
+                }
                 continue;
             }
             if lb <= (c - m).max(0.0) && blocked_bound(&cyl, b, m) <= c - MARGIN_MM * (1.0 + c) {
@@ -281,14 +297,34 @@ impl GridCheck<'_> {
             let (q0, q1) = (q3_of(a3[lo]), q3_of(a3[hi - 1]));
             let m = motion(t.reach_mm, 0.5 * (q1 - q0).abs());
             let centre = at(&t.split, 0.5 * (q0 + q1));
+            let c = self.model.clearance_mm;
             let mut kept = [0u8; SET];
             let mut nk = 0;
             for &k in set {
                 let f = distance_point_aabb(&centre, t.boxes[k as usize]) - t.radius;
-                if f - m - MARGIN_MM < t.deep {
-                    kept[nk] = k;
-                    nk += 1;
+                if f - m - MARGIN_MM >= t.deep {
+                    continue;
                 }
+                if f + m + MARGIN_MM <= c {
+                    // Near at every node of the run, with depth 0: what the nodes would get.
+                    for f in out[lo..hi].iter_mut().filter(|f| **f != 0) {
+                        *f = (*f & !TOOL_BITS) | Self::code(true, 0, 0) & TOOL_BITS;
+                    }
+                    return;
+                }
+                let far = f - m - MARGIN_MM;
+                if far > not_near(c) {
+                    // Not near for this box at any node; the run's bound serves the depth.
+                    let q = self.depth(far, self.centre_span);
+                    for f in out[lo..hi].iter_mut().filter(|f| **f != 0) {
+                        if (*f >> 3) & DEPTH_LEVELS > q {
+                            *f = (*f & !(DEPTH_LEVELS << 3)) | (q << 3);
+                        }
+                    }
+                    continue;
+                }
+                kept[nk] = k;
+                nk += 1;
             }
             if nk > 0 {
                 let mid = lo + (hi - lo) / 2;
