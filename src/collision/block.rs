@@ -10,13 +10,19 @@
 //! float value, as in `grid.rs`). The runs need the column's values in ascending order (the
 //! grid's are); a column that is not is inspected node by node.
 //!
-//! *Free and deep.* For a (cylinder, box) pair with capsule distance `l` at `q_c`, every node
-//! of the run keeps at least `l - M` from the box. Where `l - M` is at least `deep_mm` of the
-//! arm's scale (`grid.rs`: the distance from which the depth is `K`), the pair leaves every
-//! node of the run free with depth `K`, and it is dropped from the run's halves. A run without
-//! pairs left keeps its codes as they are (free with depth `K` as far as this cylinder goes):
-//! no per-node work at all. So the free bit stays the node test's (a dropped pair's exact test
-//! would answer free, far above the clearance), and every depth stays a lower bound.
+//! *Free.* For a (cylinder, box) pair with capsule distance `l` at `q_c`, every node of the
+//! run keeps at least `l - M` from the box. Where `l - M` is at least `deep_mm` of the arm's
+//! scale (`grid.rs`: the distance from which the depth is `K`), the pair leaves every node of
+//! the run free with depth `K`; where it is only above the clearance `c`, every node of the run
+//! is free as far as this pair goes, and its depth is at most that of `l - M` (the run's own
+//! bound, shallower than a node measured alone would get). Either way the pair is dropped from
+//! the run's halves. A run without pairs left keeps its codes as they are: no per-node work at
+//! all. So the free bit stays the node test's (a dropped pair's exact test would answer free,
+//! above the clearance by more than the margin), and every depth stays a lower bound. The
+//! depths only decide which steps the codes prove before the whole-move proof is asked
+//! (`grid.rs`), so shallower ones cost the planner time, never a different answer; runs that
+//! stop at the clearance instead of at `deep_mm` took about a tenth off the trunk's 1 deg
+//! build (`benches/README.md`).
 //!
 //! *Blocked.* A ball of radius `rho = min(r, L/2)` about a point of the cylinder's axis at
 //! least `rho` from both ends lies in the cylinder (the inner capsule of `geometry`). With `s`
@@ -27,14 +33,18 @@
 //! is within the clearance (at distance 0 when `c` = 0): every node is blocked, as the node
 //! test would find (the margin, `1e-6 (1 mm + c)`, is far above the exact decision's rounding).
 //!
-//! *The tool.* The wrist centre `C` moves at most `R[2][C] h` over a run: a box whose distance
-//! from `C` at `q_c`, less that, less the tool's radius `R_T`, is at least `deep_mm` of the
-//! tool's scale leaves every node of the run with the tool far (bit 6 clear) and depth `K`.
+//! *The tool.* The wrist centre `C` moves at most `m = R[2][C] h` over a run; `f` is a box's
+//! distance from `C` at `q_c` less the tool's radius `R_T`. Where `f - m` is at least `deep_mm`
+//! of the tool's scale, the box leaves every node of the run with the tool far (bit 6 clear)
+//! and depth `K`; where it is only above the near test's threshold (`c + 1e-6 (1 + f)`, for any
+//! `f`), far with the depth of `f - m`. Where `f + m` is at most `c` (less the margin), every
+//! node of the run is near with tool depth 0, what each node measured alone would get (the near
+//! bit is an OR over the boxes, the depth a least), and the run is done. So the near bits are
+//! exactly the node path's (`block_tests.rs`); only depths may be shallower.
 //!
-//! A run proven free gives its nodes depth `K` for the pairs it drops (what a node measured
-//! alone would get at most); nodes of halved runs get the node path's depths, where the second
-//! node of a 2-node run may reuse the first's bound (`block_tests.rs`: a few percent of the
-//! free nodes shallower than measured alone, none deeper). The split points depend on the
+//! Nodes of halved runs get the node path's depths, where the second node of a 2-node run may
+//! reuse the first's bound (`block_tests.rs`: about 14 % of the free nodes of random cells come
+//! out shallower than measured alone, none deeper). The split points depend on the
 //! column alone, so the result does not depend on the threads.
 
 use super::grid::{GridCheck, ARM_BITS, DEPTH_LEVELS};
@@ -200,6 +210,7 @@ impl GridCheck<'_> {
                 continue;
             }
             if lb - m - MARGIN_MM > c {
+                // Free at every node of the run; the run's bound serves the depth.
                 let q = self.depth(lb - m - MARGIN_MM, s.span);
                 for f in out[lo..hi].iter_mut() {
                     if *f != 0 && *f & ARM_BITS > q {
