@@ -73,7 +73,7 @@ pub use proof::{Clearance, DISTANCE_SLACK_REL, MOVE_FLOOR_MM};
 pub use crate::cell::Obstacle;
 use crate::cell::{Cell, Tool};
 use crate::geometry::{
-    distance_capsule_aabb, distance_cylinder_aabb_exact, distance_point_aabb,
+    closest_param_segment_aabb, distance_cylinder_aabb_exact, distance_point_aabb,
     distance_segment_aabb, distance_sq_point_aabb, gap_sq_aabb_aabb, Aabb, Cylinder, Point, Solid,
 };
 use crate::place::{Placement, PoseCheck};
@@ -783,41 +783,34 @@ fn stands_on_its_mounting_plane(robot: &Robot, c: &crate::robot::LinkCylinder) -
 }
 
 /// The node test used everywhere in this module: `true` when the cylinder keeps MORE than
-/// `clearance` from the box. After the capsule bound, the alternating projections of
-/// `geometry::certify` (a certified separating plane or point pair: nearly every case), then
-/// for what they leave open two cheap extra bounds (a lower bound from capsules around
-/// shortened axes that still contain the rim, an upper bound from points of the cylinder) and
-/// parry's GJK. All are valid bounds, so the answer is the exact test's.
+/// `clearance` from the box. Cheap bounds first, from the axis point nearest the box (the
+/// capsule's lower bound; that point and the point of its disc nearest the box lie in the
+/// cylinder: upper bounds), then the cap centres and their rim points nearest the box (upper
+/// bounds), capsules about shortened axes that still hold the rims (lower bounds); what they
+/// leave open goes to the alternating projections of `geometry::certify` (a certified
+/// separating plane or point pair: nearly every case) and then parry's GJK. All are valid
+/// bounds, so the answer is the exact test's. On the trunk's 1 deg grid build the cheap bounds
+/// decide about two thirds of the calls the projections used to take.
 #[inline]
 fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
-    if distance_capsule_aabb(c, b) > clearance {
+    let d = c.b - c.a;
+    let near = c.a + d * closest_param_segment_aabb(&c.a, &d, b);
+    let axis = distance_point_aabb(&near, b);
+    let r = c.radius.max(0.0);
+    // The capsule's distance (`distance_capsule_aabb`).
+    if (axis - r).max(0.0) > clearance {
         return true;
     }
-    if let Some(clear) = crate::geometry::clear_by_projection(c, b, clearance) {
-        return clear;
+    if axis <= clearance {
+        return false;
     }
-    let d = c.b - c.a;
     let len = d.norm();
-    let r = c.radius.max(0.0);
     if len > 0.0 && r > 0.0 {
         let u = d / len;
-        // Segment shortened by s at both ends, radius sqrt(r^2 + s^2): contains the cylinder.
-        for k in [1.0, 2.5, 6.0] {
-            let s = (k * r).min(0.5 * len);
-            let lb = distance_segment_aabb(&(c.a + u * s), &(c.b - u * s), b) - r.hypot(s);
-            if lb > clearance {
-                return true;
-            }
-        }
-        // Cap centres and the rim point of each cap nearest to the box lie on the cylinder.
-        let mut ub = f64::INFINITY;
-        for p in [c.a, c.b] {
-            let q = Point::new(
-                p.x.clamp(b.min.x, b.max.x),
-                p.y.clamp(b.min.y, b.max.y),
-                p.z.clamp(b.min.z, b.max.z),
-            );
-            let w = q - p;
+        // Upper bounds: on the disc about the axis point nearest the box and on both caps, the
+        // point nearest the box point nearest the disc's centre.
+        for p in [near, c.a, c.b] {
+            let w = clamp_to_aabb(&p, b) - p;
             let perp = w - u * u.dot(&w);
             let n = perp.norm();
             let rim = if n > 0.0 {
@@ -825,16 +818,36 @@ fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
             } else {
                 p
             };
-            ub = ub
-                .min(distance_point_aabb(&p, b))
-                .min(distance_point_aabb(&rim, b));
+            if distance_point_aabb(&rim, b) <= clearance {
+                return false;
+            }
         }
-        if ub <= clearance {
-            return false;
+        // Segment shortened by s at both ends, radius sqrt(r^2 + s^2): contains the cylinder.
+        for k in [1.0, 2.5, 6.0] {
+            let s = (k * r).min(0.5 * len);
+            // sqrt(r^2 + s^2) raised over its rounding (`hypot` costs about ten times more).
+            let radius = (r * r + s * s).sqrt() * (1.0 + 1e-15);
+            let lb = distance_segment_aabb(&(c.a + u * s), &(c.b - u * s), b) - radius;
+            if lb > clearance {
+                return true;
+            }
         }
+    }
+    if let Some(clear) = crate::geometry::clear_by_projection(c, b, clearance) {
+        return clear;
     }
     // What the projections left open (a distance within their slack of the clearance): GJK.
     distance_cylinder_aabb_exact(c, b) > clearance
+}
+
+/// The point of box `b` nearest to `p`.
+#[inline]
+fn clamp_to_aabb(p: &Point, b: &Aabb) -> Point {
+    Point::new(
+        p.x.clamp(b.min.x, b.max.x),
+        p.y.clamp(b.min.y, b.max.y),
+        p.z.clamp(b.min.z, b.max.z),
+    )
 }
 
 /// The place stage's question: why a pose (an IK solution, or a point given as joints) cannot be

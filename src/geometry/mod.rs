@@ -118,7 +118,7 @@ pub fn distance_point_aabb(p: &Point, b: &Aabb) -> f64 {
 /// bracket, so `g'` is linear on it, and the minimiser is the root of that
 /// line, clamped to the bracket. No sorting, no iteration, no allocation.
 #[inline]
-fn closest_param_segment_aabb(a: &Point, d: &Vector3<f64>, bx: &Aabb) -> f64 {
+pub fn closest_param_segment_aabb(a: &Point, d: &Vector3<f64>, bx: &Aabb) -> f64 {
     let slope = |t: f64| {
         let mut s = 0.0;
         for i in 0..3 {
