@@ -11,6 +11,7 @@
 pub mod excerpt;
 pub mod geometry;
 pub mod names;
+pub mod parallel;
 pub mod precision;
 /// Progress of long runs as the stages report it (a trait; the terminal bar is in `cli`).
 pub mod progress;

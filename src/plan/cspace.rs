@@ -264,34 +264,35 @@ impl CSpace {
             .min(grid.dims[0].max(1));
         let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
         let a2: Vec<f64> = (0..grid.dims[1] as i64).map(|i| grid.value(1, i)).collect();
-        let slices_per_thread = grid.dims[0].div_ceil(threads);
         // Per-column bytes in chunks that match the code chunks (never empty, for `zip`).
         let col_slice = (grid.dims[1] * width).max(1);
         let mut spare = vec![0u8; col_slice * grid.dims[0]];
         let columns: &mut [u8] = if width > 0 { &mut column } else { &mut spare };
+        // The slices go to the threads one at a time, as each asks for the next: slices cost
+        // very different amounts (a side of axis 1 with the obstacles, one without), so fixed
+        // shares would leave a core idle. Each slice's codes are the same whoever inspects it.
+        let slices = Mutex::new(
+            code.chunks_mut(slice)
+                .zip(columns.chunks_mut(col_slice))
+                .enumerate(),
+        );
         std::thread::scope(|s| {
-            for (t, (chunk, cols)) in code
-                .chunks_mut(slices_per_thread * slice)
-                .zip(columns.chunks_mut(slices_per_thread * col_slice))
-                .enumerate()
-            {
-                let (a2, a3) = (&a2, &a3);
-                s.spawn(move || {
-                    for (j, (slab, colslab)) in chunk
-                        .chunks_mut(slice)
-                        .zip(cols.chunks_mut(col_slice))
-                        .enumerate()
-                    {
-                        let a1 = grid.value(0, (t * slices_per_thread + j) as i64);
-                        inspector.inspect_slice(
-                            a1,
-                            a2,
-                            a3,
-                            slab,
-                            &mut colslab[..grid.dims[1] * width],
-                        );
-                        progress.advance(1);
-                    }
+            for _ in 0..threads {
+                let (a2, a3, slices) = (&a2, &a3, &slices);
+                s.spawn(move || loop {
+                    // A poisoned lock only means another slice panicked; the scope re-raises it.
+                    let next = slices.lock().map(|mut it| it.next()).ok().flatten();
+                    let Some((i, (slab, colslab))) = next else {
+                        break;
+                    };
+                    inspector.inspect_slice(
+                        grid.value(0, i as i64),
+                        a2,
+                        a3,
+                        slab,
+                        &mut colslab[..grid.dims[1] * width],
+                    );
+                    progress.advance(1);
                 });
             }
         });

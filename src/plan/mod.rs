@@ -350,11 +350,12 @@ pub fn plan(
 
 /// The smallest clearance along every move and along the whole route (the least of the moves'),
 /// each certified within [`MIN_CLEARANCE_TOL_MM`] (`None` without obstacles), into the plan.
+/// The moves are certified on all cores (`crate::parallel`), each as alone.
 pub fn certify(mut plan: Plan, model: &CollisionModel) -> Plan {
-    plan.move_clearances = plan
-        .moves6()
-        .map(|(a, b)| model.min_clearance_along(&a, &b, MIN_CLEARANCE_TOL_MM))
-        .collect();
+    let moves: Vec<_> = plan.moves6().collect();
+    plan.move_clearances = crate::parallel::map(&moves, |(a, b)| {
+        model.min_clearance_along(a, b, MIN_CLEARANCE_TOL_MM)
+    });
     plan.min_clearance = plan
         .move_clearances
         .iter()

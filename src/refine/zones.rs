@@ -67,12 +67,19 @@ pub fn certify_zones(
 ) -> Vec<String> {
     let n = plan.waypoints.len();
     let wanted = wanted(plan, points, via_zone);
+    // The corners that want a fly-by zone, proven on all cores (each alone).
+    let asked: Vec<usize> = (0..n).filter(|&k| wanted[k].is_some()).collect();
+    let mut proven = vec![false; n];
+    let answers = crate::parallel::map(&asked, |&k| corner_is_proven(plan, model, k));
+    for (&k, ok) in asked.iter().zip(answers) {
+        proven[k] = ok;
+    }
     let mut warnings = Vec::new();
     let mut zones = vec![FINE.to_string(); n];
     for k in 0..n {
         let WaypointKind::CellPoint(i) = plan.waypoints[k].kind else {
             if let Some(z) = &wanted[k] {
-                if corner_is_proven(plan, model, k) {
+                if proven[k] {
                     zones[k] = z.clone();
                 }
             }
@@ -93,7 +100,7 @@ pub fn certify_zones(
         }
         match &wanted[k] {
             None => zones[k] = own.clone(),
-            Some(z) if corner_is_proven(plan, model, k) => zones[k] = z.clone(),
+            Some(z) if proven[k] => zones[k] = z.clone(),
             Some(z) => warnings.push(format!(
                 "warning: point '{}': the corner of its zone {} (between the midpoints of the moves into and out of it) could not be proven to keep the {} mm clearance; it is written fine",
                 p.name,
@@ -102,24 +109,25 @@ pub fn certify_zones(
             )),
         }
     }
-    for k in 1..n.saturating_sub(1) {
-        if !is_fly_by(&zones[k]) {
-            continue;
-        }
-        let w = &plan.waypoints;
-        let corner = model.min_clearance_over_corner(
+    // The zoned corners' smallest clearances, on all cores, folded in in their order.
+    let zoned: Vec<usize> = (1..n.saturating_sub(1))
+        .filter(|&k| is_fly_by(&zones[k]))
+        .collect();
+    let w = &plan.waypoints;
+    let corners = crate::parallel::map(&zoned, |&k| {
+        model.min_clearance_over_corner(
             &w[k - 1].joints_deg,
             &w[k].joints_deg,
             &w[k + 1].joints_deg,
             MIN_CLEARANCE_TOL_MM,
-        );
-        if let Some(mut c) = corner {
-            // The corner is proven to keep the clearance: a bound below it (a search budget
-            // spent) is raised to it, still a certified lower bound.
-            c.mm = c.mm.max(model.clearance_mm());
-            if plan.min_clearance.as_ref().is_none_or(|m| c.mm < m.mm) {
-                plan.min_clearance = Some(c);
-            }
+        )
+    });
+    for mut c in corners.into_iter().flatten() {
+        // The corner is proven to keep the clearance: a bound below it (a search budget
+        // spent) is raised to it, still a certified lower bound.
+        c.mm = c.mm.max(model.clearance_mm());
+        if plan.min_clearance.as_ref().is_none_or(|m| c.mm < m.mm) {
+            plan.min_clearance = Some(c);
         }
     }
     plan.zones = zones;

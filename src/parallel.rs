@@ -1,0 +1,59 @@
+//! An ordered parallel map on the machine's cores (std threads, no pool): the items are handed
+//! out one at a time as each thread asks for the next, so items of very different cost keep every
+//! core busy, and the results come back in the items' order, whoever computed them. Used where a
+//! stage does independent, deterministic work per item (the smallest clearance of each move in
+//! `plan::certify`).
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+/// `items.iter().map(f).collect()`, computed on up to `available_parallelism` threads. A panic
+/// in `f` is raised again here (by `std::thread::scope`).
+pub fn map<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
+    let threads = std::thread::available_parallelism()
+        .map(|n| n.get())
+        .unwrap_or(1)
+        .min(items.len());
+    if threads <= 1 {
+        return items.iter().map(f).collect();
+    }
+    let next = AtomicUsize::new(0);
+    let done: Mutex<Vec<(usize, R)>> = Mutex::new(Vec::with_capacity(items.len()));
+    std::thread::scope(|s| {
+        for _ in 0..threads {
+            s.spawn(|| {
+                let mut mine = Vec::new();
+                loop {
+                    let i = next.fetch_add(1, Ordering::Relaxed);
+                    let Some(item) = items.get(i) else {
+                        break;
+                    };
+                    mine.push((i, f(item)));
+                }
+                // A poisoned lock only means another thread panicked; the scope re-raises it.
+                if let Ok(mut all) = done.lock() {
+                    all.extend(mine);
+                }
+            });
+        }
+    });
+    let mut all = done.into_inner().unwrap_or_else(|e| e.into_inner());
+    all.sort_unstable_by_key(|&(i, _)| i);
+    all.into_iter().map(|(_, r)| r).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::map;
+
+    #[test]
+    fn results_come_back_in_the_items_order() {
+        // Items of very different cost, so the threads finish them out of order.
+        let items: Vec<u64> = (0..200).map(|i| (i * 7919) % 1000).collect();
+        let slow = |&n: &u64| (0..n * 1000).fold(n, |a, k| a.wrapping_mul(31).wrapping_add(k));
+        let want: Vec<u64> = items.iter().map(slow).collect();
+        assert_eq!(map(&items, slow), want);
+        assert_eq!(map(&items[..1], slow), want[..1]);
+        assert!(map(&items[..0], slow).is_empty());
+    }
+}
