@@ -1,7 +1,8 @@
 //! Block inspection along a grid column (beyond the paper): a run of consecutive nodes
 //! `a3[lo..hi]` of one column is proven free, or blocked, at once by the motion bound of
 //! `proof.rs`, and split in halves only where neither proof holds, down to runs of
-//! [`LEAF_NODES`] nodes, which are inspected node by node (`column.rs`).
+//! [`LEAF_NODES`] nodes, which are inspected node by node (`column.rs`). A column starts as runs
+//! of [`TOP_RUN_NODES`] nodes.
 //!
 //! *Motion over a run.* Within a column axes 1 and 2 are fixed, so between the run's middle
 //! angle `q_c` (URDF joint 3, the middle of its first and last node's values) and any of its
@@ -54,6 +55,12 @@ use crate::geometry::{
     distance_capsule_aabb, distance_point_aabb, distance_segment_aabb, Aabb, Cylinder, Point,
 };
 use nalgebra::Vector3;
+
+/// A column is cut into runs of this many nodes before any halving. Longer runs almost never
+/// prove anything (the column's culling has already dropped the boxes its whole sweep keeps
+/// clear of), and halving the whole column cost calls at levels that rarely dropped a box: on
+/// the trunk's 1 deg build, 32 took about 6.6 % off the instructions (64: 4 %, 16: 6.3 %).
+pub(super) const TOP_RUN_NODES: usize = 32;
 
 /// Runs of at most this many nodes are inspected node by node.
 pub(super) const LEAF_NODES: usize = 2;

@@ -10,7 +10,7 @@
 //! motion bound proves it free with full depth, or blocked, costs one pose at its middle and no
 //! per-node work; only runs near an obstacle's boundary are halved down to the node test.
 
-use super::block::{ascending, Centre, Swept, SET};
+use super::block::{ascending, Centre, Swept, SET, TOP_RUN_NODES};
 use super::grid::{GridCheck, ARM_BITS, COLUMN_LEVELS, DEPTH_LEVELS};
 use super::proof::tight_lower_bound;
 use super::{link_clear_of_box, CylData};
@@ -219,7 +219,9 @@ impl GridCheck<'_> {
                     span,
                 };
                 if runs {
-                    self.arm_run(&swept, a3_deg, out, 0, n, &kept[..nk], &q3_of);
+                    for (lo, hi) in top_runs(n) {
+                        self.arm_run(&swept, a3_deg, out, lo, hi, &kept[..nk], &q3_of);
+                    }
                 } else {
                     self.arm_nodes(&swept, a3_deg, out, 0, n, &kept[..nk], &q3_of);
                 }
@@ -281,12 +283,22 @@ impl GridCheck<'_> {
                 deep,
             };
             if runs {
-                self.tool_run(&centre, a3_deg, out, 0, n, &set[..nk], q3_of);
+                for (lo, hi) in top_runs(n) {
+                    self.tool_run(&centre, a3_deg, out, lo, hi, &set[..nk], q3_of);
+                }
             } else {
                 self.tool_nodes(&centre, a3_deg, out, 0, n, &set[..nk], q3_of);
             }
         }
     }
+}
+
+/// The runs a column of `n` nodes starts from (`block.rs`): [`TOP_RUN_NODES`] nodes each, the
+/// last one shorter.
+fn top_runs(n: usize) -> impl Iterator<Item = (usize, usize)> {
+    (0..n)
+        .step_by(TOP_RUN_NODES)
+        .map(move |lo| (lo, (lo + TOP_RUN_NODES).min(n)))
 }
 
 /// A lower bound of the cylinder–box distance good enough for the depth: the capsule distance
