@@ -149,6 +149,10 @@ impl Word for u32 {
 /// (52 MB) would raise the peak; there every candidate is looked at (the same numbers).
 const ROW_BITS_MAX_BYTES: usize = 32 << 20;
 
+/// The rows of the row wave's candidates marked together.
+const GROUP_ROWS: usize = 4;
+const _: () = assert!(GROUP_ROWS >= 2, "the row wave's front stays ascending");
+
 /// How many cleared label buffers are kept (a leg's two waves).
 const POOL_BUFFERS: usize = 2;
 
@@ -432,23 +436,21 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
     let plain = rows_kept.as_deref().map(|r| r.plain.as_slice());
     // Decided nodes: numbered, not free, or not usable.
     let mut decided = vec![0u64; rows * words];
-    // The next level's candidates, gathered per row (`words` each, every row; cleared as they
-    // are looked at), the rows that have some (`touched`), and whether a row is among those.
-    let mut touched: Vec<u32> = Vec::new();
+    // The next level's candidates (`words` a row, every row; cleared as they are looked at)
+    // and the groups of `GROUP_ROWS` rows whose candidates, or those of the rows just beside
+    // them, may hold some (`groups`, a bit a group).
     let mut cand = vec![0u64; rows * words];
-    let mut mark = vec![false; rows];
-    // The front: its rows and their words (`words` per row, in the rows' order).
+    let mut groups = vec![0u64; rows.div_ceil(GROUP_ROWS * 64)];
+    // The front: its words that hold front nodes, as (index into `decided`, the front's bits),
+    // by ascending index.
     let (r0, j0, b0) = (
         start_index / d2,
         (start_index % d2) / 64,
         (start_index % d2) % 64,
     );
     decided[r0 * words + j0] |= 1 << b0;
-    let mut front_rows: Vec<u32> = vec![r0 as u32];
-    let mut front_bits: Vec<u64> = vec![0; words];
-    front_bits[j0] = 1 << b0;
-    let (mut next_rows, mut next_bits) = (Vec::new(), Vec::new());
-    let mut spread = vec![0u64; words];
+    let mut front: Vec<(usize, u64)> = vec![(r0 * words + j0, 1 << b0)];
+    let mut next_front: Vec<(usize, u64)> = Vec::new();
     // Every way out: the labels with where they were written (`decided` holds every node
     // numbered).
     let kept = |labels, written| Kept {
@@ -457,97 +459,123 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
         row_words: words,
         d2,
     };
+    // A word's neighbour words in the 3 x 3 rows around, from the first (a row off the grid's
+    // border on axes 1 and 2).
+    let around: [usize; 9] = std::array::from_fn(|k| ((k / 3) * d1 + k % 3) * words);
     let mut level = W::ONE;
-    while !front_rows.is_empty() {
+    while let (Some(&(first, _)), Some(&(last, _))) = (front.first(), front.last()) {
         let Some(next) = level.next() else {
             drop(kept(labels, decided));
             return Err(TooLong);
         };
-        // Gather: every front row's neighbours into `cand`: the row spread by one along axis 3
-        // (itself included: it is decided) into the 3 x 3 rows around it, each run of rows
-        // along axis 2 a run of words.
-        for (k, &r) in front_rows.iter().enumerate() {
-            let f = &front_bits[k * words..(k + 1) * words];
-            let r = r as usize;
-            let (i0, i1) = (r / d1, r % d1);
-            for j in 0..words {
-                let lo = (f[j] << 1) | if j > 0 { f[j - 1] >> 63 } else { 0 };
-                let hi = (f[j] >> 1) | if j + 1 < words { f[j + 1] << 63 } else { 0 };
-                spread[j] = f[j] | lo | hi;
+        // Gather: each front word's neighbours into `cand`: its bits spread by one along axis 3
+        // (themselves included: they are decided), a bit at either end carried into the
+        // word beside, into the same words of the 3 x 3 rows around its row. Only the words
+        // that hold front nodes are spread (inside a wide front, a row's front is its two
+        // ends).
+        for &(w, bits) in &front {
+            let (t, j) = (w / words, w % words);
+            let (i0, i1) = (
+                (t as u32 / d1 as u32) as usize,
+                (t as u32 % d1 as u32) as usize,
+            );
+            let spread = bits | (bits << 1) | (bits >> 1);
+            let below = if j > 0 { (bits & 1) << 63 } else { 0 };
+            let above = if j + 1 < words { bits >> 63 } else { 0 };
+            if below | above == 0 && i0 > 0 && i0 + 1 < d0 && i1 > 0 && i1 + 1 < d1 {
+                let from = w - around[4];
+                for a in around {
+                    cand[from + a] |= spread;
+                }
+                for t0 in [t - d1, t, t + d1] {
+                    let g = t0 / GROUP_ROWS;
+                    groups[g / 64] |= 1 << (g % 64);
+                }
+                continue;
             }
             let (b0, b1) = (i1.saturating_sub(1), (i1 + 1).min(d1 - 1));
             for t0 in i0.saturating_sub(1)..=(i0 + 1).min(d0 - 1) {
-                let (first, last) = (t0 * d1 + b0, t0 * d1 + b1);
-                for (t, m) in (first..=last).zip(&mut mark[first..=last]) {
-                    if !*m {
-                        *m = true;
-                        touched.push(t as u32);
+                // The same word of rows `b0..=b1` along axis 2, and the words beside.
+                let (x0, x1) = ((t0 * d1 + b0) * words + j, (t0 * d1 + b1) * words + j);
+                for x in (x0..=x1).step_by(words) {
+                    cand[x] |= spread;
+                    if below != 0 {
+                        cand[x - 1] |= below;
+                    }
+                    if above != 0 {
+                        cand[x + 1] |= above;
                     }
                 }
-                for c in cand[first * words..(last + 1) * words].chunks_exact_mut(words) {
-                    for (c, s) in c.iter_mut().zip(&spread) {
-                        *c |= s;
+                let g = (t0 * d1 + i1) / GROUP_ROWS;
+                groups[g / 64] |= 1 << (g % 64);
+            }
+        }
+        // Look at the candidates not decided yet, by ascending row: the rows of each group
+        // marked and those just beside it (the groups marked lie within a plane of rows of the
+        // front's first and last words).
+        let (lo, hi) = (
+            (first / words).saturating_sub(d1 + 1) / (GROUP_ROWS * 64),
+            (last / words + d1 + 1) / (GROUP_ROWS * 64),
+        );
+        for gi in lo..=hi.min(groups.len() - 1) {
+            let mut m = std::mem::take(&mut groups[gi]);
+            while m != 0 {
+                let g = gi * 64 + m.trailing_zeros() as usize;
+                m &= m - 1;
+                for t in (g * GROUP_ROWS).saturating_sub(1)..((g + 1) * GROUP_ROWS + 1).min(rows) {
+                    for j in 0..words {
+                        let w = t * words + j;
+                        let mut c = std::mem::take(&mut cand[w]) & !decided[w];
+                        if c == 0 {
+                            continue;
+                        }
+                        if j + 1 == words {
+                            c &= last_mask;
+                        }
+                        if w == end_word && c & end_bit != 0 {
+                            c &= upto_end;
+                        }
+                        decided[w] |= c;
+                        let base = t * d2 + j * 64;
+                        // The usable candidates: the plain ones at once, the others looked at.
+                        let (mut numbered, mut look) = match &plain {
+                            Some(p) => (c & p[w], c & !p[w]),
+                            None => (0, c),
+                        };
+                        while look != 0 {
+                            let b = look.trailing_zeros() as usize;
+                            look &= look - 1;
+                            let code = cs.code_index(base + b);
+                            if code & FREE != 0
+                                && graph.node_ok_coded(
+                                    [(t / d1) as i32, (t % d1) as i32, (j * 64 + b) as i32],
+                                    code,
+                                )
+                            {
+                                numbered |= 1 << b;
+                            }
+                        }
+                        let mut m = numbered;
+                        while m != 0 {
+                            let b = m.trailing_zeros() as usize;
+                            m &= m - 1;
+                            labels[base + b] = next;
+                        }
+                        if w == end_word && numbered & end_bit != 0 {
+                            return Ok(Some(kept(labels, decided)));
+                        }
+                        if numbered != 0 {
+                            next_front.push((w, numbered));
+                        }
                     }
                 }
             }
         }
-        // Look at the candidates not decided yet, row by row.
-        for &t in &touched {
-            let t = t as usize;
-            mark[t] = false;
-            let (i0, i1) = (t / d1, t % d1);
-            let mut any = 0u64;
-            let at = next_bits.len();
-            for j in 0..words {
-                let w = t * words + j;
-                let mut c = cand[w] & !decided[w];
-                cand[w] = 0;
-                if j + 1 == words {
-                    c &= last_mask;
-                }
-                if w == end_word && c & end_bit != 0 {
-                    c &= upto_end;
-                }
-                decided[w] |= c;
-                let base = t * d2 + j * 64;
-                // The usable candidates: the plain ones at once, the others looked at.
-                let (mut numbered, mut look) = match &plain {
-                    Some(p) => (c & p[w], c & !p[w]),
-                    None => (0, c),
-                };
-                while look != 0 {
-                    let b = look.trailing_zeros() as usize;
-                    look &= look - 1;
-                    let code = cs.code_index(base + b);
-                    if code & FREE != 0
-                        && graph.node_ok_coded([i0 as i32, i1 as i32, (j * 64 + b) as i32], code)
-                    {
-                        numbered |= 1 << b;
-                    }
-                }
-                let mut m = numbered;
-                while m != 0 {
-                    let b = m.trailing_zeros() as usize;
-                    m &= m - 1;
-                    labels[base + b] = next;
-                }
-                if w == end_word && numbered & end_bit != 0 {
-                    return Ok(Some(kept(labels, decided)));
-                }
-                next_bits.push(numbered);
-                any |= numbered;
-            }
-            if any == 0 {
-                next_bits.truncate(at);
-            } else {
-                next_rows.push(t as u32);
-            }
-        }
-        touched.clear();
-        std::mem::swap(&mut front_rows, &mut next_rows);
-        std::mem::swap(&mut front_bits, &mut next_bits);
-        next_rows.clear();
-        next_bits.clear();
+        // Ascending: a group's scan starts below the rows of the group before only on rows
+        // that group's scan cleared (with `GROUP_ROWS` at least 2), so the bounds above hold.
+        debug_assert!(next_front.windows(2).all(|p| p[0].0 < p[1].0));
+        std::mem::swap(&mut front, &mut next_front);
+        next_front.clear();
         level = next;
     }
     drop(kept(labels, decided));
