@@ -892,6 +892,59 @@ mod tests {
         }
     }
 
+    /// Long rows (200 nodes: 4 words a row, the last partly used; 700: 11 words, their
+    /// number read at run time) between slabs across axis 3 pierced by two holes, a block whose
+    /// faces lie on a word border (axis 3 from 64 to 127) and scattered blocked nodes: inside,
+    /// the row wave's front is mostly rows' two ends, spread across word borders (bits 63 and
+    /// 64) and into the rows along the grid's borders. Several waves in a row over the same
+    /// grid (from the middle, from two corners, each to its farthest node and to a middle one:
+    /// label buffers kept and taken again) give every node below the end's number its
+    /// breadth-first distance and number nothing else below it.
+    #[test]
+    fn row_wave_over_long_rows_numbers_the_breadth_first_distances() {
+        fn hash(n: Node) -> u32 {
+            let h = (n[0] as u32).wrapping_mul(73_856_093)
+                ^ (n[1] as u32).wrapping_mul(19_349_663)
+                ^ (n[2] as u32).wrapping_mul(83_492_791);
+            h.wrapping_mul(2_654_435_761) >> 9
+        }
+        for d2 in [200i32, 700] {
+            let g = Grid::over([[0.0, 10.0], [0.0, 8.0], [0.0, (d2 - 1) as f64]], 1.0);
+            let free = |n: Node| {
+                let slab = n[2] % 50 == 37 && n != [2, 7, n[2]] && n != [9, 1, n[2]];
+                let block = (64..128).contains(&n[2]) && (3..=7).contains(&n[0]) && n[1] >= 2;
+                !slab && !block && hash(n) % 13 != 0
+            };
+            let cs = CSpace::from_fn(g, free);
+            for near in [[5, 4, 100], [0, 0, 0], [10, 8, d2 - 5]] {
+                let start = (g.index(near)..g.len())
+                    .map(|i| g.node(i))
+                    .find(|&n| free(n))
+                    .expect("a free node");
+                let dist = bfs(&g, start, free);
+                let far = (0..g.len()).max_by_key(|&i| (dist[i], i)).expect("nodes");
+                let mid = (0..g.len())
+                    .find(|&i| dist[i] == dist[far] / 2)
+                    .expect("a middle");
+                for end in [far, mid] {
+                    let n = dist[end];
+                    assert!(n > 20, "too near to test: {n}");
+                    let w = expand(&cs, &Open, start, g.node(end), Connectivity::TwentySix)
+                        .expect("joined");
+                    assert_eq!(w.n(), n);
+                    for (i, &d) in dist.iter().enumerate() {
+                        let l = w.label(g.node(i));
+                        if d < n {
+                            assert_eq!(l, d, "{:?} from {start:?}", g.node(i));
+                        } else {
+                            assert!(l == 0 || (l == n && d == n), "{:?}: {l}", g.node(i));
+                        }
+                    }
+                }
+            }
+        }
+    }
+
     /// A row wave's buffer is kept for the next wave when dropped, cleared where it was
     /// written: a wave that numbers nearly the whole grid, then short waves over the same grid
     /// (which take its buffer unless another test's wave took it first: see
