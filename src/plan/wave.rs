@@ -10,9 +10,12 @@
 //! Beyond the paper, for speed only: the 26-neighbour wave over a graph whose every step between
 //! usable nodes counts (the optimistic wave of a leg, the common one) is numbered a level at a
 //! time on bit sets of axis-3 rows (`number_rows`), the others node by node from a queue. The
-//! numbers below n are the same (each node's breadth-first distance, plus one). In the row wave,
-//! the free nodes a graph need not look at ([`Graph::look_bits`]: for a leg, those whose code
-//! says the tool stays clear) come a word at a time from the grid's row bit set
+//! numbers below n are the same (each node's breadth-first distance, plus one). The row wave
+//! spreads only the front's words that hold front nodes (inside a wide front a row's new nodes
+//! are its two ends, so its other words are not spread again level after level), and finds the
+//! next candidates by groups of rows marked, in ascending order (no list of touched rows). In
+//! the row wave, the free nodes a graph need not look at ([`Graph::look_bits`]: for a leg, those
+//! whose code says the tool stays clear) come a word at a time from the grid's row bit set
 //! ([`CSpace::row_bits`]), and a dropped wave's label buffer is cleared where it was written and
 //! kept for the next wave (no 2-byte-a-node buffer zeroed or faulted in per wave).
 //!
@@ -149,7 +152,8 @@ impl Word for u32 {
 /// (52 MB) would raise the peak; there every candidate is looked at (the same numbers).
 const ROW_BITS_MAX_BYTES: usize = 32 << 20;
 
-/// The rows of the row wave's candidates marked together.
+/// The rows of the row wave's candidates marked together (one bit a group; a group's scan also
+/// reads the row just below and just above it, so a front word marks one group a plane of rows).
 const GROUP_ROWS: usize = 4;
 const _: () = assert!(GROUP_ROWS >= 2, "the row wave's front stays ascending");
 
@@ -391,9 +395,13 @@ fn number<W: Word, G: Graph + ?Sized>(
 /// fixed axes 1 and 2, one bit each, axis-3 index `64 j + b` at bit `b` of word `j`). The nodes
 /// next numbered are the front's neighbours (a row's front shifted by one along axis 3 and
 /// spread to the neighbouring rows) not yet decided; each of those is looked at once (free on
-/// the grid, [`Graph::node_ok_coded`]) and numbered or decided unusable. Only rows near the
-/// front are touched, and the labels are only written, so a level costs a few word operations
-/// per row it reaches and one look per node it numbers. When the graph names the code bits its
+/// the grid, [`Graph::node_ok_coded`]) and numbered or decided unusable. The front is kept as
+/// its words that hold front nodes (by ascending index), and only those are spread, each into
+/// the same word of the 3 x 3 rows around (a bit at a word's end carried into the word beside);
+/// the rows spread into are marked by groups of [`GROUP_ROWS`] rows, and the candidates are
+/// looked for in the rows of the groups marked and the rows just beside them. The labels are
+/// only written, so a level costs a few word operations per front word and per row it reaches,
+/// and one look per node it numbers. When the graph names the code bits its
 /// answer depends on ([`Graph::look_bits`]), the free nodes without them come a word at a time
 /// from the grid's row bit set ([`CSpace::row_bits`], grids up to [`ROW_BITS_MAX_BYTES`] of
 /// it): numbered without a look; only the other
