@@ -781,15 +781,7 @@ mod tests {
             for every in [true, false] {
                 let w = expand(&cs, &Holes(every), start, end, Connectivity::TwentySix)
                     .expect("joined");
-                assert_eq!(w.n(), n);
-                for (i, &d) in dist.iter().enumerate() {
-                    let l = w.label(g.node(i));
-                    if d < n {
-                        assert_eq!(l, d, "{:?} every {every}", g.node(i));
-                    } else {
-                        assert!(l == 0 || (l == n && d == n), "{:?}: {l}", g.node(i));
-                    }
-                }
+                assert_labels_are_distances(&w, &g, &dist, n, &format!("every {every}"));
             }
         }
     }
@@ -856,10 +848,7 @@ mod tests {
                 .find(|&n| usable(n))
                 .expect("a start");
             let dist = bfs(&g, start, usable);
-            let far = (0..g.len()).max_by_key(|&i| (dist[i], i)).expect("nodes");
-            let mid = (0..g.len())
-                .find(|&i| dist[i] == dist[far] / 2)
-                .expect("a middle");
+            let (far, mid) = far_and_middle(&dist);
             // The labels below n against the distances: how many disagree.
             let wrong = |w: &Wave, n: u32| {
                 (0..g.len())
@@ -930,24 +919,13 @@ mod tests {
                     .find(|&n| free(n))
                     .expect("a free node");
                 let dist = bfs(&g, start, free);
-                let far = (0..g.len()).max_by_key(|&i| (dist[i], i)).expect("nodes");
-                let mid = (0..g.len())
-                    .find(|&i| dist[i] == dist[far] / 2)
-                    .expect("a middle");
+                let (far, mid) = far_and_middle(&dist);
                 for end in [far, mid] {
                     let n = dist[end];
                     assert!(n > 20, "too near to test: {n}");
                     let w = expand(&cs, &Open, start, g.node(end), Connectivity::TwentySix)
                         .expect("joined");
-                    assert_eq!(w.n(), n);
-                    for (i, &d) in dist.iter().enumerate() {
-                        let l = w.label(g.node(i));
-                        if d < n {
-                            assert_eq!(l, d, "{:?} from {start:?}", g.node(i));
-                        } else {
-                            assert!(l == 0 || (l == n && d == n), "{:?}: {l}", g.node(i));
-                        }
-                    }
+                    assert_labels_are_distances(&w, &g, &dist, n, &format!("from {start:?}"));
                 }
             }
         }
@@ -1016,6 +994,32 @@ mod tests {
     fn open_dims(a: usize, b: usize, c: usize) -> CSpace {
         let g = Grid::over([[0.0, a as f64], [0.0, b as f64], [0.0, c as f64]], 1.0);
         CSpace::from_fn(g, |_| true)
+    }
+
+    /// The wave numbers its end `n` (the end's breadth-first distance plus one, from `dist`),
+    /// every node below it its distance, and nothing else below it (a node as far as the end
+    /// may be numbered or not).
+    fn assert_labels_are_distances(w: &Wave, g: &Grid, dist: &[u32], n: u32, what: &str) {
+        assert_eq!(w.n(), n, "{what}");
+        for (i, &d) in dist.iter().enumerate() {
+            let (m, l) = (g.node(i), w.label(g.node(i)));
+            if d < n {
+                assert_eq!(l, d, "{m:?} {what}");
+            } else {
+                assert!(l == 0 || (l == n && d == n), "{m:?}: {l} {what}");
+            }
+        }
+    }
+
+    /// The farthest node reached (the last by index) and the first node half as far.
+    fn far_and_middle(dist: &[u32]) -> (usize, usize) {
+        let far = (0..dist.len())
+            .max_by_key(|&i| (dist[i], i))
+            .expect("nodes");
+        let mid = (0..dist.len())
+            .find(|&i| dist[i] == dist[far] / 2)
+            .expect("a middle");
+        (far, mid)
     }
 
     /// Breadth-first distances (plus one, 0 = not reached) over the usable nodes of `g` and
