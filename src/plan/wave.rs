@@ -10,9 +10,12 @@
 //! Beyond the paper, for speed only: the 26-neighbour wave over a graph whose every step between
 //! usable nodes counts (the optimistic wave of a leg, the common one) is numbered a level at a
 //! time on bit sets of axis-3 rows (`number_rows`), the others node by node from a queue. The
-//! numbers below n are the same (each node's breadth-first distance, plus one). In the row wave,
-//! the free nodes a graph need not look at ([`Graph::look_bits`]: for a leg, those whose code
-//! says the tool stays clear) come a word at a time from the grid's row bit set
+//! numbers below n are the same (each node's breadth-first distance, plus one). The row wave
+//! spreads only the front's words that hold front nodes (inside a wide front a row's new nodes
+//! are its two ends, so its other words are not spread again level after level), and finds the
+//! next candidates by groups of rows marked, in ascending order (no list of touched rows). In
+//! the row wave, the free nodes a graph need not look at ([`Graph::look_bits`]: for a leg, those
+//! whose code says the tool stays clear) come a word at a time from the grid's row bit set
 //! ([`CSpace::row_bits`]), and a dropped wave's label buffer is cleared where it was written and
 //! kept for the next wave (no 2-byte-a-node buffer zeroed or faulted in per wave).
 //!
@@ -148,6 +151,11 @@ impl Word for u32 {
 /// set holds a bit a node for the rest of the run, which at 0.25 deg over the IRB 1400's ranges
 /// (52 MB) would raise the peak; there every candidate is looked at (the same numbers).
 const ROW_BITS_MAX_BYTES: usize = 32 << 20;
+
+/// The rows of the row wave's candidates marked together (one bit a group; a group's scan also
+/// reads the row just below and just above it, so a front word marks one group a plane of rows).
+const GROUP_ROWS: usize = 4;
+const _: () = assert!(GROUP_ROWS >= 2, "the row wave's front stays ascending");
 
 /// How many cleared label buffers are kept (a leg's two waves).
 const POOL_BUFFERS: usize = 2;
@@ -387,9 +395,13 @@ fn number<W: Word, G: Graph + ?Sized>(
 /// fixed axes 1 and 2, one bit each, axis-3 index `64 j + b` at bit `b` of word `j`). The nodes
 /// next numbered are the front's neighbours (a row's front shifted by one along axis 3 and
 /// spread to the neighbouring rows) not yet decided; each of those is looked at once (free on
-/// the grid, [`Graph::node_ok_coded`]) and numbered or decided unusable. Only rows near the
-/// front are touched, and the labels are only written, so a level costs a few word operations
-/// per row it reaches and one look per node it numbers. When the graph names the code bits its
+/// the grid, [`Graph::node_ok_coded`]) and numbered or decided unusable. The front is kept as
+/// its words that hold front nodes (by ascending index), and only those are spread, each into
+/// the same word of the 3 x 3 rows around (a bit at a word's end carried into the word beside);
+/// the rows spread into are marked by groups of [`GROUP_ROWS`] rows, and the candidates are
+/// looked for in the rows of the groups marked and the rows just beside them. The labels are
+/// only written, so a level costs a few word operations per front word and per row it reaches,
+/// and one look per node it numbers. When the graph names the code bits its
 /// answer depends on ([`Graph::look_bits`]), the free nodes without them come a word at a time
 /// from the grid's row bit set ([`CSpace::row_bits`], grids up to [`ROW_BITS_MAX_BYTES`] of
 /// it): numbered without a look; only the other
@@ -432,23 +444,21 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
     let plain = rows_kept.as_deref().map(|r| r.plain.as_slice());
     // Decided nodes: numbered, not free, or not usable.
     let mut decided = vec![0u64; rows * words];
-    // The next level's candidates, gathered per row (`words` each, every row; cleared as they
-    // are looked at), the rows that have some (`touched`), and whether a row is among those.
-    let mut touched: Vec<u32> = Vec::new();
+    // The next level's candidates (`words` a row, every row; cleared as they are looked at)
+    // and the groups of `GROUP_ROWS` rows whose candidates, or those of the rows just beside
+    // them, may hold some (`groups`, a bit a group).
     let mut cand = vec![0u64; rows * words];
-    let mut mark = vec![false; rows];
-    // The front: its rows and their words (`words` per row, in the rows' order).
+    let mut groups = vec![0u64; rows.div_ceil(GROUP_ROWS * 64)];
+    // The front: its words that hold front nodes, as (index into `decided`, the front's bits),
+    // by ascending index.
     let (r0, j0, b0) = (
         start_index / d2,
         (start_index % d2) / 64,
         (start_index % d2) % 64,
     );
     decided[r0 * words + j0] |= 1 << b0;
-    let mut front_rows: Vec<u32> = vec![r0 as u32];
-    let mut front_bits: Vec<u64> = vec![0; words];
-    front_bits[j0] = 1 << b0;
-    let (mut next_rows, mut next_bits) = (Vec::new(), Vec::new());
-    let mut spread = vec![0u64; words];
+    let mut front: Vec<(usize, u64)> = vec![(r0 * words + j0, 1 << b0)];
+    let mut next_front: Vec<(usize, u64)> = Vec::new();
     // Every way out: the labels with where they were written (`decided` holds every node
     // numbered).
     let kept = |labels, written| Kept {
@@ -457,97 +467,123 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
         row_words: words,
         d2,
     };
+    // A word's neighbour words in the 3 x 3 rows around, from the first (a row off the grid's
+    // border on axes 1 and 2).
+    let around: [usize; 9] = std::array::from_fn(|k| ((k / 3) * d1 + k % 3) * words);
     let mut level = W::ONE;
-    while !front_rows.is_empty() {
+    while let (Some(&(first, _)), Some(&(last, _))) = (front.first(), front.last()) {
         let Some(next) = level.next() else {
             drop(kept(labels, decided));
             return Err(TooLong);
         };
-        // Gather: every front row's neighbours into `cand`: the row spread by one along axis 3
-        // (itself included: it is decided) into the 3 x 3 rows around it, each run of rows
-        // along axis 2 a run of words.
-        for (k, &r) in front_rows.iter().enumerate() {
-            let f = &front_bits[k * words..(k + 1) * words];
-            let r = r as usize;
-            let (i0, i1) = (r / d1, r % d1);
-            for j in 0..words {
-                let lo = (f[j] << 1) | if j > 0 { f[j - 1] >> 63 } else { 0 };
-                let hi = (f[j] >> 1) | if j + 1 < words { f[j + 1] << 63 } else { 0 };
-                spread[j] = f[j] | lo | hi;
+        // Gather: each front word's neighbours into `cand`: its bits spread by one along axis 3
+        // (themselves included: they are decided), a bit at either end carried into the
+        // word beside, into the same words of the 3 x 3 rows around its row. Only the words
+        // that hold front nodes are spread (inside a wide front, a row's front is its two
+        // ends).
+        for &(w, bits) in &front {
+            let (t, j) = (w / words, w % words);
+            let (i0, i1) = (
+                (t as u32 / d1 as u32) as usize,
+                (t as u32 % d1 as u32) as usize,
+            );
+            let spread = bits | (bits << 1) | (bits >> 1);
+            let below = if j > 0 { (bits & 1) << 63 } else { 0 };
+            let above = if j + 1 < words { bits >> 63 } else { 0 };
+            if below | above == 0 && i0 > 0 && i0 + 1 < d0 && i1 > 0 && i1 + 1 < d1 {
+                let from = w - around[4];
+                for a in around {
+                    cand[from + a] |= spread;
+                }
+                for t0 in [t - d1, t, t + d1] {
+                    let g = t0 / GROUP_ROWS;
+                    groups[g / 64] |= 1 << (g % 64);
+                }
+                continue;
             }
             let (b0, b1) = (i1.saturating_sub(1), (i1 + 1).min(d1 - 1));
             for t0 in i0.saturating_sub(1)..=(i0 + 1).min(d0 - 1) {
-                let (first, last) = (t0 * d1 + b0, t0 * d1 + b1);
-                for (t, m) in (first..=last).zip(&mut mark[first..=last]) {
-                    if !*m {
-                        *m = true;
-                        touched.push(t as u32);
+                // The same word of rows `b0..=b1` along axis 2, and the words beside.
+                let (x0, x1) = ((t0 * d1 + b0) * words + j, (t0 * d1 + b1) * words + j);
+                for x in (x0..=x1).step_by(words) {
+                    cand[x] |= spread;
+                    if below != 0 {
+                        cand[x - 1] |= below;
+                    }
+                    if above != 0 {
+                        cand[x + 1] |= above;
                     }
                 }
-                for c in cand[first * words..(last + 1) * words].chunks_exact_mut(words) {
-                    for (c, s) in c.iter_mut().zip(&spread) {
-                        *c |= s;
+                let g = (t0 * d1 + i1) / GROUP_ROWS;
+                groups[g / 64] |= 1 << (g % 64);
+            }
+        }
+        // Look at the candidates not decided yet, by ascending row: the rows of each group
+        // marked and those just beside it (the groups marked lie within a plane of rows of the
+        // front's first and last words).
+        let (lo, hi) = (
+            (first / words).saturating_sub(d1 + 1) / (GROUP_ROWS * 64),
+            (last / words + d1 + 1) / (GROUP_ROWS * 64),
+        );
+        for gi in lo..=hi.min(groups.len() - 1) {
+            let mut m = std::mem::take(&mut groups[gi]);
+            while m != 0 {
+                let g = gi * 64 + m.trailing_zeros() as usize;
+                m &= m - 1;
+                for t in (g * GROUP_ROWS).saturating_sub(1)..((g + 1) * GROUP_ROWS + 1).min(rows) {
+                    for j in 0..words {
+                        let w = t * words + j;
+                        let mut c = std::mem::take(&mut cand[w]) & !decided[w];
+                        if c == 0 {
+                            continue;
+                        }
+                        if j + 1 == words {
+                            c &= last_mask;
+                        }
+                        if w == end_word && c & end_bit != 0 {
+                            c &= upto_end;
+                        }
+                        decided[w] |= c;
+                        let base = t * d2 + j * 64;
+                        // The usable candidates: the plain ones at once, the others looked at.
+                        let (mut numbered, mut look) = match &plain {
+                            Some(p) => (c & p[w], c & !p[w]),
+                            None => (0, c),
+                        };
+                        while look != 0 {
+                            let b = look.trailing_zeros() as usize;
+                            look &= look - 1;
+                            let code = cs.code_index(base + b);
+                            if code & FREE != 0
+                                && graph.node_ok_coded(
+                                    [(t / d1) as i32, (t % d1) as i32, (j * 64 + b) as i32],
+                                    code,
+                                )
+                            {
+                                numbered |= 1 << b;
+                            }
+                        }
+                        let mut m = numbered;
+                        while m != 0 {
+                            let b = m.trailing_zeros() as usize;
+                            m &= m - 1;
+                            labels[base + b] = next;
+                        }
+                        if w == end_word && numbered & end_bit != 0 {
+                            return Ok(Some(kept(labels, decided)));
+                        }
+                        if numbered != 0 {
+                            next_front.push((w, numbered));
+                        }
                     }
                 }
             }
         }
-        // Look at the candidates not decided yet, row by row.
-        for &t in &touched {
-            let t = t as usize;
-            mark[t] = false;
-            let (i0, i1) = (t / d1, t % d1);
-            let mut any = 0u64;
-            let at = next_bits.len();
-            for j in 0..words {
-                let w = t * words + j;
-                let mut c = cand[w] & !decided[w];
-                cand[w] = 0;
-                if j + 1 == words {
-                    c &= last_mask;
-                }
-                if w == end_word && c & end_bit != 0 {
-                    c &= upto_end;
-                }
-                decided[w] |= c;
-                let base = t * d2 + j * 64;
-                // The usable candidates: the plain ones at once, the others looked at.
-                let (mut numbered, mut look) = match &plain {
-                    Some(p) => (c & p[w], c & !p[w]),
-                    None => (0, c),
-                };
-                while look != 0 {
-                    let b = look.trailing_zeros() as usize;
-                    look &= look - 1;
-                    let code = cs.code_index(base + b);
-                    if code & FREE != 0
-                        && graph.node_ok_coded([i0 as i32, i1 as i32, (j * 64 + b) as i32], code)
-                    {
-                        numbered |= 1 << b;
-                    }
-                }
-                let mut m = numbered;
-                while m != 0 {
-                    let b = m.trailing_zeros() as usize;
-                    m &= m - 1;
-                    labels[base + b] = next;
-                }
-                if w == end_word && numbered & end_bit != 0 {
-                    return Ok(Some(kept(labels, decided)));
-                }
-                next_bits.push(numbered);
-                any |= numbered;
-            }
-            if any == 0 {
-                next_bits.truncate(at);
-            } else {
-                next_rows.push(t as u32);
-            }
-        }
-        touched.clear();
-        std::mem::swap(&mut front_rows, &mut next_rows);
-        std::mem::swap(&mut front_bits, &mut next_bits);
-        next_rows.clear();
-        next_bits.clear();
+        // Ascending: a group's scan starts below the rows of the group before only on rows
+        // that group's scan cleared (with `GROUP_ROWS` at least 2), so the bounds above hold.
+        debug_assert!(next_front.windows(2).all(|p| p[0].0 < p[1].0));
+        std::mem::swap(&mut front, &mut next_front);
+        next_front.clear();
         level = next;
     }
     drop(kept(labels, decided));
@@ -745,15 +781,7 @@ mod tests {
             for every in [true, false] {
                 let w = expand(&cs, &Holes(every), start, end, Connectivity::TwentySix)
                     .expect("joined");
-                assert_eq!(w.n(), n);
-                for (i, &d) in dist.iter().enumerate() {
-                    let l = w.label(g.node(i));
-                    if d < n {
-                        assert_eq!(l, d, "{:?} every {every}", g.node(i));
-                    } else {
-                        assert!(l == 0 || (l == n && d == n), "{:?}: {l}", g.node(i));
-                    }
-                }
+                assert_labels_are_distances(&w, &g, &dist, n, &format!("every {every}"));
             }
         }
     }
@@ -820,10 +848,7 @@ mod tests {
                 .find(|&n| usable(n))
                 .expect("a start");
             let dist = bfs(&g, start, usable);
-            let far = (0..g.len()).max_by_key(|&i| (dist[i], i)).expect("nodes");
-            let mid = (0..g.len())
-                .find(|&i| dist[i] == dist[far] / 2)
-                .expect("a middle");
+            let (far, mid) = far_and_middle(&dist);
             // The labels below n against the distances: how many disagree.
             let wrong = |w: &Wave, n: u32| {
                 (0..g.len())
@@ -860,6 +885,48 @@ mod tests {
                     Connectivity::TwentySix,
                 );
                 assert!(lying.is_none_or(|w| w.n() != n || wrong(&w, n) > 0));
+            }
+        }
+    }
+
+    /// Long rows (200 nodes: 4 words a row, the last partly used; 700: 11 words, their
+    /// number read at run time) between slabs across axis 3 pierced by two holes, a block whose
+    /// faces lie on a word border (axis 3 from 64 to 127) and scattered blocked nodes: inside,
+    /// the row wave's front is mostly rows' two ends, spread across word borders (bits 63 and
+    /// 64) and into the rows along the grid's borders. Several waves in a row over the same
+    /// grid (from the middle, from two corners, each to its farthest node and to a middle one:
+    /// label buffers kept and taken again) give every node below the end's number its
+    /// breadth-first distance and number nothing else below it.
+    #[test]
+    fn row_wave_over_long_rows_numbers_the_breadth_first_distances() {
+        fn hash(n: Node) -> u32 {
+            let h = (n[0] as u32).wrapping_mul(73_856_093)
+                ^ (n[1] as u32).wrapping_mul(19_349_663)
+                ^ (n[2] as u32).wrapping_mul(83_492_791);
+            h.wrapping_mul(2_654_435_761) >> 9
+        }
+        for d2 in [200i32, 700] {
+            let g = Grid::over([[0.0, 10.0], [0.0, 8.0], [0.0, (d2 - 1) as f64]], 1.0);
+            let free = |n: Node| {
+                let slab = n[2] % 50 == 37 && n != [2, 7, n[2]] && n != [9, 1, n[2]];
+                let block = (64..128).contains(&n[2]) && (3..=7).contains(&n[0]) && n[1] >= 2;
+                !slab && !block && hash(n) % 13 != 0
+            };
+            let cs = CSpace::from_fn(g, free);
+            for near in [[5, 4, 100], [0, 0, 0], [10, 8, d2 - 5]] {
+                let start = (g.index(near)..g.len())
+                    .map(|i| g.node(i))
+                    .find(|&n| free(n))
+                    .expect("a free node");
+                let dist = bfs(&g, start, free);
+                let (far, mid) = far_and_middle(&dist);
+                for end in [far, mid] {
+                    let n = dist[end];
+                    assert!(n > 20, "too near to test: {n}");
+                    let w = expand(&cs, &Open, start, g.node(end), Connectivity::TwentySix)
+                        .expect("joined");
+                    assert_labels_are_distances(&w, &g, &dist, n, &format!("from {start:?}"));
+                }
             }
         }
     }
@@ -927,6 +994,32 @@ mod tests {
     fn open_dims(a: usize, b: usize, c: usize) -> CSpace {
         let g = Grid::over([[0.0, a as f64], [0.0, b as f64], [0.0, c as f64]], 1.0);
         CSpace::from_fn(g, |_| true)
+    }
+
+    /// The wave numbers its end `n` (the end's breadth-first distance plus one, from `dist`),
+    /// every node below it its distance, and nothing else below it (a node as far as the end
+    /// may be numbered or not).
+    fn assert_labels_are_distances(w: &Wave, g: &Grid, dist: &[u32], n: u32, what: &str) {
+        assert_eq!(w.n(), n, "{what}");
+        for (i, &d) in dist.iter().enumerate() {
+            let (m, l) = (g.node(i), w.label(g.node(i)));
+            if d < n {
+                assert_eq!(l, d, "{m:?} {what}");
+            } else {
+                assert!(l == 0 || (l == n && d == n), "{m:?}: {l} {what}");
+            }
+        }
+    }
+
+    /// The farthest node reached (the last by index) and the first node half as far.
+    fn far_and_middle(dist: &[u32]) -> (usize, usize) {
+        let far = (0..dist.len())
+            .max_by_key(|&i| (dist[i], i))
+            .expect("nodes");
+        let mid = (0..dist.len())
+            .find(|&i| dist[i] == dist[far] / 2)
+            .expect("a middle");
+        (far, mid)
     }
 
     /// Breadth-first distances (plus one, 0 = not reached) over the usable nodes of `g` and
