@@ -256,6 +256,12 @@ fn least_sq_distance(p: &Point, bounds: &[Vec<f64>; 6]) -> f64 {
 /// at a metre, held to 1e-9 mm by the chain's tests), taken off the margin its ball test gives.
 const SINCOS_POSE_SLACK_MM: f64 = 1e-6;
 
+/// How far inside the clearance an upper bound of a tool shape's distance to a box must be for
+/// the tool looks to answer blocked from it without the exact test, mm: far above the rounding
+/// of the bound and of the exact test's own (about 1e-12 mm at cell sizes) and of the flange
+/// pose from [`SinCosChain`] ([`SINCOS_POSE_SLACK_MM`]), so the answer is the exact test's.
+const UPPER_BOUND_SLACK_MM: f64 = 1e-4;
+
 /// The poses a configuration puts the parts at: links 1..3, and link 6 (the flange) when the
 /// model has a tool; cell frame.
 pub(crate) struct Poses {
@@ -438,11 +444,16 @@ impl CollisionModel {
     /// a box farther than the clearance from the shape's ball (`parts.rs`, one point placed) is
     /// passed; then the shape's enclosing box, then the exact test.
     pub fn tool_is_free(&self, axes: &[f64; 6]) -> bool {
-        self.tool.is_none() || self.tool_is_free_at(&self.flange_pose(axes))
+        self.tool.is_none() || self.tool_is_free_at::<false>(&self.flange_pose(axes))
     }
 
-    /// [`tool_is_free`](Self::tool_is_free) with link 6 at `flange` (cell frame).
-    fn tool_is_free_at(&self, flange: &Isometry3<f64>) -> bool {
+    /// [`tool_is_free`](Self::tool_is_free) with link 6 at `flange` (cell frame). With `INNER`,
+    /// a shape near a box is first measured by an upper bound of its distance
+    /// (`Solid::upper_distance_aabb`: points of the shape, a cylinder's inner capsule, which
+    /// the exact cylinder test's distance never exceeds): within the clearance less
+    /// [`UPPER_BOUND_SLACK_MM`] it is within the clearance by the exact test too, answered
+    /// without it (the same answer).
+    fn tool_is_free_at<const INNER: bool>(&self, flange: &Isometry3<f64>) -> bool {
         let Some(tool) = &self.tool else {
             return true;
         };
@@ -463,7 +474,13 @@ impl CollisionModel {
                     let e = solid.enclosing_aabb();
                     (solid, e)
                 });
-                gap_sq_aabb_aabb(e, &o.aabb) > c * c || solid_clear_of_box(solid, &o.aabb, c)
+                if gap_sq_aabb_aabb(e, &o.aabb) > c * c {
+                    return true;
+                }
+                if INNER && solid.upper_distance_aabb(&o.aabb) <= c - UPPER_BOUND_SLACK_MM {
+                    return false;
+                }
+                solid_clear_of_box(solid, &o.aabb, c)
             })
         })
     }
@@ -496,18 +513,24 @@ impl CollisionModel {
         else {
             return (true, f64::INFINITY);
         };
+        let c = self.clearance_mm;
         let mut nearest = f64::INFINITY;
+        let mut within = false;
         for s in &tool.shapes {
             let (centre, radius) = s.ball;
             let centre = Point::from(flange.apply(&centre.coords.into()));
-            let sq = least_sq_distance(&centre, &look.bounds);
-            nearest = nearest.min(sq.sqrt() - radius);
+            let d = least_sq_distance(&centre, &look.bounds).sqrt();
+            nearest = nearest.min(d - radius);
+            // The inner ball's point nearest to the box is a point of the shape.
+            within |= d - s.inner_mm <= c - UPPER_BOUND_SLACK_MM;
         }
-        let margin = proof::lowered(nearest) - self.clearance_mm - SINCOS_POSE_SLACK_MM;
+        let margin = proof::lowered(nearest) - c - SINCOS_POSE_SLACK_MM;
         if margin > 0.0 {
             (true, margin)
+        } else if within {
+            (false, 0.0)
         } else {
-            (self.tool_is_free_at(&flange.isometry()), 0.0)
+            (self.tool_is_free_at::<true>(&flange.isometry()), 0.0)
         }
     }
 
