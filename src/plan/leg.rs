@@ -119,8 +119,9 @@ impl WristSchedule {
 pub struct ToolMemo {
     /// Per node of the grid: 0, [`TOOL_CLEAR`] or [`TOOL_BLOCKED`].
     answers: Vec<AtomicU8>,
-    /// The neighbour offsets and the tool's motion over each, in increasing motion.
-    spread: OnceLock<Vec<(f64, [i32; 3])>>,
+    /// The neighbour offsets and the tool's motion over each, in increasing motion, with each
+    /// offset's change of the grid's linear index.
+    spread: OnceLock<Vec<(f64, [i32; 3], isize)>>,
     /// Per axis 1..3, per grid index along it: the sine and cosine of the controller value
     /// (`CollisionModel::tool_look_sincos`); empty without a tool.
     arm_sincos: [Vec<(f64, f64)>; 3],
@@ -253,22 +254,34 @@ impl LegGraph<'_> {
                         let dw = span.map(|w| if w > 0.0 { ds * w + 1e-3 } else { 0.0 });
                         let motion =
                             model.tool_motion_mm(&[dq[0], dq[1], dq[2], dw[0], dw[1], dw[2]]);
-                        all.push((motion, [i, j, k]));
+                        let along = |a: usize| grid.dims[a] as isize;
+                        let delta = (i as isize * along(1) + j as isize) * along(2) + k as isize;
+                        all.push((motion, [i, j, k], delta));
                     }
                 }
             }
             all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
             all
         });
-        for &(motion, o) in offsets {
+        // A node SPREAD_STEPS or more inside every face of the grid has all its offsets on it:
+        // their indices are its own plus the offsets' deltas.
+        let inside = (0..3).all(|k| {
+            n[k] >= SPREAD_STEPS
+                && usize::try_from(n[k] + SPREAD_STEPS).is_ok_and(|e| e < grid.dims[k])
+        });
+        let base = grid.index(n) as isize;
+        for &(motion, o, delta) in offsets {
             if motion >= margin {
                 break;
             }
-            let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
-            if grid.contains(m) {
-                if let Some(slot) = self.memo.answers.get(grid.index(m)) {
-                    slot.store(TOOL_CLEAR, Ordering::Relaxed);
-                }
+            let i = if inside {
+                usize::try_from(base + delta).ok()
+            } else {
+                let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
+                grid.contains(m).then(|| grid.index(m))
+            };
+            if let Some(slot) = i.and_then(|i| self.memo.answers.get(i)) {
+                slot.store(TOOL_CLEAR, Ordering::Relaxed);
             }
         }
     }
