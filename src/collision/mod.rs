@@ -201,7 +201,7 @@ struct ToolLook {
     /// The wrist angles' sines and cosines on the 0.001 deg lattice.
     wrist: MilliDegSinCos,
     /// The boxes' bounds by coordinate, `[min x, min y, min z, max x, max y, max z]` per box
-    /// index, for the balls' distances in one pass ([`least_sq_distance`]).
+    /// index, for the balls' distances in one pass ([`least_sq_distances`]).
     bounds: [Vec<f64>; 6],
 }
 
@@ -221,13 +221,15 @@ fn bounds_by_coordinate(obstacles: &[Obstacle]) -> [Vec<f64>; 6] {
     })
 }
 
-/// The least squared distance from `p` to the boxes of `bounds` ([`bounds_by_coordinate`]):
+/// The least squared distance from each point of `ps` to the boxes of `bounds` ([`bounds_by_coordinate`]):
 /// per box the same number as `geometry::distance_sq_point_aabb` (each axis's excess is the
 /// same up to its sign, which the square drops), laid out so the loop runs without branches.
 /// Its own excess (the larger of the two gaps, clamped at 0) rather than `geometry`'s signed
 /// one: about 5 % fewer instructions in the tool looks on torch-trunk.
+/// All points in one pass over the boxes (each box's bounds loaded once): about 4 % fewer
+/// instructions in the tool looks on torch-trunk than one pass per point.
 #[inline]
-fn least_sq_distance(p: &Point, bounds: &[Vec<f64>; 6]) -> f64 {
+fn least_sq_distances<const N: usize>(ps: &[Point; N], bounds: &[Vec<f64>; 6]) -> [f64; N] {
     let [x0, y0, z0, x1, y1, z1] = bounds;
     let n = x0.len();
     let (x0, y0, z0, x1, y1, z1) = (&x0[..n], &y0[..n], &z0[..n], &x1[..n], &y1[..n], &z1[..n]);
@@ -240,13 +242,15 @@ fn least_sq_distance(p: &Point, bounds: &[Vec<f64>; 6]) -> f64 {
             0.0
         }
     };
-    let mut least = f64::INFINITY;
+    let mut least = [f64::INFINITY; N];
     for k in 0..n {
-        let ex = excess(p.x, x0[k], x1[k]);
-        let ey = excess(p.y, y0[k], y1[k]);
-        let ez = excess(p.z, z0[k], z1[k]);
-        let d = ex * ex + ey * ey + ez * ez;
-        least = if d < least { d } else { least };
+        for (l, p) in least.iter_mut().zip(ps) {
+            let ex = excess(p.x, x0[k], x1[k]);
+            let ey = excess(p.y, y0[k], y1[k]);
+            let ez = excess(p.z, z0[k], z1[k]);
+            let d = ex * ex + ey * ey + ez * ez;
+            *l = if d < *l { d } else { *l };
+        }
     }
     least
 }
@@ -516,13 +520,18 @@ impl CollisionModel {
         let c = self.clearance_mm;
         let mut nearest = f64::INFINITY;
         let mut within = false;
-        for s in &tool.shapes {
-            let (centre, radius) = s.ball;
-            let centre = Point::from(flange.apply(&centre.coords.into()));
-            let d = least_sq_distance(&centre, &look.bounds).sqrt();
-            nearest = nearest.min(d - radius);
-            // The inner ball's point nearest to the box is a point of the shape.
-            within |= d - s.inner_mm <= c - UPPER_BOUND_SLACK_MM;
+        for three in tool.shapes.chunks(3) {
+            let centre = |k: usize| {
+                let (centre, _) = three[k.min(three.len() - 1)].ball;
+                Point::from(flange.apply(&centre.coords.into()))
+            };
+            let sq = least_sq_distances(&[centre(0), centre(1), centre(2)], &look.bounds);
+            for (s, sq) in three.iter().zip(sq) {
+                let d = sq.sqrt();
+                nearest = nearest.min(d - s.ball.1);
+                // The inner ball's point nearest to the box is a point of the shape.
+                within |= d - s.inner_mm <= c - UPPER_BOUND_SLACK_MM;
+            }
         }
         let margin = proof::lowered(nearest) - c - SINCOS_POSE_SLACK_MM;
         if margin > 0.0 {
