@@ -494,8 +494,13 @@ impl CollisionModel {
     /// move is proven again on `link_poses`) and a margin, mm: how much more than the clearance
     /// every tool shape keeps from every box at least, from each shape's ball (`parts.rs`, one
     /// point placed per shape), after the slack of `proof.rs`; 0 where the balls do not show
-    /// the tool clear (`INFINITY` without a tool or boxes). The exact test runs only where the
-    /// margin is not positive. With [`tool_motion_mm`](Self::tool_motion_mm), a margin `m`
+    /// the tool clear (`INFINITY` without a tool or boxes). Where the margin is not positive,
+    /// a shape whose inner ball (`parts.rs`: about the ball's centre, inside the shape) comes
+    /// within the clearance less [`UPPER_BOUND_SLACK_MM`] of a box answers blocked; else the
+    /// exact test runs, each shape near a box first measured by an upper bound
+    /// (`Solid::upper_distance_aabb`). Both answer as the exact test: what they find within
+    /// the clearance, every bound of the exact test finds within it too (the exact cylinder
+    /// distance never exceeds the inner capsule's). With [`tool_motion_mm`](Self::tool_motion_mm), a margin `m`
     /// proves the tool clear at every pose a straight move of motion below `m` away
     /// (`plan::leg` spreads a leg's answers so).
     ///

@@ -23,7 +23,10 @@
 //! schedule turns it, plus its rounding) moves the tool less than the margin: the same answers
 //! as the exact test (up to the flange pose's rounding, far inside the margin's slack; every
 //! move is proven again on `link_poses`), found with about a fifth of the tool placements on
-//! `torch-trunk`. A look places the flange from sines and cosines
+//! `torch-trunk` (a node well inside the grid reaches the nodes around it by their index
+//! deltas, kept with the offsets). Where a shape's inner ball, or an upper bound of its distance
+//! to a box, lies within the clearance, the look answers blocked without the exact test (the
+//! exact test's answer: `CollisionModel::tool_look_sincos`). A look places the flange from sines and cosines
 //! (`CollisionModel::tool_look_sincos`): those of axes 1..3 from the memo's tables of the grid's
 //! values, so a look takes no `sin_cos`. The graph's steps are the neighbour steps whose
 //! six-axis move the step check accepts (`GridCheck::step_is_safe`: node depths first, the
@@ -115,7 +118,8 @@ impl WristSchedule {
 /// without a tool (then no node needs a look). Filled in any order, by any thread: the answer
 /// at a node is a pure function of the node and the leg, so a race only repeats the work.
 /// Beside it, made on the first spread ([`LegGraph::spread_clear`]), the neighbour offsets with
-/// the tool's motion over each, in increasing motion: the same at every node of the leg.
+/// the tool's motion over each, in increasing motion, and their grid index deltas: the same at
+/// every node of the leg.
 pub struct ToolMemo {
     /// Per node of the grid: 0, [`TOOL_CLEAR`] or [`TOOL_BLOCKED`].
     answers: Vec<AtomicU8>,
@@ -229,9 +233,11 @@ impl LegGraph<'_> {
     /// `margin` (`CollisionModel::tool_motion_mm`): axes 1..3 by the offset, the wrist by the
     /// most the leg's schedule turns it over that offset plus the rounding of both wrists to
     /// 0.001 deg (whenever the leg turns that wrist axis at all). Such a node's tool keeps more
-    /// than the clearance, so the exact test would answer clear there too: the memo holds the same answers, found with fewer placements of
-    /// the tool. The offsets' motions are the same at every node of the leg: reckoned once, in
-    /// increasing order, so a node visits only the offsets it proves (and one more).
+    /// than the clearance, so the exact test would answer clear there too: the memo holds the
+    /// same answers, found with fewer placements of the tool. The offsets' motions are the same
+    /// at every node of the leg: reckoned once, in increasing order, so a node visits only the
+    /// offsets it proves (and one more). A node [`SPREAD_STEPS`] or more inside every face of
+    /// the grid finds them by its index plus each offset's delta; others test the bounds.
     fn spread_clear(&self, n: Node, margin: f64) {
         let grid = &self.cs.grid;
         let offsets = self.memo.spread.get_or_init(|| {
