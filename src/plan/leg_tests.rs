@@ -57,6 +57,22 @@ fn point(name: &str, joints_deg: [f64; 6]) -> PlacedPoint {
     }
 }
 
+/// The leg's graph of `schedule` on `cs` with `memo`, numbering over every step.
+fn graph_of<'a>(
+    cs: &'a CSpace,
+    check: &'a GridCheck<'a>,
+    schedule: &'a WristSchedule,
+    memo: &'a ToolMemo,
+) -> LegGraph<'a> {
+    LegGraph {
+        cs,
+        check,
+        schedule,
+        eager: false,
+        memo,
+    }
+}
+
 /// A small grid in front of the robot, 3 deg.
 fn small_grid() -> Grid {
     Grid::over([[-45.0, 45.0], [-30.0, 51.0], [-30.0, 60.0]], 3.0)
@@ -176,13 +192,7 @@ fn the_search_finds_a_path_exactly_where_the_accepted_steps_join_the_points() {
         legs += 1;
         let schedule = WristSchedule::new(&from, &to);
         let memo = ToolMemo::new(&cs, &check);
-        let graph = LegGraph {
-            cs: &cs,
-            check: &check,
-            schedule: &schedule,
-            eager: false,
-            memo: &memo,
-        };
+        let graph = graph_of(&cs, &check, &schedule, &memo);
         let (j26, j6) = (
             joined(&graph, s, e, Connectivity::TwentySix),
             joined(&graph, s, e, Connectivity::Six),
@@ -312,13 +322,7 @@ fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_acce
     );
     let schedule = WristSchedule::new(&from, &to);
     let memo = ToolMemo::new(&cs, &check);
-    let optimistic = LegGraph {
-        cs: &cs,
-        check: &check,
-        schedule: &schedule,
-        eager: false,
-        memo: &memo,
-    };
+    let optimistic = graph_of(&cs, &check, &schedule, &memo);
     let eager = LegGraph {
         eager: true,
         ..optimistic
@@ -377,13 +381,7 @@ fn spread_answers_are_exact(schedule: &WristSchedule) {
     let check = m.grid_check(g.step_deg);
     let cs = CSpace::build(g, &check);
     let memo = ToolMemo::new(&cs, &check);
-    let graph = LegGraph {
-        cs: &cs,
-        check: &check,
-        schedule,
-        eager: false,
-        memo: &memo,
-    };
+    let graph = graph_of(&cs, &check, schedule, &memo);
     let mut visited = vec![false; g.len()];
     for i in (0..g.len()).step_by(7).map(|i| (i * 7919) % g.len()) {
         visited[i] = true;
@@ -479,13 +477,7 @@ fn the_spread_marks_its_offsets_nodes_inside_and_at_the_faces() {
     // Margins that take a few offsets, about half of them, and all, from the offsets' motions.
     let motions: Vec<f64> = {
         let memo = ToolMemo::new(&cs, &check);
-        let graph = LegGraph {
-            cs: &cs,
-            check: &check,
-            schedule: &schedule,
-            eager: false,
-            memo: &memo,
-        };
+        let graph = graph_of(&cs, &check, &schedule, &memo);
         graph.spread_clear(nodes[0], 1.0);
         let offsets = memo.spread.get().expect("made on the first spread");
         offsets.iter().map(|o| o.0).collect()
@@ -493,13 +485,7 @@ fn the_spread_marks_its_offsets_nodes_inside_and_at_the_faces() {
     for n in nodes {
         for margin in [motions[5] + 1e-6, motions[60] + 1e-6, 1e9] {
             let memo = ToolMemo::new(&cs, &check);
-            let graph = LegGraph {
-                cs: &cs,
-                check: &check,
-                schedule: &schedule,
-                eager: false,
-                memo: &memo,
-            };
+            let graph = graph_of(&cs, &check, &schedule, &memo);
             graph.spread_clear(n, margin);
             let offsets = memo.spread.get().expect("made on the first spread");
             let want: Vec<usize> = {
