@@ -221,8 +221,8 @@ fn bounds_by_coordinate(obstacles: &[Obstacle]) -> [Vec<f64>; 6] {
     })
 }
 
-/// The least squared distance from each point of `ps` to the boxes of `bounds` ([`bounds_by_coordinate`]):
-/// per box the same number as `geometry::distance_sq_point_aabb` (each axis's excess is the
+/// The least squared distance from each point of `ps` to the boxes of `bounds`
+/// ([`bounds_by_coordinate`]): per box the same number as `geometry::distance_sq_point_aabb` (each axis's excess is the
 /// same up to its sign, which the square drops), laid out so the loop runs without branches.
 /// Its own excess (the larger of the two gaps, clamped at 0) rather than `geometry`'s signed
 /// one: about 5 % fewer instructions in the tool looks on torch-trunk.
@@ -500,7 +500,8 @@ impl CollisionModel {
     /// exact test runs, each shape near a box first measured by an upper bound
     /// (`Solid::upper_distance_aabb`). Both answer as the exact test: what they find within
     /// the clearance, every bound of the exact test finds within it too (the exact cylinder
-    /// distance never exceeds the inner capsule's). With [`tool_motion_mm`](Self::tool_motion_mm), a margin `m`
+    /// distance never exceeds the inner capsule's). With
+    /// [`tool_motion_mm`](Self::tool_motion_mm), a margin `m`
     /// proves the tool clear at every pose a straight move of motion below `m` away
     /// (`plan::leg` spreads a leg's answers so).
     ///
