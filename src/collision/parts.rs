@@ -108,6 +108,19 @@ impl Local {
         (centre, radius * (1.0 + 1e-9) + 1e-9)
     }
 
+    /// The radius of a ball about the centre of [`ball`](Self::ball) that lies inside the
+    /// shape, mm: a cylinder's radius (at most half its length: the centre is its axis's
+    /// midpoint), a sphere's, a box's least half side. A point of the shape within the
+    /// clearance less this of a box proves the shape within the clearance
+    /// (`CollisionModel::tool_look_sincos`'s blocked answers).
+    fn inner_radius(&self) -> f64 {
+        match self {
+            Local::Cylinder { a, b, radius } => radius.min(0.5 * (b - a).norm()),
+            Local::Sphere { radius, .. } => *radius,
+            Local::Box { half, .. } => half.min(),
+        }
+    }
+
     /// Points whose convex hull, grown by the radius returned, holds the shape.
     fn hull(&self) -> (Vec<Point>, f64) {
         match self {
@@ -154,6 +167,8 @@ pub(super) struct ShapeData {
     pub local: Local,
     /// A ball holding the shape: centre in the link-6 frame and radius, mm.
     pub ball: (Point, f64),
+    /// The radius of a ball about `ball`'s centre inside the shape, mm.
+    pub inner_mm: f64,
     /// `R[i][S]` for joints 1..6 (module doc), mm.
     pub reach_mm: [f64; 6],
 }
@@ -207,6 +222,7 @@ impl ToolData {
                 ShapeData {
                     name: s.name.clone(),
                     ball: local.ball(),
+                    inner_mm: local.inner_radius(),
                     local,
                     reach_mm,
                 }

@@ -720,12 +720,16 @@ fn the_tool_looks_least_distance_is_distance_sq_point_aabb_to_the_bit() {
             .collect();
         let bounds = bounds_by_coordinate(&boxes);
         for _ in 0..50 {
-            let p = rng.point(-1500.0, 1500.0);
-            let want = boxes
-                .iter()
-                .map(|o| distance_sq_point_aabb(&p, &o.aabb))
-                .fold(f64::INFINITY, f64::min);
-            assert_eq!(least_sq_distance(&p, &bounds).to_bits(), want.to_bits());
+            // Three points in one pass, each its own least.
+            let ps: [Point; 3] = std::array::from_fn(|_| rng.point(-1500.0, 1500.0));
+            let got = least_sq_distances(&ps, &bounds);
+            for (p, got) in ps.iter().zip(got) {
+                let want = boxes
+                    .iter()
+                    .map(|o| distance_sq_point_aabb(p, &o.aabb))
+                    .fold(f64::INFINITY, f64::min);
+                assert_eq!(got.to_bits(), want.to_bits());
+            }
         }
     }
 }

@@ -732,3 +732,64 @@ fn tool_is_free_agrees_with_parry_at_random_poses() {
         "{clear} clear, {blocked} blocked"
     );
 }
+
+/// The tool looks' blocked answers from upper bounds are the exact test's: at every node of a
+/// 5 deg grid in front of the robot, with the wrist of a long leg and of a short one whose
+/// wrist turns far per step, the look (`tool_look_sincos`, memo tables' sines and cosines)
+/// answers what `tool_is_free` (no shortcut, `link_poses`) answers. Both shortcuts must have
+/// answered blocked at many nodes: a shape's inner ball within the clearance (the ball pass)
+/// and, where that did not, a shape's `Solid::upper_distance_aabb` within it (counted here
+/// independently of the look).
+#[test]
+fn blocked_answers_from_upper_bounds_are_the_exact_tests() {
+    use crate::plan::cspace::Grid;
+    use crate::plan::leg::WristSchedule;
+    let m = torch_model(10.0);
+    let (tool, c) = (m.tool.as_ref().expect("a torch"), m.clearance_mm());
+    let g = Grid::over([[-90.0, 90.0], [-60.0, 70.0], [-60.0, 70.0]], 5.0);
+    for (from, to) in [
+        (
+            [-60.0, -10.0, 0.0, -30.0, -60.0, 20.0],
+            [60.0, 40.0, 40.0, 120.0, 70.0, 200.0],
+        ),
+        (
+            [-3.0, 10.0, 20.0, -150.0, -110.0, -300.0],
+            [3.0, 10.0, 20.0, 150.0, 110.0, 300.0],
+        ),
+    ] {
+        let schedule = WristSchedule::new(&from, &to);
+        let (mut blocked, mut by_balls, mut by_upper) = (0, 0, 0);
+        for i in 0..g.len() {
+            let six = schedule.six(&g.axes_deg(g.node(i)));
+            let sc = [0, 1, 2].map(|k| six[k].to_radians().sin_cos());
+            let exact = m.tool_is_free(&six);
+            assert_eq!(m.tool_look_sincos(&six, &sc).0, exact, "at {six:?}");
+            if exact {
+                continue;
+            }
+            blocked += 1;
+            let flange = m.flange_pose_for_test(&six);
+            let ball_within = tool.shapes.iter().any(|s| {
+                let centre = flange * s.ball.0;
+                m.obstacles()
+                    .iter()
+                    .any(|o| distance_point_aabb(&centre, &o.aabb) - s.inner_mm < c)
+            });
+            let upper_within = tool.shapes.iter().any(|s| {
+                let solid = s.local.placed(&flange);
+                m.obstacles()
+                    .iter()
+                    .any(|o| solid.upper_distance_aabb(&o.aabb) < c)
+            });
+            if ball_within {
+                by_balls += 1;
+            } else if upper_within {
+                by_upper += 1;
+            }
+        }
+        assert!(
+            by_balls > 200 && by_upper > 200 && blocked > by_balls + by_upper,
+            "{blocked} blocked, {by_balls} by the inner balls, {by_upper} by the upper bounds"
+        );
+    }
+}

@@ -23,9 +23,12 @@
 //! schedule turns it, plus its rounding) moves the tool less than the margin: the same answers
 //! as the exact test (up to the flange pose's rounding, far inside the margin's slack; every
 //! move is proven again on `link_poses`), found with about a fifth of the tool placements on
-//! `torch-trunk`. A look places the flange from sines and cosines
-//! (`CollisionModel::tool_look_sincos`): those of axes 1..3 from the memo's tables of the grid's
-//! values, so a look takes no `sin_cos`. The graph's steps are the neighbour steps whose
+//! `torch-trunk` (a node well inside the grid reaches the nodes around it by their index
+//! deltas, kept with the offsets). Where a shape's inner ball, or an upper bound of its distance
+//! to a box, lies within the clearance, the look answers blocked without the exact test (the
+//! exact test's answer: `CollisionModel::tool_look_sincos`). A look places the flange from sines
+//! and cosines: those of axes 1..3 from the memo's tables of the grid's values, so a look takes
+//! no `sin_cos`. The graph's steps are the neighbour steps whose
 //! six-axis move the step check accepts (`GridCheck::step_is_safe`: node depths first, the
 //! whole-move proof where they do not suffice), asked with the two ends in index order so the
 //! answer is symmetric. Without a tool this costs nothing beyond the step check.
@@ -115,12 +118,14 @@ impl WristSchedule {
 /// without a tool (then no node needs a look). Filled in any order, by any thread: the answer
 /// at a node is a pure function of the node and the leg, so a race only repeats the work.
 /// Beside it, made on the first spread ([`LegGraph::spread_clear`]), the neighbour offsets with
-/// the tool's motion over each, in increasing motion: the same at every node of the leg.
+/// the tool's motion over each, in increasing motion, and their grid index deltas: the same at
+/// every node of the leg.
 pub struct ToolMemo {
     /// Per node of the grid: 0, [`TOOL_CLEAR`] or [`TOOL_BLOCKED`].
     answers: Vec<AtomicU8>,
-    /// The neighbour offsets and the tool's motion over each, in increasing motion.
-    spread: OnceLock<Vec<(f64, [i32; 3])>>,
+    /// The neighbour offsets and the tool's motion over each, in increasing motion, with each
+    /// offset's change of the grid's linear index.
+    spread: OnceLock<Vec<(f64, [i32; 3], isize)>>,
     /// Per axis 1..3, per grid index along it: the sine and cosine of the controller value
     /// (`CollisionModel::tool_look_sincos`); empty without a tool.
     arm_sincos: [Vec<(f64, f64)>; 3],
@@ -228,9 +233,11 @@ impl LegGraph<'_> {
     /// `margin` (`CollisionModel::tool_motion_mm`): axes 1..3 by the offset, the wrist by the
     /// most the leg's schedule turns it over that offset plus the rounding of both wrists to
     /// 0.001 deg (whenever the leg turns that wrist axis at all). Such a node's tool keeps more
-    /// than the clearance, so the exact test would answer clear there too: the memo holds the same answers, found with fewer placements of
-    /// the tool. The offsets' motions are the same at every node of the leg: reckoned once, in
-    /// increasing order, so a node visits only the offsets it proves (and one more).
+    /// than the clearance, so the exact test would answer clear there too: the memo holds the
+    /// same answers, found with fewer placements of the tool. The offsets' motions are the same
+    /// at every node of the leg: reckoned once, in increasing order, so a node visits only the
+    /// offsets it proves (and one more). A node [`SPREAD_STEPS`] or more inside every face of
+    /// the grid finds them by its index plus each offset's delta; others test the bounds.
     fn spread_clear(&self, n: Node, margin: f64) {
         let grid = &self.cs.grid;
         let offsets = self.memo.spread.get_or_init(|| {
@@ -253,22 +260,34 @@ impl LegGraph<'_> {
                         let dw = span.map(|w| if w > 0.0 { ds * w + 1e-3 } else { 0.0 });
                         let motion =
                             model.tool_motion_mm(&[dq[0], dq[1], dq[2], dw[0], dw[1], dw[2]]);
-                        all.push((motion, [i, j, k]));
+                        let along = |a: usize| grid.dims[a] as isize;
+                        let delta = (i as isize * along(1) + j as isize) * along(2) + k as isize;
+                        all.push((motion, [i, j, k], delta));
                     }
                 }
             }
             all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
             all
         });
-        for &(motion, o) in offsets {
+        // A node SPREAD_STEPS or more inside every face of the grid has all its offsets on it:
+        // their indices are its own plus the offsets' deltas.
+        let inside = (0..3).all(|k| {
+            n[k] >= SPREAD_STEPS
+                && usize::try_from(n[k] + SPREAD_STEPS).is_ok_and(|e| e < grid.dims[k])
+        });
+        let base = grid.index(n) as isize;
+        for &(motion, o, delta) in offsets {
             if motion >= margin {
                 break;
             }
-            let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
-            if grid.contains(m) {
-                if let Some(slot) = self.memo.answers.get(grid.index(m)) {
-                    slot.store(TOOL_CLEAR, Ordering::Relaxed);
-                }
+            let i = if inside {
+                usize::try_from(base + delta).ok()
+            } else {
+                let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
+                grid.contains(m).then(|| grid.index(m))
+            };
+            if let Some(slot) = i.and_then(|i| self.memo.answers.get(i)) {
+                slot.store(TOOL_CLEAR, Ordering::Relaxed);
             }
         }
     }

@@ -57,6 +57,22 @@ fn point(name: &str, joints_deg: [f64; 6]) -> PlacedPoint {
     }
 }
 
+/// The leg's graph of `schedule` on `cs` with `memo`, numbering over every step.
+fn graph_of<'a>(
+    cs: &'a CSpace,
+    check: &'a GridCheck<'a>,
+    schedule: &'a WristSchedule,
+    memo: &'a ToolMemo,
+) -> LegGraph<'a> {
+    LegGraph {
+        cs,
+        check,
+        schedule,
+        eager: false,
+        memo,
+    }
+}
+
 /// A small grid in front of the robot, 3 deg.
 fn small_grid() -> Grid {
     Grid::over([[-45.0, 45.0], [-30.0, 51.0], [-30.0, 60.0]], 3.0)
@@ -176,13 +192,7 @@ fn the_search_finds_a_path_exactly_where_the_accepted_steps_join_the_points() {
         legs += 1;
         let schedule = WristSchedule::new(&from, &to);
         let memo = ToolMemo::new(&cs, &check);
-        let graph = LegGraph {
-            cs: &cs,
-            check: &check,
-            schedule: &schedule,
-            eager: false,
-            memo: &memo,
-        };
+        let graph = graph_of(&cs, &check, &schedule, &memo);
         let (j26, j6) = (
             joined(&graph, s, e, Connectivity::TwentySix),
             joined(&graph, s, e, Connectivity::Six),
@@ -312,13 +322,7 @@ fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_acce
     );
     let schedule = WristSchedule::new(&from, &to);
     let memo = ToolMemo::new(&cs, &check);
-    let optimistic = LegGraph {
-        cs: &cs,
-        check: &check,
-        schedule: &schedule,
-        eager: false,
-        memo: &memo,
-    };
+    let optimistic = graph_of(&cs, &check, &schedule, &memo);
     let eager = LegGraph {
         eager: true,
         ..optimistic
@@ -377,13 +381,7 @@ fn spread_answers_are_exact(schedule: &WristSchedule) {
     let check = m.grid_check(g.step_deg);
     let cs = CSpace::build(g, &check);
     let memo = ToolMemo::new(&cs, &check);
-    let graph = LegGraph {
-        cs: &cs,
-        check: &check,
-        schedule,
-        eager: false,
-        memo: &memo,
-    };
+    let graph = graph_of(&cs, &check, schedule, &memo);
     let mut visited = vec![false; g.len()];
     for i in (0..g.len()).step_by(7).map(|i| (i * 7919) % g.len()) {
         visited[i] = true;
@@ -448,6 +446,64 @@ fn the_tool_looks_place_the_flange_where_link_poses_does_at_every_node() {
         let slow = m.flange_pose_for_test(&six);
         for p in &probes {
             assert!((fast * p - slow * p).norm() < 1e-9, "node {n:?}, {six:?}");
+        }
+    }
+}
+
+/// The spread marks exactly the nodes of the offsets whose motion is below the margin that lie
+/// on the grid: at a node well inside (reached by the offsets' index deltas) and at nodes on
+/// the grid's faces and corners (bounds tested), each node found here by its own coordinates.
+#[test]
+fn the_spread_marks_its_offsets_nodes_inside_and_at_the_faces() {
+    let m = model(true, false);
+    let g = small_grid();
+    let check = m.grid_check(g.step_deg);
+    let cs = CSpace::build(g, &check);
+    let schedule = WristSchedule::new(
+        &[-30.0, 0.0, 10.0, 0.0, -80.0, 0.0],
+        &[30.0, 30.0, 30.0, 90.0, 80.0, 180.0],
+    );
+    let [d0, d1, d2] = g.dims.map(|d| d as i32);
+    let nodes = [
+        [d0 / 2, d1 / 2, d2 / 2],
+        [2, 2, 2],
+        [0, 0, 0],
+        [d0 - 1, d1 / 2, 1],
+        [1, d1 - 2, d2 - 1],
+        [d0 - 3, d1 - 3, d2 - 3],
+        [1, d1 / 2, d2 / 2],
+        [d0 / 2, d1 - 2, d2 / 2],
+    ];
+    // Margins that take a few offsets, about half of them, and all, from the offsets' motions.
+    let motions: Vec<f64> = {
+        let memo = ToolMemo::new(&cs, &check);
+        let graph = graph_of(&cs, &check, &schedule, &memo);
+        graph.spread_clear(nodes[0], 1.0);
+        let offsets = memo.spread.get().expect("made on the first spread");
+        offsets.iter().map(|o| o.0).collect()
+    };
+    for n in nodes {
+        for margin in [motions[5] + 1e-6, motions[60] + 1e-6, 1e9] {
+            let memo = ToolMemo::new(&cs, &check);
+            let graph = graph_of(&cs, &check, &schedule, &memo);
+            graph.spread_clear(n, margin);
+            let offsets = memo.spread.get().expect("made on the first spread");
+            let want: Vec<usize> = {
+                let mut w: Vec<usize> = offsets
+                    .iter()
+                    .filter(|(motion, _, _)| *motion < margin)
+                    .map(|&(_, o, _)| add(n, o))
+                    .filter(|&m| g.contains(m))
+                    .map(|m| g.index(m))
+                    .collect();
+                w.sort_unstable();
+                w
+            };
+            let got: Vec<usize> = (0..g.len())
+                .filter(|&i| memo.answers[i].load(Ordering::Relaxed) == TOOL_CLEAR)
+                .collect();
+            assert_eq!(got, want, "node {n:?}, margin {margin}");
+            assert!(!want.is_empty(), "node {n:?}, margin {margin}");
         }
     }
 }
