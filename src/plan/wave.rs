@@ -148,9 +148,11 @@ impl Word for u32 {
 }
 
 /// The largest row bit set the row wave asks of the grid ([`CSpace::row_bits`]), bytes: the
-/// set holds a bit a node for the rest of the run, which at 0.25 deg over the IRB 1400's ranges
-/// (52 MB) would raise the peak; there every candidate is looked at (the same numbers).
-const ROW_BITS_MAX_BYTES: usize = 32 << 20;
+/// set holds a bit a node for the rest of the run (52 MB at 0.25 deg over the IRB 1400's
+/// ranges); above it every candidate is looked at (the same numbers). At 0.25 deg the set took
+/// the trunk from 11.2 to 9.4 s at a peak of 975 940 KiB, 0.9994e9 bytes (922 180 KiB
+/// without): under issue 11's 1 GB, with little to spare (`benches/README.md`).
+const ROW_BITS_MAX_BYTES: usize = 64 << 20;
 
 /// The rows of the row wave's candidates marked together (one bit a group; a group's scan also
 /// reads the row just below and just above it, so a front word marks one group a plane of rows).
