@@ -1,14 +1,15 @@
 //! An ordered parallel map on the machine's cores (std threads, no pool): the items are handed
 //! out one at a time as each thread asks for the next, so items of very different cost keep every
 //! core busy, and the results come back in the items' order, whoever computed them. Used where a
-//! stage does independent, deterministic work per item (the smallest clearance of each move in
-//! `plan::certify`).
+//! stage does independent, deterministic work per item: the smallest clearance of each move in
+//! `plan::certify`, the zoned corners' proofs and clearances in `refine::zones`.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
 /// `items.iter().map(f).collect()`, computed on up to `available_parallelism` threads. A panic
-/// in `f` is raised again here (by `std::thread::scope`).
+/// in `f` makes this panic too (`std::thread::scope`, with its own message; the panic hook has
+/// printed the first one).
 pub fn map<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
     let threads = std::thread::available_parallelism()
         .map(|n| n.get())

@@ -22,7 +22,7 @@
 //! above the clearance by more than the margin), and every depth stays a lower bound. The
 //! depths only decide which steps the codes prove before the whole-move proof is asked
 //! (`grid.rs`), so shallower ones cost the planner time, never a different answer; runs that
-//! stop at the clearance instead of at `deep_mm` took about a tenth off the trunk's 1 deg
+//! stop at the clearance instead of at `deep_mm` took about 13 % off the trunk's 1 deg
 //! build (`benches/README.md`).
 //!
 //! *Blocked.* A ball of radius `rho = min(r, L/2)` about a point of the cylinder's axis at

@@ -6,9 +6,10 @@
 //! range of axes 1 and 2, link 2's checks, the frame of joint 3), and boxes the links moved by
 //! axis 3 cannot come near are culled. Axis 3's range and the coupled one hold on one run of the
 //! column's ascending values, found by two bisections (node by node where the values are not
-//! ascending). The rest goes by runs of the column (`block.rs`, beyond the paper): a run whose
-//! motion bound proves it free with full depth, or blocked, costs one pose at its middle and no
-//! per-node work; only runs near an obstacle's boundary are halved down to the node test.
+//! ascending). The rest goes by runs of the column (`block.rs`, beyond the paper), 32 nodes to
+//! start with: a run whose motion bound proves it free (with the run's own depth, or full depth
+//! far from the boxes), or blocked, or the tool near at every node, costs one pose at its middle
+//! and no per-node work; only runs near an obstacle's boundary are halved down to the node test.
 
 use super::block::{ascending, Centre, Swept, SET, TOP_RUN_NODES};
 use super::grid::{GridCheck, ARM_BITS, COLUMN_LEVELS, DEPTH_LEVELS};

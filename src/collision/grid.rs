@@ -26,8 +26,9 @@
 //! axes 4..6 do, and `q_T` quantises `f` with `S_C = max_o M_C(o)`. The depths are computed from
 //! the cheap lower bounds the node test has at hand (`column.rs`), so they are conservative;
 //! where a run of a column is proven at once (`block.rs`), a part whose bound over the whole run
-//! (its lower bound at the run's middle less its motion across the run) reaches `deep_mm`
-//! gets depth `K` at every node of the run without being measured there.
+//! (its lower bound at the run's middle less its motion across the run) is above the clearance
+//! gets that bound's depth (`K` from `deep_mm` on) at every node of the run without being
+//! measured there.
 //!
 //! *Steps proven by the codes.* A step between neighbours `n`, `m` with offset `o` is safe for a
 //! set of parts sharing a scale `S` when `q(n) + q(m) >= need(o) = ceil(K max_P M_P(o) / S)`:

@@ -73,7 +73,7 @@ pub use proof::{Clearance, DISTANCE_SLACK_REL, MOVE_FLOOR_MM};
 pub use crate::cell::Obstacle;
 use crate::cell::{Cell, Tool};
 use crate::geometry::{
-    closest_param_segment_aabb, distance_cylinder_aabb_exact, distance_point_aabb,
+    clamp_to_box, closest_param_segment_aabb, distance_cylinder_aabb_exact, distance_point_aabb,
     distance_segment_aabb, distance_sq_point_aabb, gap_sq_aabb_aabb, Aabb, Cylinder, Point, Solid,
 };
 use crate::place::{Placement, PoseCheck};
@@ -222,8 +222,9 @@ fn bounds_by_coordinate(obstacles: &[Obstacle]) -> [Vec<f64>; 6] {
 }
 
 /// The least squared distance from each point of `ps` to the boxes of `bounds`
-/// ([`bounds_by_coordinate`]): per box the same number as `geometry::distance_sq_point_aabb` (each axis's excess is the
-/// same up to its sign, which the square drops), laid out so the loop runs without branches.
+/// ([`bounds_by_coordinate`]): per box the same number as `geometry::distance_sq_point_aabb`
+/// (each axis's excess is the same up to its sign, which the square drops), laid out so the
+/// loop runs without branches.
 /// Its own excess (the larger of the two gaps, clamped at 0) rather than `geometry`'s signed
 /// one: about 5 % fewer instructions in the tool looks on torch-trunk.
 /// All points in one pass over the boxes (each box's bounds loaded once): about 4 % fewer
@@ -516,7 +517,9 @@ impl CollisionModel {
     /// flange is placed by [`SinCosChain`] (the wrist's sines and cosines from a table of the
     /// written 0.001 deg), which agrees with [`Robot::link_poses`] to rounding; the balls'
     /// margin is lowered by [`SINCOS_POSE_SLACK_MM`] for it. Where the balls do not show the
-    /// tool clear, the exact test of [`tool_is_free`](Self::tool_is_free) runs on that flange.
+    /// tool clear, the upper bounds of [`tool_look`](Self::tool_look) may answer blocked, and
+    /// only what they leave goes to the exact test of [`tool_is_free`](Self::tool_is_free) on
+    /// that flange.
     pub fn tool_look_sincos(&self, axes: &[f64; 6], arm_sincos: &[(f64, f64); 3]) -> (bool, f64) {
         let (Some(tool), Some(look), Some(flange)) =
             (&self.tool, &self.look, self.flange_sincos(axes, arm_sincos))
@@ -828,7 +831,7 @@ fn stands_on_its_mounting_plane(robot: &Robot, c: &crate::robot::LinkCylinder) -
 /// leave open goes to the alternating projections of `geometry::certify` (a certified
 /// separating plane or point pair: nearly every case) and then parry's GJK. All are valid
 /// bounds, so the answer is the exact test's. On the trunk's 1 deg grid build the cheap bounds
-/// decide about two thirds of the calls the projections used to take.
+/// decide about seven in ten of the calls the projections used to take (81 k of 283 k left).
 #[inline]
 fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
     let d = c.b - c.a;
@@ -848,7 +851,7 @@ fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
         // Upper bounds: on the disc about the axis point nearest the box and on both caps, the
         // point nearest the box point nearest the disc's centre.
         for p in [near, c.a, c.b] {
-            let w = clamp_to_aabb(&p, b) - p;
+            let w = clamp_to_box(&p, b) - p;
             let perp = w - u * u.dot(&w);
             let n = perp.norm();
             let rim = if n > 0.0 {
@@ -876,16 +879,6 @@ fn link_clear_of_box(c: &Cylinder, b: &Aabb, clearance: f64) -> bool {
     }
     // What the projections left open (a distance within their slack of the clearance): GJK.
     distance_cylinder_aabb_exact(c, b) > clearance
-}
-
-/// The point of box `b` nearest to `p`.
-#[inline]
-fn clamp_to_aabb(p: &Point, b: &Aabb) -> Point {
-    Point::new(
-        p.x.clamp(b.min.x, b.max.x),
-        p.y.clamp(b.min.y, b.max.y),
-        p.z.clamp(b.min.z, b.max.z),
-    )
 }
 
 /// The place stage's question: why a pose (an IK solution, or a point given as joints) cannot be

@@ -194,7 +194,7 @@ fn face_normal(x: &Point, y: &Point, bx: &Aabb) -> Option<Vector3<f64>> {
 
 /// The box's point nearest `p`.
 #[inline(always)]
-fn clamp_to_box(p: &Point, bx: &Aabb) -> Point {
+pub fn clamp_to_box(p: &Point, bx: &Aabb) -> Point {
     Point::new(
         p.x.clamp(bx.min.x, bx.max.x),
         p.y.clamp(bx.min.y, bx.max.y),

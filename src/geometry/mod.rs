@@ -26,7 +26,7 @@ use nalgebra::{Point3, Vector3};
 
 mod certify;
 mod solids;
-pub use certify::{bracket_by_projection, clear_by_projection, Bracket};
+pub use certify::{bracket_by_projection, clamp_to_box, clear_by_projection, Bracket};
 pub use solids::{distance_obb_aabb, distance_sphere_aabb, gap_sq_aabb_aabb, Obb, Solid, Sphere};
 
 /// A point of the cell frame, mm.

@@ -275,6 +275,61 @@ mod tests {
         );
     }
 
+    /// `upper_distance_aabb` never falls below the exact distance (parry's for boxes; the
+    /// closed forms checked against parry elsewhere for cylinders and balls), and is often
+    /// close to it where the solid nears the box (else it would never answer anything).
+    #[test]
+    fn upper_distance_is_never_below_the_exact_distance() {
+        let mut rng = Rng(0x5EED_0099_E000_0001);
+        let (mut near, mut tight) = (0, 0);
+        for k in 0..30_000 {
+            let bc = rng.point(-300.0, 300.0);
+            let bh = Vector3::new(
+                rng.range(1.0, 300.0),
+                rng.range(1.0, 300.0),
+                rng.range(1.0, 300.0),
+            );
+            let b = Aabb::new(bc - bh, bc + bh);
+            let centre = rng.point(-600.0, 600.0);
+            let solid = match k % 3 {
+                0 => Solid::Cylinder(Cylinder {
+                    a: centre,
+                    b: centre + random_rotation(&mut rng) * Vector3::z() * rng.range(0.0, 600.0),
+                    radius: rng.range(0.0, 120.0),
+                }),
+                1 => Solid::Sphere(Sphere {
+                    centre,
+                    radius: rng.range(0.0, 200.0),
+                }),
+                _ => Solid::Box(Obb {
+                    centre,
+                    axes: random_rotation(&mut rng),
+                    half: Vector3::new(
+                        rng.range(0.0, 200.0),
+                        rng.range(0.0, 200.0),
+                        rng.range(0.0, 200.0),
+                    ),
+                }),
+            };
+            let exact = match &solid {
+                Solid::Box(o) => parry_obb_aabb(o, &b),
+                other => other.distance_aabb(&b),
+            };
+            let upper = solid.upper_distance_aabb(&b);
+            assert!(
+                upper >= exact - 1e-6 * (1.0 + exact),
+                "{solid:?} {b:?}: upper {upper} below exact {exact}"
+            );
+            if exact < 50.0 {
+                near += 1;
+                if upper <= exact + 5.0 {
+                    tight += 1;
+                }
+            }
+        }
+        assert!(near > 3_000 && tight * 2 > near, "{tight} tight of {near}");
+    }
+
     #[test]
     fn obb_aabb_hand_cases() {
         let b = Aabb::new(Point::new(0.0, 0.0, 0.0), Point::new(100.0, 100.0, 100.0));
