@@ -235,18 +235,23 @@ mod tests {
             .distance
     }
 
+    /// A box about a point within 300 mm of the origin, half sides of 1..300 mm.
+    fn random_aabb(rng: &mut Rng) -> Aabb {
+        let bc = rng.point(-300.0, 300.0);
+        let bh = Vector3::new(
+            rng.range(1.0, 300.0),
+            rng.range(1.0, 300.0),
+            rng.range(1.0, 300.0),
+        );
+        Aabb::new(bc - bh, bc + bh)
+    }
+
     #[test]
     fn obb_aabb_distance_matches_parry_on_random_boxes() {
         let mut rng = Rng(0x0bb0_0bb0_1234_5678);
         let (mut apart, mut touching) = (0, 0);
         for _ in 0..20_000 {
-            let bc = rng.point(-300.0, 300.0);
-            let bh = Vector3::new(
-                rng.range(1.0, 300.0),
-                rng.range(1.0, 300.0),
-                rng.range(1.0, 300.0),
-            );
-            let b = Aabb::new(bc - bh, bc + bh);
+            let b = random_aabb(&mut rng);
             let o = Obb {
                 centre: rng.point(-500.0, 500.0),
                 axes: random_rotation(&mut rng),
@@ -283,13 +288,7 @@ mod tests {
         let mut rng = Rng(0x5EED_0099_E000_0001);
         let (mut near, mut tight) = (0, 0);
         for k in 0..30_000 {
-            let bc = rng.point(-300.0, 300.0);
-            let bh = Vector3::new(
-                rng.range(1.0, 300.0),
-                rng.range(1.0, 300.0),
-                rng.range(1.0, 300.0),
-            );
-            let b = Aabb::new(bc - bh, bc + bh);
+            let b = random_aabb(&mut rng);
             let centre = rng.point(-600.0, 600.0);
             let solid = match k % 3 {
                 0 => Solid::Cylinder(Cylinder {
