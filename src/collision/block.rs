@@ -49,7 +49,7 @@
 //! column alone, so the result does not depend on the threads.
 
 use super::grid::{GridCheck, ARM_BITS, DEPTH_LEVELS};
-use super::link_clear_of_box;
+use super::{axis_nearest, link_clear_near};
 use crate::cell::Obstacle;
 use crate::geometry::{
     distance_capsule_aabb, distance_point_aabb, distance_segment_aabb, Aabb, Cylinder, Point,
@@ -170,6 +170,18 @@ fn not_near(c: f64) -> f64 {
     (c + 1e-6) / (1.0 - 1e-6) + 1e-9
 }
 
+/// Lowers the depth at bits `shift..shift + 3` of every free code to at most `q` (the arm's at
+/// 0, the tool's at 3).
+#[inline]
+fn cap_depth(codes: &mut [u8], shift: u8, q: u8) {
+    let mask = DEPTH_LEVELS << shift;
+    for f in codes.iter_mut().filter(|f| **f != 0) {
+        if (*f & mask) >> shift > q {
+            *f = (*f & !mask) | (q << shift);
+        }
+    }
+}
+
 /// The motion bound over a run: `reach * h`, raised over its float value (module doc).
 #[inline]
 fn motion(reach: f64, h: f64) -> f64 {
@@ -213,16 +225,11 @@ impl GridCheck<'_> {
         for &k in set {
             let b = &s.boxes[k as usize].aabb;
             let lb = distance_capsule_aabb(&cyl, b);
-            if lb - m - MARGIN_MM >= s.deep {
-                continue;
-            }
-            if lb - m - MARGIN_MM > c {
+            let free = lb - m - MARGIN_MM;
+            if free > c {
                 // Free at every node of the run; the run's bound serves the depth.
-                let q = self.depth(lb - m - MARGIN_MM, s.span);
-                for f in out[lo..hi].iter_mut() {
-                    if *f != 0 && *f & ARM_BITS > q {
-                        *f = (*f & !ARM_BITS) | q;
-                    }
+                if free < s.deep {
+                    cap_depth(&mut out[lo..hi], 0, self.depth(free, s.span));
                 }
                 continue;
             }
@@ -275,10 +282,12 @@ impl GridCheck<'_> {
                 }
                 let cy = *cyl.get_or_insert_with(|| s.at(q3));
                 let b = &s.boxes[k as usize].aabb;
-                let lo = distance_capsule_aabb(&cy, b);
+                // The capsule distance, and the axis point behind it for the node test.
+                let (near, axis) = axis_nearest(&cy, b);
+                let lo = (axis - cy.radius.max(0.0)).max(0.0);
                 lb[slot] = lo;
                 at[slot] = q3;
-                if lo <= c && !link_clear_of_box(&cy, b, c) {
+                if lo <= c && !link_clear_near(&cy, b, c, &near, axis) {
                     nearest = f64::NEG_INFINITY;
                     break;
                 }
@@ -320,7 +329,12 @@ impl GridCheck<'_> {
             let mut nk = 0;
             for &k in set {
                 let f = distance_point_aabb(&centre, t.boxes[k as usize]) - t.radius;
-                if f - m - MARGIN_MM >= t.deep {
+                let far = f - m - MARGIN_MM;
+                if far > not_near(c) {
+                    // Not near for this box at any node; the run's bound serves the depth.
+                    if far < t.deep {
+                        cap_depth(&mut out[lo..hi], 3, self.depth(far, self.centre_span));
+                    }
                     continue;
                 }
                 if f + m + MARGIN_MM <= c {
@@ -329,17 +343,6 @@ impl GridCheck<'_> {
                         *f = (*f & !TOOL_BITS) | Self::code(true, 0, 0) & TOOL_BITS;
                     }
                     return;
-                }
-                let far = f - m - MARGIN_MM;
-                if far > not_near(c) {
-                    // Not near for this box at any node; the run's bound serves the depth.
-                    let q = self.depth(far, self.centre_span);
-                    for f in out[lo..hi].iter_mut().filter(|f| **f != 0) {
-                        if (*f >> 3) & DEPTH_LEVELS > q {
-                            *f = (*f & !(DEPTH_LEVELS << 3)) | (q << 3);
-                        }
-                    }
-                    continue;
                 }
                 kept[nk] = k;
                 nk += 1;
