@@ -220,7 +220,8 @@ pub fn inspect_observed(
     Inspected { model, cspace }
 }
 
-/// Plan: the route through the points with `method`, every move proven.
+/// Plan: the route through the points with `method`, every move proven, its smallest
+/// clearances certified.
 pub fn plan(
     job: &Loaded,
     placed: &Placed,
@@ -229,6 +230,18 @@ pub fn plan(
 ) -> Result<Plan, Error> {
     let Inspected { model, cspace } = inspected;
     plan::plan(cspace, model, &placed.points, method).map_err(|e| plan_error(job, e))
+}
+
+/// [`plan`] without certifying the smallest clearances: the refine stage certifies the route it
+/// keeps, so a run does not certify a route the shortcut pass then replaces.
+pub fn route(
+    job: &Loaded,
+    placed: &Placed,
+    inspected: &Inspected,
+    method: Method,
+) -> Result<Plan, Error> {
+    let Inspected { model, cspace } = inspected;
+    plan::route(cspace, model, &placed.points, method).map_err(|e| plan_error(job, e))
 }
 
 /// A plan stage error, pointing at the point it is about.
@@ -390,7 +403,7 @@ pub fn run_observed(
     let placed = place(job)?;
     let inspected = inspect_observed(job, &placed, grid_deg, progress);
     progress.stage("planning and proving the moves", 0);
-    let paper = match plan(job, &placed, &inspected, method) {
+    let paper = match route(job, &placed, &inspected, method) {
         // The paper's method alone: search, shorten, merge, every via a stop point, timed.
         Ok(plan) => keep_paper_figure(job, &placed, &inspected, time(job, &placed, plan)),
         Err(error) => {

@@ -32,6 +32,9 @@ pub struct Refined {
 }
 
 /// Shortcut (when asked) and certified zones; `time_s` estimates a plan's manipulation time.
+/// `plan` may come with its smallest clearances certified (`plan::plan`) or not
+/// (`plan::route`): the plan returned has them certified, and a route no candidate keeps is
+/// never certified.
 pub fn refine(
     plan: Plan,
     model: &CollisionModel,
@@ -40,9 +43,11 @@ pub fn refine(
     time_s: &dyn Fn(&Plan) -> f64,
 ) -> Refined {
     if !settings.shortcut {
-        return zoned(plan, model, points, settings);
+        return zoned(certified(plan, model), model, points, settings);
     }
     let paper = plan.clone();
+    // The paper's route certified once, and only if a candidate keeps it.
+    let mut paper_certified: Option<Plan> = None;
     // A: the shortest route the proofs allow. B (a fly-by zone asked anywhere): the same pass
     // keeping [`MARGIN_MM`] more clearance, which leaves room for the corners. With a fly-by
     // `via_zone`, each also with its tight via corners split (`split`).
@@ -76,7 +81,12 @@ pub fn refine(
             paper.clone()
         };
         let c = if c.waypoints == paper.waypoints {
-            c
+            let p = paper_certified.get_or_insert_with(|| certified(paper.clone(), model));
+            Plan {
+                move_clearances: p.move_clearances.clone(),
+                min_clearance: p.min_clearance.clone(),
+                ..c
+            }
         } else {
             plan::certify(c, model)
         };
@@ -92,7 +102,17 @@ pub fn refine(
     }
     match best {
         Some((_, _, r)) => r,
-        None => zoned(paper, model, points, settings),
+        None => zoned(certified(paper, model), model, points, settings),
+    }
+}
+
+/// `plan` with its smallest clearances certified ([`plan::certify`]), unless the caller
+/// certified them already (a clearance per move: `plan::plan` does, `plan::route` does not).
+fn certified(plan: Plan, model: &CollisionModel) -> Plan {
+    if plan.move_clearances.len() == plan.moves() {
+        plan
+    } else {
+        plan::certify(plan, model)
     }
 }
 

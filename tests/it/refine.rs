@@ -3,7 +3,9 @@
 //! modules it writes pass the dense re-check (moves and zoned corners).
 
 use crate::common::dense::check_module;
-use crate::common::library::{load_cell, load_robot, paper_and_refined, parse_cell};
+use crate::common::library::{
+    load_cell, load_robot, paper_and_refined, parse_cell, refined_and_recertified,
+};
 use crate::common::{arg, gen_rapid, root, stdout};
 
 const EXAMPLES: [&str; 6] = [
@@ -107,5 +109,50 @@ fn on_gripper_pick_z50_splits_the_vias_by_the_cabinet_and_beats_fine() {
     assert!(
         !zoned_vias.contains("zoned vias: 0 "),
         "no via zoned: {zoned_vias}"
+    );
+}
+
+#[test]
+fn the_written_route_is_certified_whether_the_shortcut_replaces_the_papers_route_or_not() {
+    // A run plans the route without certifying its clearances (the refine stage certifies the
+    // route it keeps): the plan written must carry, per move, what `plan::certify` finds anew.
+    let path = root().join("cells/trunk.yaml");
+    let text = std::fs::read_to_string(&path).expect("cell");
+    let no_shortcut = text.replace("\nplanner:\n", "\nplanner:\n  shortcut: false\n");
+    // Only B and C: one straight move, which the shortcut pass keeps as it is.
+    let straight: String = text
+        .lines()
+        .filter(|l| {
+            !["name: A,", "name: D,", "name: E,", "name: F,"]
+                .iter()
+                .any(|n| l.contains(n))
+        })
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let mut kept_the_papers = 0;
+    let mut replaced_it = 0;
+    for (what, body) in [
+        ("trunk", &text),
+        ("trunk without the shortcut", &no_shortcut),
+        ("trunk from B to C", &straight),
+    ] {
+        let cell = parse_cell(&path, body).expect(what);
+        let r = refined_and_recertified(&cell, 2.0).expect(what);
+        assert_eq!(r.refined.move_clearances.len(), r.refined.moves(), "{what}");
+        assert!(
+            r.refined.move_clearances.iter().all(Option::is_some),
+            "{what}: a move without its clearance"
+        );
+        assert_eq!(r.refined.move_clearances, r.again.move_clearances, "{what}");
+        assert_eq!(r.refined.min_clearance, r.again.min_clearance, "{what}");
+        if r.refined.waypoints == r.paper.waypoints {
+            kept_the_papers += 1;
+        } else {
+            replaced_it += 1;
+        }
+    }
+    assert!(
+        kept_the_papers >= 2 && replaced_it >= 1,
+        "kept {kept_the_papers}, replaced {replaced_it}"
     );
 }

@@ -150,6 +150,35 @@ pub fn plan_every_method(cell: &Cell, grid_deg: f64) -> Result<Vec<(String, Plan
         .collect()
 }
 
+/// A run's plan of `cell` on a grid of `grid_deg` as the binary makes it (the route without its
+/// clearances certified, timed, then the refine stage), the paper's route it started from, and
+/// the run's plan with its clearances certified anew by `plan::certify` (an independent
+/// computation to compare the refine stage's certificate with).
+pub struct Recertified {
+    pub paper: gen_rapid::plan::Plan,
+    pub refined: gen_rapid::plan::Plan,
+    pub again: gen_rapid::plan::Plan,
+}
+
+pub fn refined_and_recertified(cell: &Cell, grid_deg: f64) -> Result<Recertified, String> {
+    let (job, placed, inspected) = placed_and_inspected(cell, grid_deg)?;
+    let paper = pipeline::route(&job, &placed, &inspected, cell.planner.method)
+        .map(|p| {
+            pipeline::keep_paper_figure(&job, &placed, &inspected, pipeline::time(&job, &placed, p))
+        })
+        .map_err(|e| e.to_string())?;
+    let refined = pipeline::refine(&job, &placed, &inspected, paper.clone()).plan;
+    let mut stale = refined.clone();
+    stale.move_clearances = Vec::new();
+    stale.min_clearance = None;
+    let again = gen_rapid::plan::certify(stale, &inspected.model);
+    Ok(Recertified {
+        paper,
+        refined,
+        again,
+    })
+}
+
 /// The paper's route (plan and time, no refine stage) and the refined one (shortcut and zones,
 /// as a run writes it) of `cell` on a grid of `grid_deg`: `(moves, estimated s)` of each, and
 /// both module texts.
