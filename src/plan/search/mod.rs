@@ -104,9 +104,10 @@ use std::collections::HashSet;
 /// A path of grid nodes from the start node to the end node, each step to a neighbour.
 pub type GridPath = Vec<Node>;
 
-/// A method's neighbour order: the offsets to try from `node`, best first, given the offset of
-/// the step that led there.
-pub(crate) type Candidates = dyn Fn(&Wave, Node, Option<[i32; 3]>) -> Vec<[i32; 3]>;
+/// A method's neighbour order: the offsets to try from `node`, best first, given its number
+/// (the neighbours' numbers read from it: [`Wave::label_next_to`]) and the offset of the step
+/// that led there.
+pub(crate) type Candidates = dyn Fn(&Wave, Node, u32, Option<[i32; 3]>) -> Vec<[i32; 3]>;
 
 #[inline]
 pub(crate) fn add(n: Node, o: [i32; 3]) -> Node {
@@ -119,10 +120,19 @@ pub(crate) fn order_of(o: [i32; 3]) -> usize {
     o.iter().filter(|&&c| c != 0).count()
 }
 
-/// The shared walk. `candidates(node, previous_offset)` lists the neighbours to try, best
-/// first; only those with a number strictly between 0 and the current node's and a step of
+/// The shared walk. `candidates(node, number, previous_offset)` lists the neighbours to try,
+/// best first; only those with a number strictly between 0 and the current node's and a step of
 /// `graph` are taken. Returns the path from the wave's start to its end, or `None` when every
 /// branch dead-ends (never, on a wave of the same graph: module doc).
+///
+/// The walk carries the number of the node it stands on (n at the end; a step taken leads to a
+/// number one less) and reads a neighbour's number from it ([`Wave::label_next_to`]). That
+/// reading is exact for every neighbour joined by a step of the wave, so for every step the walk
+/// can take (`graph.step_ok` accepts only wave steps) and for every numbered neighbour of the row
+/// wave (which keeps only residues). A neighbour of a wave with fewer steps than that, numbered
+/// but not joined by a wave step, could read wrongly if that wave kept residues (the
+/// node-by-node waves keep numbers); it is never taken (`step_ok` refuses it), and the stable
+/// sorts of the candidates keep the others in their order.
 pub(crate) fn descend<G: Graph + ?Sized>(
     wave: &Wave,
     candidates: &Candidates,
@@ -130,12 +140,15 @@ pub(crate) fn descend<G: Graph + ?Sized>(
 ) -> Option<GridPath> {
     struct Frame {
         node: Node,
+        /// The node's number.
+        label: u32,
         options: Vec<[i32; 3]>,
         next: usize,
     }
-    let first = candidates(wave, wave.end, None);
+    let first = candidates(wave, wave.end, wave.n(), None);
     let mut stack = vec![Frame {
         node: wave.end,
+        label: wave.n(),
         options: first,
         next: 0,
     }];
@@ -147,26 +160,27 @@ pub(crate) fn descend<G: Graph + ?Sized>(
             return Some(path);
         }
         let here = top.node;
-        let label = wave.label(here);
+        let label = top.label;
         let mut chosen = None;
         while top.next < top.options.len() {
             let o = top.options[top.next];
             top.next += 1;
             let m = add(here, o);
-            let l = wave.label(m);
+            let l = wave.label_next_to(m, label);
             if l == 0 || l >= label || dead.contains(&m) {
                 continue;
             }
             if graph.step_ok(here, m) {
-                chosen = Some((m, o));
+                chosen = Some((m, o, l));
                 break;
             }
         }
         match chosen {
-            Some((m, o)) => {
-                let options = candidates(wave, m, Some(o));
+            Some((m, o, l)) => {
+                let options = candidates(wave, m, l, Some(o));
                 stack.push(Frame {
                     node: m,
+                    label: l,
                     options,
                     next: 0,
                 });
