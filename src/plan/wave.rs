@@ -257,10 +257,7 @@ impl Wave {
         if !(0..3).all(|k| m[k] >= 0 && (m[k] as usize) < self.dims[k]) {
             return 0;
         }
-        let (t, z) = (
-            m[0] as usize * self.dims[1] + m[1] as usize,
-            m[2] as usize,
-        );
+        let (t, z) = (m[0] as usize * self.dims[1] + m[1] as usize, m[2] as usize);
         match &self.labels {
             Labels::Narrow(l) => number_of(l[t * self.dims[2] + z]),
             Labels::Wide(l) => number_of(l[t * self.dims[2] + z]),
@@ -296,6 +293,34 @@ impl Wave {
                 .chunks_exact(2)
                 .map(|p| (p[0] | p[1]).count_ones() as usize)
                 .sum(),
+        }
+    }
+}
+
+#[cfg(test)]
+impl Wave {
+    /// The same wave keeping only its numbers' residues, as the row wave does: for tests of the
+    /// walk on a wave with fewer steps than every step between numbered nodes.
+    pub(crate) fn as_residues(&self) -> Wave {
+        let [d0, d1, d2] = self.dims;
+        let words = d2.div_ceil(64);
+        let mut planes = vec![0u64; 2 * d0 * d1 * words];
+        for t in 0..d0 * d1 {
+            for z in 0..d2 {
+                let m = [(t / d1) as i32, (t % d1) as i32, z as i32];
+                // A node-by-node wave: the number itself, whatever the node beside.
+                let l = self.label_next_to(m, 1);
+                if l > 0 {
+                    let (w, b) = (t * words + z / 64, z % 64);
+                    let c = residue_code(l);
+                    planes[2 * w] |= u64::from(c & 1) << b;
+                    planes[2 * w + 1] |= u64::from(c >> 1) << b;
+                }
+            }
+        }
+        Wave {
+            labels: Labels::Residues { planes, words, d2 },
+            ..self.clone()
         }
     }
 }
@@ -340,7 +365,8 @@ pub fn expand<G: Graph + ?Sized>(
                 (Labels::Narrow(labels), n)
             }
             Err(TooLong) => {
-                let labels = number_scalar::<u32, G>(cs, graph, start, end, connectivity).ok()??;
+                let labels =
+                    number_scalar::<u32, G>(cs, graph, start, end, connectivity).ok()??;
                 let n = number_of(labels[end_index]);
                 (Labels::Wide(labels), n)
             }
@@ -960,7 +986,10 @@ mod tests {
                 let k = [m[0] + o[0], m[1] + o[1], m[2] + o[2]];
                 let dk = if g.contains(k) { dist[g.index(k)] } else { 0 };
                 let lk = w.label_next_to(k, d);
-                assert!(ok(dk, lk), "{k:?} next to {m:?}: {lk}, distance {dk} {what}");
+                assert!(
+                    ok(dk, lk),
+                    "{k:?} next to {m:?}: {lk}, distance {dk} {what}"
+                );
             }
         }
     }

@@ -12,7 +12,7 @@ use super::{descend, GridPath, SearchFailure};
 use crate::plan::cspace::{CSpace, Node};
 use crate::plan::wave::{self, offsets, Connectivity, Graph, Wave};
 
-fn candidates(w: &Wave, n: Node, label: u32, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
+pub(crate) fn candidates(w: &Wave, n: Node, label: u32, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     let want = label.saturating_sub(1);
     let mut c: Vec<[i32; 3]> = offsets(Connectivity::Six)
         .iter()
