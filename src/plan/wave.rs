@@ -895,9 +895,9 @@ mod tests {
     /// faces lie on a word border (axis 3 from 64 to 127) and scattered blocked nodes: inside,
     /// the row wave's front is mostly rows' two ends, spread across word borders (bits 63 and
     /// 64) and into the rows along the grid's borders. Several waves in a row over the same
-    /// grid (from the middle, from two corners, each to its farthest node and to a middle one:
-    /// label buffers kept and taken again) give every node below the end's number its
-    /// breadth-first distance and number nothing else below it.
+    /// grid (from the middle, from two corners, each to its farthest node and to a middle one)
+    /// give every node below the end's number its breadth-first distance and number nothing
+    /// else below it (the residues of every level, up to some hundreds of levels).
     #[test]
     fn row_wave_over_long_rows_numbers_the_breadth_first_distances() {
         fn hash(n: Node) -> u32 {
