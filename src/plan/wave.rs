@@ -16,8 +16,13 @@
 //! next candidates by groups of rows marked, in ascending order (no list of touched rows). In
 //! the row wave, the free nodes a graph need not look at ([`Graph::look_bits`]: for a leg, those
 //! whose code says the tool stays clear) come a word at a time from the grid's row bit set
-//! ([`CSpace::row_bits`]), and a dropped wave's label buffer is cleared where it was written and
-//! kept for the next wave (no 2-byte-a-node buffer zeroed or faulted in per wave).
+//! ([`CSpace::row_bits`]). The row wave keeps no numbers: it keeps each numbered node's number
+//! modulo 3 in two bit planes (2 bits a node, written a word at a time per level), which is all
+//! a walk back needs. A walk knows the number of the node it stands on (it starts at the end,
+//! numbered n), and in this wave every step between numbered nodes is a wave step, so a
+//! numbered neighbour's number is one less, the same or one more: the residue tells which
+//! ([`Wave::label_next_to`]). The node-by-node wave keeps the numbers (2 bytes a node, 4 for a
+//! path of over 65 533 steps).
 //!
 //! Beyond the paper: the wave runs on a [`Graph`], whose nodes are the grid's free nodes that the
 //! graph accepts (a leg's tool at its wrist) and whose edges are the neighbour steps it accepts
@@ -29,7 +34,6 @@
 //! leads to `l - 1`.
 
 use crate::plan::cspace::{CSpace, Node, FREE};
-use std::sync::Mutex;
 
 /// What a wave and a search walk on: which free nodes of the grid they may use and which
 /// neighbour steps between them exist.
@@ -94,11 +98,11 @@ impl<F: Fn(Node, Node) -> bool + Sync> Graph for F {
     }
 }
 
-/// A node's label word. A wave is numbered in `u16` words (2 bytes a node: half the memory and
-/// memory traffic of `u32`) and again in `u32` only if a number would not fit: when a node
-/// numbered 65 533 is expanded, i.e. the end's number would be 65 534 or more (or the end is
-/// unreachable from a component that deep, numbered again only to return `None`). The numbers
-/// are the same either way.
+/// A node's label word in the node-by-node wave. It is numbered in `u16` words (2 bytes a
+/// node: half the memory and memory traffic of `u32`) and again in `u32` only if a number would
+/// not fit: when a node numbered 65 533 is expanded, i.e. the end's number would be 65 534 or
+/// more (or the end is unreachable from a component that deep, numbered again only to return
+/// `None`). The numbers are the same either way.
 trait Word: Copy + PartialEq + Default + Send + 'static {
     /// The node was looked at and may not be used.
     const BLOCKED: Self;
@@ -110,12 +114,7 @@ trait Word: Copy + PartialEq + Default + Send + 'static {
     fn wide(self) -> u32;
     /// The next number, `None` when it would reach the sentinels.
     fn next(self) -> Option<Self>;
-    /// The cleared label buffers kept for the next waves ([`Kept`]).
-    fn pool() -> &'static Mutex<Vec<Vec<Self>>>;
 }
-
-static POOL16: Mutex<Vec<Vec<u16>>> = Mutex::new(Vec::new());
-static POOL32: Mutex<Vec<Vec<u32>>> = Mutex::new(Vec::new());
 
 impl Word for u16 {
     const BLOCKED: u16 = u16::MAX;
@@ -126,9 +125,6 @@ impl Word for u16 {
     }
     fn next(self) -> Option<u16> {
         (self + 1 < Self::CHECKED).then_some(self + 1)
-    }
-    fn pool() -> &'static Mutex<Vec<Vec<u16>>> {
-        &POOL16
     }
 }
 
@@ -142,16 +138,14 @@ impl Word for u32 {
     fn next(self) -> Option<u32> {
         (self + 1 < Self::CHECKED).then_some(self + 1)
     }
-    fn pool() -> &'static Mutex<Vec<Vec<u32>>> {
-        &POOL32
-    }
 }
 
 /// The largest row bit set the row wave asks of the grid ([`CSpace::row_bits`]), bytes: the
 /// set holds a bit a node for the rest of the run (52 MB at 0.25 deg over the IRB 1400's
 /// ranges); above it every candidate is looked at (the same numbers). At 0.25 deg the set took
 /// the trunk from 11.2 to 9.4 s at a peak of 975 940 KiB, 0.9994e9 bytes (922 180 KiB
-/// without): under issue 11's 1 GB, with little to spare (`benches/README.md`).
+/// without), when labels took 2 bytes a node; with residues, 2 bits a node, the peak fell
+/// well below (`benches/README.md`).
 const ROW_BITS_MAX_BYTES: usize = 64 << 20;
 
 /// The rows of the row wave's candidates marked together (one bit a group; a group's scan also
@@ -159,88 +153,27 @@ const ROW_BITS_MAX_BYTES: usize = 64 << 20;
 const GROUP_ROWS: usize = 4;
 const _: () = assert!(GROUP_ROWS >= 2, "the row wave's front stays ascending");
 
-/// How many cleared label buffers are kept (a leg's two waves).
-const POOL_BUFFERS: usize = 2;
-
-/// The largest label buffer kept, bytes. Below it the allocator would hand a freed buffer back
-/// and clear it whole (or fault fresh pages in); above it a fresh buffer's pages cost memory
-/// only where the wave writes, which a kept buffer, written by earlier waves, would not.
-const POOL_MAX_BYTES: usize = 64 << 20;
-
-/// A wave's label words, and where the row wave may have written them (`written`: a per-row bit
-/// set, `row_words` words a row of `d2` nodes; empty for the node-by-node wave). Dropped, a row
-/// wave's buffer is cleared where written and kept for the next wave over a grid of the same
-/// size (so a wave neither clears nor faults in a whole buffer): outputs do not depend on it.
-#[derive(Clone, Debug)]
-struct Kept<W: Word> {
-    words: Vec<W>,
-    written: Vec<u64>,
-    row_words: usize,
-    d2: usize,
-}
-
-impl<W: Word> Kept<W> {
-    /// Labels written node by node (not kept).
-    fn plain(words: Vec<W>) -> Kept<W> {
-        Kept {
-            words,
-            written: Vec::new(),
-            row_words: 0,
-            d2: 0,
-        }
-    }
-
-    /// A zeroed buffer of `len` words: a kept one, else a new one.
-    fn zeroed(len: usize) -> Vec<W> {
-        if len * std::mem::size_of::<W>() <= POOL_MAX_BYTES {
-            let mut pool = W::pool().lock().unwrap_or_else(|p| p.into_inner());
-            while let Some(v) = pool.pop() {
-                if v.len() == len {
-                    return v;
-                }
-            }
-        }
-        vec![W::default(); len]
-    }
-}
-
-impl<W: Word> Drop for Kept<W> {
-    fn drop(&mut self) {
-        if self.written.is_empty() || self.words.len() * std::mem::size_of::<W>() > POOL_MAX_BYTES {
-            return;
-        }
-        for (w, &bits) in self.written.iter().enumerate() {
-            let base = (w / self.row_words) * self.d2 + (w % self.row_words) * 64;
-            let mut m = bits;
-            while m != 0 {
-                let b = m.trailing_zeros() as usize;
-                m &= m - 1;
-                self.words[base + b] = W::default();
-            }
-        }
-        let mut pool = W::pool().lock().unwrap_or_else(|p| p.into_inner());
-        if pool.len() < POOL_BUFFERS {
-            pool.push(std::mem::take(&mut self.words));
-        }
-    }
-}
-
-/// The labels of a wave, in the narrowest word that held them.
+/// The labels of a wave.
 #[derive(Clone, Debug)]
 enum Labels {
-    Narrow(Kept<u16>),
-    Wide(Kept<u32>),
+    /// Node by node, in the narrowest word that held them: the numbers.
+    Narrow(Vec<u16>),
+    Wide(Vec<u32>),
+    /// Row by row: each node's residue code, 0 when not numbered, else `(l - 1) mod 3 + 1` for
+    /// number `l`, in two bit planes laid out like the row wave's row words (`words` words a
+    /// row of `d2` nodes): bit `b` of word `2 w` is the code's low bit of the node at bit `b` of
+    /// row word `w`, word `2 w + 1` its high bit (the two planes of a word side by side).
+    Residues {
+        planes: Vec<u64>,
+        words: usize,
+        d2: usize,
+    },
 }
 
-impl Labels {
-    /// The number at linear index `i`, 0 for the sentinels.
-    #[inline]
-    fn number(&self, i: usize) -> u32 {
-        match self {
-            Labels::Narrow(l) => number_of(l.words[i]),
-            Labels::Wide(l) => number_of(l.words[i]),
-        }
-    }
+/// The residue code of number `l` (`l >= 1`): 1, 2 or 3.
+#[inline]
+fn residue_code(l: u32) -> u32 {
+    (l - 1) % 3 + 1
 }
 
 #[inline]
@@ -251,7 +184,6 @@ fn number_of<W: Word>(l: W) -> u32 {
         l.wide()
     }
 }
-
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Connectivity {
     /// The 6 axis neighbours.
@@ -297,7 +229,10 @@ pub fn offsets(c: Connectivity) -> &'static [[i32; 3]] {
     }
 }
 
-/// Wave numbers of one expansion; 0 = not numbered (blocked or beyond the end node's wave).
+/// A wave: which nodes it numbered and their numbers, 0 = not numbered (blocked or beyond the
+/// end node's wave). A node-by-node wave holds the numbers; the row wave only their residues
+/// modulo 3, which give a numbered node's number from a neighbour's
+/// ([`label_next_to`](Self::label_next_to)).
 #[derive(Clone, Debug)]
 pub struct Wave {
     pub start: Node,
@@ -305,35 +240,99 @@ pub struct Wave {
     pub connectivity: Connectivity,
     labels: Labels,
     dims: [usize; 3],
+    /// The end node's number.
+    n: u32,
 }
 
 impl Wave {
-    /// The number of a node (0 when not numbered or outside the grid).
+    /// The number of node `m`, a neighbour (26 neighbours: at most one step on each axis) of a
+    /// node numbered `l_here`; 0 when `m` is not numbered or outside the grid. Exact for every
+    /// numbered `m` joined to that node by a step of the wave, for any `m` of a node-by-node
+    /// wave, and for any numbered `m` of the row wave (it numbers over every step between
+    /// usable nodes): breadth-first, such a neighbour is numbered `l_here - 1`, `l_here` or
+    /// `l_here + 1`, told apart by the residue. Of the row wave, a numbered neighbour of a
+    /// node not numbered `l_here` reads as one of those three.
     #[inline]
-    pub fn label(&self, n: Node) -> u32 {
-        if (0..3).all(|k| n[k] >= 0 && (n[k] as usize) < self.dims[k]) {
-            self.labels.number(
-                (n[0] as usize * self.dims[1] + n[1] as usize) * self.dims[2] + n[2] as usize,
-            )
-        } else {
-            0
+    pub fn label_next_to(&self, m: Node, l_here: u32) -> u32 {
+        if !(0..3).all(|k| m[k] >= 0 && (m[k] as usize) < self.dims[k]) {
+            return 0;
+        }
+        let (t, z) = (m[0] as usize * self.dims[1] + m[1] as usize, m[2] as usize);
+        match &self.labels {
+            Labels::Narrow(l) => number_of(l[t * self.dims[2] + z]),
+            Labels::Wide(l) => number_of(l[t * self.dims[2] + z]),
+            Labels::Residues { planes, words, d2 } => {
+                debug_assert_eq!(*d2, self.dims[2]);
+                let w = t * words + z / 64;
+                let b = z % 64;
+                let code = ((planes[2 * w] >> b) & 1) | (((planes[2 * w + 1] >> b) & 1) << 1);
+                match code {
+                    0 => 0,
+                    // (code - here's code) mod 3: 0 the same number, 1 one more, 2 one less.
+                    c => match (c as u32 + 3 - residue_code(l_here.max(1))) % 3 {
+                        0 => l_here,
+                        1 => l_here + 1,
+                        _ => l_here.saturating_sub(1),
+                    },
+                }
+            }
         }
     }
 
     /// n, the end node's number.
     pub fn n(&self) -> u32 {
-        self.label(self.end)
+        self.n
     }
 
     /// How many nodes were numbered.
     pub fn numbered(&self) -> usize {
-        let len = self.dims.iter().product();
-        (0..len).filter(|&i| self.labels.number(i) > 0).count()
+        match &self.labels {
+            Labels::Narrow(l) => l.iter().filter(|&&x| number_of(x) > 0).count(),
+            Labels::Wide(l) => l.iter().filter(|&&x| number_of(x) > 0).count(),
+            Labels::Residues { planes, .. } => planes
+                .chunks_exact(2)
+                .map(|p| (p[0] | p[1]).count_ones() as usize)
+                .sum(),
+        }
+    }
+}
+
+#[cfg(test)]
+impl Wave {
+    /// The same wave keeping only its numbers' residues, as the row wave does: for tests of the
+    /// walk on a wave with fewer steps than every step between numbered nodes.
+    pub(crate) fn as_residues(&self) -> Wave {
+        let [d0, d1, d2] = self.dims;
+        let words = d2.div_ceil(64);
+        let mut planes = vec![0u64; 2 * d0 * d1 * words];
+        for t in 0..d0 * d1 {
+            for z in 0..d2 {
+                let m = [(t / d1) as i32, (t % d1) as i32, z as i32];
+                // A node-by-node wave: the number itself, whatever the node beside.
+                let l = self.label_next_to(m, 1);
+                if l > 0 {
+                    let (w, b) = (t * words + z / 64, z % 64);
+                    let c = residue_code(l);
+                    planes[2 * w] |= u64::from(c & 1) << b;
+                    planes[2 * w + 1] |= u64::from(c >> 1) << b;
+                }
+            }
+        }
+        Wave {
+            labels: Labels::Residues { planes, words, d2 },
+            ..self.clone()
+        }
     }
 }
 
 /// Numbers the nodes of `graph` from `start` (1) outward over its steps until `end` is numbered;
-/// `None` when `end` cannot be reached. Both nodes must be free and usable.
+/// `None` when `end` cannot be reached. Both nodes must be free and usable. Row by row
+/// ([`number_rows`], residues) for 26 neighbours when every step between usable nodes is a
+/// wave step (the optimistic wave, the common one), else node by node ([`number_scalar`],
+/// numbers). The numbers below the end's are the same either way (each node's distance in
+/// steps from the start node, plus one); of the nodes numbered like the end, either may number
+/// more or fewer, and nobody reads those (a walk back from the end only steps to lower
+/// numbers).
 pub fn expand<G: Graph + ?Sized>(
     cs: &CSpace,
     graph: &G,
@@ -345,9 +344,33 @@ pub fn expand<G: Graph + ?Sized>(
     if !cs.is_free(start) || !cs.is_free(end) || !graph.node_ok(start) || !graph.node_ok(end) {
         return None;
     }
-    let labels = match number::<u16, G>(cs, graph, start, end, connectivity) {
-        Ok(labels) => Labels::Narrow(labels?),
-        Err(TooLong) => Labels::Wide(number::<u32, G>(cs, graph, start, end, connectivity).ok()??),
+    let (labels, n) = if graph.wave_steps_all() && connectivity == Connectivity::TwentySix {
+        // The row's word count as a constant where it is small (the loops over a row's words
+        // unrolled): 3 at 1 deg, 5 at 0.5 deg, 9 at 0.25 deg over the IRB 1400's axis 3.
+        match cs.grid.dims[2].div_ceil(64) {
+            1 => number_rows::<G, 1>(cs, graph, start, end),
+            2 => number_rows::<G, 2>(cs, graph, start, end),
+            3 => number_rows::<G, 3>(cs, graph, start, end),
+            4 => number_rows::<G, 4>(cs, graph, start, end),
+            5 => number_rows::<G, 5>(cs, graph, start, end),
+            9 => number_rows::<G, 9>(cs, graph, start, end),
+            _ => number_rows::<G, 0>(cs, graph, start, end),
+        }?
+    } else {
+        let end_index = g.index(end);
+        match number_scalar::<u16, G>(cs, graph, start, end, connectivity) {
+            Ok(labels) => {
+                let labels = labels?;
+                let n = number_of(labels[end_index]);
+                (Labels::Narrow(labels), n)
+            }
+            Err(TooLong) => {
+                let labels =
+                    number_scalar::<u32, G>(cs, graph, start, end, connectivity).ok()??;
+                let n = number_of(labels[end_index]);
+                (Labels::Wide(labels), n)
+            }
+        }
     };
     Some(Wave {
         start,
@@ -355,45 +378,14 @@ pub fn expand<G: Graph + ?Sized>(
         connectivity,
         labels,
         dims: g.dims,
+        n,
     })
 }
 
-/// A number outgrew the label word.
+/// A number outgrew the label word of the node-by-node wave.
 struct TooLong;
-
-/// The expansion in words `W`: the labels when `end` was numbered, `Ok(None)` when it cannot
-/// be reached, `Err(TooLong)` when a number does not fit in `W`. Row by row
-/// ([`number_rows`]) for 26 neighbours when every step between usable nodes is a wave step
-/// (the optimistic wave, the common one), else node by node
-/// ([`number_scalar`]). The numbers below the end's are the same either way (each node's
-/// distance in steps from the start node, plus one); of the nodes numbered like the end,
-/// either may number more or fewer, and nobody reads those (a walk back from the end only
-/// steps to lower numbers).
-fn number<W: Word, G: Graph + ?Sized>(
-    cs: &CSpace,
-    graph: &G,
-    start: Node,
-    end: Node,
-    connectivity: Connectivity,
-) -> Result<Option<Kept<W>>, TooLong> {
-    if graph.wave_steps_all() && connectivity == Connectivity::TwentySix {
-        // The row's word count as a constant where it is small (the loops over a row's words
-        // unrolled): 3 at 1 deg, 5 at 0.5 deg, 9 at 0.25 deg over the IRB 1400's axis 3.
-        match cs.grid.dims[2].div_ceil(64) {
-            1 => number_rows::<W, G, 1>(cs, graph, start, end),
-            2 => number_rows::<W, G, 2>(cs, graph, start, end),
-            3 => number_rows::<W, G, 3>(cs, graph, start, end),
-            4 => number_rows::<W, G, 4>(cs, graph, start, end),
-            5 => number_rows::<W, G, 5>(cs, graph, start, end),
-            9 => number_rows::<W, G, 9>(cs, graph, start, end),
-            _ => number_rows::<W, G, 0>(cs, graph, start, end),
-        }
-    } else {
-        number_scalar(cs, graph, start, end, connectivity)
-    }
-}
-
-/// [`number`] for 26 neighbours, level by level on bit sets of axis-3 rows (a row: the nodes of
+/// The expansion for 26 neighbours over a graph whose every step between usable nodes is a
+/// wave step ([`Graph::wave_steps_all`]), level by level on bit sets of axis-3 rows (a row: the nodes of
 /// fixed axes 1 and 2, one bit each, axis-3 index `64 j + b` at bit `b` of word `j`). The nodes
 /// next numbered are the front's neighbours (a row's front shifted by one along axis 3 and
 /// spread to the neighbouring rows) not yet decided; each of those is looked at once (free on
@@ -401,34 +393,42 @@ fn number<W: Word, G: Graph + ?Sized>(
 /// its words that hold front nodes (by ascending index), and only those are spread, each into
 /// the same word of the 3 x 3 rows around (a bit at a word's end carried into the word beside);
 /// the rows spread into are marked by groups of [`GROUP_ROWS`] rows, and the candidates are
-/// looked for in the rows of the groups marked and the rows just beside them. The labels are
-/// only written, so a level costs a few word operations per front word and per row it reaches,
-/// and one look per node it numbers. When the graph names the code bits its
+/// looked for in the rows of the groups marked and the rows just beside them. A level's new
+/// nodes are labelled a word at a time, OR-ed into the residue planes its number's residue
+/// code picks ([`Labels::Residues`]: 2 bits a node, no node written one by one, nothing to
+/// clear and no number too long), so a level costs a few word operations per front word and per
+/// row it reaches, and one look per node it numbers. When the graph names the code bits its
 /// answer depends on ([`Graph::look_bits`]), the free nodes without them come a word at a time
 /// from the grid's row bit set ([`CSpace::row_bits`], grids up to [`ROW_BITS_MAX_BYTES`] of
 /// it): numbered without a look; only the other
 /// candidates (blocked, or with those bits) are looked at one by one. No node past the end in
-/// the end's word is looked at. `K`: the words a row, or 0 for any number.
-fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
+/// the end's word is looked at. `K`: the words a row, or 0 for any number. Returns the labels
+/// and the end's number, `None` when the end cannot be reached.
+fn number_rows<G: Graph + ?Sized, const K: usize>(
     cs: &CSpace,
     graph: &G,
     start: Node,
     end: Node,
-) -> Result<Option<Kept<W>>, TooLong> {
+) -> Option<(Labels, u32)> {
     let g = &cs.grid;
     let start_index = g.index(start);
     let end_index = g.index(end);
-    if start_index == end_index {
-        let mut labels = Kept::plain(vec![W::default(); g.len()]);
-        labels.words[start_index] = W::ONE;
-        return Ok(Some(labels));
-    }
-    let mut labels: Vec<W> = Kept::zeroed(g.len());
-    labels[start_index] = W::ONE;
     let [d0, d1, d2] = g.dims;
     let words = if K == 0 { d2.div_ceil(64) } else { K };
     debug_assert_eq!(words, d2.div_ceil(64));
     let rows = d0 * d1;
+    // The residue planes (number 1's code, 1: the low plane only).
+    let mut planes = vec![0u64; 2 * rows * words];
+    let (r0, j0, b0) = (
+        start_index / d2,
+        (start_index % d2) / 64,
+        (start_index % d2) % 64,
+    );
+    planes[2 * (r0 * words + j0)] |= 1 << b0;
+    let labels = |planes| Labels::Residues { planes, words, d2 };
+    if start_index == end_index {
+        return Some((labels(planes), 1));
+    }
     // The bits of a row's last word that are nodes.
     let last_mask = match d2 % 64 {
         0 => u64::MAX,
@@ -453,31 +453,18 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
     let mut groups = vec![0u64; rows.div_ceil(GROUP_ROWS * 64)];
     // The front: its words that hold front nodes, as (index into `decided`, the front's bits),
     // by ascending index.
-    let (r0, j0, b0) = (
-        start_index / d2,
-        (start_index % d2) / 64,
-        (start_index % d2) % 64,
-    );
     decided[r0 * words + j0] |= 1 << b0;
     let mut front: Vec<(usize, u64)> = vec![(r0 * words + j0, 1 << b0)];
     let mut next_front: Vec<(usize, u64)> = Vec::new();
-    // Every way out: the labels with where they were written (`decided` holds every node
-    // numbered).
-    let kept = |labels, written| Kept {
-        words: labels,
-        written,
-        row_words: words,
-        d2,
-    };
     // A word's neighbour words in the 3 x 3 rows around, from the first (a row off the grid's
     // border on axes 1 and 2).
     let around: [usize; 9] = std::array::from_fn(|k| ((k / 3) * d1 + k % 3) * words);
-    let mut level = W::ONE;
+    // The level's number (below `MAX_NODES`, a `u32`) and its residue code's planes.
+    let mut level = 1u32;
     while let (Some(&(first, _)), Some(&(last, _))) = (front.first(), front.last()) {
-        let Some(next) = level.next() else {
-            drop(kept(labels, decided));
-            return Err(TooLong);
-        };
+        let next = level + 1;
+        let rc = residue_code(next);
+        let (low, high) = (rc & 1 != 0, rc & 2 != 0);
         // Gather: each front word's neighbours into `cand`: its bits spread by one along axis 3
         // (themselves included: they are decided), a bit at either end carried into the
         // word beside, into the same words of the 3 x 3 rows around its row. Only the words
@@ -565,14 +552,14 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
                                 numbered |= 1 << b;
                             }
                         }
-                        let mut m = numbered;
-                        while m != 0 {
-                            let b = m.trailing_zeros() as usize;
-                            m &= m - 1;
-                            labels[base + b] = next;
+                        if low {
+                            planes[2 * w] |= numbered;
+                        }
+                        if high {
+                            planes[2 * w + 1] |= numbered;
                         }
                         if w == end_word && numbered & end_bit != 0 {
-                            return Ok(Some(kept(labels, decided)));
+                            return Some((labels(planes), next));
                         }
                         if numbered != 0 {
                             next_front.push((w, numbered));
@@ -588,11 +575,12 @@ fn number_rows<W: Word, G: Graph + ?Sized, const K: usize>(
         next_front.clear();
         level = next;
     }
-    drop(kept(labels, decided));
-    Ok(None)
+    None
 }
 
-/// [`number`] node by node: a first-in first-out queue, each node's neighbours in the order of
+/// The expansion node by node in words `W`: the labels when `end` was numbered, `Ok(None)`
+/// when it cannot be reached, `Err(TooLong)` when a number does not fit in `W`. A first-in
+/// first-out queue, each node's neighbours in the order of
 /// [`offsets`], the wave's steps asked of the graph.
 fn number_scalar<W: Word, G: Graph + ?Sized>(
     cs: &CSpace,
@@ -600,7 +588,7 @@ fn number_scalar<W: Word, G: Graph + ?Sized>(
     start: Node,
     end: Node,
     connectivity: Connectivity,
-) -> Result<Option<Kept<W>>, TooLong> {
+) -> Result<Option<Vec<W>>, TooLong> {
     let g = &cs.grid;
     let mut labels = vec![W::default(); g.len()];
     let mut queue = std::collections::VecDeque::new();
@@ -666,7 +654,7 @@ fn number_scalar<W: Word, G: Graph + ?Sized>(
             queue.push_back(m);
         }
     }
-    Ok(found.then_some(Kept::plain(labels)))
+    Ok(found.then_some(labels))
 }
 
 #[cfg(test)]
@@ -686,8 +674,16 @@ mod tests {
         let w =
             expand(&cs, &Open, [0, 0, 0], [7, 3, 5], Connectivity::TwentySix).expect("reachable");
         assert_eq!(w.n(), 8); // 7 steps, numbered from 1
-        assert_eq!(w.label([3, 3, 3]), 4);
-        assert_eq!(w.label([1, 0, 1]), 2);
+        assert!(matches!(w.labels, Labels::Residues { .. }));
+        let l = numbers(&w);
+        assert_eq!(l[cs.grid.index([3, 3, 3])], 4);
+        assert_eq!(l[cs.grid.index([1, 0, 1])], 2);
+        // Read from a neighbour's number: one less, the same, one more; not numbered.
+        assert_eq!(w.label_next_to([3, 3, 3], 5), 4);
+        assert_eq!(w.label_next_to([3, 3, 3], 4), 4);
+        assert_eq!(w.label_next_to([3, 3, 3], 3), 4);
+        assert_eq!(w.label_next_to([9, 9, 9], 9), 0);
+        assert_eq!(w.label_next_to([-1, 0, 0], 2), 0);
     }
 
     #[test]
@@ -695,7 +691,7 @@ mod tests {
         let cs = open(10.0);
         let w = expand(&cs, &Open, [0, 0, 0], [3, 2, 1], Connectivity::Six).expect("reachable");
         assert_eq!(w.n(), 7);
-        assert_eq!(w.label([1, 1, 0]), 3);
+        assert_eq!(numbers(&w)[cs.grid.index([1, 1, 0])], 3);
     }
 
     #[test]
@@ -724,13 +720,15 @@ mod tests {
         let cs = CSpace::from_fn(g, |n| (n[0] != 6 || n[1] >= 10) && (n[1] != 4 || n[2] != 3));
         let w =
             expand(&cs, &Open, [0, 0, 0], [12, 0, 6], Connectivity::TwentySix).expect("reachable");
+        let labels = numbers(&w);
+        let label = |m: Node| if g.contains(m) { labels[g.index(m)] } else { 0 };
         for i in 0..g.len() {
             let n = g.node(i);
-            let l = w.label(n);
+            let l = label(n);
             if l > 1 && l < w.n() {
                 let has = offsets(Connectivity::TwentySix)
                     .iter()
-                    .any(|o| w.label([n[0] + o[0], n[1] + o[1], n[2] + o[2]]) == l - 1);
+                    .any(|o| label([n[0] + o[0], n[1] + o[1], n[2] + o[2]]) == l - 1);
                 assert!(
                     has,
                     "{n:?} numbered {l} has no neighbour numbered {}",
@@ -853,9 +851,10 @@ mod tests {
             let (far, mid) = far_and_middle(&dist);
             // The labels below n against the distances: how many disagree.
             let wrong = |w: &Wave, n: u32| {
+                let labels = numbers(w);
                 (0..g.len())
                     .filter(|&i| {
-                        let l = w.label(g.node(i));
+                        let l = labels[i];
                         if dist[i] < n {
                             l != dist[i]
                         } else {
@@ -896,9 +895,9 @@ mod tests {
     /// faces lie on a word border (axis 3 from 64 to 127) and scattered blocked nodes: inside,
     /// the row wave's front is mostly rows' two ends, spread across word borders (bits 63 and
     /// 64) and into the rows along the grid's borders. Several waves in a row over the same
-    /// grid (from the middle, from two corners, each to its farthest node and to a middle one:
-    /// label buffers kept and taken again) give every node below the end's number its
-    /// breadth-first distance and number nothing else below it.
+    /// grid (from the middle, from two corners, each to its farthest node and to a middle one)
+    /// give every node below the end's number its breadth-first distance and number nothing
+    /// else below it (the residues of every level, up to some hundreds of levels).
     #[test]
     fn row_wave_over_long_rows_numbers_the_breadth_first_distances() {
         fn hash(n: Node) -> u32 {
@@ -933,23 +932,21 @@ mod tests {
         }
     }
 
-    /// A row wave's buffer is kept for the next wave when dropped, cleared where it was
-    /// written: a wave that numbers nearly the whole grid, then short waves over the same grid
-    /// (which take its buffer unless another test's wave took it first: see
-    /// `a_dropped_row_buffer_comes_back_cleared`) number nothing past their end's level, and every node below it
-    /// its Chebyshev distance plus one.
+    /// Waves one after another over the same grid: one that numbers the whole grid, then short
+    /// ones from two corners, which number nothing past their end's level and every node below
+    /// it its Chebyshev distance plus one.
     #[test]
-    fn a_kept_label_buffer_is_cleared_for_the_next_wave() {
+    fn short_waves_after_a_long_one_number_the_chebyshev_distances() {
         let cs = open_dims(13, 11, 70);
         let far = expand(&cs, &Open, [0, 0, 0], [13, 11, 70], Connectivity::TwentySix);
         assert_eq!(far.map(|w| w.numbered()), Some(cs.grid.len()));
         for (start, end) in [([0, 0, 0], [2, 1, 1]), ([13, 11, 70], [11, 11, 69])] {
             let w = expand(&cs, &Open, start, end, Connectivity::TwentySix).expect("open");
             let n = w.n();
-            for i in 0..cs.grid.len() {
+            let labels = numbers(&w);
+            for (i, &l) in labels.iter().enumerate() {
                 let m = cs.grid.node(i);
                 let d = (0..3).map(|k| (m[k] - start[k]).abs()).max().unwrap_or(0) as u32 + 1;
-                let l = w.label(m);
                 if d < n {
                     assert_eq!(l, d, "{m:?}");
                 } else {
@@ -959,40 +956,6 @@ mod tests {
         }
     }
 
-    /// A dropped row wave's buffer comes back from `Kept::zeroed` cleared where the wave wrote
-    /// it: the buffer is seen to come back (same allocation; other tests share the pool, so a
-    /// few tries) and then holds no label.
-    #[test]
-    fn a_dropped_row_buffer_comes_back_cleared() {
-        // 3 rows of 130 nodes, 3 words a row; a length no other test's grid has.
-        let (d2, row_words, rows) = (130usize, 3usize, 3usize);
-        let len = rows * d2;
-        let mut reused = 0;
-        for attempt in 0..50 {
-            let mut words = Kept::<u16>::zeroed(len);
-            let mut written = vec![0u64; rows * row_words];
-            for k in 0..40 {
-                let i = (attempt * 37 + k * 11) % len;
-                words[i] = 7;
-                let (r, x) = (i / d2, i % d2);
-                written[r * row_words + x / 64] |= 1 << (x % 64);
-            }
-            let at = words.as_ptr();
-            drop(Kept {
-                words,
-                written,
-                row_words,
-                d2,
-            });
-            let again = Kept::<u16>::zeroed(len);
-            if again.as_ptr() == at {
-                reused += 1;
-                assert!(again.iter().all(|&w| w == 0), "attempt {attempt}");
-            }
-        }
-        assert!(reused > 0, "the buffer never came back");
-    }
-
     fn open_dims(a: usize, b: usize, c: usize) -> CSpace {
         let g = Grid::over([[0.0, a as f64], [0.0, b as f64], [0.0, c as f64]], 1.0);
         CSpace::from_fn(g, |_| true)
@@ -1000,17 +963,79 @@ mod tests {
 
     /// The wave numbers its end `n` (the end's breadth-first distance plus one, from `dist`),
     /// every node below it its distance, and nothing else below it (a node as far as the end
-    /// may be numbered or not).
+    /// may be numbered or not): the numbers rebuilt from what the wave keeps ([`numbers`]), and
+    /// each node's neighbours read from its distance ([`Wave::label_next_to`]) by every node
+    /// the wave numbered.
     fn assert_labels_are_distances(w: &Wave, g: &Grid, dist: &[u32], n: u32, what: &str) {
         assert_eq!(w.n(), n, "{what}");
-        for (i, &d) in dist.iter().enumerate() {
-            let (m, l) = (g.node(i), w.label(g.node(i)));
+        let ok = |d: u32, l: u32| {
             if d < n {
-                assert_eq!(l, d, "{m:?} {what}");
+                l == d
             } else {
-                assert!(l == 0 || (l == n && d == n), "{m:?}: {l} {what}");
+                l == 0 || (l == n && d == n)
+            }
+        };
+        let labels = numbers(w);
+        for (i, &d) in dist.iter().enumerate() {
+            let (m, l) = (g.node(i), labels[i]);
+            assert!(ok(d, l), "{m:?}: {l}, distance {d} {what}");
+            if l == 0 {
+                continue;
+            }
+            for o in offsets(Connectivity::TwentySix) {
+                let k = [m[0] + o[0], m[1] + o[1], m[2] + o[2]];
+                let dk = if g.contains(k) { dist[g.index(k)] } else { 0 };
+                let lk = w.label_next_to(k, d);
+                assert!(
+                    ok(dk, lk),
+                    "{k:?} next to {m:?}: {lk}, distance {dk} {what}"
+                );
             }
         }
+    }
+
+    /// The wave's numbers by linear index, rebuilt from what it keeps: breadth-first from its
+    /// start (1) over the nodes it numbered and their 26 neighbours, each node's number read
+    /// from the node that first reaches it ([`Wave::label_next_to`]). Numbers (a node-by-node
+    /// wave) come back as they are; residues (the row wave) give the numbers only where every
+    /// level's residue is right. Every numbered node's numbered neighbours must read as their
+    /// rebuilt numbers from it (else a panic).
+    fn numbers(w: &Wave) -> Vec<u32> {
+        let [d0, d1, d2] = w.dims;
+        let g = Grid::over(
+            [
+                [0.0, (d0 - 1) as f64],
+                [0.0, (d1 - 1) as f64],
+                [0.0, (d2 - 1) as f64],
+            ],
+            1.0,
+        );
+        assert_eq!(g.dims, w.dims);
+        let mut out = vec![0u32; g.len()];
+        out[g.index(w.start)] = 1;
+        let mut queue = VecDeque::from([w.start]);
+        while let Some(m) = queue.pop_front() {
+            let l = out[g.index(m)];
+            for o in offsets(Connectivity::TwentySix) {
+                let k = [m[0] + o[0], m[1] + o[1], m[2] + o[2]];
+                let lk = w.label_next_to(k, l);
+                if lk == 0 {
+                    continue;
+                }
+                let i = g.index(k);
+                if out[i] == 0 && k != w.start {
+                    out[i] = lk;
+                    queue.push_back(k);
+                }
+                assert_eq!(lk, out[i], "{k:?} read from {m:?} numbered {l}");
+            }
+        }
+        assert_eq!(
+            out.iter().filter(|&&l| l > 0).count(),
+            w.numbered(),
+            "numbered nodes not reached from the start"
+        );
+        out
     }
 
     /// The farthest node reached (the last by index) and the first node half as far.
@@ -1042,9 +1067,9 @@ mod tests {
         dist
     }
 
-    /// A serpentine corridor over 80 000 steps long: the numbers outgrow the 16-bit words and
-    /// the wave is numbered again in 32 bits; n and every label agree with a plain
-    /// breadth-first count.
+    /// A serpentine corridor over 80 000 steps long: the node-by-node wave's numbers outgrow
+    /// the 16-bit words and it is numbered again in 32 bits; the row wave's residues have no
+    /// such limit. n and every label of both agree with a plain breadth-first count.
     #[test]
     fn a_path_longer_than_the_narrow_words_is_numbered_in_wide_ones() {
         let (w, h) = (400usize, 401usize);
@@ -1065,7 +1090,11 @@ mod tests {
             h as i32 - 1,
             0,
         ];
-        let wave = expand(&cs, &Open, [0, 0, 0], end, Connectivity::TwentySix).expect("joined");
+        // Every step (the row wave) and a graph that does not say so (node by node).
+        let rows = expand(&cs, &Open, [0, 0, 0], end, Connectivity::TwentySix).expect("joined");
+        assert!(matches!(rows.labels, Labels::Residues { .. }));
+        let all = |_: Node, _: Node| true;
+        let wave = expand(&cs, &all, [0, 0, 0], end, Connectivity::TwentySix).expect("joined");
         assert!(matches!(wave.labels, Labels::Wide(_)));
         // The reference: breadth-first over the same 8-neighbourhood in the plane.
         let mut dist = vec![0u32; w * h];
@@ -1091,16 +1120,18 @@ mod tests {
             n > u16::MAX as u32,
             "the corridor is too short to test: {n}"
         );
-        assert_eq!(wave.n(), n);
-        for (x, y) in [(5, 0), (399, 1), (17, 222), (0, 399)] {
-            assert_eq!(
-                wave.label([x, y, 0]),
-                dist[y as usize * w + x as usize],
-                "({x}, {y})"
-            );
+        // The distances by the grid's linear index.
+        let by_index: Vec<u32> = (0..g.len())
+            .map(|i| {
+                let m = g.node(i);
+                dist[m[1] as usize * w + m[0] as usize]
+            })
+            .collect();
+        for wave in [&rows, &wave] {
+            assert_labels_are_distances(wave, &g, &by_index, n, "corridor");
         }
         // A short wave stays in narrow words.
-        let short = expand(&cs, &Open, [0, 0, 0], [9, 0, 0], Connectivity::TwentySix);
+        let short = expand(&cs, &all, [0, 0, 0], [9, 0, 0], Connectivity::TwentySix);
         assert!(matches!(short.map(|w| w.labels), Some(Labels::Narrow(_))));
     }
 
@@ -1114,7 +1145,7 @@ mod tests {
             let w = expand(&cs, &Open, [0, 0, 0], end, Connectivity::Six).expect("a line");
             assert_eq!(w.n(), last as u32 + 1);
             assert_eq!(matches!(w.labels, Labels::Wide(_)), wide, "end at {last}");
-            assert_eq!(w.label([1000, 0, 0]), 1001);
+            assert_eq!(numbers(&w)[1000], 1001);
         }
     }
 }

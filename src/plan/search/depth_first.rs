@@ -12,12 +12,12 @@ use super::{descend, GridPath, SearchFailure};
 use crate::plan::cspace::{CSpace, Node};
 use crate::plan::wave::{self, offsets, Connectivity, Graph, Wave};
 
-fn candidates(w: &Wave, n: Node, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
-    let want = w.label(n).saturating_sub(1);
+pub(crate) fn candidates(w: &Wave, n: Node, label: u32, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
+    let want = label.saturating_sub(1);
     let mut c: Vec<[i32; 3]> = offsets(Connectivity::Six)
         .iter()
         .copied()
-        .filter(|o| w.label(super::add(n, *o)) == want)
+        .filter(|o| w.label_next_to(super::add(n, *o), label) == want)
         .collect();
     // The previous direction first: the stable sort keeps the fixed order among the rest.
     c.sort_by_key(|o| Some(*o) != prev);

@@ -17,10 +17,10 @@ use crate::plan::wave::{self, offsets, Connectivity, Graph, Wave};
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
 
-fn candidates(w: &Wave, n: Node, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
+pub(crate) fn candidates(w: &Wave, n: Node, label: u32, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     let mut c: Vec<[i32; 3]> = offsets(Connectivity::TwentySix).to_vec();
     c.sort_by_key(|o| {
-        let l = match w.label(add(n, *o)) {
+        let l = match w.label_next_to(add(n, *o), label) {
             0 => u32::MAX,
             l => l,
         };

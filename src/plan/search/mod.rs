@@ -104,9 +104,10 @@ use std::collections::HashSet;
 /// A path of grid nodes from the start node to the end node, each step to a neighbour.
 pub type GridPath = Vec<Node>;
 
-/// A method's neighbour order: the offsets to try from `node`, best first, given the offset of
-/// the step that led there.
-pub(crate) type Candidates = dyn Fn(&Wave, Node, Option<[i32; 3]>) -> Vec<[i32; 3]>;
+/// A method's neighbour order: the offsets to try from `node`, best first, given its number
+/// (the neighbours' numbers read from it: [`Wave::label_next_to`]) and the offset of the step
+/// that led there.
+pub(crate) type Candidates = dyn Fn(&Wave, Node, u32, Option<[i32; 3]>) -> Vec<[i32; 3]>;
 
 #[inline]
 pub(crate) fn add(n: Node, o: [i32; 3]) -> Node {
@@ -119,10 +120,20 @@ pub(crate) fn order_of(o: [i32; 3]) -> usize {
     o.iter().filter(|&&c| c != 0).count()
 }
 
-/// The shared walk. `candidates(node, previous_offset)` lists the neighbours to try, best
-/// first; only those with a number strictly between 0 and the current node's and a step of
+/// The shared walk. `candidates(node, number, previous_offset)` lists the neighbours to try,
+/// best first; only those with a number strictly between 0 and the current node's and a step of
 /// `graph` are taken. Returns the path from the wave's start to its end, or `None` when every
 /// branch dead-ends (never, on a wave of the same graph: module doc).
+///
+/// The walk carries the number of the node it stands on (n at the end; a step taken leads to a
+/// number one less) and reads a neighbour's number from it ([`Wave::label_next_to`]). That
+/// reading is exact for every neighbour joined by a step of the wave, so for every step the walk
+/// can take (a method lists neighbours of the wave's connectivity, and `graph.step_ok` accepts
+/// only wave steps among them) and for every numbered neighbour of the row wave (which keeps
+/// only residues). A neighbour of a wave with fewer steps than that, numbered but not joined by
+/// a wave step, could read wrongly if that wave kept residues (the node-by-node waves keep
+/// numbers); it is never taken (`step_ok` refuses it), and the stable sorts of the candidates
+/// keep the others in their order.
 pub(crate) fn descend<G: Graph + ?Sized>(
     wave: &Wave,
     candidates: &Candidates,
@@ -130,12 +141,15 @@ pub(crate) fn descend<G: Graph + ?Sized>(
 ) -> Option<GridPath> {
     struct Frame {
         node: Node,
+        /// The node's number.
+        label: u32,
         options: Vec<[i32; 3]>,
         next: usize,
     }
-    let first = candidates(wave, wave.end, None);
+    let first = candidates(wave, wave.end, wave.n(), None);
     let mut stack = vec![Frame {
         node: wave.end,
+        label: wave.n(),
         options: first,
         next: 0,
     }];
@@ -147,26 +161,27 @@ pub(crate) fn descend<G: Graph + ?Sized>(
             return Some(path);
         }
         let here = top.node;
-        let label = wave.label(here);
+        let label = top.label;
         let mut chosen = None;
         while top.next < top.options.len() {
             let o = top.options[top.next];
             top.next += 1;
             let m = add(here, o);
-            let l = wave.label(m);
+            let l = wave.label_next_to(m, label);
             if l == 0 || l >= label || dead.contains(&m) {
                 continue;
             }
             if graph.step_ok(here, m) {
-                chosen = Some((m, o));
+                chosen = Some((m, o, l));
                 break;
             }
         }
         match chosen {
-            Some((m, o)) => {
-                let options = candidates(wave, m, Some(o));
+            Some((m, o, l)) => {
+                let options = candidates(wave, m, l, Some(o));
                 stack.push(Frame {
                     node: m,
+                    label: l,
                     options,
                     next: 0,
                 });
@@ -178,6 +193,64 @@ pub(crate) fn descend<G: Graph + ?Sized>(
         }
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::testing::{assert_path, grid};
+    use super::*;
+    use crate::plan::wave::{self, offsets, Connectivity};
+
+    /// A wave over accepted steps only (as the eager wave is) where the walk passes nodes with
+    /// a numbered neighbour not joined by an accepted step and numbered two more or two less:
+    /// kept as residues, such a neighbour reads one less or one more than it is, some as one
+    /// less than the node the walk stands on. The walk of each method on the residues never
+    /// takes one: it returns the path it returns on the numbers, every step accepted.
+    #[test]
+    fn a_walk_on_residues_never_takes_a_neighbour_they_misread() {
+        // No step crosses between axis-1 indices 1 and 2 below axis-2 index 4: the wave from
+        // (0, 0) climbs the left strip, crosses at the top and comes down the right one.
+        let cs = grid(6, 7, 1, |_| true);
+        let graph = |a: Node, b: Node| (a[0] <= 1) == (b[0] <= 1) || (a[1] >= 4 && b[1] >= 4);
+        let (start, end) = ([0, 0, 0], [3, 0, 0]);
+        let methods: [(&str, &Candidates, Connectivity); 3] = [
+            (
+                "neighboring",
+                &neighboring::candidates,
+                Connectivity::TwentySix,
+            ),
+            ("extensile", &extensile::candidates, Connectivity::TwentySix),
+            ("depth-first", &depth_first::candidates, Connectivity::Six),
+        ];
+        for (name, candidates, conn) in methods {
+            let mut misleading = 0;
+            let numbers = wave::expand(&cs, &graph, start, end, conn).expect("joined");
+            let residues = numbers.as_residues();
+            let p = descend(&numbers, candidates, &graph).expect("a path");
+            assert_path(&p, start, end);
+            assert!(p.windows(2).all(|s| graph(s[0], s[1])), "{name}: {p:?}");
+            let q = descend(&residues, candidates, &graph);
+            assert_eq!(q.as_ref(), Some(&p), "{name}");
+            // The neighbours along the path that the residues misread as one less, of the
+            // wave's connectivity (the depth-first walk lists only axis neighbours; a diagonal
+            // one of its wave may be joined by an accepted step, never by a wave step).
+            for &x in &p {
+                let l = numbers.label_next_to(x, 1);
+                for o in offsets(conn) {
+                    let m = add(x, *o);
+                    let (exact, read) = (numbers.label_next_to(m, 1), residues.label_next_to(m, l));
+                    if exact > 0 && read != exact && read + 1 == l {
+                        assert!(!graph(x, m), "{name}: {x:?} -> {m:?} accepted");
+                        misleading += 1;
+                    }
+                }
+            }
+            assert!(
+                misleading > 0,
+                "{name}: no misleading neighbour, nothing tested"
+            );
+        }
+    }
 }
 
 #[cfg(test)]

@@ -15,13 +15,13 @@ use super::{descend, GridPath, SearchFailure};
 use crate::plan::cspace::{CSpace, Node};
 use crate::plan::wave::{self, offsets, Connectivity, Graph, Wave};
 
-fn candidates(w: &Wave, n: Node, _prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
+pub(crate) fn candidates(w: &Wave, n: Node, here: u32, _prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     let mut c: Vec<[i32; 3]> = offsets(Connectivity::TwentySix).to_vec();
     // Stable sort: smallest number first; among equals the node nearest the start node
     // (squared grid distance), then the fixed order. Unnumbered last.
     c.sort_by_key(|o| {
         let m = super::add(n, *o);
-        let label = match w.label(m) {
+        let label = match w.label_next_to(m, here) {
             0 => u32::MAX,
             l => l,
         };
