@@ -159,8 +159,10 @@ const ROW_BITS_MAX_BYTES: usize = 64 << 20;
 const GROUP_ROWS: usize = 4;
 const _: () = assert!(GROUP_ROWS >= 2, "the row wave's front stays ascending");
 
-/// How many cleared label buffers are kept (a leg's two waves).
-const POOL_BUFFERS: usize = 2;
+/// How many cleared label buffers are kept: two waves a leg, for as many legs as the route
+/// plans at once (`plan::route`; else the waves of the second leg would take fresh buffers and
+/// fault their pages in, leg after leg).
+const POOL_BUFFERS: usize = 2 * super::LEGS_AT_ONCE_MAX;
 
 /// The largest label buffer kept, bytes. Below it the allocator would hand a freed buffer back
 /// and clear it whole (or fault fresh pages in); above it a fresh buffer's pages cost memory
