@@ -13,6 +13,11 @@
 //! smallest clearance along every move, and so along the whole route, is certified
 //! ([`certify`]).
 //!
+//! Beyond the paper, for speed only: the legs are independent (each a pure function of the grid,
+//! the model, its two points and the method), so [`route`] plans two at once where the memory
+//! of the second is small ([`legs_at_once`]) and puts them together in order: the same plan,
+//! and the same error (the first failing leg's), as leg by leg.
+//!
 //! Axes 4..6: the grid is over axes 1..3 (the paper's lumped arm); a waypoint carries all six. A
 //! cell point keeps its own wrist ([`PlacedPoint::joints_deg`]); a via gets the leg's wrist
 //! schedule: the wrist turns in proportion to the leg's progress along axes 1..3
@@ -377,8 +382,9 @@ pub fn route(
     route_on(cs, model, points, method, legs_at_once(cs, model))
 }
 
-/// [`route`] planning up to `at_once` legs at once (1: leg by leg).
-fn route_on(
+/// [`route`] planning up to `at_once` legs at once (1: leg by leg; for tests and benchmarks:
+/// the plan is the same whatever `at_once`).
+pub fn route_on(
     cs: &CSpace,
     model: &CollisionModel,
     points: &[PlacedPoint],
