@@ -2,7 +2,8 @@
 //! out one at a time as each thread asks for the next, so items of very different cost keep every
 //! core busy, and the results come back in the items' order, whoever computed them. Used where a
 //! stage does independent, deterministic work per item: the smallest clearance of each move in
-//! `plan::certify`, the zoned corners' proofs and clearances in `refine::zones`.
+//! `plan::certify`, the zoned corners' proofs and clearances in `refine::zones`, and with a
+//! limit on threads ([`map_on`]) the legs of a route in `plan::route`.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
@@ -11,10 +12,25 @@ use std::sync::Mutex;
 /// in `f` makes this panic too (`std::thread::scope`, with its own message; the panic hook has
 /// printed the first one).
 pub fn map<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
-    let threads = std::thread::available_parallelism()
+    map_on(usize::MAX, items, f)
+}
+
+/// The machine's cores (1 where it cannot tell).
+fn cores() -> usize {
+    std::thread::available_parallelism()
         .map(|n| n.get())
         .unwrap_or(1)
-        .min(items.len());
+}
+
+/// [`map`] on at most `max_threads` threads (and no more than the cores or the items): at most
+/// that many items are in hand at once, whatever memory each holds. `max_threads` 0 or 1
+/// computes every item here, in order.
+pub fn map_on<T: Sync, R: Send>(
+    max_threads: usize,
+    items: &[T],
+    f: impl Fn(&T) -> R + Sync,
+) -> Vec<R> {
+    let threads = cores().min(max_threads).min(items.len());
     if threads <= 1 {
         return items.iter().map(f).collect();
     }
@@ -56,5 +72,24 @@ mod tests {
         assert_eq!(map(&items, slow), want);
         assert_eq!(map(&items[..1], slow), want[..1]);
         assert!(map(&items[..0], slow).is_empty());
+    }
+
+    #[test]
+    fn never_more_items_in_hand_than_threads_allowed() {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        let (now, most) = (AtomicUsize::new(0), AtomicUsize::new(0));
+        let items: Vec<u64> = (0..64).collect();
+        let f = |&n: &u64| {
+            let k = now.fetch_add(1, Ordering::SeqCst) + 1;
+            most.fetch_max(k, Ordering::SeqCst);
+            std::thread::sleep(std::time::Duration::from_micros(200));
+            now.fetch_sub(1, Ordering::SeqCst);
+            n * 3
+        };
+        let want: Vec<u64> = items.iter().map(|n| n * 3).collect();
+        assert_eq!(super::map_on(1, &items, f), want);
+        assert_eq!(most.load(Ordering::SeqCst), 1);
+        assert_eq!(super::map_on(2, &items, f), want);
+        assert!(most.load(Ordering::SeqCst) <= 2);
     }
 }

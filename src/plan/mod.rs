@@ -13,6 +13,11 @@
 //! smallest clearance along every move, and so along the whole route, is certified
 //! ([`certify`]).
 //!
+//! Beyond the paper, for speed only: the legs are independent (each a pure function of the grid,
+//! the model, its two points and the method), so [`route`] plans two at once where the memory
+//! of the second is small ([`legs_at_once`]) and puts them together in order: the same plan,
+//! and the same error (the first failing leg's), as leg by leg.
+//!
 //! Axes 4..6: the grid is over axes 1..3 (the paper's lumped arm); a waypoint carries all six. A
 //! cell point keeps its own wrist ([`PlacedPoint::joints_deg`]); a via gets the leg's wrist
 //! schedule: the wrist turns in proportion to the leg's progress along axes 1..3
@@ -41,6 +46,7 @@ use cspace::{CSpace, Node};
 use leg::LegFailure;
 use search::SearchFailure;
 use std::ops::Range;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The collision model's node codes mark a free node with the bit the grid reads.
 const _: () = assert!(crate::collision::CODE_FREE == cspace::FREE);
@@ -373,6 +379,18 @@ pub fn route(
     points: &[PlacedPoint],
     method: Method,
 ) -> Result<Plan, PlanError> {
+    route_on(cs, model, points, method, legs_at_once(cs, model))
+}
+
+/// [`route`] planning up to `at_once` legs at once (1: leg by leg; for tests and benchmarks:
+/// the plan is the same whatever `at_once`).
+pub fn route_on(
+    cs: &CSpace,
+    model: &CollisionModel,
+    points: &[PlacedPoint],
+    method: Method,
+    at_once: usize,
+) -> Result<Plan, PlanError> {
     for (i, p) in points.iter().enumerate() {
         if let Some(reason) = model.why_blocked(&p.joints_deg) {
             return Err(PlanError::PointBlocked {
@@ -384,75 +402,30 @@ pub fn route(
     }
     let grid = &cs.grid;
     let check = model.grid_check(grid.step_deg);
-    let mut made = Route::default();
-    for i in 0..points.len() - 1 {
-        let (from, to) = (&points[i], &points[i + 1]);
-        if from.arm_deg() == to.arm_deg() {
-            // The same axes 1..3 twice (the wrist may differ): one move that stays put, proven
-            // like any other (the tool turns).
-            let (a, b) = (from.joints_deg, to.joints_deg);
-            if let Some((_, reason)) = model.why_move_unsafe(&a, &b) {
-                // Name the closest approach along the turn (not where it first comes within
-                // the clearance).
-                let reason = match (
-                    reason,
-                    model.min_clearance_along(&a, &b, MIN_CLEARANCE_TOL_MM),
-                ) {
-                    (Blocked::Contact { .. }, Some(c)) if c.mm < model.clearance_mm() => {
-                        Blocked::Contact {
-                            part: c.part,
-                            obstacle: c.obstacle,
-                            distance_mm: c.mm.max(0.0),
-                        }
-                    }
-                    (reason, _) => reason,
-                };
-                return Err(PlanError::WristTurn {
-                    from: i,
-                    to: i + 1,
-                    from_name: from.name.clone(),
-                    to_name: to.name.clone(),
-                    reason: Box::new(reason),
-                });
-            }
-            made.add_leg(i, Vec::new(), vec![a, b]);
-            continue;
+    let legs: Vec<usize> = (0..points.len() - 1).collect();
+    // The legs on up to `at_once` threads. A leg after a failed one is not started (the
+    // legs are handed out in order, so every leg before the first failure is planned): the
+    // error is the first failing leg's, as leg by leg.
+    let first_failed = AtomicUsize::new(usize::MAX);
+    let planned = crate::parallel::map_on(at_once, &legs, |&i| {
+        if i > first_failed.load(Ordering::Relaxed) {
+            return None;
         }
-        let names = || (from.name.clone(), to.name.clone());
-        let planned = leg::plan_leg(cs, &check, from, to, method).map_err(|failure| {
-            let (from_name, to_name) = names();
-            match failure {
-                LegFailure::NoJoin { last } => PlanError::NoJoin {
-                    point: i + usize::from(last),
-                    name: if last { to_name } else { from_name },
-                },
-                LegFailure::Search(SearchFailure::NotConnected) => PlanError::NoPath {
-                    from: i,
-                    to: i + 1,
-                    from_name,
-                    to_name,
-                    grid_deg: grid.step_deg,
-                    clearance_mm: model.clearance_mm(),
-                },
-                LegFailure::Search(SearchFailure::OnlyDiagonal | SearchFailure::WalkFailed) => {
-                    PlanError::SearchFailed {
-                        from: i,
-                        to: i + 1,
-                        from_name,
-                        to_name,
-                        method,
-                    }
-                }
-                LegFailure::Unsafe { from: a, to: b } => PlanError::Unsafe {
-                    from: i,
-                    from_name,
-                    to_name,
-                    from_axes: Box::new(a),
-                    to_axes: Box::new(b),
-                },
-            }
-        })?;
-        made.add_leg(i, planned.grid_path, planned.waypoints);
+        let leg = route_leg(cs, model, &check, points, i, method);
+        if leg.is_err() {
+            first_failed.fetch_min(i, Ordering::Relaxed);
+        }
+        Some(leg)
+    });
+    let mut made = Route::default();
+    for (i, leg) in planned.into_iter().enumerate() {
+        // A leg not started follows a failed one, whose error returned first: planned here
+        // only if that ever did not hold.
+        let (grid_path, six) = match leg {
+            Some(leg) => leg?,
+            None => route_leg(cs, model, &check, points, i, method)?,
+        };
+        made.add_leg(i, grid_path, six);
     }
     Ok(Plan {
         method,
@@ -465,6 +438,117 @@ pub fn route(
         paper: None,
         zones: Vec::new(),
     })
+}
+
+/// Leg `i` of the route (point `i` to point `i + 1`): its grid path (empty for a wrist turn in
+/// place) and its six-axis waypoints, both ends included.
+fn route_leg(
+    cs: &CSpace,
+    model: &CollisionModel,
+    check: &GridCheck<'_>,
+    points: &[PlacedPoint],
+    i: usize,
+    method: Method,
+) -> Result<(Vec<Node>, Vec<[f64; 6]>), PlanError> {
+    let (from, to) = (&points[i], &points[i + 1]);
+    if from.arm_deg() == to.arm_deg() {
+        // The same axes 1..3 twice (the wrist may differ): one move that stays put, proven
+        // like any other (the tool turns).
+        let (a, b) = (from.joints_deg, to.joints_deg);
+        if let Some((_, reason)) = model.why_move_unsafe(&a, &b) {
+            // Name the closest approach along the turn (not where it first comes within
+            // the clearance).
+            let reason = match (
+                reason,
+                model.min_clearance_along(&a, &b, MIN_CLEARANCE_TOL_MM),
+            ) {
+                (Blocked::Contact { .. }, Some(c)) if c.mm < model.clearance_mm() => {
+                    Blocked::Contact {
+                        part: c.part,
+                        obstacle: c.obstacle,
+                        distance_mm: c.mm.max(0.0),
+                    }
+                }
+                (reason, _) => reason,
+            };
+            return Err(PlanError::WristTurn {
+                from: i,
+                to: i + 1,
+                from_name: from.name.clone(),
+                to_name: to.name.clone(),
+                reason: Box::new(reason),
+            });
+        }
+        return Ok((Vec::new(), vec![a, b]));
+    }
+    let names = || (from.name.clone(), to.name.clone());
+    let planned = leg::plan_leg(cs, check, from, to, method).map_err(|failure| {
+        let (from_name, to_name) = names();
+        match failure {
+            LegFailure::NoJoin { last } => PlanError::NoJoin {
+                point: i + usize::from(last),
+                name: if last { to_name } else { from_name },
+            },
+            LegFailure::Search(SearchFailure::NotConnected) => PlanError::NoPath {
+                from: i,
+                to: i + 1,
+                from_name,
+                to_name,
+                grid_deg: cs.grid.step_deg,
+                clearance_mm: model.clearance_mm(),
+            },
+            LegFailure::Search(SearchFailure::OnlyDiagonal | SearchFailure::WalkFailed) => {
+                PlanError::SearchFailed {
+                    from: i,
+                    to: i + 1,
+                    from_name,
+                    to_name,
+                    method,
+                }
+            }
+            LegFailure::Unsafe { from: a, to: b } => PlanError::Unsafe {
+                from: i,
+                from_name,
+                to_name,
+                from_axes: Box::new(a),
+                to_axes: Box::new(b),
+            },
+        }
+    })?;
+    Ok((planned.grid_path, planned.waypoints))
+}
+
+/// The most legs [`route`] plans at once: two, each with its two waves on two threads (the
+/// extensile search), keep two cores busy where one leg alone leaves one idle (its two waves
+/// take unequal times, and the walks back, merge, shortening and proofs after them run on one
+/// thread). The wave's pool of cleared label buffers keeps the buffers of this many legs
+/// (`wave::POOL_BUFFERS`). On `torch-trunk` at 1 deg (2 cores) the route takes 168 ms instead
+/// of 196 and the whole run 0.33 s instead of 0.35 (`benches/README.md`); its longest leg, 72
+/// ms, bounds the gain.
+pub const LEGS_AT_ONCE_MAX: usize = 2;
+
+/// The most memory the legs planned beside the first may hold, bytes ([`legs_at_once`]).
+const LEGS_EXTRA_MAX_BYTES: usize = 64 << 20;
+
+/// How many legs [`route`] plans at once: [`LEGS_AT_ONCE_MAX`] where the legs beside the first
+/// hold at most [`LEGS_EXTRA_MAX_BYTES`], else one (leg by leg, the memory of one leg as
+/// ever). A leg in hand holds, per grid node, at most: its two waves' labels (2 bytes each, `u16`,
+/// for a node-by-node wave; the row wave's residues take 2 bits), their bit sets (the decided
+/// nodes and the candidates, with the rows' words rounded up: up to 4 bits a node a wave) and
+/// its tool memo (1 byte with a tool, `leg::ToolMemo`): 6 bytes a node with a tool, 5 without. Over the IRB 1400's ranges at
+/// 1 deg (341 x 141 x 136 = 6.5 M nodes) that is 39 MB with a tool: two legs at once; at 0.5
+/// deg (681 x 281 x 271 = 52 M nodes) 311 MB: leg by leg, as on any grid of more than 11.2 M
+/// nodes (13.4 M without a tool). A wave whose numbers outgrow `u16` takes `u32` labels, twice
+/// the bytes, but only at more than 65 533 steps from its start: on grids far past these.
+pub fn legs_at_once(cs: &CSpace, model: &CollisionModel) -> usize {
+    // Half bytes a node: two waves' labels and bit sets, and the tool memo.
+    let halves = 2 * (2 * std::mem::size_of::<u16>() + 1) + 2 * usize::from(model.has_tool());
+    let leg_bytes = cs.grid.len().saturating_mul(halves) / 2;
+    if leg_bytes.saturating_mul(LEGS_AT_ONCE_MAX - 1) <= LEGS_EXTRA_MAX_BYTES {
+        LEGS_AT_ONCE_MAX
+    } else {
+        1
+    }
 }
 
 /// The waypoints and legs as they are made.
@@ -657,6 +741,97 @@ mod tests {
             [10.0, 5.0, 0.0, 5.0, 30.0, 100.0]
         );
         assert_eq!(p.moves(), 11);
+    }
+
+    /// The real IRB 1400 with the torch among a table, a post and a beam, and walls in the x-z
+    /// plane in front of and behind it, too high to pass over, that cut its free space into a
+    /// half at axis 1 > 0 and one at axis 1 < 0; its grid at 3 deg in front of the robot.
+    fn split_cell() -> (CollisionModel, CSpace) {
+        use crate::cell::Obstacle;
+        use crate::geometry::{Aabb, Point};
+        let bx = |name: &str, min: [f64; 3], max: [f64; 3]| {
+            Obstacle::new(name, Aabb::new(Point::from(min), Point::from(max)))
+        };
+        let boxes = vec![
+            bx("table", [600.0, -900.0, 0.0], [1500.0, 900.0, 500.0]),
+            bx("post", [900.0, 200.0, 500.0], [1050.0, 360.0, 1250.0]),
+            bx("beam", [500.0, -900.0, 1500.0], [1400.0, -600.0, 1600.0]),
+            bx("front", [380.0, -20.0, 0.0], [2500.0, 20.0, 3000.0]),
+            bx("back", [-2500.0, -20.0, 0.0], [-380.0, 20.0, 3000.0]),
+        ];
+        let tool = crate::collision::tool_tests::torch();
+        let placement = Placement {
+            base_mm: [0.0, 0.0, 0.0],
+            yaw_deg: 0.0,
+        };
+        let model = CollisionModel::new(&Robot::irb1400(), placement, boxes, 10.0, Some(&tool));
+        let g = Grid::over([[-45.0, 45.0], [-30.0, 51.0], [-30.0, 60.0]], 3.0);
+        let cs = CSpace::build(g, &model.grid_check(g.step_deg));
+        (model, cs)
+    }
+
+    #[test]
+    fn legs_planned_at_once_give_the_route_leg_by_leg_and_the_first_failing_legs_error() {
+        let (model, cs) = split_cell();
+        assert_eq!(legs_at_once(&cs, &model), LEGS_AT_ONCE_MAX);
+        // Axis 1 > 0: one half; the third and fourth points turn the wrist in place.
+        let a = point("A", [30.0, -6.0, -9.0], [0.0, 30.0, 0.0]);
+        let b = point("B", [39.0, 21.0, -21.0], [10.0, 35.0, 20.0]);
+        let c = point("C", [42.0, 21.0, 12.0], [0.0, 30.0, 0.0]);
+        let c2 = point("C2", [42.0, 21.0, 12.0], [0.0, 30.0, 30.0]);
+        let d = point("D", [39.0, -24.0, 0.0], [-10.0, 25.0, 0.0]);
+        // Axis 1 < 0: the other half.
+        let e = point("E", [-30.0, 9.0, 0.0], [0.0, 30.0, 0.0]);
+        let f = point("F", [-39.0, -6.0, 12.0], [0.0, 30.0, -20.0]);
+        for p in [&a, &b, &c, &c2, &d, &e, &f] {
+            assert!(model.is_free(&p.joints_deg), "{} blocked", p.name);
+        }
+        for method in Method::ALL {
+            let pts = [&a, &b, &c, &c2, &d, &b, &a].map(Clone::clone);
+            let one = route_on(&cs, &model, &pts, method, 1);
+            let two = route_on(&cs, &model, &pts, method, 2);
+            let (one, two) = match (one, two) {
+                (Ok(one), Ok(two)) => (one, two),
+                // Depth-first may find no path (paper Fig. 8): then both alike.
+                (Err(x), Err(y)) if method == Method::DepthFirst => {
+                    assert_eq!(format!("{x:?}"), format!("{y:?}"), "{method}");
+                    continue;
+                }
+                (x, y) => panic!("{method}: {x:?} against {y:?}"),
+            };
+            assert_eq!(one.legs.len(), 6, "{method}");
+            assert_eq!(one.waypoints, two.waypoints, "{method}");
+            assert_eq!(
+                format!("{:?}", one.legs),
+                format!("{:?}", two.legs),
+                "{method}"
+            );
+            // Each leg is the leg planned alone, in its place.
+            for (i, leg) in one.legs.iter().enumerate() {
+                let alone = route_on(&cs, &model, &pts[i..i + 2], method, 1).expect("alone");
+                let six = |w: &[Waypoint]| w.iter().map(|w| w.joints_deg).collect::<Vec<_>>();
+                assert_eq!(
+                    six(&one.waypoints[leg.waypoints.clone()]),
+                    six(&alone.waypoints)
+                );
+                assert_eq!(leg.grid_path, alone.legs[0].grid_path);
+            }
+        }
+        // Legs 1 (B -> E) and 3 (F -> C) cross the walls: the error names leg 1, whether the
+        // legs are planned one at a time or two.
+        let pts = [&a, &b, &e, &f, &c, &d].map(Clone::clone);
+        let fails: Vec<usize> = (0..pts.len() - 1)
+            .filter(|&i| route_on(&cs, &model, &pts[i..i + 2], Method::Extensile, 1).is_err())
+            .collect();
+        assert_eq!(fails, [1, 3], "the legs that cross the walls");
+        for at_once in [1, 2] {
+            match route_on(&cs, &model, &pts, Method::Extensile, at_once) {
+                Err(e @ PlanError::NoPath { from: 1, to: 2, .. }) => {
+                    assert!(e.to_string().contains("from 'B' to 'E'"), "{e}");
+                }
+                other => panic!("{at_once} at once: {other:?}"),
+            }
+        }
     }
 
     #[test]
