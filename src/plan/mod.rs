@@ -521,8 +521,7 @@ fn route_leg(
 /// The most legs [`route`] plans at once: two, each with its two waves on two threads (the
 /// extensile search), keep two cores busy where one leg alone leaves one idle (its two waves
 /// take unequal times, and the walks back, merge, shortening and proofs after them run on one
-/// thread). The wave's pool of cleared label buffers keeps the buffers of this many legs
-/// (`wave::POOL_BUFFERS`). On `torch-trunk` at 1 deg (2 cores) the route takes 168 ms instead
+/// thread). On `torch-trunk` at 1 deg (2 cores) the route takes 168 ms instead
 /// of 196 and the whole run 0.33 s instead of 0.35 (`benches/README.md`); its longest leg, 72
 /// ms, bounds the gain.
 pub const LEGS_AT_ONCE_MAX: usize = 2;
