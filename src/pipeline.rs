@@ -228,8 +228,7 @@ pub fn plan(
     inspected: &Inspected,
     method: Method,
 ) -> Result<Plan, Error> {
-    let Inspected { model, cspace } = inspected;
-    plan::plan(cspace, model, &placed.points, method).map_err(|e| plan_error(job, e))
+    route(job, placed, inspected, method).map(|p| plan::certify(p, &inspected.model))
 }
 
 /// [`plan`] without certifying the smallest clearances: the refine stage certifies the route it

@@ -5,13 +5,15 @@
 //! off the grid joins the nearest usable node whose straight move to it is proven safe); search
 //! the leg's graph with the chosen method ([`search`]): its nodes are the free grid nodes where
 //! the tool (if any) is clear at the leg's wrist, its steps the neighbour steps whose straight
-//! six-axis move is proven safe, and the wave numbers nodes over those steps only, so the search
-//! never runs out of steps (complete on its grid); for the extensile method shorten recursively
+//! six-axis move is proven safe, and the walk back takes those steps only (on a wave numbered
+//! over every step between usable nodes first, else over those steps only: `leg`), so the
+//! search never runs out of steps (complete on its grid); for the extensile method shorten recursively
 //! ([`shorten`]); merge collinear moves ([`merge`]); round to the written precision (0.001 deg)
 //! and prove every move again. The route starts at the first point, visits every point in the
 //! cell's order, and each cell point is a waypoint exactly as given ([`route`]). Then the
 //! smallest clearance along every move, and so along the whole route, is certified
-//! ([`certify`]).
+//! ([`certify`]; [`plan`] does both, a run routes here and certifies in the refine stage the
+//! route it keeps).
 //!
 //! Beyond the paper, for speed only: the legs are independent (each a pure function of the grid,
 //! the model, its two points and the method), so [`route`] plans two at once where the memory

@@ -675,6 +675,13 @@ mod tests {
             expand(&cs, &Open, [0, 0, 0], [7, 3, 5], Connectivity::TwentySix).expect("reachable");
         assert_eq!(w.n(), 8); // 7 steps, numbered from 1
         assert!(matches!(w.labels, Labels::Residues { .. }));
+        // A wave from a node to itself: that node numbered 1, its neighbours not yet.
+        let same = expand(&cs, &Open, [2, 2, 2], [2, 2, 2], Connectivity::TwentySix)
+            .expect("the start is the end");
+        assert_eq!(same.n(), 1);
+        assert!(matches!(same.labels, Labels::Residues { .. }));
+        assert_eq!(same.label_next_to([2, 2, 2], 2), 1);
+        assert_eq!(same.label_next_to([2, 2, 3], 1), 0);
         let l = numbers(&w);
         assert_eq!(l[cs.grid.index([3, 3, 3])], 4);
         assert_eq!(l[cs.grid.index([1, 0, 1])], 2);

@@ -34,7 +34,8 @@ pub struct Refined {
 /// Shortcut (when asked) and certified zones; `time_s` estimates a plan's manipulation time.
 /// `plan` may come with its smallest clearances certified (`plan::plan`) or not
 /// (`plan::route`): the plan returned has them certified, and a route no candidate keeps is
-/// never certified.
+/// never certified. Clearances given are trusted (one a move): they must be those of `plan`'s
+/// waypoints.
 pub fn refine(
     plan: Plan,
     model: &CollisionModel,

@@ -116,6 +116,8 @@ fn on_gripper_pick_z50_splits_the_vias_by_the_cabinet_and_beats_fine() {
 fn the_written_route_is_certified_whether_the_shortcut_replaces_the_papers_route_or_not() {
     // A run plans the route without certifying its clearances (the refine stage certifies the
     // route it keeps): the plan written must carry, per move, what `plan::certify` finds anew.
+    // (The trunk has no fly-by zone: with one, the zoned corners' clearances also enter
+    // `min_clearance`, which `certify` alone does not give.)
     let path = root().join("cells/trunk.yaml");
     let text = std::fs::read_to_string(&path).expect("cell");
     let no_shortcut = text.replace("\nplanner:\n", "\nplanner:\n  shortcut: false\n");

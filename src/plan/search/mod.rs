@@ -20,7 +20,9 @@
 //!   two paths (Fig. 4-5); `shorten` then straightens it.
 //!
 //! The searches run on a [`Graph`] (`wave`): its steps are the ones the whole-move check
-//! accepts, and the wave numbers nodes over accepted steps only. Every step of a walk is again
+//! accepts, and the wave numbers nodes over accepted steps only (a leg first tries an
+//! optimistic wave numbered over every step between usable nodes and falls back to this one
+//! where the walk on it runs out: `leg`). Every step of a walk is again
 //! a step of the graph, so every edge of a returned path is a proven-safe straight move; and
 //! since every numbered node has an accepted step one number down, the walk never runs out
 //! (**complete on its grid**, beyond the paper): if the graph joins the two nodes, the
