@@ -161,12 +161,12 @@ enum Labels {
     Wide(Vec<u32>),
     /// Row by row: each node's residue code, 0 when not numbered, else `(l - 1) mod 3 + 1` for
     /// number `l`, in two bit planes laid out like the row wave's row words (`words` words a
-    /// row of `d2` nodes): bit `b` of word `2 w` is the code's low bit of the node at bit `b` of
-    /// row word `w`, word `2 w + 1` its high bit (the two planes of a word side by side).
+    /// row of the grid's axis-3 nodes): bit `b` of word `2 w` is the code's low bit of the node
+    /// at bit `b` of row word `w`, word `2 w + 1` its high bit (the two planes of a word side by
+    /// side).
     Residues {
         planes: Vec<u64>,
         words: usize,
-        d2: usize,
     },
 }
 
@@ -261,8 +261,7 @@ impl Wave {
         match &self.labels {
             Labels::Narrow(l) => number_of(l[t * self.dims[2] + z]),
             Labels::Wide(l) => number_of(l[t * self.dims[2] + z]),
-            Labels::Residues { planes, words, d2 } => {
-                debug_assert_eq!(*d2, self.dims[2]);
+            Labels::Residues { planes, words } => {
                 let w = t * words + z / 64;
                 let b = z % 64;
                 let code = ((planes[2 * w] >> b) & 1) | (((planes[2 * w + 1] >> b) & 1) << 1);
@@ -319,7 +318,7 @@ impl Wave {
             }
         }
         Wave {
-            labels: Labels::Residues { planes, words, d2 },
+            labels: Labels::Residues { planes, words },
             ..self.clone()
         }
     }
@@ -425,7 +424,7 @@ fn number_rows<G: Graph + ?Sized, const K: usize>(
         (start_index % d2) % 64,
     );
     planes[2 * (r0 * words + j0)] |= 1 << b0;
-    let labels = |planes| Labels::Residues { planes, words, d2 };
+    let labels = |planes| Labels::Residues { planes, words };
     if start_index == end_index {
         return Some((labels(planes), 1));
     }

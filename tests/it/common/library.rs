@@ -9,7 +9,7 @@ use gen_rapid::cell;
 use gen_rapid::error::Error;
 use gen_rapid::pipeline;
 use gen_rapid::place::Placed;
-use gen_rapid::plan::Method;
+use gen_rapid::plan::{Method, Plan};
 use std::path::Path;
 
 /// The bundled IRB 1400.
@@ -150,28 +150,43 @@ pub fn plan_every_method(cell: &Cell, grid_deg: f64) -> Result<Vec<(String, Plan
         .collect()
 }
 
-/// A run's plan of `cell` on a grid of `grid_deg` as the binary makes it (the route without its
-/// clearances certified, timed, then the refine stage), the paper's route it started from, and
-/// the run's plan with its clearances certified anew by `plan::certify` (an independent
-/// computation to compare the refine stage's certificate with).
-pub struct Recertified {
-    pub paper: gen_rapid::plan::Plan,
-    pub refined: gen_rapid::plan::Plan,
-    pub again: gen_rapid::plan::Plan,
-}
+/// A plan stage (`pipeline::plan`, certified, or `pipeline::route`, as a run plans), as the
+/// pipeline's signature of both.
+type PlanStage =
+    fn(&pipeline::Loaded, &Placed, &pipeline::Inspected, Method) -> Result<Plan, Error>;
 
-pub fn refined_and_recertified(cell: &Cell, grid_deg: f64) -> Result<Recertified, String> {
+/// `cell` on a grid of `grid_deg` through the plan stage `stage` and the time stage (the
+/// paper's figure kept), then the refine stage: the job, its placed points and inspected grid,
+/// the paper's route and the refined plan.
+fn through_refine(
+    stage: PlanStage,
+    cell: &Cell,
+    grid_deg: f64,
+) -> Result<(pipeline::Loaded, Placed, pipeline::Inspected, Plan, Plan), String> {
     let (job, placed, inspected) = placed_and_inspected(cell, grid_deg)?;
-    let paper = pipeline::route(&job, &placed, &inspected, cell.planner.method)
+    let paper = stage(&job, &placed, &inspected, cell.planner.method)
         .map(|p| {
             pipeline::keep_paper_figure(&job, &placed, &inspected, pipeline::time(&job, &placed, p))
         })
         .map_err(|e| e.to_string())?;
     let refined = pipeline::refine(&job, &placed, &inspected, paper.clone()).plan;
-    let mut stale = refined.clone();
-    stale.move_clearances = Vec::new();
-    stale.min_clearance = None;
-    let again = gen_rapid::plan::certify(stale, &inspected.model);
+    Ok((job, placed, inspected, paper, refined))
+}
+
+/// A run's plan of `cell` on a grid of `grid_deg` as the binary makes it (the route without its
+/// clearances certified, timed, then the refine stage), the paper's route it started from, and
+/// the run's plan with its clearances certified anew by `plan::certify` (an independent
+/// computation to compare the refine stage's certificate with).
+pub struct Recertified {
+    pub paper: Plan,
+    pub refined: Plan,
+    pub again: Plan,
+}
+
+pub fn refined_and_recertified(cell: &Cell, grid_deg: f64) -> Result<Recertified, String> {
+    let (_, _, inspected, paper, refined) = through_refine(pipeline::route, cell, grid_deg)?;
+    // `certify` measures every move again, whatever clearances the plan carries.
+    let again = gen_rapid::plan::certify(refined.clone(), &inspected.model);
     Ok(Recertified {
         paper,
         refined,
@@ -190,14 +205,8 @@ pub struct PaperAndRefined {
 }
 
 pub fn paper_and_refined(cell: &Cell, grid_deg: f64) -> Result<PaperAndRefined, String> {
-    let (job, placed, inspected) = placed_and_inspected(cell, grid_deg)?;
-    let paper = pipeline::plan(&job, &placed, &inspected, cell.planner.method)
-        .map(|p| {
-            pipeline::keep_paper_figure(&job, &placed, &inspected, pipeline::time(&job, &placed, p))
-        })
-        .map_err(|e| e.to_string())?;
-    let refined = pipeline::refine(&job, &placed, &inspected, paper.clone()).plan;
-    let time = |p: &gen_rapid::plan::Plan| p.estimate.as_ref().map_or(f64::NAN, |e| e.total_s);
+    let (job, placed, _, paper, refined) = through_refine(pipeline::plan, cell, grid_deg)?;
+    let time = |p: &Plan| p.estimate.as_ref().map_or(f64::NAN, |e| e.total_s);
     let text = |p| {
         pipeline::render(&job, &placed, p)
             .map(|r| r.text)
