@@ -200,32 +200,38 @@ impl LegGraph<'_> {
     }
 
     /// Whether the tool is clear at node `n` (a node whose code says it may come near a box),
-    /// looked at once per node for the leg ([`ToolMemo`]).
+    /// looked at once per node for the leg ([`ToolMemo`]). The memo's answer inline (about nine
+    /// in ten calls on torch-trunk), the look out of line ([`look`](Self::look)).
+    #[inline]
     fn tool_clear(&self, n: Node) -> bool {
         let slot = self.memo.answers.get(self.cs.grid.index(n));
         match slot.map(|m| m.load(Ordering::Relaxed)) {
             Some(TOOL_CLEAR) => true,
             Some(TOOL_BLOCKED) => false,
-            _ => {
-                let model = self.check.model();
-                let six = self.six(n);
-                // Cheap bounds first; where they leave a margin, it proves the nodes around too.
-                let (clear, margin) = match self.memo.arm_sincos(n) {
-                    Some(sc) => model.tool_look_sincos(&six, &sc),
-                    None => model.tool_look(&six),
-                };
-                if let Some(m) = slot {
-                    m.store(
-                        if clear { TOOL_CLEAR } else { TOOL_BLOCKED },
-                        Ordering::Relaxed,
-                    );
-                }
-                if margin > 0.0 && margin.is_finite() {
-                    self.spread_clear(n, margin);
-                }
-                clear
-            }
+            _ => self.look(n, slot),
         }
+    }
+
+    /// The tool's look at node `n`, its answer stored in `slot` (the memo's for `n`).
+    #[inline(never)]
+    fn look(&self, n: Node, slot: Option<&AtomicU8>) -> bool {
+        let model = self.check.model();
+        let six = self.six(n);
+        // Cheap bounds first; where they leave a margin, it proves the nodes around too.
+        let (clear, margin) = match self.memo.arm_sincos(n) {
+            Some(sc) => model.tool_look_sincos(&six, &sc),
+            None => model.tool_look(&six),
+        };
+        if let Some(m) = slot {
+            m.store(
+                if clear { TOOL_CLEAR } else { TOOL_BLOCKED },
+                Ordering::Relaxed,
+            );
+        }
+        if margin > 0.0 && margin.is_finite() {
+            self.spread_clear(n, margin);
+        }
+        clear
     }
 
     /// Marks the tool clear at the nodes around `n`, up to [`SPREAD_STEPS`] steps out on each

@@ -179,7 +179,7 @@ impl MilliDegSinCos {
     #[inline]
     pub fn get(&self, deg: f64) -> (f64, f64) {
         let scaled = deg * 1000.0;
-        let m = scaled.round();
+        let m = crate::precision::round_half_away(scaled);
         if (scaled - m).abs() <= 1e-6 && m.abs() < 1e11 {
             let m = m as i64;
             let (d, f) = (m.div_euclid(1000), m.rem_euclid(1000));
