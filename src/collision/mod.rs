@@ -256,6 +256,11 @@ fn least_sq_distances<const N: usize>(ps: &[Point; N], bounds: &[Vec<f64>; 6]) -
     least
 }
 
+/// How many tool shapes a look tells its exact test are far from every box
+/// ([`CollisionModel::tool_look_sincos`]); the exact test looks at the boxes for any further
+/// shape.
+const FAR_SHAPES: usize = 8;
+
 /// How much a flange pose from [`SinCosChain`] may be trusted to differ from
 /// [`Robot::link_poses`] at a tool ball's centre, mm: far above the rounding (about 1e-12 mm
 /// at a metre, held to 1e-9 mm by the chain's tests), taken off the margin its ball test gives.
@@ -449,7 +454,7 @@ impl CollisionModel {
     /// a box farther than the clearance from the shape's ball (`parts.rs`, one point placed) is
     /// passed; then the shape's enclosing box, then the exact test.
     pub fn tool_is_free(&self, axes: &[f64; 6]) -> bool {
-        self.tool.is_none() || self.tool_is_free_at::<false>(&self.flange_pose(axes))
+        self.tool.is_none() || self.tool_is_free_at::<false>(&self.flange_pose(axes), &[])
     }
 
     /// [`tool_is_free`](Self::tool_is_free) with link 6 at `flange` (cell frame). With `INNER`,
@@ -458,12 +463,20 @@ impl CollisionModel {
     /// the exact cylinder test's distance never exceeds): within the clearance less
     /// [`UPPER_BOUND_SLACK_MM`] it is within the clearance by the exact test too, answered
     /// without it (the same answer).
-    fn tool_is_free_at<const INNER: bool>(&self, flange: &Isometry3<f64>) -> bool {
+    ///
+    /// A shape `i` with `far[i]` true is passed without a look at the boxes: the caller vouches
+    /// that every box is farther than the clearance from its ball (by more than the rounding
+    /// of `flange`), which the ball test below would find for each box, so the answer is the
+    /// same.
+    fn tool_is_free_at<const INNER: bool>(&self, flange: &Isometry3<f64>, far: &[bool]) -> bool {
         let Some(tool) = &self.tool else {
             return true;
         };
         let c = self.clearance_mm;
-        tool.shapes.iter().all(|s| {
+        tool.shapes.iter().enumerate().all(|(i, s)| {
+            if far.get(i) == Some(&true) {
+                return true;
+            }
             // First the shape's ball (one point placed): most boxes are farther than that. Then
             // the enclosing box of the shape, placed once, and the exact test.
             let (centre, radius) = s.ball;
@@ -529,17 +542,24 @@ impl CollisionModel {
         let c = self.clearance_mm;
         let mut nearest = f64::INFINITY;
         let mut within = false;
-        for three in tool.shapes.chunks(3) {
+        // Per shape (the first few): every box farther from its ball than the clearance plus
+        // the pose's slack (which covers the rounding between `flange` and its isometry), so
+        // the exact test need not look at the boxes for it.
+        let mut far = [false; FAR_SHAPES];
+        for (i, three) in tool.shapes.chunks(3).enumerate() {
             let centre = |k: usize| {
                 let (centre, _) = three[k.min(three.len() - 1)].ball;
                 Point::from(flange.apply(&centre.coords.into()))
             };
             let sq = least_sq_distances(&[centre(0), centre(1), centre(2)], &look.bounds);
-            for (s, sq) in three.iter().zip(sq) {
+            for (t, (s, sq)) in three.iter().zip(sq).enumerate() {
                 let d = sq.sqrt();
                 nearest = nearest.min(d - s.ball.1);
                 // The inner ball's point nearest to the box is a point of the shape.
                 within |= d - s.inner_mm <= c - UPPER_BOUND_SLACK_MM;
+                if let Some(f) = far.get_mut(3 * i + t) {
+                    *f = d > s.ball.1 + c + SINCOS_POSE_SLACK_MM;
+                }
             }
         }
         let margin = proof::lowered(nearest) - c - SINCOS_POSE_SLACK_MM;
@@ -548,7 +568,7 @@ impl CollisionModel {
         } else if within {
             (false, 0.0)
         } else {
-            (self.tool_is_free_at::<true>(&flange.isometry()), 0.0)
+            (self.tool_is_free_at::<true>(&flange.isometry(), &far), 0.0)
         }
     }
 
