@@ -196,6 +196,8 @@ pub struct CollisionModel {
 /// ([`CollisionModel::tool_look_sincos`]).
 #[derive(Clone, Debug)]
 struct ToolLook {
+    /// This look's own number (its clones share it: the same chain), the key of [`LINK2`].
+    id: u64,
     /// The chain that places the flange, in the cell frame.
     chain: SinCosChain,
     /// The wrist angles' sines and cosines on the 0.001 deg lattice.
@@ -203,6 +205,18 @@ struct ToolLook {
     /// The boxes' bounds by coordinate, `[min x, min y, min z, max x, max y, max z]` per box
     /// index, for the balls' distances in one pass ([`least_sq_distances`]).
     bounds: [Vec<f64>; 6],
+}
+
+/// The numbers of [`ToolLook::id`].
+static LOOK_IDS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+thread_local! {
+    /// The link-2 pose of this thread's last tool look ([`CollisionModel::flange_sincos`]),
+    /// keyed by the look's id and the bits of the sines and cosines of URDF joints 1 and 2: a
+    /// wave looks at the nodes of a column one after the other, and link 2's pose is the same
+    /// for all of them. The same steps from it, so the same flange to the bit.
+    static LINK2: std::cell::Cell<Option<([u64; 5], crate::robot::Pose)>> =
+        const { std::cell::Cell::new(None) };
 }
 
 /// The boxes' bounds by coordinate (the layout of `ToolLook::bounds`).
@@ -356,6 +370,7 @@ impl CollisionModel {
                 .map(|a| a.max_deg)
                 .fold(f64::NEG_INFINITY, f64::max);
             Box::new(ToolLook {
+                id: LOOK_IDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
                 chain: SinCosChain::new(robot, &cell_from_robot),
                 wrist: MilliDegSinCos::new(lo, hi),
                 bounds: bounds_by_coordinate(&obstacles),
@@ -582,10 +597,25 @@ impl CollisionModel {
     ) -> Option<crate::robot::Pose> {
         let look = self.look.as_ref()?;
         let wrist = [3, 4, 5].map(|k| look.wrist.get(axes[k]));
-        Some(
-            look.chain
-                .pose6(&self.robot.urdf_arm_sincos(arm_sincos), &wrist),
-        )
+        let arm = self.robot.urdf_arm_sincos(arm_sincos);
+        // Link 2's pose: this thread's last one when it is of the same chain and joints 1 and 2
+        // (a wave looks along a column), else placed and kept.
+        let key = [
+            look.id,
+            arm[0].0.to_bits(),
+            arm[0].1.to_bits(),
+            arm[1].0.to_bits(),
+            arm[1].1.to_bits(),
+        ];
+        let p2 = LINK2.with(|last| match last.get() {
+            Some((k, p2)) if k == key => p2,
+            _ => {
+                let p2 = look.chain.pose2(&[arm[0], arm[1]]);
+                last.set(Some((key, p2)));
+                p2
+            }
+        });
+        Some(look.chain.pose6_from2(&p2, arm[2], &wrist))
     }
 
     /// [`flange_sincos`](Self::flange_sincos) as an isometry (for tests).
