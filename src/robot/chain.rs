@@ -20,6 +20,19 @@ fn rows(m: &Matrix3<f64>) -> M3 {
     std::array::from_fn(|r| std::array::from_fn(|c| m[(r, c)]))
 }
 
+/// `p` with columns `A` and `B` turned by the angle of sine `s` and cosine `c`: `p Rot(e_k,
+/// q)` for the axis `e_k` that completes `A`, `B` to a right-handed cycle.
+#[inline(always)]
+fn turn<const A: usize, const B: usize>(p: &M3, s: f64, c: f64) -> M3 {
+    let mut r = *p;
+    for row in &mut r {
+        let (pa, pb) = (row[A], row[B]);
+        row[A] = c * pa + s * pb;
+        row[B] = c * pb - s * pa;
+    }
+    r
+}
+
 /// One joint of the chain: `A`, `A K`, `A K^2` and the origin's translation (module doc).
 #[derive(Clone, Copy, Debug)]
 struct Joint {
@@ -100,15 +113,14 @@ impl SinCosChain {
             pose.t[r] + p[r][0] * j.t[0] + p[r][1] * j.t[1] + p[r][2] * j.t[2]
         });
         if let Some((k, sign)) = j.aligned {
-            // pose * Rot(sign e_k, q): columns a = k+1, b = k+2 turn, column k stays.
-            let (a, b) = ((k + 1) % 3, (k + 2) % 3);
+            // pose * Rot(sign e_k, q): columns a = k+1, b = k+2 turn, column k stays (the
+            // columns named at compile time, so the pose stays in registers).
             let (s, c) = (sign * sc.0, sc.1);
-            let mut r = *p;
-            for row in &mut r {
-                let (pa, pb) = (row[a], row[b]);
-                row[a] = c * pa + s * pb;
-                row[b] = c * pb - s * pa;
-            }
+            let r = match k {
+                0 => turn::<1, 2>(p, s, c),
+                1 => turn::<2, 0>(p, s, c),
+                _ => turn::<0, 1>(p, s, c),
+            };
             return Pose { r, t };
         }
         let (s, v) = (sc.0, 1.0 - sc.1);
