@@ -596,7 +596,11 @@ impl CollisionModel {
         arm_sincos: &[(f64, f64); 3],
     ) -> Option<crate::robot::Pose> {
         let look = self.look.as_ref()?;
-        let wrist = [3, 4, 5].map(|k| look.wrist.get(axes[k]));
+        let wrist = [
+            look.wrist.get(axes[3]),
+            look.wrist.get(axes[4]),
+            look.wrist.get(axes[5]),
+        ];
         let arm = self.robot.urdf_arm_sincos(arm_sincos);
         // Link 2's pose: this thread's last one when it is of the same chain and joints 1 and 2
         // (a wave looks along a column), else placed and kept.

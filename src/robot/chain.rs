@@ -211,20 +211,24 @@ impl MilliDegSinCos {
     }
 
     /// `(sin, cos)` of `deg`.
+    ///
+    /// The nearest integer to the scaled angle by adding and taking off `1.5 * 2^52` (ties to
+    /// even, unlike `round`; a tie is half a lattice step off the lattice and gets `sin_cos`
+    /// either way), and the whole degrees and thousandths counted from the table's first
+    /// degree, so both are divisions of a non-negative integer by a constant.
     #[inline]
     pub fn get(&self, deg: f64) -> (f64, f64) {
+        const NEAREST: f64 = 6_755_399_441_055_744.0; // 1.5 * 2^52
         let scaled = deg * 1000.0;
-        let m = crate::precision::round_half_away(scaled);
+        let m = (scaled + NEAREST) - NEAREST;
         if (scaled - m).abs() <= 1e-6 && m.abs() < 1e11 {
-            let m = m as i64;
-            let (d, f) = (m.div_euclid(1000), m.rem_euclid(1000));
-            if let (Some(&(sa, ca)), Some(&(sb, cb))) = (
-                usize::try_from(d - self.lo_deg)
-                    .ok()
-                    .and_then(|i| self.whole.get(i)),
-                self.milli.get(f as usize),
-            ) {
-                return (sa * cb + ca * sb, ca * cb - sa * sb);
+            // `m` is an integer below 1e11 in magnitude: exact as an i64.
+            if let Ok(u) = u64::try_from(m as i64 - self.lo_deg * 1000) {
+                let (d, f) = ((u / 1000) as usize, (u % 1000) as usize);
+                if let (Some(&(sa, ca)), Some(&(sb, cb))) = (self.whole.get(d), self.milli.get(f))
+                {
+                    return (sa * cb + ca * sb, ca * cb - sa * sb);
+                }
             }
         }
         deg.to_radians().sin_cos()
