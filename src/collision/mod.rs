@@ -77,7 +77,7 @@ use crate::geometry::{
     distance_segment_aabb, distance_sq_point_aabb, gap_sq_aabb_aabb, Aabb, Cylinder, Point, Solid,
 };
 use crate::place::{Placement, PoseCheck};
-use crate::robot::{MilliDegSinCos, RangeViolation, Robot, SinCosChain};
+use crate::robot::{MilliDegSinCos, Pose, RangeViolation, Robot, SinCosChain};
 use nalgebra::{Isometry3, Vector3};
 use parts::ToolData;
 
@@ -196,8 +196,6 @@ pub struct CollisionModel {
 /// ([`CollisionModel::tool_look_sincos`]).
 #[derive(Clone, Debug)]
 struct ToolLook {
-    /// This look's own number (its clones share it: the same chain), the key of [`LINK2`].
-    id: u64,
     /// The chain that places the flange, in the cell frame.
     chain: SinCosChain,
     /// The wrist angles' sines and cosines on the 0.001 deg lattice.
@@ -205,18 +203,6 @@ struct ToolLook {
     /// The boxes' bounds by coordinate, `[min x, min y, min z, max x, max y, max z]` per box
     /// index, for the balls' distances in one pass ([`least_sq_distances`]).
     bounds: [Vec<f64>; 6],
-}
-
-/// The numbers of [`ToolLook::id`].
-static LOOK_IDS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
-
-thread_local! {
-    /// The link-2 pose of this thread's last tool look ([`CollisionModel::flange_sincos`]),
-    /// keyed by the look's id and the bits of the sines and cosines of URDF joints 1 and 2: a
-    /// wave looks at the nodes of a column one after the other, and link 2's pose is the same
-    /// for all of them. The same steps from it, so the same flange to the bit.
-    static LINK2: std::cell::Cell<Option<([u64; 5], crate::robot::Pose)>> =
-        const { std::cell::Cell::new(None) };
 }
 
 /// The boxes' bounds by coordinate (the layout of `ToolLook::bounds`).
@@ -370,7 +356,6 @@ impl CollisionModel {
                 .map(|a| a.max_deg)
                 .fold(f64::NEG_INFINITY, f64::max);
             Box::new(ToolLook {
-                id: LOOK_IDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
                 chain: SinCosChain::new(robot, &cell_from_robot),
                 wrist: MilliDegSinCos::new(lo, hi),
                 bounds: bounds_by_coordinate(&obstacles),
@@ -549,9 +534,34 @@ impl CollisionModel {
     /// only what they leave goes to the exact test of [`tool_is_free`](Self::tool_is_free) on
     /// that flange.
     pub fn tool_look_sincos(&self, axes: &[f64; 6], arm_sincos: &[(f64, f64); 3]) -> (bool, f64) {
-        let (Some(tool), Some(look), Some(flange)) =
-            (&self.tool, &self.look, self.flange_sincos(axes, arm_sincos))
-        else {
+        self.tool_look_from(axes, arm_sincos, None)
+    }
+
+    /// [`tool_look_sincos`](Self::tool_look_sincos) with link 1's pose given (`link1`, from
+    /// [`tool_link1`](Self::tool_link1) of the same axis 1: `plan::leg` keeps one per grid value
+    /// of axis 1): the same steps after it, so the same answer and margin to the bit.
+    pub fn tool_look_link1(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+        link1: &Pose,
+    ) -> (bool, f64) {
+        self.tool_look_from(axes, arm_sincos, Some(link1))
+    }
+
+    /// [`tool_look_sincos`](Self::tool_look_sincos), link 1 placed unless given.
+    #[inline]
+    fn tool_look_from(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+        link1: Option<&Pose>,
+    ) -> (bool, f64) {
+        let (Some(tool), Some(look), Some(flange)) = (
+            &self.tool,
+            &self.look,
+            self.flange_sincos(axes, arm_sincos, link1),
+        ) else {
             return (true, f64::INFINITY);
         };
         let c = self.clearance_mm;
@@ -594,7 +604,8 @@ impl CollisionModel {
         &self,
         axes: &[f64; 6],
         arm_sincos: &[(f64, f64); 3],
-    ) -> Option<crate::robot::Pose> {
+        link1: Option<&Pose>,
+    ) -> Option<Pose> {
         let look = self.look.as_ref()?;
         let wrist = [
             look.wrist.get(axes[3]),
@@ -602,24 +613,18 @@ impl CollisionModel {
             look.wrist.get(axes[5]),
         ];
         let arm = self.robot.urdf_arm_sincos(arm_sincos);
-        // Link 2's pose: this thread's last one when it is of the same chain and joints 1 and 2
-        // (a wave looks along a column), else placed and kept.
-        let key = [
-            look.id,
-            arm[0].0.to_bits(),
-            arm[0].1.to_bits(),
-            arm[1].0.to_bits(),
-            arm[1].1.to_bits(),
-        ];
-        let p2 = LINK2.with(|last| match last.get() {
-            Some((k, p2)) if k == key => p2,
-            _ => {
-                let p2 = look.chain.pose2(&[arm[0], arm[1]]);
-                last.set(Some((key, p2)));
-                p2
-            }
-        });
-        Some(look.chain.pose6_from2(&p2, arm[2], &wrist))
+        let p1 = match link1 {
+            Some(p1) => *p1,
+            None => look.chain.pose1(arm[0]),
+        };
+        Some(look.chain.pose6_from1(&p1, &[arm[1], arm[2]], &wrist))
+    }
+
+    /// Link 1's pose (cell frame) from the sine and cosine of controller axis 1, for
+    /// [`tool_look_link1`](Self::tool_look_link1) (`None` without a tool).
+    pub fn tool_link1(&self, axis1_sincos: (f64, f64)) -> Option<Pose> {
+        let look = self.look.as_ref()?;
+        Some(look.chain.pose1(axis1_sincos))
     }
 
     /// [`flange_sincos`](Self::flange_sincos) as an isometry (for tests).
@@ -629,7 +634,7 @@ impl CollisionModel {
         axes: &[f64; 6],
         arm_sincos: &[(f64, f64); 3],
     ) -> Option<Isometry3<f64>> {
-        self.flange_sincos(axes, arm_sincos).map(|p| p.isometry())
+        self.flange_sincos(axes, arm_sincos, None).map(|p| p.isometry())
     }
 
     /// The flange's pose (link 6, cell frame) by [`Robot::link_poses`] (for tests).

@@ -48,6 +48,7 @@ use crate::collision::{Ends, GridCheck};
 use crate::place::PlacedPoint;
 use crate::plan::cspace::{CSpace, Node};
 use crate::precision::quantize_joints;
+use crate::robot::Pose;
 use std::sync::atomic::{AtomicU8, Ordering};
 use std::sync::OnceLock;
 
@@ -129,6 +130,9 @@ pub struct ToolMemo {
     /// Per axis 1..3, per grid index along it: the sine and cosine of the controller value
     /// (`CollisionModel::tool_look_sincos`); empty without a tool.
     arm_sincos: [Vec<(f64, f64)>; 3],
+    /// Per grid index along axis 1: link 1's pose (`CollisionModel::tool_link1`); empty
+    /// without a tool.
+    link1: Vec<Pose>,
 }
 
 const TOOL_CLEAR: u8 = 1;
@@ -142,28 +146,39 @@ impl ToolMemo {
         } else {
             0
         };
-        let arm_sincos = std::array::from_fn(|k| {
+        let arm_sincos: [Vec<(f64, f64)>; 3] = std::array::from_fn(|k| {
             let along = if n > 0 { cs.grid.dims[k] } else { 0 };
             (0..along)
                 .map(|i| cs.grid.value(k, i as i64).to_radians().sin_cos())
                 .collect()
         });
+        let model = check.model();
+        let link1 = arm_sincos[0]
+            .iter()
+            .filter_map(|&sc| model.tool_link1(sc))
+            .collect();
         ToolMemo {
             answers: (0..n).map(|_| AtomicU8::new(0)).collect(),
             spread: OnceLock::new(),
             arm_sincos,
+            link1,
         }
     }
 
-    /// The sines and cosines of node `n`'s controller axes 1..3 (`None` without a tool).
+    /// The sines and cosines of node `n`'s controller axes 1..3, and link 1's pose there
+    /// (`None` without a tool).
     #[inline]
-    fn arm_sincos(&self, n: Node) -> Option<[(f64, f64); 3]> {
+    fn arm_at(&self, n: Node) -> Option<([(f64, f64); 3], &Pose)> {
         let [a1, a2, a3] = &self.arm_sincos;
-        Some([
-            *a1.get(usize::try_from(n[0]).ok()?)?,
-            *a2.get(usize::try_from(n[1]).ok()?)?,
-            *a3.get(usize::try_from(n[2]).ok()?)?,
-        ])
+        let i = usize::try_from(n[0]).ok()?;
+        Some((
+            [
+                *a1.get(i)?,
+                *a2.get(usize::try_from(n[1]).ok()?)?,
+                *a3.get(usize::try_from(n[2]).ok()?)?,
+            ],
+            self.link1.get(i)?,
+        ))
     }
 }
 
@@ -218,8 +233,8 @@ impl LegGraph<'_> {
         let model = self.check.model();
         let six = self.six(n);
         // Cheap bounds first; where they leave a margin, it proves the nodes around too.
-        let (clear, margin) = match self.memo.arm_sincos(n) {
-            Some(sc) => model.tool_look_sincos(&six, &sc),
+        let (clear, margin) = match self.memo.arm_at(n) {
+            Some((sc, link1)) => model.tool_look_link1(&six, &sc, link1),
             None => model.tool_look(&six),
         };
         if let Some(m) = slot {

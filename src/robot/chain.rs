@@ -157,24 +157,24 @@ impl SinCosChain {
         self.step(&p5, 5, wrist[2])
     }
 
-    /// The pose of link 2 for the sines and cosines of URDF joints 1 and 2: the first two steps
-    /// of [`pose6`](Self::pose6), for callers that place many poses of one column.
+    /// The pose of link 1 for the sine and cosine of URDF joint 1: the first step of
+    /// [`pose6`](Self::pose6), for callers that keep one per value of joint 1.
     #[inline(always)]
-    pub fn pose2(&self, sc: &[(f64, f64); 2]) -> Pose {
+    pub fn pose1(&self, sc: (f64, f64)) -> Pose {
         let first = Pose {
             r: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
             t: [0.0; 3],
         };
-        let p1 = self.step(&first, 0, sc[0]);
-        self.step(&p1, 1, sc[1])
+        self.step(&first, 0, sc)
     }
 
-    /// [`pose6`](Self::pose6) from link 2's pose `p2` ([`pose2`](Self::pose2) of the same
-    /// joints 1 and 2), joint 3's sine and cosine and the wrist's: the same steps, so the same
-    /// pose to the bit.
+    /// [`pose6`](Self::pose6) from link 1's pose `p1` ([`pose1`](Self::pose1) of the same
+    /// joint 1), the sines and cosines of joints 2 and 3 (`arm23`) and the wrist's: the same
+    /// steps, so the same pose to the bit.
     #[inline(always)]
-    pub fn pose6_from2(&self, p2: &Pose, q3: (f64, f64), wrist: &[(f64, f64); 3]) -> Pose {
-        let p3 = self.step(p2, 2, q3);
+    pub fn pose6_from1(&self, p1: &Pose, arm23: &[(f64, f64); 2], wrist: &[(f64, f64); 3]) -> Pose {
+        let p2 = self.step(p1, 1, arm23[0]);
+        let p3 = self.step(&p2, 2, arm23[1]);
         let p4 = self.step(&p3, 3, wrist[0]);
         let p5 = self.step(&p4, 4, wrist[1]);
         self.step(&p5, 5, wrist[2])
@@ -308,8 +308,8 @@ mod tests {
             let l3 = chain.pose3(&arm);
             let l6 = chain.pose6(&arm, &wrist);
             // From link 2's pose: the same pose to the bit.
-            let from2 = chain.pose6_from2(&chain.pose2(&[arm[0], arm[1]]), arm[2], &wrist);
-            assert_eq!(format!("{from2:?}"), format!("{l6:?}"), "pose6_from2 at {axes:?}");
+            let from1 = chain.pose6_from1(&chain.pose1(arm[0]), &[arm[1], arm[2]], &wrist);
+            assert_eq!(format!("{from1:?}"), format!("{l6:?}"), "pose6_from1 at {axes:?}");
             let probe = [[0.0, 0.0, 0.0], [120.0, -40.0, 300.0]];
             let pose = chain.pose6(&arm, &wrist);
             for p in &probe {
