@@ -532,7 +532,8 @@ impl CollisionModel {
     /// margin is lowered by [`SINCOS_POSE_SLACK_MM`] for it. Where the balls do not show the
     /// tool clear, the upper bounds of [`tool_look`](Self::tool_look) may answer blocked, and
     /// only what they leave goes to the exact test of [`tool_is_free`](Self::tool_is_free) on
-    /// that flange.
+    /// that flange, which passes the shapes the balls' pass found far from every box without
+    /// looking at their boxes ([`ball_pass`](Self::ball_pass)).
     pub fn tool_look_sincos(&self, axes: &[f64; 6], arm_sincos: &[(f64, f64); 3]) -> (bool, f64) {
         self.tool_look_from(axes, arm_sincos, None)
     }
@@ -565,11 +566,34 @@ impl CollisionModel {
             return (true, f64::INFINITY);
         };
         let c = self.clearance_mm;
+        let (nearest, within, far) = self.ball_pass(tool, look, &flange);
+        let margin = proof::lowered(nearest) - c - SINCOS_POSE_SLACK_MM;
+        if margin > 0.0 {
+            (true, margin)
+        } else if within {
+            (false, 0.0)
+        } else {
+            (self.tool_is_free_at::<true>(&flange.isometry(), &far), 0.0)
+        }
+    }
+
+    /// The balls' pass of a look ([`tool_look_sincos`](Self::tool_look_sincos)) with the
+    /// flange at `flange`: the least over the shapes of the ball's distance to a box less its
+    /// radius; whether a shape's inner ball comes within the clearance less
+    /// [`UPPER_BOUND_SLACK_MM`] of a box; and per shape (the first [`FAR_SHAPES`]) whether its
+    /// ball is farther than the clearance plus [`SINCOS_POSE_SLACK_MM`] (which covers the
+    /// rounding between `flange` and its isometry) from every box, so that the exact test need
+    /// not look at the boxes for it (its own ball test would pass every one).
+    #[inline]
+    fn ball_pass(
+        &self,
+        tool: &ToolData,
+        look: &ToolLook,
+        flange: &Pose,
+    ) -> (f64, bool, [bool; FAR_SHAPES]) {
+        let c = self.clearance_mm;
         let mut nearest = f64::INFINITY;
         let mut within = false;
-        // Per shape (the first few): every box farther from its ball than the clearance plus
-        // the pose's slack (which covers the rounding between `flange` and its isometry), so
-        // the exact test need not look at the boxes for it.
         let mut far = [false; FAR_SHAPES];
         for (i, three) in tool.shapes.chunks(3).enumerate() {
             let centre = |k: usize| {
@@ -587,13 +611,24 @@ impl CollisionModel {
                 }
             }
         }
-        let margin = proof::lowered(nearest) - c - SINCOS_POSE_SLACK_MM;
-        if margin > 0.0 {
-            (true, margin)
-        } else if within {
-            (false, 0.0)
-        } else {
-            (self.tool_is_free_at::<true>(&flange.isometry(), &far), 0.0)
+        (nearest, within, far)
+    }
+
+    /// The shapes the balls' pass at `axes` calls far ([`ball_pass`](Self::ball_pass)), the
+    /// flange placed as [`tool_look_sincos`](Self::tool_look_sincos) places it (for tests).
+    #[cfg(test)]
+    pub(crate) fn far_shapes_for_test(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+    ) -> [bool; FAR_SHAPES] {
+        match (
+            &self.tool,
+            &self.look,
+            self.flange_sincos(axes, arm_sincos, None),
+        ) {
+            (Some(tool), Some(look), Some(flange)) => self.ball_pass(tool, look, &flange).2,
+            _ => [false; FAR_SHAPES],
         }
     }
 
@@ -633,8 +668,10 @@ impl CollisionModel {
         &self,
         axes: &[f64; 6],
         arm_sincos: &[(f64, f64); 3],
+        link1: Option<&Pose>,
     ) -> Option<Isometry3<f64>> {
-        self.flange_sincos(axes, arm_sincos, None).map(|p| p.isometry())
+        self.flange_sincos(axes, arm_sincos, link1)
+            .map(|p| p.isometry())
     }
 
     /// The flange's pose (link 6, cell frame) by [`Robot::link_poses`] (for tests).

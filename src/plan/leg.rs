@@ -26,9 +26,14 @@
 //! `torch-trunk` (a node well inside the grid reaches the nodes around it by their index
 //! deltas, kept with the offsets). Where a shape's inner ball, or an upper bound of its distance
 //! to a box, lies within the clearance, the look answers blocked without the exact test (the
-//! exact test's answer: `CollisionModel::tool_look_sincos`). A look places the flange from sines
-//! and cosines: those of axes 1..3 from the memo's tables of the grid's values, so a look takes
-//! no `sin_cos`. The graph's steps are the neighbour steps whose
+//! exact test's answer: `CollisionModel::tool_look_sincos`); a shape whose ball the look found
+//! farther than the clearance from every box is passed by the exact test without its boxes. A
+//! look places the flange from sines and cosines: those of axes 1..3 from the memo's tables of
+//! the grid's values, and link 1's pose from the memo's table per value of axis 1
+//! (`CollisionModel::tool_look_link1`: the same steps after it, the same flange to the bit), so
+//! a look takes no `sin_cos` and places five joints, not six. A node already answered costs
+//! the memo's load alone (inline; the look is out of line). The graph's steps are the neighbour
+//! steps whose
 //! six-axis move the step check accepts (`GridCheck::step_is_safe`: node depths first, the
 //! whole-move proof where they do not suffice), asked with the two ends in index order so the
 //! answer is symmetric. Without a tool this costs nothing beyond the step check.

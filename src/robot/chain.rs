@@ -7,7 +7,11 @@
 //! and `K` the cross-product matrix of the unit axis `u`, Rodrigues' formula gives
 //! `A Rot(u, q) = A + sin q (A K) + (1 - cos q) (A K^2)`, the three matrices made once. The
 //! poses agree with `link_poses` to rounding (about 1e-12 mm at a metre; the tests hold them
-//! to 1e-9 mm on random poses). Beyond the paper: a speed device only.
+//! to 1e-9 mm on random poses). A joint whose origin does not rotate and whose axis is a
+//! coordinate axis (most URDF joints; the first carries the robot's placement in the cell) turns
+//! two columns of the pose instead (`turn`, the columns named at compile time). A caller that keeps link 1's pose per value of joint 1
+//! ([`SinCosChain::pose1`]) places the rest from it ([`SinCosChain::pose6_from1`]): the same
+//! steps, the same pose to the bit. Beyond the paper: a speed device only.
 
 use super::Robot;
 use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3};
@@ -225,8 +229,7 @@ impl MilliDegSinCos {
             // `m` is an integer below 1e11 in magnitude: exact as an i64.
             if let Ok(u) = u64::try_from(m as i64 - self.lo_deg * 1000) {
                 let (d, f) = ((u / 1000) as usize, (u % 1000) as usize);
-                if let (Some(&(sa, ca)), Some(&(sb, cb))) = (self.whole.get(d), self.milli.get(f))
-                {
+                if let (Some(&(sa, ca)), Some(&(sb, cb))) = (self.whole.get(d), self.milli.get(f)) {
                     return (sa * cb + ca * sb, ca * cb - sa * sb);
                 }
             }
@@ -309,7 +312,11 @@ mod tests {
             let l6 = chain.pose6(&arm, &wrist);
             // From link 2's pose: the same pose to the bit.
             let from1 = chain.pose6_from1(&chain.pose1(arm[0]), &[arm[1], arm[2]], &wrist);
-            assert_eq!(format!("{from1:?}"), format!("{l6:?}"), "pose6_from1 at {axes:?}");
+            assert_eq!(
+                format!("{from1:?}"),
+                format!("{l6:?}"),
+                "pose6_from1 at {axes:?}"
+            );
             let probe = [[0.0, 0.0, 0.0], [120.0, -40.0, 300.0]];
             let pose = chain.pose6(&arm, &wrist);
             for p in &probe {
