@@ -67,7 +67,7 @@ fn scale(decimals: usize) -> f64 {
 #[inline]
 pub fn round_half_away(x: f64) -> f64 {
     const INTEGRAL: f64 = 4_503_599_627_370_496.0; // 2^52
-    if !(x.abs() < INTEGRAL) {
+    if x.is_nan() || x.abs() >= INTEGRAL {
         return x;
     }
     let t = (x as i64) as f64;
