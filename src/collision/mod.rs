@@ -77,7 +77,7 @@ use crate::geometry::{
     distance_segment_aabb, distance_sq_point_aabb, gap_sq_aabb_aabb, Aabb, Cylinder, Point, Solid,
 };
 use crate::place::{Placement, PoseCheck};
-use crate::robot::{MilliDegSinCos, RangeViolation, Robot, SinCosChain};
+use crate::robot::{MilliDegSinCos, Pose, RangeViolation, Robot, SinCosChain};
 use nalgebra::{Isometry3, Vector3};
 use parts::ToolData;
 
@@ -255,6 +255,11 @@ fn least_sq_distances<const N: usize>(ps: &[Point; N], bounds: &[Vec<f64>; 6]) -
     }
     least
 }
+
+/// How many tool shapes a look tells its exact test are far from every box
+/// ([`CollisionModel::tool_look_sincos`]); the exact test looks at the boxes for any further
+/// shape.
+const FAR_SHAPES: usize = 8;
 
 /// How much a flange pose from [`SinCosChain`] may be trusted to differ from
 /// [`Robot::link_poses`] at a tool ball's centre, mm: far above the rounding (about 1e-12 mm
@@ -449,7 +454,7 @@ impl CollisionModel {
     /// a box farther than the clearance from the shape's ball (`parts.rs`, one point placed) is
     /// passed; then the shape's enclosing box, then the exact test.
     pub fn tool_is_free(&self, axes: &[f64; 6]) -> bool {
-        self.tool.is_none() || self.tool_is_free_at::<false>(&self.flange_pose(axes))
+        self.tool.is_none() || self.tool_is_free_at::<false>(&self.flange_pose(axes), &[])
     }
 
     /// [`tool_is_free`](Self::tool_is_free) with link 6 at `flange` (cell frame). With `INNER`,
@@ -458,12 +463,20 @@ impl CollisionModel {
     /// the exact cylinder test's distance never exceeds): within the clearance less
     /// [`UPPER_BOUND_SLACK_MM`] it is within the clearance by the exact test too, answered
     /// without it (the same answer).
-    fn tool_is_free_at<const INNER: bool>(&self, flange: &Isometry3<f64>) -> bool {
+    ///
+    /// A shape `i` with `far[i]` true is passed without a look at the boxes: the caller vouches
+    /// that every box is farther than the clearance from its ball (by more than the rounding
+    /// of `flange`), which the ball test below would find for each box, so the answer is the
+    /// same.
+    fn tool_is_free_at<const INNER: bool>(&self, flange: &Isometry3<f64>, far: &[bool]) -> bool {
         let Some(tool) = &self.tool else {
             return true;
         };
         let c = self.clearance_mm;
-        tool.shapes.iter().all(|s| {
+        tool.shapes.iter().enumerate().all(|(i, s)| {
+            if far.get(i) == Some(&true) {
+                return true;
+            }
             // First the shape's ball (one point placed): most boxes are farther than that. Then
             // the enclosing box of the shape, placed once, and the exact test.
             let (centre, radius) = s.ball;
@@ -519,36 +532,103 @@ impl CollisionModel {
     /// margin is lowered by [`SINCOS_POSE_SLACK_MM`] for it. Where the balls do not show the
     /// tool clear, the upper bounds of [`tool_look`](Self::tool_look) may answer blocked, and
     /// only what they leave goes to the exact test of [`tool_is_free`](Self::tool_is_free) on
-    /// that flange.
+    /// that flange, which passes the shapes the balls' pass found far from every box without
+    /// looking at their boxes ([`ball_pass`](Self::ball_pass)).
     pub fn tool_look_sincos(&self, axes: &[f64; 6], arm_sincos: &[(f64, f64); 3]) -> (bool, f64) {
-        let (Some(tool), Some(look), Some(flange)) =
-            (&self.tool, &self.look, self.flange_sincos(axes, arm_sincos))
-        else {
+        self.tool_look_from(axes, arm_sincos, None)
+    }
+
+    /// [`tool_look_sincos`](Self::tool_look_sincos) with link 1's pose given (`link1`, from
+    /// [`tool_link1`](Self::tool_link1) of the same axis 1: `plan::leg` keeps one per grid value
+    /// of axis 1): the same steps after it, so the same answer and margin to the bit.
+    pub fn tool_look_link1(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+        link1: &Pose,
+    ) -> (bool, f64) {
+        self.tool_look_from(axes, arm_sincos, Some(link1))
+    }
+
+    /// [`tool_look_sincos`](Self::tool_look_sincos), link 1 placed unless given.
+    #[inline]
+    fn tool_look_from(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+        link1: Option<&Pose>,
+    ) -> (bool, f64) {
+        let (Some(tool), Some(look), Some(flange)) = (
+            &self.tool,
+            &self.look,
+            self.flange_sincos(axes, arm_sincos, link1),
+        ) else {
             return (true, f64::INFINITY);
         };
         let c = self.clearance_mm;
-        let mut nearest = f64::INFINITY;
-        let mut within = false;
-        for three in tool.shapes.chunks(3) {
-            let centre = |k: usize| {
-                let (centre, _) = three[k.min(three.len() - 1)].ball;
-                Point::from(flange.apply(&centre.coords.into()))
-            };
-            let sq = least_sq_distances(&[centre(0), centre(1), centre(2)], &look.bounds);
-            for (s, sq) in three.iter().zip(sq) {
-                let d = sq.sqrt();
-                nearest = nearest.min(d - s.ball.1);
-                // The inner ball's point nearest to the box is a point of the shape.
-                within |= d - s.inner_mm <= c - UPPER_BOUND_SLACK_MM;
-            }
-        }
+        let (nearest, within, far) = self.ball_pass(tool, look, &flange);
         let margin = proof::lowered(nearest) - c - SINCOS_POSE_SLACK_MM;
         if margin > 0.0 {
             (true, margin)
         } else if within {
             (false, 0.0)
         } else {
-            (self.tool_is_free_at::<true>(&flange.isometry()), 0.0)
+            (self.tool_is_free_at::<true>(&flange.isometry(), &far), 0.0)
+        }
+    }
+
+    /// The balls' pass of a look ([`tool_look_sincos`](Self::tool_look_sincos)) with the
+    /// flange at `flange`: the least over the shapes of the ball's distance to a box less its
+    /// radius; whether a shape's inner ball comes within the clearance less
+    /// [`UPPER_BOUND_SLACK_MM`] of a box; and per shape (the first [`FAR_SHAPES`]) whether its
+    /// ball is farther than the clearance plus [`SINCOS_POSE_SLACK_MM`] (which covers the
+    /// rounding between `flange` and its isometry) from every box, so that the exact test need
+    /// not look at the boxes for it (its own ball test would pass every one).
+    #[inline]
+    fn ball_pass(
+        &self,
+        tool: &ToolData,
+        look: &ToolLook,
+        flange: &Pose,
+    ) -> (f64, bool, [bool; FAR_SHAPES]) {
+        let c = self.clearance_mm;
+        let mut nearest = f64::INFINITY;
+        let mut within = false;
+        let mut far = [false; FAR_SHAPES];
+        for (i, three) in tool.shapes.chunks(3).enumerate() {
+            let centre = |k: usize| {
+                let (centre, _) = three[k.min(three.len() - 1)].ball;
+                Point::from(flange.apply(&centre.coords.into()))
+            };
+            let sq = least_sq_distances(&[centre(0), centre(1), centre(2)], &look.bounds);
+            for (t, (s, sq)) in three.iter().zip(sq).enumerate() {
+                let d = sq.sqrt();
+                nearest = nearest.min(d - s.ball.1);
+                // The inner ball's point nearest to the box is a point of the shape.
+                within |= d - s.inner_mm <= c - UPPER_BOUND_SLACK_MM;
+                if let Some(f) = far.get_mut(3 * i + t) {
+                    *f = d > s.ball.1 + c + SINCOS_POSE_SLACK_MM;
+                }
+            }
+        }
+        (nearest, within, far)
+    }
+
+    /// The shapes the balls' pass at `axes` calls far ([`ball_pass`](Self::ball_pass)), the
+    /// flange placed as [`tool_look_sincos`](Self::tool_look_sincos) places it (for tests).
+    #[cfg(test)]
+    pub(crate) fn far_shapes_for_test(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+    ) -> [bool; FAR_SHAPES] {
+        match (
+            &self.tool,
+            &self.look,
+            self.flange_sincos(axes, arm_sincos, None),
+        ) {
+            (Some(tool), Some(look), Some(flange)) => self.ball_pass(tool, look, &flange).2,
+            _ => [false; FAR_SHAPES],
         }
     }
 
@@ -559,13 +639,27 @@ impl CollisionModel {
         &self,
         axes: &[f64; 6],
         arm_sincos: &[(f64, f64); 3],
-    ) -> Option<crate::robot::Pose> {
+        link1: Option<&Pose>,
+    ) -> Option<Pose> {
         let look = self.look.as_ref()?;
-        let wrist = [3, 4, 5].map(|k| look.wrist.get(axes[k]));
-        Some(
-            look.chain
-                .pose6(&self.robot.urdf_arm_sincos(arm_sincos), &wrist),
-        )
+        let wrist = [
+            look.wrist.get(axes[3]),
+            look.wrist.get(axes[4]),
+            look.wrist.get(axes[5]),
+        ];
+        let arm = self.robot.urdf_arm_sincos(arm_sincos);
+        let p1 = match link1 {
+            Some(p1) => *p1,
+            None => look.chain.pose1(arm[0]),
+        };
+        Some(look.chain.pose6_from1(&p1, &[arm[1], arm[2]], &wrist))
+    }
+
+    /// Link 1's pose (cell frame) from the sine and cosine of controller axis 1, for
+    /// [`tool_look_link1`](Self::tool_look_link1) (`None` without a tool).
+    pub fn tool_link1(&self, axis1_sincos: (f64, f64)) -> Option<Pose> {
+        let look = self.look.as_ref()?;
+        Some(look.chain.pose1(axis1_sincos))
     }
 
     /// [`flange_sincos`](Self::flange_sincos) as an isometry (for tests).
@@ -574,8 +668,10 @@ impl CollisionModel {
         &self,
         axes: &[f64; 6],
         arm_sincos: &[(f64, f64); 3],
+        link1: Option<&Pose>,
     ) -> Option<Isometry3<f64>> {
-        self.flange_sincos(axes, arm_sincos).map(|p| p.isometry())
+        self.flange_sincos(axes, arm_sincos, link1)
+            .map(|p| p.isometry())
     }
 
     /// The flange's pose (link 6, cell frame) by [`Robot::link_poses`] (for tests).

@@ -793,3 +793,68 @@ fn blocked_answers_from_upper_bounds_are_the_exact_tests() {
         );
     }
 }
+
+/// The shapes the balls' pass calls far (whose boxes the exact test then skips) are clear of
+/// every box by the exact test, and the exact test's own ball filter, on the flange as
+/// `link_poses` places it, passes every box for them; and a look from link 1's pose (as the
+/// leg's memo keeps it) answers as the look, margin to the bit. At the nodes of the 5 deg grid
+/// of the test above with its two wrists, at clearances 0, 10 and 60 mm; shapes called far
+/// occur at many nodes where the balls left the answer to the exact test.
+#[test]
+fn shapes_called_far_are_clear_and_looks_from_link_1_are_the_looks() {
+    use crate::plan::cspace::Grid;
+    use crate::plan::leg::WristSchedule;
+    let g = Grid::over([[-90.0, 90.0], [-60.0, 70.0], [-60.0, 70.0]], 5.0);
+    for clearance in [0.0, 10.0, 60.0] {
+        let m = torch_model(clearance);
+        let (tool, c) = (m.tool.as_ref().expect("a torch"), m.clearance_mm());
+        let mut far_at_exact = 0;
+        for (from, to) in [
+            (
+                [-60.0, -10.0, 0.0, -30.0, -60.0, 20.0],
+                [60.0, 40.0, 40.0, 120.0, 70.0, 200.0],
+            ),
+            (
+                [-3.0, 10.0, 20.0, -150.0, -110.0, -300.0],
+                [3.0, 10.0, 20.0, 150.0, 110.0, 300.0],
+            ),
+        ] {
+            let schedule = WristSchedule::new(&from, &to);
+            for i in 0..g.len() {
+                let six = schedule.six(&g.axes_deg(g.node(i)));
+                let sc = [0, 1, 2].map(|k| six[k].to_radians().sin_cos());
+                let look = m.tool_look_sincos(&six, &sc);
+                let link1 = m.tool_link1(sc[0]).expect("a tool");
+                let from1 = m.tool_look_link1(&six, &sc, &link1);
+                assert_eq!(
+                    (from1.0, from1.1.to_bits()),
+                    (look.0, look.1.to_bits()),
+                    "at {six:?}"
+                );
+                let flange = m.flange_pose_for_test(&six);
+                let far = m.far_shapes_for_test(&six, &sc);
+                for (s, _) in tool.shapes.iter().zip(far).filter(|(_, f)| *f) {
+                    let centre = flange * s.ball.0;
+                    let reach = s.ball.1 + c;
+                    let solid = s.local.placed(&flange);
+                    for o in m.obstacles() {
+                        assert!(
+                            distance_sq_point_aabb(&centre, &o.aabb) > reach * reach
+                                && solid_clear_of_box(&solid, &o.aabb, c),
+                            "'{}' called far but near '{}' at {six:?}",
+                            s.name,
+                            o.name
+                        );
+                    }
+                    if look.1 == 0.0 {
+                        far_at_exact += 1;
+                    }
+                }
+            }
+        }
+        assert!(
+            far_at_exact > 100,
+            "{far_at_exact} far shapes where the balls did not answer"
+        );
+    }
+}

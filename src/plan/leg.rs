@@ -26,9 +26,14 @@
 //! `torch-trunk` (a node well inside the grid reaches the nodes around it by their index
 //! deltas, kept with the offsets). Where a shape's inner ball, or an upper bound of its distance
 //! to a box, lies within the clearance, the look answers blocked without the exact test (the
-//! exact test's answer: `CollisionModel::tool_look_sincos`). A look places the flange from sines
-//! and cosines: those of axes 1..3 from the memo's tables of the grid's values, so a look takes
-//! no `sin_cos`. The graph's steps are the neighbour steps whose
+//! exact test's answer: `CollisionModel::tool_look_sincos`); a shape whose ball the look found
+//! farther than the clearance from every box is passed by the exact test without its boxes. A
+//! look places the flange from sines and cosines: those of axes 1..3 from the memo's tables of
+//! the grid's values, and link 1's pose from the memo's table per value of axis 1
+//! (`CollisionModel::tool_look_link1`: the same steps after it, the same flange to the bit), so
+//! a look takes no `sin_cos` and places five joints, not six. A node already answered costs
+//! the memo's load alone (inline; the look is out of line). The graph's steps are the neighbour
+//! steps whose
 //! six-axis move the step check accepts (`GridCheck::step_is_safe`: node depths first, the
 //! whole-move proof where they do not suffice), asked with the two ends in index order so the
 //! answer is symmetric. Without a tool this costs nothing beyond the step check.
@@ -48,6 +53,7 @@ use crate::collision::{Ends, GridCheck};
 use crate::place::PlacedPoint;
 use crate::plan::cspace::{CSpace, Node};
 use crate::precision::quantize_joints;
+use crate::robot::Pose;
 use std::sync::atomic::{AtomicU8, Ordering};
 use std::sync::OnceLock;
 
@@ -129,6 +135,9 @@ pub struct ToolMemo {
     /// Per axis 1..3, per grid index along it: the sine and cosine of the controller value
     /// (`CollisionModel::tool_look_sincos`); empty without a tool.
     arm_sincos: [Vec<(f64, f64)>; 3],
+    /// Per grid index along axis 1: link 1's pose (`CollisionModel::tool_link1`); empty
+    /// without a tool.
+    link1: Vec<Pose>,
 }
 
 const TOOL_CLEAR: u8 = 1;
@@ -142,28 +151,39 @@ impl ToolMemo {
         } else {
             0
         };
-        let arm_sincos = std::array::from_fn(|k| {
+        let arm_sincos: [Vec<(f64, f64)>; 3] = std::array::from_fn(|k| {
             let along = if n > 0 { cs.grid.dims[k] } else { 0 };
             (0..along)
                 .map(|i| cs.grid.value(k, i as i64).to_radians().sin_cos())
                 .collect()
         });
+        let model = check.model();
+        let link1 = arm_sincos[0]
+            .iter()
+            .filter_map(|&sc| model.tool_link1(sc))
+            .collect();
         ToolMemo {
             answers: (0..n).map(|_| AtomicU8::new(0)).collect(),
             spread: OnceLock::new(),
             arm_sincos,
+            link1,
         }
     }
 
-    /// The sines and cosines of node `n`'s controller axes 1..3 (`None` without a tool).
+    /// The sines and cosines of node `n`'s controller axes 1..3, and link 1's pose there
+    /// (`None` without a tool).
     #[inline]
-    fn arm_sincos(&self, n: Node) -> Option<[(f64, f64); 3]> {
+    fn arm_at(&self, n: Node) -> Option<([(f64, f64); 3], &Pose)> {
         let [a1, a2, a3] = &self.arm_sincos;
-        Some([
-            *a1.get(usize::try_from(n[0]).ok()?)?,
-            *a2.get(usize::try_from(n[1]).ok()?)?,
-            *a3.get(usize::try_from(n[2]).ok()?)?,
-        ])
+        let i = usize::try_from(n[0]).ok()?;
+        Some((
+            [
+                *a1.get(i)?,
+                *a2.get(usize::try_from(n[1]).ok()?)?,
+                *a3.get(usize::try_from(n[2]).ok()?)?,
+            ],
+            self.link1.get(i)?,
+        ))
     }
 }
 
@@ -200,32 +220,38 @@ impl LegGraph<'_> {
     }
 
     /// Whether the tool is clear at node `n` (a node whose code says it may come near a box),
-    /// looked at once per node for the leg ([`ToolMemo`]).
+    /// looked at once per node for the leg ([`ToolMemo`]). The memo's answer inline (about nine
+    /// in ten calls on torch-trunk), the look out of line ([`look`](Self::look)).
+    #[inline]
     fn tool_clear(&self, n: Node) -> bool {
         let slot = self.memo.answers.get(self.cs.grid.index(n));
         match slot.map(|m| m.load(Ordering::Relaxed)) {
             Some(TOOL_CLEAR) => true,
             Some(TOOL_BLOCKED) => false,
-            _ => {
-                let model = self.check.model();
-                let six = self.six(n);
-                // Cheap bounds first; where they leave a margin, it proves the nodes around too.
-                let (clear, margin) = match self.memo.arm_sincos(n) {
-                    Some(sc) => model.tool_look_sincos(&six, &sc),
-                    None => model.tool_look(&six),
-                };
-                if let Some(m) = slot {
-                    m.store(
-                        if clear { TOOL_CLEAR } else { TOOL_BLOCKED },
-                        Ordering::Relaxed,
-                    );
-                }
-                if margin > 0.0 && margin.is_finite() {
-                    self.spread_clear(n, margin);
-                }
-                clear
-            }
+            _ => self.look(n, slot),
         }
+    }
+
+    /// The tool's look at node `n`, its answer stored in `slot` (the memo's for `n`).
+    #[inline(never)]
+    fn look(&self, n: Node, slot: Option<&AtomicU8>) -> bool {
+        let model = self.check.model();
+        let six = self.six(n);
+        // Cheap bounds first; where they leave a margin, it proves the nodes around too.
+        let (clear, margin) = match self.memo.arm_at(n) {
+            Some((sc, link1)) => model.tool_look_link1(&six, &sc, link1),
+            None => model.tool_look(&six),
+        };
+        if let Some(m) = slot {
+            m.store(
+                if clear { TOOL_CLEAR } else { TOOL_BLOCKED },
+                Ordering::Relaxed,
+            );
+        }
+        if margin > 0.0 && margin.is_finite() {
+            self.spread_clear(n, margin);
+        }
+        clear
     }
 
     /// Marks the tool clear at the nodes around `n`, up to [`SPREAD_STEPS`] steps out on each

@@ -439,9 +439,9 @@ fn the_tool_looks_place_the_flange_where_link_poses_does_at_every_node() {
     for i in 0..g.len() {
         let n = g.node(i);
         let six = schedule.six(&g.axes_deg(n));
-        let sc = memo.arm_sincos(n).expect("a memo with a tool has tables");
+        let (sc, link1) = memo.arm_at(n).expect("a memo with a tool has tables");
         let fast = m
-            .flange_sincos_for_test(&six, &sc)
+            .flange_sincos_for_test(&six, &sc, Some(link1))
             .expect("a model with a tool");
         let slow = m.flange_pose_for_test(&six);
         for p in &probes {

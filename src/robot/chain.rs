@@ -7,7 +7,11 @@
 //! and `K` the cross-product matrix of the unit axis `u`, Rodrigues' formula gives
 //! `A Rot(u, q) = A + sin q (A K) + (1 - cos q) (A K^2)`, the three matrices made once. The
 //! poses agree with `link_poses` to rounding (about 1e-12 mm at a metre; the tests hold them
-//! to 1e-9 mm on random poses). Beyond the paper: a speed device only.
+//! to 1e-9 mm on random poses). A joint whose origin does not rotate and whose axis is a
+//! coordinate axis (most URDF joints; the first carries the robot's placement in the cell) turns
+//! two columns of the pose instead (`turn`, the columns named at compile time). A caller that keeps link 1's pose per value of joint 1
+//! ([`SinCosChain::pose1`]) places the rest from it ([`SinCosChain::pose6_from1`]): the same
+//! steps, the same pose to the bit. Beyond the paper: a speed device only.
 
 use super::Robot;
 use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3};
@@ -18,6 +22,19 @@ type M3 = [[f64; 3]; 3];
 #[inline(always)]
 fn rows(m: &Matrix3<f64>) -> M3 {
     std::array::from_fn(|r| std::array::from_fn(|c| m[(r, c)]))
+}
+
+/// `p` with columns `A` and `B` turned by the angle of sine `s` and cosine `c`: `p Rot(e_k,
+/// q)` for the axis `e_k` that completes `A`, `B` to a right-handed cycle.
+#[inline(always)]
+fn turn<const A: usize, const B: usize>(p: &M3, s: f64, c: f64) -> M3 {
+    let mut r = *p;
+    for row in &mut r {
+        let (pa, pb) = (row[A], row[B]);
+        row[A] = c * pa + s * pb;
+        row[B] = c * pb - s * pa;
+    }
+    r
 }
 
 /// One joint of the chain: `A`, `A K`, `A K^2` and the origin's translation (module doc).
@@ -100,15 +117,14 @@ impl SinCosChain {
             pose.t[r] + p[r][0] * j.t[0] + p[r][1] * j.t[1] + p[r][2] * j.t[2]
         });
         if let Some((k, sign)) = j.aligned {
-            // pose * Rot(sign e_k, q): columns a = k+1, b = k+2 turn, column k stays.
-            let (a, b) = ((k + 1) % 3, (k + 2) % 3);
+            // pose * Rot(sign e_k, q): columns a = k+1, b = k+2 turn, column k stays (the
+            // columns named at compile time, so the pose stays in registers).
             let (s, c) = (sign * sc.0, sc.1);
-            let mut r = *p;
-            for row in &mut r {
-                let (pa, pb) = (row[a], row[b]);
-                row[a] = c * pa + s * pb;
-                row[b] = c * pb - s * pa;
-            }
+            let r = match k {
+                0 => turn::<1, 2>(p, s, c),
+                1 => turn::<2, 0>(p, s, c),
+                _ => turn::<0, 1>(p, s, c),
+            };
             return Pose { r, t };
         }
         let (s, v) = (sc.0, 1.0 - sc.1);
@@ -140,6 +156,29 @@ impl SinCosChain {
     #[inline(always)]
     pub fn pose6(&self, arm: &[(f64, f64); 3], wrist: &[(f64, f64); 3]) -> Pose {
         let p3 = self.pose3(arm);
+        let p4 = self.step(&p3, 3, wrist[0]);
+        let p5 = self.step(&p4, 4, wrist[1]);
+        self.step(&p5, 5, wrist[2])
+    }
+
+    /// The pose of link 1 for the sine and cosine of URDF joint 1: the first step of
+    /// [`pose6`](Self::pose6), for callers that keep one per value of joint 1.
+    #[inline(always)]
+    pub fn pose1(&self, sc: (f64, f64)) -> Pose {
+        let first = Pose {
+            r: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+            t: [0.0; 3],
+        };
+        self.step(&first, 0, sc)
+    }
+
+    /// [`pose6`](Self::pose6) from link 1's pose `p1` ([`pose1`](Self::pose1) of the same
+    /// joint 1), the sines and cosines of joints 2 and 3 (`arm23`) and the wrist's: the same
+    /// steps, so the same pose to the bit.
+    #[inline(always)]
+    pub fn pose6_from1(&self, p1: &Pose, arm23: &[(f64, f64); 2], wrist: &[(f64, f64); 3]) -> Pose {
+        let p2 = self.step(p1, 1, arm23[0]);
+        let p3 = self.step(&p2, 2, arm23[1]);
         let p4 = self.step(&p3, 3, wrist[0]);
         let p5 = self.step(&p4, 4, wrist[1]);
         self.step(&p5, 5, wrist[2])
@@ -176,20 +215,23 @@ impl MilliDegSinCos {
     }
 
     /// `(sin, cos)` of `deg`.
+    ///
+    /// The nearest integer to the scaled angle by adding and taking off `1.5 * 2^52` (ties to
+    /// even, unlike `round`; a tie is half a lattice step off the lattice and gets `sin_cos`
+    /// either way), and the whole degrees and thousandths counted from the table's first
+    /// degree, so both are divisions of a non-negative integer by a constant.
     #[inline]
     pub fn get(&self, deg: f64) -> (f64, f64) {
+        const NEAREST: f64 = 6_755_399_441_055_744.0; // 1.5 * 2^52
         let scaled = deg * 1000.0;
-        let m = scaled.round();
+        let m = (scaled + NEAREST) - NEAREST;
         if (scaled - m).abs() <= 1e-6 && m.abs() < 1e11 {
-            let m = m as i64;
-            let (d, f) = (m.div_euclid(1000), m.rem_euclid(1000));
-            if let (Some(&(sa, ca)), Some(&(sb, cb))) = (
-                usize::try_from(d - self.lo_deg)
-                    .ok()
-                    .and_then(|i| self.whole.get(i)),
-                self.milli.get(f as usize),
-            ) {
-                return (sa * cb + ca * sb, ca * cb - sa * sb);
+            // `m` is an integer below 1e11 in magnitude: exact as an i64.
+            if let Ok(u) = u64::try_from(m as i64 - self.lo_deg * 1000) {
+                let (d, f) = ((u / 1000) as usize, (u % 1000) as usize);
+                if let (Some(&(sa, ca)), Some(&(sb, cb))) = (self.whole.get(d), self.milli.get(f)) {
+                    return (sa * cb + ca * sb, ca * cb - sa * sb);
+                }
             }
         }
         deg.to_radians().sin_cos()
@@ -268,6 +310,13 @@ mod tests {
             let wrist = [sc(axes[3]), sc(axes[4]), sc(axes[5])];
             let l3 = chain.pose3(&arm);
             let l6 = chain.pose6(&arm, &wrist);
+            // From link 2's pose: the same pose to the bit.
+            let from1 = chain.pose6_from1(&chain.pose1(arm[0]), &[arm[1], arm[2]], &wrist);
+            assert_eq!(
+                format!("{from1:?}"),
+                format!("{l6:?}"),
+                "pose6_from1 at {axes:?}"
+            );
             let probe = [[0.0, 0.0, 0.0], [120.0, -40.0, 300.0]];
             let pose = chain.pose6(&arm, &wrist);
             for p in &probe {
