@@ -656,10 +656,15 @@ impl CollisionModel {
     }
 
     /// Link 1's pose (cell frame) from the sine and cosine of controller axis 1, for
-    /// [`tool_look_link1`](Self::tool_look_link1) (`None` without a tool).
+    /// [`tool_look_link1`](Self::tool_look_link1) (`None` without a tool). Axis 1 goes through
+    /// the controller's coupling as the looks' axes do (`Robot::urdf_arm_sincos`; it couples
+    /// axis 3 only, so this is axis 1's own sine and cosine, but the rule lives in one place).
     pub fn tool_link1(&self, axis1_sincos: (f64, f64)) -> Option<Pose> {
         let look = self.look.as_ref()?;
-        Some(look.chain.pose1(axis1_sincos))
+        let [urdf1, _, _] = self
+            .robot
+            .urdf_arm_sincos(&[axis1_sincos, (0.0, 1.0), (0.0, 1.0)]);
+        Some(look.chain.pose1(urdf1))
     }
 
     /// [`flange_sincos`](Self::flange_sincos) as an isometry (for tests).

@@ -858,3 +858,101 @@ fn shapes_called_far_are_clear_and_looks_from_link_1_are_the_looks() {
         );
     }
 }
+
+/// A tool of 10 shapes (more than the balls' pass marks, and not a multiple of its groups of
+/// three): every shape the pass calls far is farther than its ball's radius plus the clearance
+/// from every box on the flange `link_poses` places; shapes past the pass's first
+/// [`FAR_SHAPES`] have no mark (they keep the exact test's own ball filter); every
+/// marked shape is called far somewhere (a mis-indexed mark shows as a near shape called far);
+/// and the look answers as the exact test on `link_poses`, and as the exact test without the
+/// far marks where the balls left the answer to it.
+#[test]
+fn a_tool_of_many_shapes_marks_only_far_shapes_and_answers_as_the_exact_test() {
+    use crate::plan::cspace::Grid;
+    use crate::plan::leg::WristSchedule;
+    let mut tool = torch();
+    tool.shapes = (0..10)
+        .map(|k| {
+            let z = 30.0 * k as f64;
+            let x = if k % 2 == 0 { 40.0 } else { -20.0 } * k as f64;
+            let geometry = match k % 3 {
+                0 => ToolGeometry::Sphere {
+                    centre_mm: [x, 0.0, z],
+                    radius_mm: 10.0 + k as f64,
+                },
+                1 => ToolGeometry::Box {
+                    min_mm: [x - 10.0, -10.0, z],
+                    max_mm: [x + 10.0, 10.0, z + 30.0],
+                },
+                _ => ToolGeometry::Cylinder {
+                    from_mm: [0.0, 0.0, z],
+                    to_mm: [x, 5.0, z + 40.0],
+                    radius_mm: 8.0,
+                },
+            };
+            shape(&format!("s{k}"), geometry)
+        })
+        .collect();
+    let g = Grid::over([[-90.0, 90.0], [-60.0, 70.0], [-60.0, 70.0]], 5.0);
+    let mut called_far = [0usize; FAR_SHAPES];
+    let mut by_exact = 0;
+    for clearance in [0.0, 10.0, 60.0] {
+        let m = CollisionModel::new(
+            &Robot::irb1400(),
+            TRUNK_PLACEMENT,
+            trunk(),
+            clearance,
+            Some(&tool),
+        );
+        let (shapes, c) = (&m.tool.as_ref().expect("a tool").shapes, m.clearance_mm());
+        assert_eq!(shapes.len(), 10);
+        for (from, to) in [
+            (
+                [-60.0, -10.0, 0.0, -30.0, -60.0, 20.0],
+                [60.0, 40.0, 40.0, 120.0, 70.0, 200.0],
+            ),
+            (
+                [-3.0, 10.0, 20.0, -150.0, -110.0, -300.0],
+                [3.0, 10.0, 20.0, 150.0, 110.0, 300.0],
+            ),
+        ] {
+            let schedule = WristSchedule::new(&from, &to);
+            for i in 0..g.len() {
+                let six = schedule.six(&g.axes_deg(g.node(i)));
+                let sc = [0, 1, 2].map(|k| six[k].to_radians().sin_cos());
+                let look = m.tool_look_sincos(&six, &sc);
+                assert_eq!(look.0, m.tool_is_free(&six), "the look at {six:?}");
+                if look.1 == 0.0 {
+                    by_exact += 1;
+                    let flange = m.flange_sincos_for_test(&six, &sc, None).expect("a tool");
+                    let unmarked = m.tool_is_free_at::<true>(&flange, &[]);
+                    assert_eq!(
+                        look.0, unmarked,
+                        "the far marks changed the answer at {six:?}"
+                    );
+                }
+                let flange = m.flange_pose_for_test(&six);
+                let far = m.far_shapes_for_test(&six, &sc);
+                for (k, s) in shapes.iter().enumerate().take(FAR_SHAPES) {
+                    if !far[k] {
+                        continue;
+                    }
+                    called_far[k] += 1;
+                    let (centre, reach) = (flange * s.ball.0, s.ball.1 + c);
+                    for o in m.obstacles() {
+                        assert!(
+                            distance_sq_point_aabb(&centre, &o.aabb) > reach * reach,
+                            "'{}' called far but near '{}' at {six:?}",
+                            s.name,
+                            o.name
+                        );
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        called_far.iter().all(|&n| n > 100) && by_exact > 1000,
+        "shapes called far {called_far:?}, {by_exact} looks left to the exact test"
+    );
+}

@@ -158,10 +158,12 @@ impl ToolMemo {
                 .collect()
         });
         let model = check.model();
+        // Every value's pose, or none at all (no tool): never a table shorter than axis 1's.
         let link1 = arm_sincos[0]
             .iter()
-            .filter_map(|&sc| model.tool_link1(sc))
-            .collect();
+            .map(|&sc| model.tool_link1(sc))
+            .collect::<Option<Vec<_>>>()
+            .unwrap_or_default();
         ToolMemo {
             answers: (0..n).map(|_| AtomicU8::new(0)).collect(),
             spread: OnceLock::new(),

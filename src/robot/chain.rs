@@ -9,9 +9,10 @@
 //! poses agree with `link_poses` to rounding (about 1e-12 mm at a metre; the tests hold them
 //! to 1e-9 mm on random poses). A joint whose origin does not rotate and whose axis is a
 //! coordinate axis (most URDF joints; the first carries the robot's placement in the cell) turns
-//! two columns of the pose instead (`turn`, the columns named at compile time). A caller that keeps link 1's pose per value of joint 1
-//! ([`SinCosChain::pose1`]) places the rest from it ([`SinCosChain::pose6_from1`]): the same
-//! steps, the same pose to the bit. Beyond the paper: a speed device only.
+//! two columns of the pose instead (`turn`, the columns named at compile time). A caller keeps
+//! link 1's pose per value of joint 1 ([`SinCosChain::pose1`]) and places the rest from it
+//! ([`SinCosChain::pose6_from1`]); the tests hold that to the whole chain from the base, step by
+//! step (`pose6`), to the bit. Beyond the paper: a speed device only.
 
 use super::Robot;
 use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3};
@@ -139,8 +140,8 @@ impl SinCosChain {
         }
     }
 
-    /// The pose of link 3 for the sines and cosines of URDF joints 1..3.
-    #[inline(always)]
+    /// The pose of link 3 for the sines and cosines of URDF joints 1..3 (for tests).
+    #[cfg(test)]
     fn pose3(&self, sc: &[(f64, f64); 3]) -> Pose {
         let first = Pose {
             r: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
@@ -152,8 +153,9 @@ impl SinCosChain {
     }
 
     /// The pose of link 6 (the flange's link) for the sines and cosines of URDF joints 1..3
-    /// (`arm`) and 4..6 (`wrist`).
-    #[inline(always)]
+    /// (`arm`) and 4..6 (`wrist`), every step from the base (for tests: the looks use
+    /// [`pose6_from1`](Self::pose6_from1)).
+    #[cfg(test)]
     pub fn pose6(&self, arm: &[(f64, f64); 3], wrist: &[(f64, f64); 3]) -> Pose {
         let p3 = self.pose3(arm);
         let p4 = self.step(&p3, 3, wrist[0]);
@@ -310,7 +312,7 @@ mod tests {
             let wrist = [sc(axes[3]), sc(axes[4]), sc(axes[5])];
             let l3 = chain.pose3(&arm);
             let l6 = chain.pose6(&arm, &wrist);
-            // From link 2's pose: the same pose to the bit.
+            // From link 1's pose: the same pose to the bit.
             let from1 = chain.pose6_from1(&chain.pose1(arm[0]), &[arm[1], arm[2]], &wrist);
             assert_eq!(
                 format!("{from1:?}"),
