@@ -183,7 +183,10 @@ fn bench_tool(c: &mut Criterion) {
                 .map(|(p, sc)| {
                     let wrist = [3, 4, 5].map(|k| p[k].to_radians().sin_cos());
                     let arm = robot.urdf_arm_sincos(black_box(sc));
-                    chain.pose6(&arm, &wrist).apply(&[0.0; 3])[0]
+                    let link1 = chain.pose1(arm[0]);
+                    chain
+                        .pose6_from1(&link1, &[arm[1], arm[2]], &wrist)
+                        .apply(&[0.0; 3])[0]
                 })
                 .sum::<f64>()
         })
