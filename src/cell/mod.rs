@@ -56,6 +56,14 @@ pub enum Base {
 /// How far a quaternion's norm may be off 1 before it is refused (issue 9's contract).
 pub const QUATERNION_NORM_TOL: f64 = 1e-3;
 
+/// The largest magnitude of any number a cell gives (positions, box corners, shapes, frames,
+/// the cog and base in mm, the clearance, the mass in kg, the yaw and joint values in deg):
+/// 1 km in mm. Far beyond any work cell, and small enough that every value the module writes
+/// (tooldata, wobjdata, robtargets) is a RAPID `num` literal of a few digits and the geometry
+/// keeps its precision; 1e300 in a `cog` would otherwise be written as 301 digits, which no
+/// controller loads.
+pub const MAX_MAGNITUDE: f64 = 1e6;
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct RobotSpec {
     /// Resolved against the cell file's directory.
@@ -359,7 +367,8 @@ pub fn check_grid(g: f64) -> Result<f64, String> {
         Ok(g)
     } else {
         Err(format!(
-            "grid spacing {g} deg is outside {} .. {} deg",
+            "grid spacing {} deg is outside {} .. {} deg",
+            crate::excerpt::number(g),
             defaults::MIN_GRID_DEG,
             defaults::MAX_GRID_DEG
         ))

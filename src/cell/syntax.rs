@@ -173,6 +173,31 @@ fn describe(e: &Error, text: &Text) -> Said {
             "a cell file is a mapping of keys (`module: ...`, `robot: ...`, `points: ...`)".into(),
             Some(KEYS_HELP.into()),
         ),
+        Error::Unexpected {
+            expected: "sequence start",
+            ..
+        } => said(
+            format!("expected a list here, found {}", found_at(text, loc)),
+            Some("a list is `[a, b, c]` on one line, or one `- item` per line indented under its key".into()),
+        ),
+        Error::Unexpected {
+            expected: "mapping start",
+            ..
+        } => said(
+            format!("expected a mapping here, found {}", found_at(text, loc)),
+            Some("a mapping is `key: value` lines indented under its key, or `{ key: value, ... }` on one line".into()),
+        ),
+        Error::Unexpected {
+            expected: "string scalar",
+            ..
+        } => said(
+            format!("expected a single value here, found {}", found_at(text, loc)),
+            Some("a number or a name stands here, not a list or a mapping; is a bracket misplaced?".into()),
+        ),
+        Error::NullIntoString { .. } => said(
+            "expected a text value here, found nothing".into(),
+            Some("write the value after the key's `: ` (a name such as `P1`); `~` and `null` mean no value".into()),
+        ),
         Error::DuplicateMappingKey { key, .. } => duplicate_key(key.as_deref(), loc, text),
         Error::SerdeUnknownField {
             field, expected, ..
@@ -599,6 +624,30 @@ fn scalar_at<'a>(text: &Text<'a>, loc: Loc) -> Option<&'a str> {
     let end = rest.find([',', ']', '}', '#']).unwrap_or(rest.len());
     let s = rest[..end].trim();
     (!s.is_empty()).then_some(s)
+}
+
+/// What stands at `loc` where the reader wanted another kind of node, for a message: nothing
+/// (a key without a value: the reader points at its `:`), a list, a mapping, or the scalar.
+fn found_at(text: &Text, loc: Loc) -> String {
+    let l = text.line(loc.line);
+    let start = loc
+        .column
+        .checked_sub(1)
+        .and_then(|c| l.char_indices().nth(c as usize))
+        .map_or(l.len(), |(i, _)| i);
+    let rest = l[start..].strip_prefix(':').unwrap_or(&l[start..]).trim();
+    if rest.is_empty() || rest.starts_with('#') || rest == "~" || rest == "null" {
+        "nothing (no value)".into()
+    } else if rest.starts_with('[') || rest == "-" || rest.starts_with("- ") {
+        "a list".into()
+    } else if rest.starts_with('{') {
+        "a mapping".into()
+    } else {
+        match scalar_at(text, loc) {
+            Some(s) => format!("`{}`", excerpt::value(s)),
+            None => "another kind of value".into(),
+        }
+    }
 }
 
 /// The word before the `:` at `loc` (`joints` in `{ name: P1 joints: [...] }`).

@@ -365,7 +365,7 @@ fn via_zone_and_shortcut_are_read_and_refused_at_their_place() {
         ),
         (
             format!("{MINIMAL}motion:\n  via_zone: [z50]\n"),
-            "expected string",
+            "expected a single value here, found a list",
             9,
             13,
         ),

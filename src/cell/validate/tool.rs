@@ -3,7 +3,9 @@
 
 use super::super::raw::{RawShape, RawTool, RawWobj};
 use super::super::{defaults, CellError, Frame, Tool, ToolGeometry, ToolShape, Wobj};
-use super::values::{identifier, invalid, invalid_help, loc, mass, pose, position, triple};
+use super::values::{
+    bounded, identifier, invalid, invalid_help, loc, mass, pose, position, triple,
+};
 use crate::excerpt;
 use serde_saphyr::Spanned;
 
@@ -63,12 +65,17 @@ fn shape(s: &Spanned<RawShape>) -> Result<ToolShape, CellError> {
     let shown = excerpt::value(&name);
     let what = |key: &str| format!("tool shape '{shown}' {key}");
     let positive = |v: &Spanned<f64>, key: &str| {
-        if v.value.is_finite() && v.value > 0.0 {
+        bounded(v, &what(key), "a number > 0 (mm)")?;
+        if v.value > 0.0 {
             Ok(v.value)
         } else {
             Err(invalid(
                 loc(v),
-                format!("{} = {} must be a number > 0 (mm)", what(key), v.value),
+                format!(
+                    "{} = {} must be a number > 0 (mm)",
+                    what(key),
+                    excerpt::number(v.value)
+                ),
             ))
         }
     };
