@@ -11,6 +11,7 @@ use crate::output::cspace_svg::PictureError;
 use crate::output::preview::PreviewError;
 use crate::output::rapid::{RapidError, TemplateError};
 use crate::output::report::ReportError;
+use crate::place::locate::LocateError;
 use crate::place::PlaceError;
 use crate::plan::PlanError;
 use crate::robot::ik::IkError;
@@ -118,7 +119,9 @@ impl Error {
             Error::Place(PlaceError::Robtarget { .. }) => Some("a robtarget is the TCP pose [[x, y, z], [q1, q2, q3, q4]] in the work object's frame (mm, quaternion [w, x, y, z]) of the tool's TCP (tool.tframe); confdata [cf1, cf4, cf6, cfx] picks one of the arm's solutions, without it the one nearest the previous point is taken".into()),
             Error::Template(_) | Error::Rapid(RapidError::UserTemplate(_)) => Some("the template is minijinja (Jinja2) text rendered with strict undefined names: README's \"Your own module template\" lists every name it may use".into()),
             Error::Rapid(RapidError::OutOfRange { .. }) => Some("this is a bug in gen-rapid: an earlier stage let an out-of-range value through; please report it with the cell file".into()),
+            Error::Place(PlaceError::Locate { source: LocateError::PointOutOfReach { .. }, .. }) => Some("with `base: auto` the base stands on z = 0: move the point within the arm's reach of a base there, or give `base: [x, y, z]`".into()),
             Error::Place(PlaceError::Locate { .. }) => Some("`gen-rapid locate CELL --svg FILE` draws every point's reach region; move the points closer together or give `base: [x, y, z]`".into()),
+            Error::Write { path, .. } if path.as_os_str() != "<stdout>" => Some("the file's directory must exist and be writable, and the file must not be a directory; no file of the run is written unless all of them can be".into()),
             Error::Place(PlaceError::Ik { source, .. }) if matches!(**source, IkError::Unreachable { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `gen-rapid locate CELL` shows which base positions reach every point".into()),
             _ => None,
         }

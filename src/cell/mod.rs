@@ -322,7 +322,9 @@ impl CellError {
     pub fn help(&self) -> Option<&str> {
         match self {
             CellError::Syntax { help, .. } | CellError::Invalid { help, .. } => help.as_deref(),
-            CellError::Read { .. } => None,
+            CellError::Read { .. } => Some(
+                "CELL is the path of a cell file (YAML text); `gen-rapid --help` shows a minimal cell",
+            ),
         }
     }
 }
