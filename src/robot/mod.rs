@@ -537,9 +537,63 @@ mod tests {
             .join("\n");
         let err = urdf::robot_from_urdf(Path::new("x.urdf"), &bare, None).unwrap_err();
         assert!(
-            err.to_string().contains("no <collision> cylinders"),
+            err.to_string().contains("link 'link_1' (moved by joint 1, 'joint_1') carries no <collision> cylinder"),
             "{err}"
         );
+        // One link without: before, the other two cylinders were enough, and the upper arm
+        // went unchecked.
+        let start = text.find(r#"<collision name="upper_arm">"#).expect("upper arm");
+        let end = start + text[start..].find("</collision>").expect("end") + "</collision>".len();
+        let one_bare = format!("{}{}", &text[..start], &text[end..]);
+        let err = urdf::robot_from_urdf(Path::new("x.urdf"), &one_bare, None).unwrap_err();
+        assert!(
+            err.to_string().contains("link 'link_2' (moved by joint 2, 'joint_2') carries no <collision> cylinder"),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn a_urdf_of_another_shape_is_refused_with_its_fault() {
+        let text = include_str!("../../robots/irb1400.urdf");
+        let refused = |urdf: String, needle: &str| {
+            let err = urdf::robot_from_urdf(Path::new("x.urdf"), &urdf, None).unwrap_err();
+            assert!(err.to_string().contains(needle), "{needle}: {err}");
+        };
+        // A limit of 1e300 rad: before, the six-axis IK listed every turn of the axis within
+        // it and panicked (capacity overflow).
+        refused(
+            text.replace(
+                r#"lower="-2.9670597284" upper="2.9670597284""#,
+                r#"lower="-1e300" upper="1e300""#,
+            ),
+            "joint 'joint_1' <limit>: the range -5.729577951308233e301 .. 5.729577951308233e301 deg reaches beyond -720 .. 720 deg",
+        );
+        // NaN and huge origins: before, an IK message about the arm's shape.
+        refused(
+            text.replace(r#"<origin xyz="0.150 0 0.475""#, r#"<origin xyz="NaN 0 0.475""#),
+            "joint 'joint_2': its <origin> must hold finite numbers",
+        );
+        refused(
+            text.replace(r#"<origin xyz="0.150 0 0.475""#, r#"<origin xyz="1e300 0 0.475""#),
+            "joint 'joint_2': its <origin> xyz 1e300 m is beyond 1000 m",
+        );
+        refused(
+            text.replace(r#"<cylinder radius="0.15""#, r#"<cylinder radius="1e300""#),
+            "link 'link_2': cylinder radius and length must be at most 1000 m",
+        );
+        // A seventh revolute joint after joint 6: before, silently left out.
+        refused(
+            text.replace(
+                "</robot>",
+                r#"<link name="link_7"/><joint name="joint_7" type="revolute"><parent link="tool0"/><child link="link_7"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="0" velocity="1"/></joint></robot>"#,
+            ),
+            "joint 'joint_7' is a 7th revolute joint in the chain after joint 6 ('joint_6')",
+        );
+        // A controller file with an axis range of 1e300 deg: the same bound.
+        let ctrl = include_str!("../../robots/irb1400.controller.yaml")
+            .replace("{ min: -170, max: 170,", "{ min: -1e300, max: 170,");
+        let err = controller::parse(&ctrl).unwrap_err();
+        assert!(err.contains("axis 1: the range -1e300 .. 170 deg reaches beyond"), "{err}");
     }
 
     #[test]
