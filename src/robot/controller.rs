@@ -101,6 +101,24 @@ pub fn range_fault(lo: f64, hi: f64) -> Option<String> {
     None
 }
 
+/// The axis speeds gen-rapid takes (deg/s): from a crawl to far beyond any arm (an IRB 1400's
+/// axes turn 110 .. 280 deg/s). Outside it (a typo, `1e-300`), the time estimate would write
+/// hundreds of digits into the module header.
+pub const AXIS_SPEED_DEG_S: [f64; 2] = [0.1, 10_000.0];
+/// The axis accelerations gen-rapid takes (deg/s^2), for the same reason.
+pub const AXIS_ACCELERATION_DEG_S2: [f64; 2] = [0.1, 1_000_000.0];
+
+/// Why `v` cannot be an axis speed or acceleration (`what`, `unit`), if it cannot.
+pub fn rate_fault(v: f64, [lo, hi]: [f64; 2], what: &str, unit: &str) -> Option<String> {
+    // Written so that NaN fails too.
+    (!(lo..=hi).contains(&v)).then(|| {
+        format!(
+            "{what} {} {unit} is outside {lo} .. {hi} {unit}",
+            crate::excerpt::number(v)
+        )
+    })
+}
+
 /// `robots/irb1400.urdf` -> `robots/irb1400.controller.yaml`.
 pub fn path_beside(urdf_path: &Path) -> PathBuf {
     urdf_path.with_extension("controller.yaml")
@@ -128,9 +146,16 @@ pub fn parse(text: &str) -> Result<Controller, String> {
         if !(a.speed_deg_s.is_finite() && a.speed_deg_s > 0.0) {
             return Err(format!("axis {}: speed must be positive", i + 1));
         }
+        if let Some(fault) = rate_fault(a.speed_deg_s, AXIS_SPEED_DEG_S, "speed", "deg/s") {
+            return Err(format!("axis {}: {fault}", i + 1));
+        }
         if let Some(acc) = a.acceleration_deg_s2 {
             if !(acc.is_finite() && acc > 0.0) {
                 return Err(format!("axis {}: acceleration must be positive", i + 1));
+            }
+            let fault = rate_fault(acc, AXIS_ACCELERATION_DEG_S2, "acceleration", "deg/s^2");
+            if let Some(fault) = fault {
+                return Err(format!("axis {}: {fault}", i + 1));
             }
         }
     }

@@ -594,6 +594,20 @@ mod tests {
             .replace("{ min: -170, max: 170,", "{ min: -1e300, max: 170,");
         let err = controller::parse(&ctrl).unwrap_err();
         assert!(err.contains("axis 1: the range -1e300 .. 170 deg reaches beyond"), "{err}");
+        // Speeds and accelerations of 1e-300: before, accepted, and the header's estimated time
+        // written in over 300 digits.
+        let ctrl = include_str!("../../robots/irb1400.controller.yaml");
+        for (from, to, needle) in [
+            ("speed: 110,", "speed: 1e-300,", "axis 1: speed 1e-300 deg/s is outside 0.1 .. 10000 deg/s"),
+            ("acceleration: 515.625", "acceleration: 1e-300", "axis 1: acceleration 1e-300 deg/s^2 is outside 0.1 .. 1000000 deg/s^2"),
+        ] {
+            let err = controller::parse(&ctrl.replacen(from, to, 1)).unwrap_err();
+            assert!(err.contains(needle), "{err}");
+        }
+        refused(
+            text.replacen(r#"velocity="1.9198621772""#, r#"velocity="1e-300""#, 1),
+            "joint 'joint_1': <limit velocity> 5.729577951308232e-299 deg/s is outside 0.1 .. 10000 deg/s",
+        );
     }
 
     #[test]

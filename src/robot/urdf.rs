@@ -265,6 +265,16 @@ fn serial_controller(joints: &[&urdf_rs::Joint]) -> Result<Controller, String> {
                 j.name
             ));
         }
+        let speed = j.limit.velocity.to_degrees();
+        let fault = controller::rate_fault(
+            speed,
+            controller::AXIS_SPEED_DEG_S,
+            "<limit velocity>",
+            "deg/s",
+        );
+        if let Some(fault) = fault {
+            return Err(format!("joint '{}': {fault}", j.name));
+        }
         *a = AxisSpec {
             min_deg: lo,
             max_deg: hi,
