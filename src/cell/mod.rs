@@ -331,7 +331,7 @@ impl CellError {
 
 /// Reads a cell file's text (the load stage's one read of it): [`text_of`] its bytes.
 pub fn read(path: &Path) -> Result<String, CellError> {
-    let bytes = std::fs::read(path).map_err(|source| CellError::Read {
+    let bytes = crate::input::read_bytes(path).map_err(|source| CellError::Read {
         path: path.to_path_buf(),
         source,
     })?;

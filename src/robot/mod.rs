@@ -134,14 +134,14 @@ impl Robot {
     /// one beside the URDF (`<stem>.controller.yaml`) if there is one. Without a controller file
     /// the robot is a serial arm with the URDF's limits (`controller.source` is `None`).
     pub fn load(urdf_path: &Path, controller: Option<&Path>) -> Result<Robot, RobotError> {
-        let text = std::fs::read_to_string(urdf_path).map_err(|source| RobotError::ReadUrdf {
+        let text = crate::input::read_text(urdf_path).map_err(|source| RobotError::ReadUrdf {
             path: urdf_path.to_path_buf(),
             source,
         })?;
         let controller_path = controller
             .map(Path::to_path_buf)
             .unwrap_or_else(|| controller::path_beside(urdf_path));
-        let controller_text = match std::fs::read_to_string(&controller_path) {
+        let controller_text = match crate::input::read_text(&controller_path) {
             Ok(t) => Some(t),
             Err(e) if e.kind() == std::io::ErrorKind::NotFound && controller.is_none() => None,
             Err(source) => {
