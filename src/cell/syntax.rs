@@ -19,6 +19,7 @@
 
 use super::{CellError, Loc};
 use crate::excerpt;
+use serde_saphyr::budget::BudgetBreach;
 use serde_saphyr::granit_parser::ErrorKind;
 use serde_saphyr::{DefaultMessageFormatter, Error, ExternalMessageSource, MessageFormatter};
 
@@ -247,6 +248,15 @@ fn describe(e: &Error, text: &Text) -> Said {
             ),
             _ => said(reader_text(e), None),
         },
+        Error::Budget {
+            breach:
+                BudgetBreach::AliasAnchorRatio { aliases, .. } | BudgetBreach::Aliases { aliases },
+            ..
+        } => Said::new(
+            first_alias(text).unwrap_or(loc),
+            format!("the cell file repeats its anchors too often ({aliases} aliases `*name`)"),
+            Some("write the repeated values out (or give them anchors of their own); the YAML reader bounds how far aliases may expand a file".into()),
+        ),
         Error::Budget { .. } => said(
             "the cell file is too large or too deeply nested to be a cell".into(),
             Some(format!("the YAML reader's limit: {}", reader_text(e))),
@@ -624,6 +634,30 @@ fn scalar_at<'a>(text: &Text<'a>, loc: Loc) -> Option<&'a str> {
     let end = rest.find([',', ']', '}', '#']).unwrap_or(rest.len());
     let s = rest[..end].trim();
     (!s.is_empty()).then_some(s)
+}
+
+/// Where the first alias (`*name`) of the text is, if the lines show one: a `*` where a node
+/// starts (after `: `, `- `, `[`, `{` or `,`), then a name character.
+fn first_alias(text: &Text) -> Option<Loc> {
+    text.lines.iter().enumerate().find_map(|(i, l)| {
+        let chars: Vec<char> = l.chars().collect();
+        let content_end = chars
+            .iter()
+            .enumerate()
+            .find(|(k, c)| **c == '#' && (*k == 0 || chars[k - 1] == ' '))
+            .map_or(chars.len(), |(k, _)| k);
+        (0..content_end).find_map(|k| {
+            let before = chars[..k].iter().rev().find(|c| **c != ' ');
+            let starts_node = matches!(before, None | Some(':' | '-' | '[' | '{' | ','));
+            let named = chars
+                .get(k + 1)
+                .is_some_and(|c| c.is_alphanumeric() || *c == '_');
+            (chars[k] == '*' && starts_node && named).then_some(Loc {
+                line: i as u64 + 1,
+                column: k as u64 + 1,
+            })
+        })
+    })
 }
 
 /// What stands at `loc` where the reader wanted another kind of node, for a message: nothing
