@@ -227,7 +227,7 @@ fn describe(e: &Error, text: &Text) -> Said {
                 excerpt::value(unexpected),
                 excerpt::value(expected)
             ),
-            None,
+            Some(FORM_HELP.into()),
         ),
         Error::SerdeInvalidValue {
             unexpected,
@@ -239,12 +239,16 @@ fn describe(e: &Error, text: &Text) -> Said {
                 excerpt::value(unexpected),
                 excerpt::value(expected)
             ),
-            None,
+            Some(FORM_HELP.into()),
         ),
         Error::InvalidScalar { ty, .. } => match scalar_at(text, loc) {
             Some(found) if ty.contains("float") || ty.contains("int") => said(
                 format!("expected a number, found `{}`", excerpt::value(found)),
-                None,
+                Some("write the number alone, without a unit or quotes (lengths in mm, angles in degrees, the mass in kg), e.g. `2.5`".into()),
+            ),
+            Some(found) if ty.contains("bool") => said(
+                format!("expected true or false, found `{}`", excerpt::value(found)),
+                Some("a switch such as planner.shortcut is `true` or `false`".into()),
             ),
             _ => said(reader_text(e), None),
         },
@@ -264,6 +268,9 @@ fn describe(e: &Error, text: &Text) -> Said {
         _ => said(reader_text(e), None),
     }
 }
+
+const FORM_HELP: &str =
+    "README.md, \"The cell file\" and \"For robot programmers\", shows the form of every key";
 
 const KEYS_HELP: &str = "a cell gives `module: Name`, `robot:` (with `urdf:` and `base:`) and `points:` (at least two), and may give `obstacles:`, `planner:`, `motion:`, `tool:` and `wobj:` (README.md, \"The cell file\")";
 

@@ -371,7 +371,7 @@ fn via_zone_and_shortcut_are_read_and_refused_at_their_place() {
         ),
         (
             format!("{MINIMAL}planner:\n  shortcut: maybe\n"),
-            "invalid boolean",
+            "expected true or false, found `maybe`",
             9,
             13,
         ),

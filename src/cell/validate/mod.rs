@@ -201,12 +201,13 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
     };
     if let Some(m) = &p.method {
         planner.method = Method::parse(&m.value).ok_or_else(|| {
-            invalid(
+            invalid_help(
                 loc(m),
                 format!(
                     "planner.method '{}' is not one of neighboring, depth-first, extensile",
                     excerpt::value(&m.value)
                 ),
+                "the paper's three searches: neighboring (4.1), depth-first (4.2), extensile (4.3, the default); `gen-rapid compare CELL` runs all three",
             )
         })?;
     }
