@@ -107,6 +107,14 @@ impl Error {
                 ..
             } => Some("a finer planner.grid or a smaller planner.clearance may open a passage; `gen-rapid --svg FILE` draws the blocked nodes".into()),
             Error::Plan {
+                source: PlanError::SearchFailed { .. },
+                ..
+            } => Some("the extensile search (the default) and the neighboring search step diagonally too; `gen-rapid compare CELL` runs all three".into()),
+            Error::Plan {
+                source: PlanError::NoJoin { .. },
+                ..
+            } => Some("move the point away from the obstacles, or try a smaller planner.clearance or another planner.grid; `gen-rapid --svg FILE` draws the blocked nodes".into()),
+            Error::Plan {
                 source: PlanError::WristTurn { .. },
                 ..
             } => Some("only axes 4..6 move between these two points; add a point between them whose axes 1..3 take the tool away from the obstacle, or give the second point a wrist the tool can turn to".into()),

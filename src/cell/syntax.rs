@@ -203,7 +203,9 @@ fn describe(e: &Error, text: &Text) -> Said {
         Error::SerdeUnknownField {
             field, expected, ..
         } => {
-            let help = suggestion(field, expected).map(|k| format!("did you mean `{k}`?"));
+            let help = suggestion(field, expected)
+                .map(|k| format!("did you mean `{k}`?"))
+                .or_else(|| Some("remove the key, or check its spelling and indentation (README.md, \"The cell file\", lists every key)".into()));
             said(
                 format!(
                     "unknown field `{}`, expected one of {}",

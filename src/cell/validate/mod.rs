@@ -150,12 +150,13 @@ fn obstacles(raw: &[Spanned<RawObstacle>]) -> Result<Vec<Obstacle>, CellError> {
             return Err(invalid(loc(&o.value.name), "an obstacle needs a name"));
         }
         if let Some(first) = obstacles.iter().find(|p| p.name == name) {
-            return Err(invalid(
+            return Err(invalid_help(
                 loc(&o.value.name),
                 format!(
                     "obstacle name '{shown}' is used twice (first at line {})",
                     first.loc.line
                 ),
+                "give every obstacle its own name: messages name the obstacle a link or a tool shape comes closest to",
             ));
         }
         let min_mm = triple(

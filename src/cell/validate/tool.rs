@@ -26,13 +26,14 @@ pub(super) fn tool(t: &Spanned<RawTool>) -> Result<Tool, CellError> {
     for s in &r.shapes {
         let shape = shape(s)?;
         if let Some(first) = shapes.iter().find(|p| p.name == shape.name) {
-            return Err(invalid(
+            return Err(invalid_help(
                 loc(&s.value.name),
                 format!(
                     "tool shape name '{}' is used twice (first at line {})",
                     excerpt::value(&shape.name),
                     first.loc.line
                 ),
+                "give every tool shape its own name: messages and the header name the shape that comes closest",
             ));
         }
         shapes.push(shape);
@@ -69,13 +70,14 @@ fn shape(s: &Spanned<RawShape>) -> Result<ToolShape, CellError> {
         if v.value > 0.0 {
             Ok(v.value)
         } else {
-            Err(invalid(
+            Err(invalid_help(
                 loc(v),
                 format!(
                     "{} = {} must be a number > 0 (mm)",
                     what(key),
                     excerpt::number(v.value)
                 ),
+                "a tool shape has a volume: its radius in mm, more than 0; leave out a shape that has none",
             ))
         }
     };
@@ -86,9 +88,10 @@ fn shape(s: &Spanned<RawShape>) -> Result<ToolShape, CellError> {
             let to_mm = triple(&c.to, &what("cylinder.to"))?;
             let radius_mm = positive(&c.radius, "cylinder.radius")?;
             if from_mm == to_mm {
-                return Err(invalid(
+                return Err(invalid_help(
                     loc(&c.to),
                     format!("{}: from and to are the same point", what("cylinder")),
+                    "a cylinder runs from `from` to `to` (its axis, flange frame, mm); for a ball use `sphere: { centre: [x, y, z], radius: r }`",
                 ));
             }
             ToolGeometry::Cylinder {

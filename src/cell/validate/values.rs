@@ -74,9 +74,10 @@ fn too_large(loc: Loc, what: &str, x: f64) -> CellError {
 pub(super) fn triple(v: &Spanned<Vec<f64>>, what: &str) -> Result<[f64; 3], CellError> {
     finite(v, what)?;
     <[f64; 3]>::try_from(v.value.as_slice()).map_err(|_| {
-        invalid(
+        invalid_help(
             loc(v),
             format!("{what} must have 3 numbers, found {}", v.value.len()),
+            "write three numbers in brackets, `[x, y, z]` (mm; robot.wrist: axes 4, 5, 6 in deg)",
         )
     })
 }
