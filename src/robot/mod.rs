@@ -537,17 +537,23 @@ mod tests {
             .join("\n");
         let err = urdf::robot_from_urdf(Path::new("x.urdf"), &bare, None).unwrap_err();
         assert!(
-            err.to_string().contains("link 'link_1' (moved by joint 1, 'joint_1') carries no <collision> cylinder"),
+            err.to_string().contains(
+                "link 'link_1' (moved by joint 1, 'joint_1') carries no <collision> cylinder"
+            ),
             "{err}"
         );
         // One link without: before, the other two cylinders were enough, and the upper arm
         // went unchecked.
-        let start = text.find(r#"<collision name="upper_arm">"#).expect("upper arm");
+        let start = text
+            .find(r#"<collision name="upper_arm">"#)
+            .expect("upper arm");
         let end = start + text[start..].find("</collision>").expect("end") + "</collision>".len();
         let one_bare = format!("{}{}", &text[..start], &text[end..]);
         let err = urdf::robot_from_urdf(Path::new("x.urdf"), &one_bare, None).unwrap_err();
         assert!(
-            err.to_string().contains("link 'link_2' (moved by joint 2, 'joint_2') carries no <collision> cylinder"),
+            err.to_string().contains(
+                "link 'link_2' (moved by joint 2, 'joint_2') carries no <collision> cylinder"
+            ),
             "{err}"
         );
     }
@@ -570,11 +576,17 @@ mod tests {
         );
         // NaN and huge origins: before, an IK message about the arm's shape.
         refused(
-            text.replace(r#"<origin xyz="0.150 0 0.475""#, r#"<origin xyz="NaN 0 0.475""#),
+            text.replace(
+                r#"<origin xyz="0.150 0 0.475""#,
+                r#"<origin xyz="NaN 0 0.475""#,
+            ),
             "joint 'joint_2': its <origin> must hold finite numbers",
         );
         refused(
-            text.replace(r#"<origin xyz="0.150 0 0.475""#, r#"<origin xyz="1e300 0 0.475""#),
+            text.replace(
+                r#"<origin xyz="0.150 0 0.475""#,
+                r#"<origin xyz="1e300 0 0.475""#,
+            ),
             "joint 'joint_2': its <origin> xyz 1e300 m is beyond 1000 m",
         );
         refused(
@@ -593,13 +605,24 @@ mod tests {
         let ctrl = include_str!("../../robots/irb1400.controller.yaml")
             .replace("{ min: -170, max: 170,", "{ min: -1e300, max: 170,");
         let err = controller::parse(&ctrl).unwrap_err();
-        assert!(err.contains("axis 1: the range -1e300 .. 170 deg reaches beyond"), "{err}");
+        assert!(
+            err.contains("axis 1: the range -1e300 .. 170 deg reaches beyond"),
+            "{err}"
+        );
         // Speeds and accelerations of 1e-300: before, accepted, and the header's estimated time
         // written in over 300 digits.
         let ctrl = include_str!("../../robots/irb1400.controller.yaml");
         for (from, to, needle) in [
-            ("speed: 110,", "speed: 1e-300,", "axis 1: speed 1e-300 deg/s is outside 0.1 .. 10000 deg/s"),
-            ("acceleration: 515.625", "acceleration: 1e-300", "axis 1: acceleration 1e-300 deg/s^2 is outside 0.1 .. 1000000 deg/s^2"),
+            (
+                "speed: 110,",
+                "speed: 1e-300,",
+                "axis 1: speed 1e-300 deg/s is outside 0.1 .. 10000 deg/s",
+            ),
+            (
+                "acceleration: 515.625",
+                "acceleration: 1e-300",
+                "axis 1: acceleration 1e-300 deg/s^2 is outside 0.1 .. 1000000 deg/s^2",
+            ),
         ] {
             let err = controller::parse(&ctrl.replacen(from, to, 1)).unwrap_err();
             assert!(err.contains(needle), "{err}");

@@ -131,7 +131,8 @@ fn a_missing_cell_file_is_named() {
     assert!(d.stdout.is_empty());
     for e in [stderr(&o), stderr(&d)] {
         assert!(
-            e.lines().any(|l| l.starts_with("help: CELL is the path of a cell file")),
+            e.lines()
+                .any(|l| l.starts_with("help: CELL is the path of a cell file")),
             "{e}"
         );
     }
@@ -220,7 +221,10 @@ fn a_run_writes_all_its_files_or_none() {
     let (svg, report, html) = (p("route.svg"), p("run.json"), p("run.html"));
     // The module's FILE cannot be written (its directory is missing, or it is a directory):
     // before, the picture, page and report were in place already when the module failed.
-    for module in [p("missing/x.mod"), dir.path().to_str().expect("utf-8").into()] {
+    for module in [
+        p("missing/x.mod"),
+        dir.path().to_str().expect("utf-8").into(),
+    ] {
         let o = gen_rapid(&[
             "tests/ok/tool_wobj_robtargets.yaml",
             "--svg",
@@ -235,7 +239,11 @@ fn a_run_writes_all_its_files_or_none() {
         assert_eq!(o.status.code(), Some(4), "{}", stderr(&o));
         assert!(o.stdout.is_empty());
         assert!(stderr(&o).contains(&module), "{}", stderr(&o));
-        assert!(stderr(&o).contains("\nhelp: the file's directory must exist"), "{}", stderr(&o));
+        assert!(
+            stderr(&o).contains("\nhelp: the file's directory must exist"),
+            "{}",
+            stderr(&o)
+        );
         let left: Vec<_> = std::fs::read_dir(dir.path())
             .expect("dir")
             .map(|e| e.expect("entry").file_name())
@@ -287,7 +295,11 @@ fn an_output_naming_another_file_of_the_run_is_a_usage_error() {
             stderr(&o)
         );
     }
-    assert_eq!(std::fs::read_to_string(cell).expect("cell"), text, "the cell is kept");
+    assert_eq!(
+        std::fs::read_to_string(cell).expect("cell"),
+        text,
+        "the cell is kept"
+    );
     assert!(!Path::new(&out).exists());
 }
 

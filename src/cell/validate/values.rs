@@ -101,7 +101,10 @@ fn finer_than(v: f64, n: usize, loc: Loc, what: &str, help: String) -> Result<f6
         let s = if n == 1 { "" } else { "s" };
         return Err(invalid_help(
             loc,
-            format!("{what} = {} has more than {n} decimal{s}", excerpt::number(v)),
+            format!(
+                "{what} = {} has more than {n} decimal{s}",
+                excerpt::number(v)
+            ),
             help,
         ));
     }

@@ -713,7 +713,13 @@ fn a_huge_module_renders_within_the_fuel_and_a_runaway_template_is_stopped() {
     // 20 000 targets through the embedded template: the fuel is no limit for a real module.
     let mut p = small_program();
     p.targets = (0..20_000)
-        .map(|i| via(i / 1000, i % 1000 + 1, [(i % 100) as f64, 0.0, 0.0, 0.0, 30.0, 0.0]))
+        .map(|i| {
+            via(
+                i / 1000,
+                i % 1000 + 1,
+                [(i % 100) as f64, 0.0, 0.0, 0.0, 30.0, 0.0],
+            )
+        })
         .collect();
     p.header = header(p.targets.len() - 1);
     let text = render(&p).expect("renders");
