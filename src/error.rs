@@ -131,6 +131,12 @@ impl Error {
             Error::Place(PlaceError::Locate { .. }) => Some("`gen-rapid locate CELL --svg FILE` draws every point's reach region; move the points closer together or give `base: [x, y, z]`".into()),
             Error::Write { path, .. } if path.as_os_str() != "<stdout>" => Some("the file's directory must exist and be writable, and the file must not be a directory; no file of the run is written unless all of them can be".into()),
             Error::Place(PlaceError::Ik { source, .. }) if matches!(**source, IkError::Unreachable { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `gen-rapid locate CELL` shows which base positions reach every point".into()),
+            Error::Place(PlaceError::Ik { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `branch:` picks one of its four arm solutions (front or back, elbow up or down), else the one nearest the previous point is taken".into()),
+            Error::Place(PlaceError::Arm { .. } | PlaceError::SixAxis { .. }) => Some("gen-rapid's inverse kinematics needs a six-axis arm whose axis 2 is perpendicular to axis 1 and whose axes 4..6 meet in one point (a spherical wrist), as robots/irb1400.urdf".into()),
+            Error::Plan {
+                source: PlanError::Unsafe { .. },
+                ..
+            } => Some("this is a bug in gen-rapid: a move it planned could not be proven after rounding; please report it with the cell file (another planner.grid may avoid it)".into()),
             _ => None,
         }
     }

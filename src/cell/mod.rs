@@ -321,7 +321,10 @@ impl CellError {
 
     pub fn help(&self) -> Option<&str> {
         match self {
-            CellError::Syntax { help, .. } | CellError::Invalid { help, .. } => help.as_deref(),
+            CellError::Syntax { help, .. } | CellError::Invalid { help, .. } => Some(
+                help.as_deref()
+                    .unwrap_or("README.md, \"The cell file\", describes every key and the values it takes"),
+            ),
             CellError::Read { .. } => Some(
                 "CELL is the path of a cell file (YAML text); `gen-rapid --help` shows a minimal cell",
             ),

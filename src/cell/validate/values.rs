@@ -32,12 +32,16 @@ pub(super) fn invalid_help(
     }
 }
 
+/// The help line of a NaN or an infinity.
+const FINITE_HELP: &str = "write plain numbers: `.nan` and `.inf` are YAML's not-a-number and infinity, no length or angle";
+
 /// Every value of the list finite and within [`MAX_MAGNITUDE`].
 pub(super) fn finite(v: &Spanned<Vec<f64>>, what: &str) -> Result<(), CellError> {
     if !v.value.iter().all(|x| x.is_finite()) {
-        return Err(invalid(
+        return Err(invalid_help(
             loc(v),
             format!("{what}: every value must be a finite number"),
+            FINITE_HELP,
         ));
     }
     match v.value.iter().find(|x| x.abs() > MAX_MAGNITUDE) {
@@ -50,7 +54,11 @@ pub(super) fn finite(v: &Spanned<Vec<f64>>, what: &str) -> Result<(), CellError>
 /// message of a non-finite value (`a number > 0 (kg)`).
 pub(super) fn bounded(v: &Spanned<f64>, what: &str, rule: &str) -> Result<f64, CellError> {
     if !v.value.is_finite() {
-        return Err(invalid(loc(v), format!("{what} must be {rule}")));
+        return Err(invalid_help(
+            loc(v),
+            format!("{what} must be {rule}"),
+            FINITE_HELP,
+        ));
     }
     if v.value.abs() > MAX_MAGNITUDE {
         return Err(too_large(loc(v), what, v.value));
