@@ -11,6 +11,7 @@ use crate::output::cspace_svg::PictureError;
 use crate::output::preview::PreviewError;
 use crate::output::rapid::{RapidError, TemplateError};
 use crate::output::report::ReportError;
+use crate::place::locate::LocateError;
 use crate::place::PlaceError;
 use crate::plan::PlanError;
 use crate::robot::ik::IkError;
@@ -106,6 +107,14 @@ impl Error {
                 ..
             } => Some("a finer planner.grid or a smaller planner.clearance may open a passage; `gen-rapid --svg FILE` draws the blocked nodes".into()),
             Error::Plan {
+                source: PlanError::SearchFailed { .. },
+                ..
+            } => Some("the extensile search (the default) and the neighboring search step diagonally too; `gen-rapid compare CELL` runs all three".into()),
+            Error::Plan {
+                source: PlanError::NoJoin { .. },
+                ..
+            } => Some("move the point away from the obstacles, or try a smaller planner.clearance or another planner.grid; `gen-rapid --svg FILE` draws the blocked nodes".into()),
+            Error::Plan {
                 source: PlanError::WristTurn { .. },
                 ..
             } => Some("only axes 4..6 move between these two points; add a point between them whose axes 1..3 take the tool away from the obstacle, or give the second point a wrist the tool can turn to".into()),
@@ -118,8 +127,16 @@ impl Error {
             Error::Place(PlaceError::Robtarget { .. }) => Some("a robtarget is the TCP pose [[x, y, z], [q1, q2, q3, q4]] in the work object's frame (mm, quaternion [w, x, y, z]) of the tool's TCP (tool.tframe); confdata [cf1, cf4, cf6, cfx] picks one of the arm's solutions, without it the one nearest the previous point is taken".into()),
             Error::Template(_) | Error::Rapid(RapidError::UserTemplate(_)) => Some("the template is minijinja (Jinja2) text rendered with strict undefined names: README's \"Your own module template\" lists every name it may use".into()),
             Error::Rapid(RapidError::OutOfRange { .. }) => Some("this is a bug in gen-rapid: an earlier stage let an out-of-range value through; please report it with the cell file".into()),
+            Error::Place(PlaceError::Locate { source: LocateError::PointOutOfReach { .. }, .. }) => Some("with `base: auto` the base stands on z = 0: move the point within the arm's reach of a base there, or give `base: [x, y, z]`".into()),
             Error::Place(PlaceError::Locate { .. }) => Some("`gen-rapid locate CELL --svg FILE` draws every point's reach region; move the points closer together or give `base: [x, y, z]`".into()),
+            Error::Write { path, .. } if path.as_os_str() != "<stdout>" => Some("the file's directory must exist and be writable, and the file must not be a directory; no file of the run is written unless all of them can be".into()),
             Error::Place(PlaceError::Ik { source, .. }) if matches!(**source, IkError::Unreachable { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `gen-rapid locate CELL` shows which base positions reach every point".into()),
+            Error::Place(PlaceError::Ik { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `branch:` picks one of its four arm solutions (front or back, elbow up or down), else the one nearest the previous point is taken".into()),
+            Error::Place(PlaceError::Arm { .. } | PlaceError::SixAxis { .. }) => Some("gen-rapid's inverse kinematics needs a six-axis arm whose axis 2 is perpendicular to axis 1 and whose axes 4..6 meet in one point (a spherical wrist), as robots/irb1400.urdf".into()),
+            Error::Plan {
+                source: PlanError::Unsafe { .. },
+                ..
+            } => Some("this is a bug in gen-rapid: a move it planned could not be proven after rounding; please report it with the cell file (another planner.grid may avoid it)".into()),
             _ => None,
         }
     }

@@ -9,6 +9,8 @@
 //! - [`value`]: a value quoted in a message, at most [`MAX_VALUE_CHARS`] (its start and end
 //!   with `...` between).
 //! - [`message`]: the backstop for a whole message line, at most [`MAX_MESSAGE_CHARS`].
+//! - [`number`]: a number of the input quoted in a message: as written when short, else in
+//!   exponent form (`1e308`, not 309 digits; `1e-300`, not 302).
 //!
 //! With these, a rendered error stays under a few KB whatever the input. Columns are counted in
 //! characters (as the YAML parser counts them), 1-based.
@@ -137,9 +139,35 @@ pub fn message(s: &str) -> Cow<'_, str> {
     cut(s, MAX_MESSAGE_CHARS)
 }
 
+/// Longest number quoted as Rust writes it (`{}`); a longer one is written in exponent form.
+const MAX_NUMBER_CHARS: usize = 24;
+
+/// A number of the input quoted in a message: as Rust writes it (`30.125`, `-0.7`) when that is
+/// at most [`MAX_NUMBER_CHARS`] characters, else in exponent form (`1e308`, `1e-300`), so a
+/// huge or tiny value never floods a message.
+pub fn number(v: f64) -> String {
+    let plain = format!("{v}");
+    if plain.chars().count() <= MAX_NUMBER_CHARS {
+        plain
+    } else {
+        format!("{v:e}")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_number_is_quoted_short() {
+        assert_eq!(number(30.125), "30.125");
+        assert_eq!(number(-850.0), "-850");
+        assert_eq!(number(1e308), "1e308");
+        assert_eq!(number(1e-300), "1e-300");
+        assert_eq!(number(-1.5e25), "-1.5e25");
+        assert_eq!(number(f64::NAN), "NaN");
+        assert_eq!(number(f64::INFINITY), "inf");
+    }
 
     /// The character under the caret.
     fn under(w: &Window) -> char {

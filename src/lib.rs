@@ -10,6 +10,7 @@
 // Leaves, used by any stage.
 pub mod excerpt;
 pub mod geometry;
+pub mod input;
 pub mod names;
 pub mod parallel;
 pub mod precision;

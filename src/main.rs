@@ -1,12 +1,12 @@
 //! The `gen-rapid` command: parse the command line, run, print the error chain once, and turn
 //! the result into an exit status. All work happens in the library (`gen_rapid::cli`).
 
-use clap::{Args, Parser, Subcommand, ValueEnum};
+use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
 use gen_rapid::cli::compare::{compare, CompareOptions};
 use gen_rapid::cli::locate::{locate, LocateOptions};
 use gen_rapid::cli::run::{run, RunOptions};
 use gen_rapid::plan::Method;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 const EXAMPLES: &str = "\
@@ -183,8 +183,60 @@ fn parse_grid(s: &str) -> Result<f64, String> {
     gen_rapid::cell::check_grid(g)
 }
 
+/// The same file, by name or (where both exist) on disk.
+fn same_file(a: &Path, b: &Path) -> bool {
+    a == b
+        || matches!(
+            (std::path::absolute(a), std::path::absolute(b)),
+            (Ok(x), Ok(y)) if x == y
+        )
+        || matches!(
+            (std::fs::canonicalize(a), std::fs::canonicalize(b)),
+            (Ok(x), Ok(y)) if x == y
+        )
+}
+
+/// Refuses (exit 2) a run whose output files name the same file twice, or the cell file or the
+/// template it reads: one would overwrite the other (`--svg out --report out`, `-o cell.yaml`).
+fn check_outputs(args: &RunArgs) {
+    let cell = args.cell.as_deref();
+    let inputs = [("CELL", cell), ("--template", args.template.as_deref())];
+    let outputs = [
+        ("--output", args.output.as_deref()),
+        ("--svg", args.svg.as_deref()),
+        ("--html", args.html.as_deref()),
+        ("--report", args.report.as_deref()),
+    ];
+    let named = |list: &[(&'static str, Option<&Path>)]| -> Vec<(&'static str, PathBuf)> {
+        list.iter()
+            .filter_map(|(flag, p)| p.map(|p| (*flag, p.to_path_buf())))
+            .collect()
+    };
+    let (inputs, outputs) = (named(&inputs), named(&outputs));
+    for (i, (flag, path)) in outputs.iter().enumerate() {
+        let clash = outputs[..i]
+            .iter()
+            .chain(inputs.iter())
+            .find(|(_, other)| same_file(path, other));
+        if let Some((other, _)) = clash {
+            Cli::command()
+                .error(
+                    clap::error::ErrorKind::ArgumentConflict,
+                    format!(
+                        "{flag} {} names the same file as {other}; give each output its own file, apart from the files read",
+                        path.display()
+                    ),
+                )
+                .exit();
+        }
+    }
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    if cli.command.is_none() {
+        check_outputs(&cli.run);
+    }
     let quiet = cli.command.is_none() && cli.run.quiet;
     let result = match cli.command {
         None => run(&RunOptions {

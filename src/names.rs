@@ -107,6 +107,15 @@ pub const PREDEFINED_NAMES: &[&str] = &[
     "load0",
     "vmax",
     "fine",
+    // predefined data of the num type and the error and interrupt numbers ("num", "errnum",
+    // "intnum" in the RAPID reference: `CONST num pi := 3.1415926;` in BASE.SYS, EOF_BIN and
+    // EOF_NUM for ReadBin / ReadNum, END_OF_LIST, the `VAR errnum ERRNO`, `VAR intnum INTNO`)
+    "pi",
+    "EOF_BIN",
+    "EOF_NUM",
+    "END_OF_LIST",
+    "ERRNO",
+    "INTNO",
     // motion instructions
     "MoveAbsJ",
     "MoveJ",
@@ -403,6 +412,9 @@ mod tests {
             ("extjoint", "extjoint"),
             ("robjoint", "robjoint"),
             ("loaddata", "loaddata"),
+            ("PI", "pi"),
+            ("errno", "ERRNO"),
+            ("Eof_Bin", "EOF_BIN"),
         ] {
             assert_eq!(
                 check_identifier(name),

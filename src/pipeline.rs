@@ -167,7 +167,7 @@ pub fn load_template(path: &Path) -> Result<ModuleTemplate, Failure> {
         text: None,
         notes: Vec::new(),
     };
-    let source = std::fs::read_to_string(path).map_err(|source| {
+    let source = crate::input::read_text(path).map_err(|source| {
         fail(Error::Template(TemplateError::Read {
             path: path.to_path_buf(),
             source,

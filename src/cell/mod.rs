@@ -56,6 +56,14 @@ pub enum Base {
 /// How far a quaternion's norm may be off 1 before it is refused (issue 9's contract).
 pub const QUATERNION_NORM_TOL: f64 = 1e-3;
 
+/// The largest magnitude of any number a cell gives (positions, box corners, shapes, frames,
+/// the cog and base in mm, the clearance, the mass in kg, the yaw and joint values in deg):
+/// 1 km in mm. Far beyond any work cell, and small enough that every value the module writes
+/// (tooldata, wobjdata, robtargets) is a RAPID `num` literal of a few digits and the geometry
+/// keeps its precision; 1e300 in a `cog` would otherwise be written as 301 digits, which no
+/// controller loads.
+pub const MAX_MAGNITUDE: f64 = 1e6;
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct RobotSpec {
     /// Resolved against the cell file's directory.
@@ -313,15 +321,20 @@ impl CellError {
 
     pub fn help(&self) -> Option<&str> {
         match self {
-            CellError::Syntax { help, .. } | CellError::Invalid { help, .. } => help.as_deref(),
-            CellError::Read { .. } => None,
+            CellError::Syntax { help, .. } | CellError::Invalid { help, .. } => Some(
+                help.as_deref()
+                    .unwrap_or("README.md, \"The cell file\", describes every key and the values it takes"),
+            ),
+            CellError::Read { .. } => Some(
+                "CELL is the path of a cell file (YAML text); `gen-rapid --help` shows a minimal cell",
+            ),
         }
     }
 }
 
 /// Reads a cell file's text (the load stage's one read of it): [`text_of`] its bytes.
 pub fn read(path: &Path) -> Result<String, CellError> {
-    let bytes = std::fs::read(path).map_err(|source| CellError::Read {
+    let bytes = crate::input::read_bytes(path).map_err(|source| CellError::Read {
         path: path.to_path_buf(),
         source,
     })?;
@@ -359,7 +372,8 @@ pub fn check_grid(g: f64) -> Result<f64, String> {
         Ok(g)
     } else {
         Err(format!(
-            "grid spacing {g} deg is outside {} .. {} deg",
+            "grid spacing {} deg is outside {} .. {} deg",
+            crate::excerpt::number(g),
             defaults::MIN_GRID_DEG,
             defaults::MAX_GRID_DEG
         ))

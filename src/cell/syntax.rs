@@ -19,6 +19,7 @@
 
 use super::{CellError, Loc};
 use crate::excerpt;
+use serde_saphyr::budget::BudgetBreach;
 use serde_saphyr::granit_parser::ErrorKind;
 use serde_saphyr::{DefaultMessageFormatter, Error, ExternalMessageSource, MessageFormatter};
 
@@ -173,11 +174,38 @@ fn describe(e: &Error, text: &Text) -> Said {
             "a cell file is a mapping of keys (`module: ...`, `robot: ...`, `points: ...`)".into(),
             Some(KEYS_HELP.into()),
         ),
+        Error::Unexpected {
+            expected: "sequence start",
+            ..
+        } => said(
+            format!("expected a list here, found {}", found_at(text, loc)),
+            Some("a list is `[a, b, c]` on one line, or one `- item` per line indented under its key".into()),
+        ),
+        Error::Unexpected {
+            expected: "mapping start",
+            ..
+        } => said(
+            format!("expected a mapping here, found {}", found_at(text, loc)),
+            Some("a mapping is `key: value` lines indented under its key, or `{ key: value, ... }` on one line".into()),
+        ),
+        Error::Unexpected {
+            expected: "string scalar",
+            ..
+        } => said(
+            format!("expected a single value here, found {}", found_at(text, loc)),
+            Some("a number or a name stands here, not a list or a mapping; is a bracket misplaced?".into()),
+        ),
+        Error::NullIntoString { .. } => said(
+            "expected a text value here, found nothing".into(),
+            Some("write the value after the key's `: ` (a name such as `P1`); `~` and `null` mean no value".into()),
+        ),
         Error::DuplicateMappingKey { key, .. } => duplicate_key(key.as_deref(), loc, text),
         Error::SerdeUnknownField {
             field, expected, ..
         } => {
-            let help = suggestion(field, expected).map(|k| format!("did you mean `{k}`?"));
+            let help = suggestion(field, expected)
+                .map(|k| format!("did you mean `{k}`?"))
+                .or_else(|| Some("remove the key, or check its spelling and indentation (README.md, \"The cell file\", lists every key)".into()));
             said(
                 format!(
                     "unknown field `{}`, expected one of {}",
@@ -201,7 +229,7 @@ fn describe(e: &Error, text: &Text) -> Said {
                 excerpt::value(unexpected),
                 excerpt::value(expected)
             ),
-            None,
+            Some(FORM_HELP.into()),
         ),
         Error::SerdeInvalidValue {
             unexpected,
@@ -213,15 +241,28 @@ fn describe(e: &Error, text: &Text) -> Said {
                 excerpt::value(unexpected),
                 excerpt::value(expected)
             ),
-            None,
+            Some(FORM_HELP.into()),
         ),
         Error::InvalidScalar { ty, .. } => match scalar_at(text, loc) {
             Some(found) if ty.contains("float") || ty.contains("int") => said(
                 format!("expected a number, found `{}`", excerpt::value(found)),
-                None,
+                Some("write the number alone, without a unit or quotes (lengths in mm, angles in degrees, the mass in kg), e.g. `2.5`".into()),
+            ),
+            Some(found) if ty.contains("bool") => said(
+                format!("expected true or false, found `{}`", excerpt::value(found)),
+                Some("a switch such as planner.shortcut is `true` or `false`".into()),
             ),
             _ => said(reader_text(e), None),
         },
+        Error::Budget {
+            breach:
+                BudgetBreach::AliasAnchorRatio { aliases, .. } | BudgetBreach::Aliases { aliases },
+            ..
+        } => Said::new(
+            first_alias(text).unwrap_or(loc),
+            format!("the cell file repeats its anchors too often ({aliases} aliases `*name`)"),
+            Some("write the repeated values out (or give them anchors of their own); the YAML reader bounds how far aliases may expand a file".into()),
+        ),
         Error::Budget { .. } => said(
             "the cell file is too large or too deeply nested to be a cell".into(),
             Some(format!("the YAML reader's limit: {}", reader_text(e))),
@@ -229,6 +270,9 @@ fn describe(e: &Error, text: &Text) -> Said {
         _ => said(reader_text(e), None),
     }
 }
+
+const FORM_HELP: &str =
+    "README.md, \"The cell file\" and \"For robot programmers\", shows the form of every key";
 
 const KEYS_HELP: &str = "a cell gives `module: Name`, `robot:` (with `urdf:` and `base:`) and `points:` (at least two), and may give `obstacles:`, `planner:`, `motion:`, `tool:` and `wobj:` (README.md, \"The cell file\")";
 
@@ -599,6 +643,54 @@ fn scalar_at<'a>(text: &Text<'a>, loc: Loc) -> Option<&'a str> {
     let end = rest.find([',', ']', '}', '#']).unwrap_or(rest.len());
     let s = rest[..end].trim();
     (!s.is_empty()).then_some(s)
+}
+
+/// Where the first alias (`*name`) of the text is, if the lines show one: a `*` where a node
+/// starts (after `: `, `- `, `[`, `{` or `,`), then a name character.
+fn first_alias(text: &Text) -> Option<Loc> {
+    text.lines.iter().enumerate().find_map(|(i, l)| {
+        let chars: Vec<char> = l.chars().collect();
+        let content_end = chars
+            .iter()
+            .enumerate()
+            .find(|(k, c)| **c == '#' && (*k == 0 || chars[k - 1] == ' '))
+            .map_or(chars.len(), |(k, _)| k);
+        (0..content_end).find_map(|k| {
+            let before = chars[..k].iter().rev().find(|c| **c != ' ');
+            let starts_node = matches!(before, None | Some(':' | '-' | '[' | '{' | ','));
+            let named = chars
+                .get(k + 1)
+                .is_some_and(|c| c.is_alphanumeric() || *c == '_');
+            (chars[k] == '*' && starts_node && named).then_some(Loc {
+                line: i as u64 + 1,
+                column: k as u64 + 1,
+            })
+        })
+    })
+}
+
+/// What stands at `loc` where the reader wanted another kind of node, for a message: nothing
+/// (a key without a value: the reader points at its `:`), a list, a mapping, or the scalar.
+fn found_at(text: &Text, loc: Loc) -> String {
+    let l = text.line(loc.line);
+    let start = loc
+        .column
+        .checked_sub(1)
+        .and_then(|c| l.char_indices().nth(c as usize))
+        .map_or(l.len(), |(i, _)| i);
+    let rest = l[start..].strip_prefix(':').unwrap_or(&l[start..]).trim();
+    if rest.is_empty() || rest.starts_with('#') || rest == "~" || rest == "null" {
+        "nothing (no value)".into()
+    } else if rest.starts_with('[') || rest == "-" || rest.starts_with("- ") {
+        "a list".into()
+    } else if rest.starts_with('{') {
+        "a mapping".into()
+    } else {
+        match scalar_at(text, loc) {
+            Some(s) => format!("`{}`", excerpt::value(s)),
+            None => "another kind of value".into(),
+        }
+    }
 }
 
 /// The word before the `:` at `loc` (`joints` in `{ name: P1 joints: [...] }`).

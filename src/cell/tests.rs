@@ -365,13 +365,13 @@ fn via_zone_and_shortcut_are_read_and_refused_at_their_place() {
         ),
         (
             format!("{MINIMAL}motion:\n  via_zone: [z50]\n"),
-            "expected string",
+            "expected a single value here, found a list",
             9,
             13,
         ),
         (
             format!("{MINIMAL}planner:\n  shortcut: maybe\n"),
-            "invalid boolean",
+            "expected true or false, found `maybe`",
             9,
             13,
         ),

@@ -25,29 +25,61 @@ pub fn warn(job: &Loaded) {
 /// Writes `bytes` to `path` atomically: a temporary file beside it, then a rename, so a failed
 /// run leaves no half-written file and an existing file is replaced whole.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    let err = |source| Error::Write {
-        path: path.to_path_buf(),
-        source,
+    write_all_atomically(&[(path, bytes)])
+}
+
+/// Writes every file atomically and, as far as the file system allows, all or none: each goes
+/// to a temporary file beside its place first (a path that is a directory, or a directory that
+/// is missing or read-only, fails here, before any file is in place), and only when all of them
+/// are written are they renamed into place, in order. On a failure every temporary file left is
+/// removed, so a run that cannot write its module leaves no picture, page or report of it
+/// either (a rename failing after others succeeded, which needs the file system to change under
+/// the run, is the one way to keep some).
+pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), Error> {
+    let err = |path: &Path| {
+        let path = path.to_path_buf();
+        move |source| Error::Write { path, source }
     };
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(bytes)?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
+    let mut written: Vec<(std::path::PathBuf, &Path)> = Vec::new();
+    let clean = |temps: &[(std::path::PathBuf, &Path)]| {
+        for (tmp, _) in temps {
+            let _ = std::fs::remove_file(tmp);
+        }
+    };
+    for (i, (path, bytes)) in files.iter().enumerate() {
+        let dir = path
+            .parent()
+            .filter(|d| !d.as_os_str().is_empty())
+            .unwrap_or(Path::new("."));
+        let name = path
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let tmp = dir.join(format!(".{name}.{}.{i}.tmp", std::process::id()));
+        let result = (|| {
+            if path.is_dir() {
+                return Err(std::io::Error::new(
+                    std::io::ErrorKind::IsADirectory,
+                    "it is a directory",
+                ));
+            }
+            let mut f = std::fs::File::create(&tmp)?;
+            written.push((tmp.clone(), path));
+            f.write_all(bytes)?;
+            f.sync_all()
+        })();
+        if let Err(e) = result {
+            clean(&written);
+            return Err(err(path)(e));
+        }
     }
-    result.map_err(err)
+    for (k, (tmp, path)) in written.iter().enumerate() {
+        if let Err(e) = std::fs::rename(tmp, path) {
+            clean(&written[k..]);
+            return Err(err(path)(e));
+        }
+    }
+    Ok(())
 }
 
 /// A report as pretty JSON with a final newline (for `--json`).

@@ -9,7 +9,7 @@
 //! stdout stays empty, and a note on stderr says what was drawn.
 
 use super::progress::TerminalProgress;
-use super::{emit, write_atomically};
+use super::{emit, write_all_atomically, write_atomically};
 use crate::cell;
 use crate::error::{exit, Error, Failure};
 use crate::output::cspace_svg::{self, Marked};
@@ -80,11 +80,19 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
         Err(halted) => return Err(failed(&job, opts, method, grid_deg, halted)),
     };
     let files = files(&job, opts, &out, method, grid_deg).map_err(|e| job.fail(e))?;
-    // The files first: if one cannot be written, nothing has reached stdout yet.
-    for (path, text) in &files {
-        write_atomically(path, text.as_bytes()).map_err(|e| job.fail(e))?;
+    // The files first, all or none (the module's FILE among them): if one cannot be written,
+    // none is, and nothing has reached stdout yet.
+    let mut all: Vec<(&Path, &[u8])> = files
+        .iter()
+        .map(|(path, text)| (path.as_path(), text.as_bytes()))
+        .collect();
+    if let Some(path) = opts.output.as_deref() {
+        all.push((path, out.rendered.text.as_bytes()));
     }
-    emit(opts.output.as_deref(), out.rendered.text.as_bytes()).map_err(|e| job.fail(e))?;
+    write_all_atomically(&all).map_err(|e| job.fail(e))?;
+    if opts.output.is_none() {
+        emit(None, out.rendered.text.as_bytes()).map_err(|e| job.fail(e))?;
+    }
     for w in &out.warnings {
         eprintln!("{w}");
     }

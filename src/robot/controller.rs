@@ -79,6 +79,46 @@ struct RawController {
     coupled_axis3: Option<RawRange>,
 }
 
+/// The widest axis range gen-rapid takes (deg, each side of zero): two turns. Wider than any
+/// industrial arm's axis (axis 6 reaches +-400 deg on some); a wider range (a typo, `1e300` in
+/// a URDF limit) is refused, as the six-axis IK lists every turn of an axis within its range.
+pub const MAX_AXIS_DEG: f64 = 720.0;
+
+/// Why the range `lo .. hi` (deg) cannot be an axis range, if it cannot: NaN, not increasing,
+/// or beyond [`MAX_AXIS_DEG`].
+pub fn range_fault(lo: f64, hi: f64) -> Option<String> {
+    // Written so that NaN fails too.
+    if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
+        return Some("min must be below max".into());
+    }
+    if lo < -MAX_AXIS_DEG || hi > MAX_AXIS_DEG {
+        return Some(format!(
+            "the range {} .. {} deg reaches beyond -{MAX_AXIS_DEG} .. {MAX_AXIS_DEG} deg (two turns each way)",
+            crate::excerpt::number(lo),
+            crate::excerpt::number(hi)
+        ));
+    }
+    None
+}
+
+/// The axis speeds gen-rapid takes (deg/s): from a crawl to far beyond any arm (an IRB 1400's
+/// axes turn 110 .. 280 deg/s). Outside it (a typo, `1e-300`), the time estimate would write
+/// hundreds of digits into the module header.
+pub const AXIS_SPEED_DEG_S: [f64; 2] = [0.1, 10_000.0];
+/// The axis accelerations gen-rapid takes (deg/s^2), for the same reason.
+pub const AXIS_ACCELERATION_DEG_S2: [f64; 2] = [0.1, 1_000_000.0];
+
+/// Why `v` cannot be an axis speed or acceleration (`what`, `unit`), if it cannot.
+pub fn rate_fault(v: f64, [lo, hi]: [f64; 2], what: &str, unit: &str) -> Option<String> {
+    // Written so that NaN fails too.
+    (!(lo..=hi).contains(&v)).then(|| {
+        format!(
+            "{what} {} {unit} is outside {lo} .. {hi} {unit}",
+            crate::excerpt::number(v)
+        )
+    })
+}
+
 /// `robots/irb1400.urdf` -> `robots/irb1400.controller.yaml`.
 pub fn path_beside(urdf_path: &Path) -> PathBuf {
     urdf_path.with_extension("controller.yaml")
@@ -100,21 +140,30 @@ pub fn parse(text: &str) -> Result<Controller, String> {
         .try_into()
         .map_err(|v: Vec<AxisSpec>| format!("`axes` must list 6 axes, found {}", v.len()))?;
     for (i, a) in axes.iter().enumerate() {
-        if !(a.min_deg.is_finite() && a.max_deg.is_finite() && a.min_deg < a.max_deg) {
-            return Err(format!("axis {}: min must be below max", i + 1));
+        if let Some(fault) = range_fault(a.min_deg, a.max_deg) {
+            return Err(format!("axis {}: {fault}", i + 1));
         }
         if !(a.speed_deg_s.is_finite() && a.speed_deg_s > 0.0) {
             return Err(format!("axis {}: speed must be positive", i + 1));
+        }
+        if let Some(fault) = rate_fault(a.speed_deg_s, AXIS_SPEED_DEG_S, "speed", "deg/s") {
+            return Err(format!("axis {}: {fault}", i + 1));
         }
         if let Some(acc) = a.acceleration_deg_s2 {
             if !(acc.is_finite() && acc > 0.0) {
                 return Err(format!("axis {}: acceleration must be positive", i + 1));
             }
+            let fault = rate_fault(acc, AXIS_ACCELERATION_DEG_S2, "acceleration", "deg/s^2");
+            if let Some(fault) = fault {
+                return Err(format!("axis {}: {fault}", i + 1));
+            }
         }
     }
     let coupled_axis3_deg = match raw.coupled_axis3 {
-        Some(r) if r.min < r.max => Some([r.min, r.max]),
-        Some(_) => return Err("coupled_axis3: min must be below max".into()),
+        Some(r) => match range_fault(r.min, r.max) {
+            None => Some([r.min, r.max]),
+            Some(fault) => return Err(format!("coupled_axis3: {fault}")),
+        },
         None => None,
     };
     Ok(Controller {

@@ -134,14 +134,14 @@ impl Robot {
     /// one beside the URDF (`<stem>.controller.yaml`) if there is one. Without a controller file
     /// the robot is a serial arm with the URDF's limits (`controller.source` is `None`).
     pub fn load(urdf_path: &Path, controller: Option<&Path>) -> Result<Robot, RobotError> {
-        let text = std::fs::read_to_string(urdf_path).map_err(|source| RobotError::ReadUrdf {
+        let text = crate::input::read_text(urdf_path).map_err(|source| RobotError::ReadUrdf {
             path: urdf_path.to_path_buf(),
             source,
         })?;
         let controller_path = controller
             .map(Path::to_path_buf)
             .unwrap_or_else(|| controller::path_beside(urdf_path));
-        let controller_text = match std::fs::read_to_string(&controller_path) {
+        let controller_text = match crate::input::read_text(&controller_path) {
             Ok(t) => Some(t),
             Err(e) if e.kind() == std::io::ErrorKind::NotFound && controller.is_none() => None,
             Err(source) => {
@@ -537,8 +537,99 @@ mod tests {
             .join("\n");
         let err = urdf::robot_from_urdf(Path::new("x.urdf"), &bare, None).unwrap_err();
         assert!(
-            err.to_string().contains("no <collision> cylinders"),
+            err.to_string().contains(
+                "link 'link_1' (moved by joint 1, 'joint_1') carries no <collision> cylinder"
+            ),
             "{err}"
+        );
+        // One link without: before, the other two cylinders were enough, and the upper arm
+        // went unchecked.
+        let start = text
+            .find(r#"<collision name="upper_arm">"#)
+            .expect("upper arm");
+        let end = start + text[start..].find("</collision>").expect("end") + "</collision>".len();
+        let one_bare = format!("{}{}", &text[..start], &text[end..]);
+        let err = urdf::robot_from_urdf(Path::new("x.urdf"), &one_bare, None).unwrap_err();
+        assert!(
+            err.to_string().contains(
+                "link 'link_2' (moved by joint 2, 'joint_2') carries no <collision> cylinder"
+            ),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn a_urdf_of_another_shape_is_refused_with_its_fault() {
+        let text = include_str!("../../robots/irb1400.urdf");
+        let refused = |urdf: String, needle: &str| {
+            let err = urdf::robot_from_urdf(Path::new("x.urdf"), &urdf, None).unwrap_err();
+            assert!(err.to_string().contains(needle), "{needle}: {err}");
+        };
+        // A limit of 1e300 rad: before, the six-axis IK listed every turn of the axis within
+        // it and panicked (capacity overflow).
+        refused(
+            text.replace(
+                r#"lower="-2.9670597284" upper="2.9670597284""#,
+                r#"lower="-1e300" upper="1e300""#,
+            ),
+            "joint 'joint_1' <limit>: the range -5.729577951308233e301 .. 5.729577951308233e301 deg reaches beyond -720 .. 720 deg",
+        );
+        // NaN and huge origins: before, an IK message about the arm's shape.
+        refused(
+            text.replace(
+                r#"<origin xyz="0.150 0 0.475""#,
+                r#"<origin xyz="NaN 0 0.475""#,
+            ),
+            "joint 'joint_2': its <origin> must hold finite numbers",
+        );
+        refused(
+            text.replace(
+                r#"<origin xyz="0.150 0 0.475""#,
+                r#"<origin xyz="1e300 0 0.475""#,
+            ),
+            "joint 'joint_2': its <origin> xyz 1e300 m is beyond 1000 m",
+        );
+        refused(
+            text.replace(r#"<cylinder radius="0.15""#, r#"<cylinder radius="1e300""#),
+            "link 'link_2': cylinder radius and length must be at most 1000 m",
+        );
+        // A seventh revolute joint after joint 6: before, silently left out.
+        refused(
+            text.replace(
+                "</robot>",
+                r#"<link name="link_7"/><joint name="joint_7" type="revolute"><parent link="tool0"/><child link="link_7"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="0" velocity="1"/></joint></robot>"#,
+            ),
+            "joint 'joint_7' is a 7th revolute joint in the chain after joint 6 ('joint_6')",
+        );
+        // A controller file with an axis range of 1e300 deg: the same bound.
+        let ctrl = include_str!("../../robots/irb1400.controller.yaml")
+            .replace("{ min: -170, max: 170,", "{ min: -1e300, max: 170,");
+        let err = controller::parse(&ctrl).unwrap_err();
+        assert!(
+            err.contains("axis 1: the range -1e300 .. 170 deg reaches beyond"),
+            "{err}"
+        );
+        // Speeds and accelerations of 1e-300: before, accepted, and the header's estimated time
+        // written in over 300 digits.
+        let ctrl = include_str!("../../robots/irb1400.controller.yaml");
+        for (from, to, needle) in [
+            (
+                "speed: 110,",
+                "speed: 1e-300,",
+                "axis 1: speed 1e-300 deg/s is outside 0.1 .. 10000 deg/s",
+            ),
+            (
+                "acceleration: 515.625",
+                "acceleration: 1e-300",
+                "axis 1: acceleration 1e-300 deg/s^2 is outside 0.1 .. 1000000 deg/s^2",
+            ),
+        ] {
+            let err = controller::parse(&ctrl.replacen(from, to, 1)).unwrap_err();
+            assert!(err.contains(needle), "{err}");
+        }
+        refused(
+            text.replacen(r#"velocity="1.9198621772""#, r#"velocity="1e-300""#, 1),
+            "joint 'joint_1': <limit velocity> 5.729577951308232e-299 deg/s is outside 0.1 .. 10000 deg/s",
         );
     }
 

@@ -3,9 +3,11 @@
 //!
 //! What it accepts: one serial chain from the root link through exactly six revolute (or
 //! continuous) joints; fixed joints anywhere in the chain are folded into the next joint's origin;
-//! a fixed child named `tool0` after joint 6 gives the tool0 frame. Collision geometry of the
-//! child links of joints 1..3 must be cylinders (the paper's lumped model); collision geometry of
-//! links 4..6 is ignored (the forearm cylinder covers the wrist, paper section 6).
+//! a fixed child named `tool0` after joint 6 gives the tool0 frame (a 7th revolute joint in the
+//! chain is refused: gen-rapid plans six-axis arms). Each child link of joints 1..3 must carry
+//! collision geometry, cylinders only (the paper's lumped model); collision geometry of links
+//! 4..6 is ignored (the forearm cylinder covers the wrist, paper section 6). Every number the
+//! chain uses must be finite, lengths within 1 km, axis ranges within two turns each way.
 
 use super::controller::{self, AxisSpec, Controller, Coupling};
 use super::{LinkCylinder, RevoluteJoint, Robot, RobotError};
@@ -13,6 +15,25 @@ use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
 use std::path::Path;
 
 const MM_PER_M: f64 = 1000.0;
+
+/// The largest length a URDF may give (m): 1 km, as a cell's numbers
+/// ([`crate::cell::MAX_MAGNITUDE`] mm).
+const MAX_LENGTH_M: f64 = 1000.0;
+
+/// Why the numbers of an `<origin>` (or `<axis>`) cannot be used, if they cannot: NaN or
+/// infinite, or a length beyond [`MAX_LENGTH_M`].
+fn pose_fault(p: &urdf_rs::Pose) -> Option<String> {
+    let (xyz, rpy) = (*p.xyz, *p.rpy);
+    if !xyz.iter().chain(rpy.iter()).all(|v| v.is_finite()) {
+        return Some("its <origin> must hold finite numbers".into());
+    }
+    xyz.iter().find(|v| v.abs() > MAX_LENGTH_M).map(|v| {
+        format!(
+            "its <origin> xyz {} m is beyond {MAX_LENGTH_M} m",
+            crate::excerpt::number(*v)
+        )
+    })
+}
 
 fn pose_mm(p: &urdf_rs::Pose) -> Isometry3<f64> {
     let [x, y, z] = *p.xyz;
@@ -88,8 +109,17 @@ pub fn robot_from_urdf(
                 )));
             }
         };
+        if let Some(fault) = pose_fault(&next.origin) {
+            return Err(model_err(format!("joint '{}': {fault}", next.name)));
+        }
         match next.joint_type {
             urdf_rs::JointType::Revolute | urdf_rs::JointType::Continuous if joints.len() < 6 => {
+                if !next.axis.xyz.iter().all(|v| v.is_finite()) {
+                    return Err(model_err(format!(
+                        "joint '{}': its <axis> must hold finite numbers",
+                        next.name
+                    )));
+                }
                 let axis = Vector3::from(*next.axis.xyz);
                 let axis = Unit::try_new(axis, 1e-9)
                     .ok_or_else(|| model_err(format!("joint '{}' has a zero axis", next.name)))?;
@@ -101,6 +131,13 @@ pub fn robot_from_urdf(
                 if joints.len() == 6 && next.child.link == "tool0" {
                     flange_to_tool0 = pending;
                 }
+            }
+            urdf_rs::JointType::Revolute | urdf_rs::JointType::Continuous => {
+                return Err(model_err(format!(
+                    "joint '{}' is a 7th revolute joint in the chain after joint 6 ('{}'); gen-rapid plans six-axis arms",
+                    next.name,
+                    joints.last().map_or("", |(j, _, _)| j.name.as_str())
+                )))
             }
             _ if joints.len() == 6 => break,
             _ => {
@@ -127,6 +164,14 @@ pub fn robot_from_urdf(
                 joint.child.link
             )));
         };
+        if l.collision.is_empty() {
+            return Err(model_err(format!(
+                "link '{}' (moved by joint {}, '{}') carries no <collision> cylinder: gen-rapid could not check its moves (the paper's model lumps the arm into its first three links, each a cylinder)",
+                l.name,
+                index + 1,
+                joint.name
+            )));
+        }
         for c in &l.collision {
             let urdf_rs::Geometry::Cylinder { radius, length } = c.geometry else {
                 return Err(model_err(format!(
@@ -140,6 +185,15 @@ pub fn robot_from_urdf(
                     l.name
                 )));
             }
+            if radius > MAX_LENGTH_M || length > MAX_LENGTH_M {
+                return Err(model_err(format!(
+                    "link '{}': cylinder radius and length must be at most {MAX_LENGTH_M} m",
+                    l.name
+                )));
+            }
+            if let Some(fault) = pose_fault(&c.origin) {
+                return Err(model_err(format!("link '{}' <collision>: {fault}", l.name)));
+            }
             // URDF cylinders are centred on their origin, axis along local z.
             let pose = pose_mm(&c.origin);
             let half = length * MM_PER_M / 2.0;
@@ -151,12 +205,6 @@ pub fn robot_from_urdf(
                 radius_mm: radius * MM_PER_M,
             });
         }
-    }
-
-    if cylinders.is_empty() {
-        return Err(model_err(
-            "links 1..3 carry no <collision> cylinders: gen-rapid could not check any move (the paper's model lumps the arm into its first three links, each a cylinder)".into(),
-        ));
     }
 
     let controller = match controller_file {
@@ -208,11 +256,24 @@ fn serial_controller(joints: &[&urdf_rs::Joint]) -> Result<Controller, String> {
         if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
             return Err(format!("joint '{}' needs <limit lower < upper>", j.name));
         }
+        if let Some(fault) = controller::range_fault(lo, hi) {
+            return Err(format!("joint '{}' <limit>: {fault}", j.name));
+        }
         if j.limit.velocity.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return Err(format!(
                 "joint '{}' needs a positive <limit velocity> (or a controller file beside the URDF)",
                 j.name
             ));
+        }
+        let speed = j.limit.velocity.to_degrees();
+        let fault = controller::rate_fault(
+            speed,
+            controller::AXIS_SPEED_DEG_S,
+            "<limit velocity>",
+            "deg/s",
+        );
+        if let Some(fault) = fault {
+            return Err(format!("joint '{}': {fault}", j.name));
         }
         *a = AxisSpec {
             min_deg: lo,

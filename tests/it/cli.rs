@@ -2,6 +2,7 @@
 
 use crate::common::module::Module;
 use crate::common::{arg, gen_rapid, read, root, stderr, stdout, METHODS};
+use std::path::Path;
 
 #[test]
 fn help_teaches_the_format_examples_and_exit_statuses() {
@@ -124,6 +125,17 @@ fn a_missing_cell_file_is_named() {
         "{}",
         stderr(&o)
     );
+    // A directory is no cell either; both say what CELL is (the help line).
+    let d = gen_rapid(&["cells"]);
+    assert_eq!(d.status.code(), Some(1));
+    assert!(d.stdout.is_empty());
+    for e in [stderr(&o), stderr(&d)] {
+        assert!(
+            e.lines()
+                .any(|l| l.starts_with("help: CELL is the path of a cell file")),
+            "{e}"
+        );
+    }
 }
 
 #[test]
@@ -200,6 +212,95 @@ fn a_picture_that_cannot_be_written_leaves_stdout_empty() {
         assert!(o.stdout.is_empty(), "{args:?}: stdout must stay empty");
         assert!(stderr(&o).contains("/nonexistent/dir/x.svg"));
     }
+}
+
+#[test]
+fn a_run_writes_all_its_files_or_none() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let p = |name: &str| dir.path().join(name).to_str().expect("utf-8").to_string();
+    let (svg, report, html) = (p("route.svg"), p("run.json"), p("run.html"));
+    // The module's FILE cannot be written (its directory is missing, or it is a directory):
+    // before, the picture, page and report were in place already when the module failed.
+    for module in [
+        p("missing/x.mod"),
+        dir.path().to_str().expect("utf-8").into(),
+    ] {
+        let o = gen_rapid(&[
+            "tests/ok/tool_wobj_robtargets.yaml",
+            "--svg",
+            &svg,
+            "--report",
+            &report,
+            "--html",
+            &html,
+            "-o",
+            &module,
+        ]);
+        assert_eq!(o.status.code(), Some(4), "{}", stderr(&o));
+        assert!(o.stdout.is_empty());
+        assert!(stderr(&o).contains(&module), "{}", stderr(&o));
+        assert!(
+            stderr(&o).contains("\nhelp: the file's directory must exist"),
+            "{}",
+            stderr(&o)
+        );
+        let left: Vec<_> = std::fs::read_dir(dir.path())
+            .expect("dir")
+            .map(|e| e.expect("entry").file_name())
+            .collect();
+        assert!(left.is_empty(), "{module}: left behind {left:?}");
+    }
+    // All of them can: all are written, and no temporary file stays.
+    let module = p("x.mod");
+    let o = gen_rapid(&[
+        "tests/ok/tool_wobj_robtargets.yaml",
+        "--svg",
+        &svg,
+        "--report",
+        &report,
+        "-o",
+        &module,
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let mut left: Vec<_> = std::fs::read_dir(dir.path())
+        .expect("dir")
+        .map(|e| e.expect("entry").file_name().into_string().expect("utf-8"))
+        .collect();
+    left.sort();
+    assert_eq!(left, ["route.svg", "run.json", "x.mod"]);
+}
+
+#[test]
+fn an_output_naming_another_file_of_the_run_is_a_usage_error() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let cell = dir.path().join("cell.yaml");
+    let text = read("tests/ok/tool_wobj_robtargets.yaml")
+        .replace("../../robots/", &format!("{}/robots/", root().display()));
+    std::fs::write(&cell, &text).expect("write");
+    let cell = cell.to_str().expect("utf-8");
+    let out = dir.path().join("out").to_str().expect("utf-8").to_string();
+    let dotted = dir.path().join(".").join("out");
+    let dotted = dotted.to_str().expect("utf-8");
+    for (args, flags) in [
+        (vec![cell, "-o", cell], "--output"),
+        (vec![cell, "--svg", &out, "--report", dotted], "--report"),
+        (vec![cell, "--html", &out, "-o", &out], "--html"),
+    ] {
+        let o = gen_rapid(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(o.stdout.is_empty());
+        assert!(
+            stderr(&o).contains(&format!("error: {flags} ")),
+            "{args:?}: {}",
+            stderr(&o)
+        );
+    }
+    assert_eq!(
+        std::fs::read_to_string(cell).expect("cell"),
+        text,
+        "the cell is kept"
+    );
+    assert!(!Path::new(&out).exists());
 }
 
 #[test]

@@ -284,3 +284,23 @@ fn the_warning_about_a_urdf_without_a_controller_file_is_bounded_too() {
     assert!(warning.contains("..."), "nothing cut: {warning}");
     assert!(warning.len() < MAX_MESSAGE_BYTES, "{} bytes", warning.len());
 }
+
+/// Every refusal on file (`tests/err/`) says what to do about it: one `error:` line, and a
+/// `help:` line after it (the contract: where, what was expected, a help line).
+#[test]
+fn every_error_fixture_has_one_error_and_a_help_line() {
+    let dir = crate::common::root().join("tests/err");
+    let mut missing = Vec::new();
+    for entry in std::fs::read_dir(&dir).expect("tests/err") {
+        let path = entry.expect("entry").path();
+        if path.extension().is_some_and(|e| e == "stderr") {
+            let text = std::fs::read_to_string(&path).expect("fixture");
+            let errors = text.lines().filter(|l| l.starts_with("error: ")).count();
+            let helps = text.lines().filter(|l| l.starts_with("help: ")).count();
+            if errors != 1 || helps != 1 {
+                missing.push(format!("{}: {errors} error, {helps} help", path.display()));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "{}", missing.join("\n"));
+}

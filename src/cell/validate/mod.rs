@@ -28,7 +28,9 @@ use nalgebra::Point3;
 use serde_saphyr::Spanned;
 use std::collections::BTreeMap;
 use std::path::Path;
-use values::{data_name, decimals, identifier, invalid, invalid_help, joint_value, loc, triple};
+use values::{
+    bounded, data_name, decimals, identifier, invalid, invalid_help, joint_value, loc, triple,
+};
 
 /// Validates every section of a parsed cell file (module docs).
 pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
@@ -96,10 +98,10 @@ fn robot(path: &Path, r: &Spanned<RawRobot>) -> Result<RobotSpec, CellError> {
         }
     };
     let yaw_deg = match &r.yaw {
-        Some(y) if !y.value.is_finite() => {
-            return Err(invalid(loc(y), "robot.yaw must be a finite number (deg)"))
+        Some(y) => {
+            bounded(y, "robot.yaw", "a finite number (deg)")?;
+            decimals(y.value, YAW_DECIMALS, loc(y), "robot.yaw", "deg")?
         }
-        Some(y) => decimals(y.value, YAW_DECIMALS, loc(y), "robot.yaw", "deg")?,
         None => 0.0,
     };
     let wrist_deg = match &r.wrist {
@@ -148,12 +150,13 @@ fn obstacles(raw: &[Spanned<RawObstacle>]) -> Result<Vec<Obstacle>, CellError> {
             return Err(invalid(loc(&o.value.name), "an obstacle needs a name"));
         }
         if let Some(first) = obstacles.iter().find(|p| p.name == name) {
-            return Err(invalid(
+            return Err(invalid_help(
                 loc(&o.value.name),
                 format!(
                     "obstacle name '{shown}' is used twice (first at line {})",
                     first.loc.line
                 ),
+                "give every obstacle its own name: messages name the obstacle a link or a tool shape comes closest to",
             ));
         }
         let min_mm = triple(
@@ -199,20 +202,24 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
     };
     if let Some(m) = &p.method {
         planner.method = Method::parse(&m.value).ok_or_else(|| {
-            invalid(
+            invalid_help(
                 loc(m),
                 format!(
                     "planner.method '{}' is not one of neighboring, depth-first, extensile",
                     excerpt::value(&m.value)
                 ),
+                "the paper's three searches: neighboring (4.1), depth-first (4.2), extensile (4.3, the default); `gen-rapid compare CELL` runs all three",
             )
         })?;
     }
     if let Some(g) = &p.grid {
-        planner.grid_deg = check_grid(g.value).map_err(|m| invalid(loc(g), m))?;
+        planner.grid_deg = check_grid(g.value).map_err(|m| {
+            invalid_help(loc(g), m, "planner.grid is the grid spacing d in degrees (default 1; finer is slower and needs more memory: 0.25 deg holds 413 M nodes)")
+        })?;
     }
     if let Some(c) = &p.clearance {
-        if !(c.value.is_finite() && c.value >= 0.0) {
+        bounded(c, "planner.clearance", "a number >= 0 (mm)")?;
+        if c.value < 0.0 {
             return Err(invalid(
                 loc(c),
                 "planner.clearance must be a number >= 0 (mm)",
@@ -286,9 +293,13 @@ fn via_zone(z: &Spanned<String>) -> Result<String, CellError> {
 /// `--proc NAME` (module docs of `cell`): the identifier rule, then the name space again.
 pub(super) fn override_proc(cell: &mut Cell, name: &str) -> Result<(), CellError> {
     check_identifier(name).map_err(|e| {
-        invalid(
+        invalid_help(
             Loc::default(),
-            format!("--proc '{name}' is not a valid RAPID name: {e}"),
+            format!(
+                "--proc '{}' is not a valid RAPID name: {e}",
+                excerpt::value(name)
+            ),
+            values::IDENTIFIER_HELP,
         )
     })?;
     cell.motion.proc = name.to_string();

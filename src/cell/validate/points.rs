@@ -9,15 +9,19 @@ use super::values::{
 use crate::robot::ik::Branch;
 use serde_saphyr::Spanned;
 
+/// The help line of a point given in no way or in two.
+const POINT_HELP: &str = "a point is given one way: `joints` (controller values, deg), `xyz` (the wrist centre, mm) or `robtarget` (the TCP pose)";
+
 /// `points:`.
 pub(super) fn points(raw: &Spanned<Vec<Spanned<RawPoint>>>) -> Result<Vec<Point>, CellError> {
     if raw.value.len() < 2 {
-        return Err(invalid(
+        return Err(invalid_help(
             loc(raw),
             format!(
                 "a cell needs at least 2 points (a start and an end), found {}",
                 raw.value.len()
             ),
+            "the points are visited in order, the first is the start and the last the end; list at least two",
         ));
     }
     let mut points: Vec<Point> = Vec::new();
@@ -64,15 +68,17 @@ fn target(name: &str, p: &Spanned<RawPoint>) -> Result<Target, CellError> {
     .flatten()
     .collect();
     if let [(first, _), (second, at), ..] = given.as_slice() {
-        return Err(invalid(
+        return Err(invalid_help(
             *at,
             format!("point '{name}' gives both `{first}` and `{second}`; give one"),
+            POINT_HELP,
         ));
     }
     if let (Some(b), None) = (&v.branch, &v.xyz) {
-        return Err(invalid(
+        return Err(invalid_help(
             loc(b),
             format!("point '{name}': `branch` applies to `xyz` points only"),
+            "`branch` picks one of the four arm solutions of a wrist-centre position; a robtarget picks its solution with its confdata [cf1, cf4, cf6, cfx], joint values need none",
         ));
     }
     if let Some(j) = &v.joints {
@@ -125,12 +131,13 @@ fn joints(name: &str, j: &Spanned<Vec<f64>>) -> Result<Target, CellError> {
             wrist_deg: Some([*a4, *a5, *a6]),
         },
         _ => {
-            return Err(invalid(
+            return Err(invalid_help(
                 l,
                 format!(
                     "point '{name}': joints must list axes 1..3 or all six axes, found {} values",
                     a.len()
                 ),
+                "`joints: [a1, a2, a3]` (axes 4..6 from robot.wrist) or `[a1, a2, a3, a4, a5, a6]`, controller values in degrees",
             ))
         }
     })

@@ -3,7 +3,9 @@
 
 use super::super::raw::{RawShape, RawTool, RawWobj};
 use super::super::{defaults, CellError, Frame, Tool, ToolGeometry, ToolShape, Wobj};
-use super::values::{identifier, invalid, invalid_help, loc, mass, pose, position, triple};
+use super::values::{
+    bounded, identifier, invalid, invalid_help, loc, mass, pose, position, triple,
+};
 use crate::excerpt;
 use serde_saphyr::Spanned;
 
@@ -24,13 +26,14 @@ pub(super) fn tool(t: &Spanned<RawTool>) -> Result<Tool, CellError> {
     for s in &r.shapes {
         let shape = shape(s)?;
         if let Some(first) = shapes.iter().find(|p| p.name == shape.name) {
-            return Err(invalid(
+            return Err(invalid_help(
                 loc(&s.value.name),
                 format!(
                     "tool shape name '{}' is used twice (first at line {})",
                     excerpt::value(&shape.name),
                     first.loc.line
                 ),
+                "give every tool shape its own name: messages and the header name the shape that comes closest",
             ));
         }
         shapes.push(shape);
@@ -63,12 +66,18 @@ fn shape(s: &Spanned<RawShape>) -> Result<ToolShape, CellError> {
     let shown = excerpt::value(&name);
     let what = |key: &str| format!("tool shape '{shown}' {key}");
     let positive = |v: &Spanned<f64>, key: &str| {
-        if v.value.is_finite() && v.value > 0.0 {
+        bounded(v, &what(key), "a number > 0 (mm)")?;
+        if v.value > 0.0 {
             Ok(v.value)
         } else {
-            Err(invalid(
+            Err(invalid_help(
                 loc(v),
-                format!("{} = {} must be a number > 0 (mm)", what(key), v.value),
+                format!(
+                    "{} = {} must be a number > 0 (mm)",
+                    what(key),
+                    excerpt::number(v.value)
+                ),
+                "a tool shape has a volume: its radius in mm, more than 0; leave out a shape that has none",
             ))
         }
     };
@@ -79,9 +88,10 @@ fn shape(s: &Spanned<RawShape>) -> Result<ToolShape, CellError> {
             let to_mm = triple(&c.to, &what("cylinder.to"))?;
             let radius_mm = positive(&c.radius, "cylinder.radius")?;
             if from_mm == to_mm {
-                return Err(invalid(
+                return Err(invalid_help(
                     loc(&c.to),
                     format!("{}: from and to are the same point", what("cylinder")),
+                    "a cylinder runs from `from` to `to` (its axis, flange frame, mm); for a ball use `sphere: { centre: [x, y, z], radius: r }`",
                 ));
             }
             ToolGeometry::Cylinder {

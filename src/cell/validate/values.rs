@@ -1,7 +1,7 @@
 //! Value checks shared by the sections: numbers finite and no finer than the module states them,
 //! triples, poses with normalised quaternions, RAPID names. Each refusal points at the value.
 
-use super::super::{CellError, Frame, Loc, QUATERNION_NORM_TOL};
+use super::super::{CellError, Frame, Loc, MAX_MAGNITUDE, QUATERNION_NORM_TOL};
 use crate::excerpt;
 use crate::names::{check_data_name, check_identifier};
 use crate::precision::{self, JOINT_DECIMALS, MASS_DECIMALS, POSITION_DECIMALS};
@@ -32,23 +32,60 @@ pub(super) fn invalid_help(
     }
 }
 
+/// The help line of a NaN or an infinity.
+const FINITE_HELP: &str = "write plain numbers: `.nan` and `.inf` are YAML's not-a-number and infinity, no length or angle";
+
+/// Every value of the list finite and within [`MAX_MAGNITUDE`].
 pub(super) fn finite(v: &Spanned<Vec<f64>>, what: &str) -> Result<(), CellError> {
-    if v.value.iter().all(|x| x.is_finite()) {
-        Ok(())
-    } else {
-        Err(invalid(
+    if !v.value.iter().all(|x| x.is_finite()) {
+        return Err(invalid_help(
             loc(v),
             format!("{what}: every value must be a finite number"),
-        ))
+            FINITE_HELP,
+        ));
     }
+    match v.value.iter().find(|x| x.abs() > MAX_MAGNITUDE) {
+        Some(x) => Err(too_large(loc(v), what, *x)),
+        None => Ok(()),
+    }
+}
+
+/// A scalar finite and within [`MAX_MAGNITUDE`]; `rule` says what else it must be, for the
+/// message of a non-finite value (`a number > 0 (kg)`).
+pub(super) fn bounded(v: &Spanned<f64>, what: &str, rule: &str) -> Result<f64, CellError> {
+    if !v.value.is_finite() {
+        return Err(invalid_help(
+            loc(v),
+            format!("{what} must be {rule}"),
+            FINITE_HELP,
+        ));
+    }
+    if v.value.abs() > MAX_MAGNITUDE {
+        return Err(too_large(loc(v), what, v.value));
+    }
+    Ok(v.value)
+}
+
+/// The refusal of a value beyond [`MAX_MAGNITUDE`].
+fn too_large(loc: Loc, what: &str, x: f64) -> CellError {
+    invalid_help(
+        loc,
+        format!(
+            "{what}: {} is too large: a cell's numbers lie within -{m} .. {m}",
+            excerpt::number(x),
+            m = MAX_MAGNITUDE
+        ),
+        "lengths are in mm (1000000 mm is 1 km), angles in degrees and the mass in kg; is a unit or an exponent wrong?",
+    )
 }
 
 pub(super) fn triple(v: &Spanned<Vec<f64>>, what: &str) -> Result<[f64; 3], CellError> {
     finite(v, what)?;
     <[f64; 3]>::try_from(v.value.as_slice()).map_err(|_| {
-        invalid(
+        invalid_help(
             loc(v),
             format!("{what} must have 3 numbers, found {}", v.value.len()),
+            "write three numbers in brackets, `[x, y, z]` (mm; robot.wrist: axes 4, 5, 6 in deg)",
         )
     })
 }
@@ -72,7 +109,10 @@ fn finer_than(v: f64, n: usize, loc: Loc, what: &str, help: String) -> Result<f6
         let s = if n == 1 { "" } else { "s" };
         return Err(invalid_help(
             loc,
-            format!("{what} = {v} has more than {n} decimal{s}"),
+            format!(
+                "{what} = {} has more than {n} decimal{s}",
+                excerpt::number(v)
+            ),
             help,
         ));
     }
@@ -91,10 +131,14 @@ pub(super) fn position(v: &Spanned<Vec<f64>>, what: &str) -> Result<[f64; 3], Ce
 
 /// The tool's mass (kg): finite, > 0, at most [`MASS_DECIMALS`] decimals.
 pub(super) fn mass(v: &Spanned<f64>) -> Result<f64, CellError> {
-    if !(v.value.is_finite() && v.value > 0.0) {
+    bounded(v, "tool.mass", "a number > 0 (kg)")?;
+    if v.value <= 0.0 {
         return Err(invalid_help(
             loc(v),
-            format!("tool.mass = {} must be a number > 0 (kg)", v.value),
+            format!(
+                "tool.mass = {} must be a number > 0 (kg)",
+                excerpt::number(v.value)
+            ),
             "the tool's load as tooldata declares it; leave it out for 1 kg",
         ));
     }
@@ -106,7 +150,10 @@ pub(super) fn joint_value(v: f64, loc: Loc, what: &str) -> Result<f64, CellError
     if precision::exceeds(v, JOINT_DECIMALS) {
         return Err(invalid_help(
             loc,
-            format!("{what} = {v} has more than {JOINT_DECIMALS} decimals"),
+            format!(
+                "{what} = {} has more than {JOINT_DECIMALS} decimals",
+                excerpt::number(v)
+            ),
             format!(
                 "gen-rapid writes joint values to 0.{}1 deg; give at most {JOINT_DECIMALS} decimals so the point appears in the module exactly as given",
                 "0".repeat(JOINT_DECIMALS - 1)
@@ -187,10 +234,11 @@ fn confdata(v: &Spanned<Vec<f64>>, what: &str) -> Result<ConfData, CellError> {
             help,
         )
     })?;
-    if let Some(x) = c.iter().find(|x| x.fract() != 0.0 || x.abs() > 1e6) {
+    // `finite` has bounded them (|x| <= MAX_MAGNITUDE), so `as i32` below is exact.
+    if let Some(x) = c.iter().find(|x| x.fract() != 0.0) {
         return Err(invalid_help(
             loc(v),
-            format!("{what}: {x} is not a whole number"),
+            format!("{what}: {} is not a whole number", excerpt::number(*x)),
             help,
         ));
     }
@@ -204,16 +252,20 @@ fn confdata(v: &Spanned<Vec<f64>>, what: &str) -> Result<ConfData, CellError> {
     Ok(ConfData::from_array(c.map(|x| x as i32)))
 }
 
+/// The help line of a name that breaks the RAPID identifier rule.
+pub(super) const IDENTIFIER_HELP: &str = "a RAPID name is an ASCII letter, then letters, digits or '_', at most 32 characters, and not a reserved word or a predefined name such as tool0, v100 or pi (letter case aside)";
+
 /// A name the module declares (the module, a point, the tool, the work object): the RAPID
 /// identifier rule.
 pub(super) fn identifier(s: &Spanned<String>, what: &str) -> Result<String, CellError> {
     check_identifier(&s.value).map_err(|e| {
-        invalid(
+        invalid_help(
             loc(s),
             format!(
                 "{what} '{}' is not a valid RAPID name: {e}",
                 excerpt::value(&s.value)
             ),
+            IDENTIFIER_HELP,
         )
     })?;
     Ok(s.value.clone())

@@ -331,9 +331,12 @@ impl ModuleTemplate {
     }
 
     /// The environment with this one template: strict undefined (a name the context lacks is an
-    /// error, never an empty string), no auto-escaping, blocks trimmed, the final newline kept.
+    /// error, never an empty string), no auto-escaping, blocks trimmed, the final newline kept,
+    /// and at most [`TEMPLATE_FUEL`] instructions (a user's template that loops for ever, or
+    /// 10^10 times, is an error, not a hang).
     fn environment(&self) -> Result<Environment<'_>, minijinja::Error> {
         let mut env = Environment::new();
+        env.set_fuel(Some(TEMPLATE_FUEL));
         env.set_undefined_behavior(UndefinedBehavior::Strict);
         env.set_auto_escape_callback(|_| AutoEscape::None);
         env.set_syntax(
@@ -364,6 +367,11 @@ impl ModuleTemplate {
         }
     }
 }
+
+/// The most instructions a template may run (minijinja's fuel): the embedded template renders
+/// a module of 20 000 targets well within it (tests), and a runaway loop stops after about two
+/// seconds.
+pub const TEMPLATE_FUEL: u64 = 100_000_000;
 
 /// The template context (README, "Your own module template"): every value already formatted;
 /// templates hold no logic.

@@ -707,3 +707,29 @@ fn declared_tool_wobj_and_robtarget_names_share_the_name_space() {
     p.targets[2].speed = "W1".into();
     assert!(matches!(render(&p), Err(RapidError::NameClash { .. })));
 }
+
+#[test]
+fn a_huge_module_renders_within_the_fuel_and_a_runaway_template_is_stopped() {
+    // 20 000 targets through the embedded template: the fuel is no limit for a real module.
+    let mut p = small_program();
+    p.targets = (0..20_000)
+        .map(|i| {
+            via(
+                i / 1000,
+                i % 1000 + 1,
+                [(i % 100) as f64, 0.0, 0.0, 0.0, 30.0, 0.0],
+            )
+        })
+        .collect();
+    p.header = header(p.targets.len() - 1);
+    let text = render(&p).expect("renders");
+    assert_eq!(text.matches("MoveAbsJ").count(), 20_000);
+    // A template looping 10^10 times: an error after the fuel (before: a hang).
+    let path = std::path::Path::new("loop.mod.j2");
+    let source = "{% for i in range(100000) %}{% for j in range(100000) %}{% endfor %}{% endfor %}";
+    let t = ModuleTemplate::user(path, source.into()).expect("compiles");
+    let started = std::time::Instant::now();
+    let err = render_with(&small_program(), &t).expect_err("out of fuel");
+    assert!(err.to_string().contains("out of fuel"), "{err}");
+    assert!(started.elapsed().as_secs() < 60);
+}

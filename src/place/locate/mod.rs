@@ -177,8 +177,9 @@ pub enum LocateError {
     Input(String),
     #[error(
         "robot location: point {name} is out of reach from any base position: it is \
-         {dz_mm:.1} mm {} the shoulder (base at z = {base_z_mm} mm), and the arm reaches at most \
+         {:.1} mm {} the shoulder (base at z = {base_z_mm} mm), and the arm reaches at most \
          {max_mm:.1} mm from the shoulder",
+        .dz_mm.abs(),
         if *.dz_mm >= 0.0 { "above" } else { "below" }
     )]
     PointOutOfReach {
