@@ -95,7 +95,7 @@ impl Error {
         }
     }
 
-    fn help(&self) -> Option<String> {
+    pub(crate) fn help(&self) -> Option<String> {
         match self {
             Error::Cell(e) => e.help().map(str::to_string),
             Error::Plan {
@@ -125,11 +125,13 @@ impl Error {
             Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
             Error::Place(PlaceError::Range { .. }) => Some("joint values are controller values (what a jointtarget holds) and must lie in the robot's ranges, all six axes; a point without axes 4..6 takes robot.wrist".into()),
             Error::Place(PlaceError::Robtarget { .. }) => Some("a robtarget is the TCP pose [[x, y, z], [q1, q2, q3, q4]] in the work object's frame (mm, quaternion [w, x, y, z]) of the tool's TCP (tool.tframe); confdata [cf1, cf4, cf6, cfx] picks one of the arm's solutions, without it the one nearest the previous point is taken".into()),
+            Error::Template(TemplateError::Invalid { out_of_fuel: true, .. })
+            | Error::Rapid(RapidError::UserTemplate(TemplateError::Invalid { out_of_fuel: true, .. })) => Some(format!("a template may run at most {} minijinja instructions (a loop that never ends, or runs too often, stops here); loop over the program's lists (README's \"Your own module template\"), not over ranges of your own", crate::output::rapid::TEMPLATE_FUEL)),
             Error::Template(_) | Error::Rapid(RapidError::UserTemplate(_)) => Some("the template is minijinja (Jinja2) text rendered with strict undefined names: README's \"Your own module template\" lists every name it may use".into()),
             Error::Rapid(RapidError::OutOfRange { .. }) => Some("this is a bug in gen-rapid: an earlier stage let an out-of-range value through; please report it with the cell file".into()),
             Error::Place(PlaceError::Locate { source: LocateError::PointOutOfReach { .. }, .. }) => Some("with `base: auto` the base stands on z = 0: move the point within the arm's reach of a base there, or give `base: [x, y, z]`".into()),
             Error::Place(PlaceError::Locate { .. }) => Some("`gen-rapid locate CELL --svg FILE` draws every point's reach region; move the points closer together or give `base: [x, y, z]`".into()),
-            Error::Write { path, .. } if path.as_os_str() != "<stdout>" => Some("the file's directory must exist and be writable, and the file must not be a directory; no file of the run is written unless all of them can be".into()),
+            Error::Write { path, .. } if path.as_os_str() != "<stdout>" => Some("the file's directory must exist and be writable, and the file must be neither a directory nor a file the run reads; no file of the run is written unless all of them can be".into()),
             Error::Place(PlaceError::Ik { source, .. }) if matches!(**source, IkError::Unreachable { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `gen-rapid locate CELL` shows which base positions reach every point".into()),
             Error::Place(PlaceError::Ik { .. }) => Some("`xyz` is the wrist centre in the cell frame (mm); `branch:` picks one of its four arm solutions (front or back, elbow up or down), else the one nearest the previous point is taken".into()),
             Error::Place(PlaceError::Arm { .. } | PlaceError::SixAxis { .. }) => Some("gen-rapid's inverse kinematics needs a six-axis arm whose axis 2 is perpendicular to axis 1 and whose axes 4..6 meet in one point (a spherical wrist), as robots/irb1400.urdf".into()),

@@ -183,41 +183,25 @@ fn parse_grid(s: &str) -> Result<f64, String> {
     gen_rapid::cell::check_grid(g)
 }
 
-/// The same file, by name or (where both exist) on disk.
-fn same_file(a: &Path, b: &Path) -> bool {
-    a == b
-        || matches!(
-            (std::path::absolute(a), std::path::absolute(b)),
-            (Ok(x), Ok(y)) if x == y
-        )
-        || matches!(
-            (std::fs::canonicalize(a), std::fs::canonicalize(b)),
-            (Ok(x), Ok(y)) if x == y
-        )
-}
-
-/// Refuses (exit 2) a run whose output files name the same file twice, or the cell file or the
-/// template it reads: one would overwrite the other (`--svg out --report out`, `-o cell.yaml`).
-fn check_outputs(args: &RunArgs) {
-    let cell = args.cell.as_deref();
-    let inputs = [("CELL", cell), ("--template", args.template.as_deref())];
-    let outputs = [
-        ("--output", args.output.as_deref()),
-        ("--svg", args.svg.as_deref()),
-        ("--html", args.html.as_deref()),
-        ("--report", args.report.as_deref()),
-    ];
+/// Refuses (exit 2) a command whose output files name the same file twice, or a file it reads
+/// (the cell, the template): one would overwrite the other (`--svg out --report out`,
+/// `-o cell.yaml`, `locate cell.yaml --svg cell.yaml`). The robot's URDF and controller file,
+/// named in the cell, are checked once it is read (`cli::refuse_inputs`).
+fn check_outputs(
+    inputs: &[(&'static str, Option<&Path>)],
+    outputs: &[(&'static str, Option<&Path>)],
+) {
     let named = |list: &[(&'static str, Option<&Path>)]| -> Vec<(&'static str, PathBuf)> {
         list.iter()
             .filter_map(|(flag, p)| p.map(|p| (*flag, p.to_path_buf())))
             .collect()
     };
-    let (inputs, outputs) = (named(&inputs), named(&outputs));
+    let (inputs, outputs) = (named(inputs), named(outputs));
     for (i, (flag, path)) in outputs.iter().enumerate() {
         let clash = outputs[..i]
             .iter()
             .chain(inputs.iter())
-            .find(|(_, other)| same_file(path, other));
+            .find(|(_, other)| gen_rapid::cli::same_file(path, other));
         if let Some((other, _)) = clash {
             Cli::command()
                 .error(
@@ -234,8 +218,28 @@ fn check_outputs(args: &RunArgs) {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    if cli.command.is_none() {
-        check_outputs(&cli.run);
+    match &cli.command {
+        None => {
+            let a = &cli.run;
+            check_outputs(
+                &[
+                    ("CELL", a.cell.as_deref()),
+                    ("--template", a.template.as_deref()),
+                ],
+                &[
+                    ("--output", a.output.as_deref()),
+                    ("--svg", a.svg.as_deref()),
+                    ("--html", a.html.as_deref()),
+                    ("--report", a.report.as_deref()),
+                ],
+            )
+        }
+        Some(Command::Compare(a)) => {
+            check_outputs(&[("CELL", Some(&a.cell))], &[("--svg", a.svg.as_deref())])
+        }
+        Some(Command::Locate(a)) => {
+            check_outputs(&[("CELL", Some(&a.cell))], &[("--svg", a.svg.as_deref())])
+        }
     }
     let quiet = cli.command.is_none() && cli.run.quiet;
     let result = match cli.command {

@@ -355,7 +355,15 @@ pub fn load(path: &Path) -> Result<(Cell, String), CellError> {
 
 /// Validates cell text; `path` names the file (for messages and to resolve the URDF path).
 pub fn parse(path: &Path, text: &str) -> Result<Cell, CellError> {
-    let raw: raw::RawCell = serde_saphyr::from_str(text).map_err(|e| syntax::refusal(text, &e))?;
+    // The reader's bounds on alias expansion, less its ratio of aliases to anchors: a cell may
+    // well alias one anchor (a quaternion, a tool's orientation) at a hundred points; the
+    // absolute bounds still stop a file that expands without end.
+    let mut budget = serde_saphyr::Budget::default();
+    budget.enforce_alias_anchor_ratio = false;
+    let mut options = serde_saphyr::Options::default();
+    options.budget = Some(budget);
+    let raw: raw::RawCell = serde_saphyr::from_str_with_options(text, options)
+        .map_err(|e| syntax::refusal(text, &e))?;
     validate::cell(path, raw)
 }
 

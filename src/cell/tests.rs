@@ -386,3 +386,19 @@ fn via_zone_and_shortcut_are_read_and_refused_at_their_place() {
         );
     }
 }
+
+/// A hundred and one points aliasing one anchor (`&j` / `*j`) read as the values written out:
+/// the YAML reader's ratio of aliases to anchors (a guard against alias bombs, which the cell's
+/// typed fields and the reader's absolute bounds stop anyway) does not refuse an ordinary cell.
+#[test]
+fn many_aliases_of_one_anchor_are_an_ordinary_cell() {
+    let mut text = String::from(
+        "module: M\nrobot: { urdf: ../robots/irb1400.urdf, base: [0, 0, 0] }\npoints:\n  - { name: P0, joints: &j [10, 0, 0, 0, 30, 0] }\n",
+    );
+    for k in 1..=101 {
+        text.push_str(&format!("  - {{ name: P{k}, joints: *j }}\n"));
+    }
+    let cell = parse_str(&text).expect("101 aliases of one anchor");
+    assert_eq!(cell.points.len(), 102);
+    assert!(cell.points.iter().all(|p| p.name.starts_with('P')));
+}

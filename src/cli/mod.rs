@@ -34,19 +34,26 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
 /// are written are they renamed into place, in order. On a failure every temporary file left is
 /// removed, so a run that cannot write its module leaves no picture, page or report of it
 /// either (a rename failing after others succeeded, which needs the file system to change under
-/// the run, is the one way to keep some).
+/// the run, is the one way to keep some). A path that names something other than a file or a
+/// directory (a device such as `/dev/null` or `/dev/stdout`, a pipe) is written in place,
+/// after every file is in place: a rename would replace the device with a file.
 pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), Error> {
     let err = |path: &Path| {
         let path = path.to_path_buf();
         move |source| Error::Write { path, source }
     };
     let mut written: Vec<(std::path::PathBuf, &Path)> = Vec::new();
+    let mut in_place: Vec<(&Path, &[u8])> = Vec::new();
     let clean = |temps: &[(std::path::PathBuf, &Path)]| {
         for (tmp, _) in temps {
             let _ = std::fs::remove_file(tmp);
         }
     };
-    for (i, (path, bytes)) in files.iter().enumerate() {
+    for (i, &(path, bytes)) in files.iter().enumerate() {
+        if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
+            in_place.push((path, bytes));
+            continue;
+        }
         let dir = path
             .parent()
             .filter(|d| !d.as_os_str().is_empty())
@@ -77,6 +84,41 @@ pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), Error> {
         if let Err(e) = std::fs::rename(tmp, path) {
             clean(&written[k..]);
             return Err(err(path)(e));
+        }
+    }
+    for (path, bytes) in in_place {
+        std::fs::OpenOptions::new()
+            .write(true)
+            .open(path)
+            .and_then(|mut f| f.write_all(bytes))
+            .map_err(err(path))?;
+    }
+    Ok(())
+}
+
+/// Whether two paths name the same file: equal, equal made absolute, or equal resolved (links
+/// and `..` of paths that exist).
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    a == b
+        || matches!(
+            (std::path::absolute(a), std::path::absolute(b)),
+            (Ok(x), Ok(y)) if x == y
+        )
+        || matches!(
+            (std::fs::canonicalize(a), std::fs::canonicalize(b)),
+            (Ok(x), Ok(y)) if x == y
+        )
+}
+
+/// Refuses to write over a file the run reads (the robot's URDF or controller file, known
+/// only once the cell is loaded; the cell and the template the command line checks first).
+pub fn refuse_inputs(outputs: &[(&Path, &[u8])], inputs: &[&Path]) -> Result<(), Error> {
+    for (path, _) in outputs {
+        if inputs.iter().any(|input| same_file(path, input)) {
+            return Err(Error::Write {
+                path: path.to_path_buf(),
+                source: std::io::Error::other("it is a file the run reads"),
+            });
         }
     }
     Ok(())

@@ -89,6 +89,11 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     if let Some(path) = opts.output.as_deref() {
         all.push((path, out.rendered.text.as_bytes()));
     }
+    let robot = &job.robot;
+    let read: Vec<&Path> = std::iter::once(robot.urdf_path.as_path())
+        .chain(robot.controller.source.as_deref())
+        .collect();
+    super::refuse_inputs(&all, &read).map_err(|e| job.fail(e))?;
     write_all_atomically(&all).map_err(|e| job.fail(e))?;
     if opts.output.is_none() {
         emit(None, out.rendered.text.as_bytes()).map_err(|e| job.fail(e))?;

@@ -593,14 +593,29 @@ mod tests {
             text.replace(r#"<cylinder radius="0.15""#, r#"<cylinder radius="1e300""#),
             "link 'link_2': cylinder radius and length must be at most 1000 m",
         );
-        // A seventh revolute joint after joint 6: before, silently left out.
+        // A seventh revolute joint between joint 6 and tool0: before, silently left out (and
+        // tool0 with it).
         refused(
             text.replace(
+                r#"<parent link="link_6"/><child link="tool0"/>"#,
+                r#"<parent link="link_7"/><child link="tool0"/>"#,
+            )
+            .replace(
                 "</robot>",
-                r#"<link name="link_7"/><joint name="joint_7" type="revolute"><parent link="tool0"/><child link="link_7"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="0" velocity="1"/></joint></robot>"#,
+                r#"<link name="link_7"/><joint name="joint_7" type="revolute"><parent link="link_6"/><child link="link_7"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="0" velocity="1"/></joint></robot>"#,
             ),
             "joint 'joint_7' is a 7th revolute joint in the chain after joint 6 ('joint_6')",
         );
+        // A revolute joint below tool0 (a tool's spindle) belongs to the tool: the arm is the
+        // same robot as without it.
+        let spindle = text.replace(
+            "</robot>",
+            r#"<link name="spindle"/><joint name="spindle_joint" type="continuous"><parent link="tool0"/><child link="spindle"/><axis xyz="0 0 1"/></joint></robot>"#,
+        );
+        let with_spindle =
+            urdf::robot_from_urdf(Path::new("x.urdf"), &spindle, None).expect("a spindle");
+        let plain = urdf::robot_from_urdf(Path::new("x.urdf"), text, None).expect("the IRB 1400");
+        assert_eq!(format!("{with_spindle:?}"), format!("{plain:?}"));
         // A controller file with an axis range of 1e300 deg: the same bound.
         let ctrl = include_str!("../../robots/irb1400.controller.yaml")
             .replace("{ min: -170, max: 170,", "{ min: -1e300, max: 170,");

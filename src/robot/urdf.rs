@@ -3,8 +3,9 @@
 //!
 //! What it accepts: one serial chain from the root link through exactly six revolute (or
 //! continuous) joints; fixed joints anywhere in the chain are folded into the next joint's origin;
-//! a fixed child named `tool0` after joint 6 gives the tool0 frame (a 7th revolute joint in the
-//! chain is refused: gen-rapid plans six-axis arms). Each child link of joints 1..3 must carry
+//! a fixed child named `tool0` after joint 6 gives the tool0 frame and ends the chain (joints
+//! below tool0 belong to a tool and are ignored; a 7th revolute joint before it is refused:
+//! gen-rapid plans six-axis arms). Each child link of joints 1..3 must carry
 //! collision geometry, cylinders only (the paper's lumped model); collision geometry of links
 //! 4..6 is ignored (the forearm cylinder covers the wrist, paper section 6). Every number the
 //! chain uses must be finite, lengths within 1 km, axis ranges within two turns each way.
@@ -130,6 +131,9 @@ pub fn robot_from_urdf(
                 pending *= pose_mm(&next.origin);
                 if joints.len() == 6 && next.child.link == "tool0" {
                     flange_to_tool0 = pending;
+                    // What hangs below tool0 (a spindle, a gripper's fingers) is the tool's,
+                    // which the cell's `tool:` describes: the arm's chain ends here.
+                    break;
                 }
             }
             urdf_rs::JointType::Revolute | urdf_rs::JointType::Continuous => {

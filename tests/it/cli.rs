@@ -448,3 +448,78 @@ fn a_terminal_gets_a_progress_bar_and_a_pipe_gets_none() {
     assert_eq!(err.lines().count(), 1, "{err:?}");
     assert!(!err.contains("inspecting"), "{err:?}");
 }
+
+/// An output that is a device (`-o /dev/null`, `--svg /dev/null`) is written in place: the
+/// device stays a device (before, a run as root renamed its temporary file over the device
+/// node; as another user it failed, the temporary file not creatable in /dev).
+#[test]
+fn an_output_that_is_a_device_stays_a_device() {
+    use std::os::unix::fs::FileTypeExt;
+    let dev_null = std::path::Path::new("/dev/null");
+    if !std::fs::metadata(dev_null).is_ok_and(|m| m.file_type().is_char_device()) {
+        eprintln!("skipped: /dev/null is not a character device on this machine");
+        return;
+    }
+    for args in [
+        vec!["cells/conveyor.yaml", "--grid", "3", "-o", "/dev/null"],
+        vec!["cells/conveyor.yaml", "--grid", "3", "--svg", "/dev/null"],
+    ] {
+        let o = gen_rapid(&args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
+        let m = std::fs::metadata(dev_null).expect("/dev/null");
+        assert!(
+            m.file_type().is_char_device(),
+            "{args:?}: /dev/null replaced"
+        );
+    }
+}
+
+/// No output overwrites a file the run reads: the robot's URDF (known once the cell is read:
+/// exit 4, the URDF intact), or the cell itself through `locate --svg` or `compare --svg`
+/// (exit 2, as the plain run's `-o CELL`). Before, all three wrote over their input.
+#[test]
+fn no_output_overwrites_an_input() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let urdf = dir.path().join("arm.urdf");
+    std::fs::copy("robots/irb1400.urdf", &urdf).expect("urdf");
+    std::fs::copy(
+        "robots/irb1400.controller.yaml",
+        dir.path().join("arm.controller.yaml"),
+    )
+    .expect("controller");
+    let cell = dir.path().join("cell.yaml");
+    let text = std::fs::read_to_string("cells/conveyor.yaml")
+        .expect("cell")
+        .replace("../robots/irb1400.urdf", "arm.urdf");
+    assert!(text.contains("urdf: arm.urdf"), "the cell names the URDF");
+    std::fs::write(&cell, &text).expect("cell");
+    let (urdf_s, cell_s) = (urdf.to_str().expect("utf-8"), cell.to_str().expect("utf-8"));
+    let o = gen_rapid(&[cell_s, "--grid", "3", "-o", urdf_s]);
+    assert_eq!(o.status.code(), Some(4), "{}", stderr(&o));
+    assert!(o.stdout.is_empty());
+    assert!(
+        stderr(&o).contains("it is a file the run reads"),
+        "{}",
+        stderr(&o)
+    );
+    let kept = std::fs::read("robots/irb1400.urdf").expect("urdf");
+    assert_eq!(
+        std::fs::read(&urdf).expect("urdf"),
+        kept,
+        "the URDF overwritten"
+    );
+    for command in ["locate", "compare"] {
+        let o = gen_rapid(&[command, cell_s, "--svg", cell_s]);
+        assert_eq!(o.status.code(), Some(2), "{command}: {}", stderr(&o));
+        assert!(
+            stderr(&o).contains("names the same file as CELL"),
+            "{}",
+            stderr(&o)
+        );
+        assert_eq!(
+            std::fs::read_to_string(&cell).expect("cell"),
+            text,
+            "{command}"
+        );
+    }
+}

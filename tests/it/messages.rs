@@ -290,10 +290,11 @@ fn the_warning_about_a_urdf_without_a_controller_file_is_bounded_too() {
 #[test]
 fn every_error_fixture_has_one_error_and_a_help_line() {
     let dir = crate::common::root().join("tests/err");
-    let mut missing = Vec::new();
+    let (mut missing, mut read) = (Vec::new(), 0);
     for entry in std::fs::read_dir(&dir).expect("tests/err") {
         let path = entry.expect("entry").path();
         if path.extension().is_some_and(|e| e == "stderr") {
+            read += 1;
             let text = std::fs::read_to_string(&path).expect("fixture");
             let errors = text.lines().filter(|l| l.starts_with("error: ")).count();
             let helps = text.lines().filter(|l| l.starts_with("help: ")).count();
@@ -302,5 +303,6 @@ fn every_error_fixture_has_one_error_and_a_help_line() {
             }
         }
     }
+    assert!(read >= 90, "only {read} fixtures read in {}", dir.display());
     assert!(missing.is_empty(), "{}", missing.join("\n"));
 }

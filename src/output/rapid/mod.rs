@@ -264,6 +264,8 @@ pub enum TemplateError {
         /// That line of the template.
         line_text: Option<String>,
         message: String,
+        /// Rendering ran past [`TEMPLATE_FUEL`] instructions.
+        out_of_fuel: bool,
     },
 }
 
@@ -287,6 +289,7 @@ impl TemplateError {
             column,
             line_text,
             message,
+            out_of_fuel: e.kind() == minijinja::ErrorKind::OutOfFuel,
         }
     }
 }
