@@ -36,24 +36,33 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
 /// either (a rename failing after others succeeded, which needs the file system to change under
 /// the run, is the one way to keep some). A path that names something other than a file or a
 /// directory (a device such as `/dev/null` or `/dev/stdout`, a pipe) is written in place,
-/// after every file is in place: a rename would replace the device with a file.
+/// after every file is in place: a rename would replace the device with a file. A path that is
+/// a link to a file (`/dev/stdout` redirected to a file) replaces the file it leads to, not the
+/// link.
 pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), Error> {
+    use std::path::PathBuf;
     let err = |path: &Path| {
         let path = path.to_path_buf();
         move |source| Error::Write { path, source }
     };
-    let mut written: Vec<(std::path::PathBuf, &Path)> = Vec::new();
+    // (temporary file, where it goes, the path as named)
+    let mut written: Vec<(PathBuf, PathBuf, &Path)> = Vec::new();
     let mut in_place: Vec<(&Path, &[u8])> = Vec::new();
-    let clean = |temps: &[(std::path::PathBuf, &Path)]| {
-        for (tmp, _) in temps {
+    let clean = |temps: &[(PathBuf, PathBuf, &Path)]| {
+        for (tmp, _, _) in temps {
             let _ = std::fs::remove_file(tmp);
         }
     };
-    for (i, &(path, bytes)) in files.iter().enumerate() {
-        if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
-            in_place.push((path, bytes));
+    for (i, &(named, bytes)) in files.iter().enumerate() {
+        if std::fs::metadata(named).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
+            in_place.push((named, bytes));
             continue;
         }
+        let link = std::fs::symlink_metadata(named).is_ok_and(|m| m.file_type().is_symlink());
+        let path = match std::fs::canonicalize(named) {
+            Ok(resolved) if link => resolved,
+            _ => named.to_path_buf(),
+        };
         let dir = path
             .parent()
             .filter(|d| !d.as_os_str().is_empty())
@@ -71,19 +80,19 @@ pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), Error> {
                 ));
             }
             let mut f = std::fs::File::create(&tmp)?;
-            written.push((tmp.clone(), path));
+            written.push((tmp.clone(), path.clone(), named));
             f.write_all(bytes)?;
             f.sync_all()
         })();
         if let Err(e) = result {
             clean(&written);
-            return Err(err(path)(e));
+            return Err(err(named)(e));
         }
     }
-    for (k, (tmp, path)) in written.iter().enumerate() {
+    for (k, (tmp, path, named)) in written.iter().enumerate() {
         if let Err(e) = std::fs::rename(tmp, path) {
             clean(&written[k..]);
-            return Err(err(path)(e));
+            return Err(err(named)(e));
         }
     }
     for (path, bytes) in in_place {

@@ -523,3 +523,25 @@ fn no_output_overwrites_an_input() {
         );
     }
 }
+
+/// An output that is a link to a file (as `/dev/stdout` is when stdout goes to a file) writes
+/// the file it leads to and keeps the link (before, the rename replaced the link itself).
+#[test]
+fn an_output_that_is_a_link_writes_the_file_it_leads_to() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let (file, link) = (dir.path().join("out.mod"), dir.path().join("link.mod"));
+    std::fs::write(&file, "old").expect("file");
+    std::os::unix::fs::symlink(&file, &link).expect("symlink");
+    let o = gen_rapid(&[
+        "cells/conveyor.yaml",
+        "--grid",
+        "3",
+        "-o",
+        link.to_str().expect("utf-8"),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let kept = std::fs::symlink_metadata(&link).expect("link");
+    assert!(kept.file_type().is_symlink(), "the link was replaced");
+    let written = std::fs::read_to_string(&file).expect("file");
+    assert!(written.starts_with("MODULE "), "{written}");
+}
