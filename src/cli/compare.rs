@@ -9,7 +9,7 @@
 //! route, 3 (planning failed) when none did. Everything is deterministic except the planning
 //! time.
 
-use super::{emit, write_atomically};
+use super::{emit, write_for};
 use crate::error::{Error, Failure};
 use crate::output::comparison::{Comparison, Row};
 use crate::output::cspace_svg::{self, Marked};
@@ -140,7 +140,7 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
     };
     // The picture first: if it cannot be written, nothing has reached stdout yet.
     if let Some((path, svg_text)) = &svg {
-        write_atomically(path, svg_text.as_bytes()).map_err(|e| job.fail(e))?;
+        write_for(&job, &[(path, svg_text.as_bytes())]).map_err(|e| job.fail(e))?;
     }
     emit(None, text.as_bytes()).map_err(|e| job.fail(e))?;
     if plans.is_empty() {

@@ -17,7 +17,7 @@
 //! or obstacles, pointing at `robot.base`; then `--svg` draws why (the reach circles, the
 //! obstacles' footprints, R where it is not empty: [`topview_svg::render_failure`]).
 
-use super::{emit, write_atomically};
+use super::{emit, write_for};
 use crate::error::{Error, Failure};
 use crate::output::location::{self, Report};
 use crate::output::topview_svg;
@@ -55,7 +55,7 @@ pub fn locate(opts: &LocateOptions) -> Result<String, Failure> {
                 source: std::io::Error::other(format!("drawing failed: {message}")),
             })
         })?;
-        write_atomically(path, svg.as_bytes()).map_err(|e| job.fail(e))?;
+        write_for(&job, &[(path, svg.as_bytes())]).map_err(|e| job.fail(e))?;
     }
     emit(None, out.as_bytes()).map_err(|e| job.fail(e))?;
     Ok(format!(
@@ -87,7 +87,7 @@ fn failed(job: &Loaded, opts: &LocateOptions, error: Error) -> Failure {
                         source: std::io::Error::other(format!("drawing failed: {message}")),
                     }
                 })?;
-                write_atomically(path, svg.as_bytes())
+                write_for(job, &[(path, svg.as_bytes())])
             });
             match drawn {
                 Ok(()) => format!(

@@ -119,6 +119,19 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
         )
 }
 
+/// [`write_all_atomically`] for a command on a loaded cell: refused, before anything is
+/// written, where an output names the robot's URDF or controller file ([`refuse_inputs`]).
+/// Every command's files go through here (a run's, its failure's pictures, `locate`'s and
+/// `compare`'s pictures).
+pub fn write_for(job: &crate::pipeline::Loaded, files: &[(&Path, &[u8])]) -> Result<(), Error> {
+    let robot = &job.robot;
+    let read: Vec<&Path> = std::iter::once(robot.urdf_path.as_path())
+        .chain(robot.controller.source.as_deref())
+        .collect();
+    refuse_inputs(files, &read)?;
+    write_all_atomically(files)
+}
+
 /// Refuses to write over a file the run reads (the robot's URDF or controller file, known
 /// only once the cell is loaded; the cell and the template the command line checks first).
 pub fn refuse_inputs(outputs: &[(&Path, &[u8])], inputs: &[&Path]) -> Result<(), Error> {

@@ -9,7 +9,7 @@
 //! stdout stays empty, and a note on stderr says what was drawn.
 
 use super::progress::TerminalProgress;
-use super::{emit, write_all_atomically, write_atomically};
+use super::{emit, write_for};
 use crate::cell;
 use crate::error::{exit, Error, Failure};
 use crate::output::cspace_svg::{self, Marked};
@@ -89,12 +89,7 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     if let Some(path) = opts.output.as_deref() {
         all.push((path, out.rendered.text.as_bytes()));
     }
-    let robot = &job.robot;
-    let read: Vec<&Path> = std::iter::once(robot.urdf_path.as_path())
-        .chain(robot.controller.source.as_deref())
-        .collect();
-    super::refuse_inputs(&all, &read).map_err(|e| job.fail(e))?;
-    write_all_atomically(&all).map_err(|e| job.fail(e))?;
+    write_for(&job, &all).map_err(|e| job.fail(e))?;
     if opts.output.is_none() {
         emit(None, out.rendered.text.as_bytes()).map_err(|e| job.fail(e))?;
     }
@@ -254,7 +249,7 @@ fn failure_svg(
                 &title,
             )
             .map_err(Error::from)
-            .and_then(|svg| write_atomically(path, svg.as_bytes()));
+            .and_then(|svg| write_for(job, &[(path, svg.as_bytes())]));
             let names: Vec<&str> = marked
                 .iter()
                 .filter_map(|&k| searched.placed.points.get(k))
@@ -330,7 +325,7 @@ fn failure_page(
     );
     let written = preview::render_html(&scene)
         .map_err(Error::from)
-        .and_then(|html| write_atomically(path, html.as_bytes()));
+        .and_then(|html| write_for(job, &[(path, html.as_bytes())]));
     Some(match written {
         Ok(()) => format!(
             "the preview page of the failure is written to {}",

@@ -612,6 +612,20 @@ mod tests {
             "</robot>",
             r#"<link name="spindle"/><joint name="spindle_joint" type="continuous"><parent link="tool0"/><child link="spindle"/><axis xyz="0 0 1"/></joint></robot>"#,
         );
+        // A loop of fixed joints after joint 6 (link_6 -> a -> b -> a, no tool0): before, the
+        // walk never ended.
+        refused(
+            text.replace(r#"<link name="tool0"/>"#, r#"<link name="a"/><link name="b"/>"#)
+                .replace(
+                    r#"<parent link="link_6"/><child link="tool0"/>"#,
+                    r#"<parent link="link_6"/><child link="a"/>"#,
+                )
+                .replace(
+                    "</robot>",
+                    r#"<joint name="jb" type="fixed"><parent link="a"/><child link="b"/></joint><joint name="jc" type="fixed"><parent link="b"/><child link="a"/></joint></robot>"#,
+                ),
+            "link 'a' is reached twice along the chain (the joints form a loop)",
+        );
         let with_spindle =
             urdf::robot_from_urdf(Path::new("x.urdf"), &spindle, None).expect("a spindle");
         let plain = urdf::robot_from_urdf(Path::new("x.urdf"), text, None).expect("the IRB 1400");

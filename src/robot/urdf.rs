@@ -86,7 +86,18 @@ pub fn robot_from_urdf(
     let mut pending = Isometry3::identity(); // fixed joints since the last revolute one
     let mut flange_to_tool0 = Isometry3::identity();
     let mut link = root;
+    let mut visited = std::collections::HashSet::new();
     loop {
+        // A loop of joints (a link its own descendant) would walk for ever.
+        if !visited.insert(link.clone()) {
+            return Err(model_err(format!(
+                "link '{link}' is reached twice along the chain (the joints form a loop); gen-rapid needs one serial chain"
+            )));
+        }
+        // Joint 6's own child named tool0 is the flange frame; what hangs below it is the tool's.
+        if joints.len() == 6 && link == "tool0" {
+            break;
+        }
         let children: Vec<&urdf_rs::Joint> = urdf
             .joints
             .iter()

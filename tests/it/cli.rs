@@ -449,29 +449,43 @@ fn a_terminal_gets_a_progress_bar_and_a_pipe_gets_none() {
     assert!(!err.contains("inspecting"), "{err:?}");
 }
 
-/// An output that is a device (`-o /dev/null`, `--svg /dev/null`) is written in place: the
-/// device stays a device (before, a run as root renamed its temporary file over the device
-/// node; as another user it failed, the temporary file not creatable in /dev).
+/// An output that is not a file (a pipe here, as `/dev/null` or `/dev/stdout` on a pipe) is
+/// written in place: the pipe stays a pipe and its reader gets the module (before, a run as
+/// root renamed its temporary file over such a path: over `/dev/null` itself). A pipe made
+/// in a temporary directory, so that a regression cannot replace a device of the machine.
 #[test]
-fn an_output_that_is_a_device_stays_a_device() {
+fn an_output_that_is_a_pipe_stays_a_pipe() {
     use std::os::unix::fs::FileTypeExt;
-    let dev_null = std::path::Path::new("/dev/null");
-    if !std::fs::metadata(dev_null).is_ok_and(|m| m.file_type().is_char_device()) {
-        eprintln!("skipped: /dev/null is not a character device on this machine");
-        return;
+    let dir = tempfile::tempdir().expect("tempdir");
+    let fifo = dir.path().join("module.pipe");
+    match std::process::Command::new("mkfifo").arg(&fifo).status() {
+        Ok(s) if s.success() => {}
+        _ => {
+            eprintln!("skipped: no mkfifo on this machine");
+            return;
+        }
     }
-    for args in [
-        vec!["cells/conveyor.yaml", "--grid", "3", "-o", "/dev/null"],
-        vec!["cells/conveyor.yaml", "--grid", "3", "--svg", "/dev/null"],
-    ] {
-        let o = gen_rapid(&args);
-        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
-        let m = std::fs::metadata(dev_null).expect("/dev/null");
-        assert!(
-            m.file_type().is_char_device(),
-            "{args:?}: /dev/null replaced"
-        );
-    }
+    let (tx, rx) = std::sync::mpsc::channel();
+    let reader = fifo.clone();
+    std::thread::spawn(move || {
+        let _ = tx.send(std::fs::read_to_string(&reader));
+    });
+    let o = gen_rapid(&[
+        "cells/conveyor.yaml",
+        "--grid",
+        "3",
+        "-o",
+        fifo.to_str().expect("utf-8"),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let kind = std::fs::symlink_metadata(&fifo).expect("pipe").file_type();
+    assert!(kind.is_fifo(), "the pipe was replaced by {kind:?}");
+    // (A guard against a hang, not a timing: the reader has the module once the run is done.)
+    let read = rx
+        .recv_timeout(std::time::Duration::from_secs(60))
+        .expect("the reader ends")
+        .expect("read");
+    assert!(read.starts_with("MODULE "), "{read}");
 }
 
 /// No output overwrites a file the run reads: the robot's URDF (known once the cell is read:
@@ -508,6 +522,31 @@ fn no_output_overwrites_an_input() {
         kept,
         "the URDF overwritten"
     );
+    // The controller file beside the URDF (not named in the cell), and the pictures of
+    // `locate` and `compare` onto the URDF: refused alike.
+    let controller = dir.path().join("arm.controller.yaml");
+    let controller_s = controller.to_str().expect("utf-8");
+    let controller_text = std::fs::read("robots/irb1400.controller.yaml").expect("controller");
+    for args in [
+        vec![cell_s, "--grid", "3", "-o", controller_s],
+        vec!["locate", cell_s, "--svg", urdf_s],
+        vec!["compare", cell_s, "--grid", "3", "--svg", urdf_s],
+    ] {
+        let o = gen_rapid(&args);
+        assert_eq!(o.status.code(), Some(4), "{args:?}: {}", stderr(&o));
+        assert!(o.stdout.is_empty(), "{args:?}");
+        assert!(
+            stderr(&o).contains("it is a file the run reads"),
+            "{}",
+            stderr(&o)
+        );
+        assert_eq!(std::fs::read(&urdf).expect("urdf"), kept, "{args:?}");
+        assert_eq!(
+            std::fs::read(&controller).expect("c"),
+            controller_text,
+            "{args:?}"
+        );
+    }
     for command in ["locate", "compare"] {
         let o = gen_rapid(&[command, cell_s, "--svg", cell_s]);
         assert_eq!(o.status.code(), Some(2), "{command}: {}", stderr(&o));
