@@ -733,6 +733,38 @@ fn tool_is_free_agrees_with_parry_at_random_poses() {
     );
 }
 
+/// The grid of the look tests: 5 deg in front of the robot over the trunk.
+fn look_grid() -> crate::plan::cspace::Grid {
+    crate::plan::cspace::Grid::over([[-90.0, 90.0], [-60.0, 70.0], [-60.0, 70.0]], 5.0)
+}
+
+/// The look tests' two legs' wrist schedules: a long leg, and a short one whose wrist turns
+/// far per step.
+fn look_schedules() -> [crate::plan::leg::WristSchedule; 2] {
+    use crate::plan::leg::WristSchedule;
+    [
+        WristSchedule::new(
+            &[-60.0, -10.0, 0.0, -30.0, -60.0, 20.0],
+            &[60.0, 40.0, 40.0, 120.0, 70.0, 200.0],
+        ),
+        WristSchedule::new(
+            &[-3.0, 10.0, 20.0, -150.0, -110.0, -300.0],
+            &[3.0, 10.0, 20.0, 150.0, 110.0, 300.0],
+        ),
+    ]
+}
+
+/// Node `i` of `g` with `schedule`'s wrist, and the sines and cosines of axes 1..3 as a leg's
+/// memo holds them.
+fn look_pose(
+    schedule: &crate::plan::leg::WristSchedule,
+    g: &crate::plan::cspace::Grid,
+    i: usize,
+) -> ([f64; 6], [(f64, f64); 3]) {
+    let six = schedule.six(&g.axes_deg(g.node(i)));
+    (six, [0, 1, 2].map(|k| six[k].to_radians().sin_cos()))
+}
+
 /// The tool looks' blocked answers from upper bounds are the exact test's: at every node of a
 /// 5 deg grid in front of the robot, with the wrist of a long leg and of a short one whose
 /// wrist turns far per step, the look (`tool_look_sincos`, memo tables' sines and cosines)
@@ -742,26 +774,13 @@ fn tool_is_free_agrees_with_parry_at_random_poses() {
 /// independently of the look).
 #[test]
 fn blocked_answers_from_upper_bounds_are_the_exact_tests() {
-    use crate::plan::cspace::Grid;
-    use crate::plan::leg::WristSchedule;
     let m = torch_model(10.0);
     let (tool, c) = (m.tool.as_ref().expect("a torch"), m.clearance_mm());
-    let g = Grid::over([[-90.0, 90.0], [-60.0, 70.0], [-60.0, 70.0]], 5.0);
-    for (from, to) in [
-        (
-            [-60.0, -10.0, 0.0, -30.0, -60.0, 20.0],
-            [60.0, 40.0, 40.0, 120.0, 70.0, 200.0],
-        ),
-        (
-            [-3.0, 10.0, 20.0, -150.0, -110.0, -300.0],
-            [3.0, 10.0, 20.0, 150.0, 110.0, 300.0],
-        ),
-    ] {
-        let schedule = WristSchedule::new(&from, &to);
+    let g = look_grid();
+    for schedule in look_schedules() {
         let (mut blocked, mut by_balls, mut by_upper) = (0, 0, 0);
         for i in 0..g.len() {
-            let six = schedule.six(&g.axes_deg(g.node(i)));
-            let sc = [0, 1, 2].map(|k| six[k].to_radians().sin_cos());
+            let (six, sc) = look_pose(&schedule, &g, i);
             let exact = m.tool_is_free(&six);
             assert_eq!(m.tool_look_sincos(&six, &sc).0, exact, "at {six:?}");
             if exact {
@@ -802,27 +821,14 @@ fn blocked_answers_from_upper_bounds_are_the_exact_tests() {
 /// occur at many nodes where the balls left the answer to the exact test.
 #[test]
 fn shapes_called_far_are_clear_and_looks_from_link_1_are_the_looks() {
-    use crate::plan::cspace::Grid;
-    use crate::plan::leg::WristSchedule;
-    let g = Grid::over([[-90.0, 90.0], [-60.0, 70.0], [-60.0, 70.0]], 5.0);
+    let g = look_grid();
     for clearance in [0.0, 10.0, 60.0] {
         let m = torch_model(clearance);
         let (tool, c) = (m.tool.as_ref().expect("a torch"), m.clearance_mm());
         let mut far_at_exact = 0;
-        for (from, to) in [
-            (
-                [-60.0, -10.0, 0.0, -30.0, -60.0, 20.0],
-                [60.0, 40.0, 40.0, 120.0, 70.0, 200.0],
-            ),
-            (
-                [-3.0, 10.0, 20.0, -150.0, -110.0, -300.0],
-                [3.0, 10.0, 20.0, 150.0, 110.0, 300.0],
-            ),
-        ] {
-            let schedule = WristSchedule::new(&from, &to);
+        for schedule in look_schedules() {
             for i in 0..g.len() {
-                let six = schedule.six(&g.axes_deg(g.node(i)));
-                let sc = [0, 1, 2].map(|k| six[k].to_radians().sin_cos());
+                let (six, sc) = look_pose(&schedule, &g, i);
                 let look = m.tool_look_sincos(&six, &sc);
                 let link1 = m.tool_link1(sc[0]).expect("a tool");
                 let from1 = m.tool_look_link1(&six, &sc, &link1);
@@ -868,8 +874,6 @@ fn shapes_called_far_are_clear_and_looks_from_link_1_are_the_looks() {
 /// far marks where the balls left the answer to it.
 #[test]
 fn a_tool_of_many_shapes_marks_only_far_shapes_and_answers_as_the_exact_test() {
-    use crate::plan::cspace::Grid;
-    use crate::plan::leg::WristSchedule;
     let mut tool = torch();
     tool.shapes = (0..10)
         .map(|k| {
@@ -893,7 +897,7 @@ fn a_tool_of_many_shapes_marks_only_far_shapes_and_answers_as_the_exact_test() {
             shape(&format!("s{k}"), geometry)
         })
         .collect();
-    let g = Grid::over([[-90.0, 90.0], [-60.0, 70.0], [-60.0, 70.0]], 5.0);
+    let g = look_grid();
     let mut called_far = [0usize; FAR_SHAPES];
     let mut by_exact = 0;
     for clearance in [0.0, 10.0, 60.0] {
@@ -906,20 +910,9 @@ fn a_tool_of_many_shapes_marks_only_far_shapes_and_answers_as_the_exact_test() {
         );
         let (shapes, c) = (&m.tool.as_ref().expect("a tool").shapes, m.clearance_mm());
         assert_eq!(shapes.len(), 10);
-        for (from, to) in [
-            (
-                [-60.0, -10.0, 0.0, -30.0, -60.0, 20.0],
-                [60.0, 40.0, 40.0, 120.0, 70.0, 200.0],
-            ),
-            (
-                [-3.0, 10.0, 20.0, -150.0, -110.0, -300.0],
-                [3.0, 10.0, 20.0, 150.0, 110.0, 300.0],
-            ),
-        ] {
-            let schedule = WristSchedule::new(&from, &to);
+        for schedule in look_schedules() {
             for i in 0..g.len() {
-                let six = schedule.six(&g.axes_deg(g.node(i)));
-                let sc = [0, 1, 2].map(|k| six[k].to_radians().sin_cos());
+                let (six, sc) = look_pose(&schedule, &g, i);
                 let look = m.tool_look_sincos(&six, &sc);
                 assert_eq!(look.0, m.tool_is_free(&six), "the look at {six:?}");
                 if look.1 == 0.0 {

@@ -449,6 +449,18 @@ fn a_terminal_gets_a_progress_bar_and_a_pipe_gets_none() {
     assert!(!err.contains("inspecting"), "{err:?}");
 }
 
+/// Writes the conveyor's module (at 3 deg) to `path` with `-o`: exit 0.
+fn module_to(path: &std::path::Path) {
+    let o = gen_rapid(&[
+        "cells/conveyor.yaml",
+        "--grid",
+        "3",
+        "-o",
+        path.to_str().expect("utf-8"),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}
+
 /// An output that is not a file (a pipe here, as `/dev/null` or `/dev/stdout` on a pipe) is
 /// written in place: the pipe stays a pipe and its reader gets the module (before, a run as
 /// root renamed its temporary file over such a path: over `/dev/null` itself). A pipe made
@@ -470,14 +482,7 @@ fn an_output_that_is_a_pipe_stays_a_pipe() {
     std::thread::spawn(move || {
         let _ = tx.send(std::fs::read_to_string(&reader));
     });
-    let o = gen_rapid(&[
-        "cells/conveyor.yaml",
-        "--grid",
-        "3",
-        "-o",
-        fifo.to_str().expect("utf-8"),
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    module_to(&fifo);
     let kind = std::fs::symlink_metadata(&fifo).expect("pipe").file_type();
     assert!(kind.is_fifo(), "the pipe was replaced by {kind:?}");
     // (A guard against a hang, not a timing: the reader has the module once the run is done.)
@@ -571,14 +576,7 @@ fn an_output_that_is_a_link_writes_the_file_it_leads_to() {
     let (file, link) = (dir.path().join("out.mod"), dir.path().join("link.mod"));
     std::fs::write(&file, "old").expect("file");
     std::os::unix::fs::symlink(&file, &link).expect("symlink");
-    let o = gen_rapid(&[
-        "cells/conveyor.yaml",
-        "--grid",
-        "3",
-        "-o",
-        link.to_str().expect("utf-8"),
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    module_to(&link);
     let kept = std::fs::symlink_metadata(&link).expect("link");
     assert!(kept.file_type().is_symlink(), "the link was replaced");
     let written = std::fs::read_to_string(&file).expect("file");
