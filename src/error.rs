@@ -125,11 +125,17 @@ impl Error {
             Error::Robot {
                 source: RobotError::Controller { .. },
                 ..
-            } => Some("the fault is in the controller file named above (robot.controller, or the <stem>.controller.yaml beside the URDF): each axis a range within -720 .. 720 deg, a speed within 0.1 .. 10000 deg/s and an acceleration within 0.1 .. 1000000 deg/s^2 (README, \"The cell file\")".into()),
+            } => {
+                use crate::robot::controller::{AXIS_ACCELERATION_DEG_S2 as A, AXIS_SPEED_DEG_S as V, MAX_AXIS_DEG as R};
+                Some(format!("the fault is in the controller file named above (robot.controller, or the <stem>.controller.yaml beside the URDF): each axis a range within -{R} .. {R} deg, a speed within {} .. {} deg/s and an acceleration within {} .. {} deg/s^2 (README, \"The cell file\")", V[0], V[1], A[0], A[1]))
+            }
             Error::Robot {
                 source: RobotError::Model { .. },
                 ..
-            } => Some("the fault is in the URDF named above: gen-rapid reads one serial chain of six revolute joints up to tool0, finite numbers, lengths within 1 km, ranges within -720 .. 720 deg, cylinders on the links of joints 1..3 (README, \"The cell file\")".into()),
+            } => {
+                use crate::robot::controller::MAX_AXIS_DEG as R;
+                Some(format!("the fault is in the URDF named above: gen-rapid reads one serial chain of six revolute joints up to tool0, finite numbers, lengths within {} km, ranges within -{R} .. {R} deg, cylinders on the links of joints 1..3 (README, \"The cell file\")", crate::cell::MAX_MAGNITUDE / 1e6))
+            }
             Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
             Error::Place(PlaceError::Range { .. }) => Some("joint values are controller values (what a jointtarget holds) and must lie in the robot's ranges, all six axes; a point without axes 4..6 takes robot.wrist".into()),
             Error::Place(PlaceError::Robtarget { .. }) => Some("a robtarget is the TCP pose [[x, y, z], [q1, q2, q3, q4]] in the work object's frame (mm, quaternion [w, x, y, z]) of the tool's TCP (tool.tframe); confdata [cf1, cf4, cf6, cfx] picks one of the arm's solutions, without it the one nearest the previous point is taken".into()),

@@ -186,7 +186,7 @@ fn parse_grid(s: &str) -> Result<f64, String> {
 /// Refuses (exit 2) a command whose output files name the same file twice, or a file it reads
 /// (the cell, the template): one would overwrite the other (`--svg out --report out`,
 /// `-o cell.yaml`, `locate cell.yaml --svg cell.yaml`). The robot's URDF and controller file,
-/// named in the cell, are checked once it is read (`cli::refuse_inputs`).
+/// named in the cell, are checked once it is read (`cli::write_for`).
 fn check_outputs(
     inputs: &[(&'static str, Option<&Path>)],
     outputs: &[(&'static str, Option<&Path>)],

@@ -142,7 +142,7 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
     if let Some((path, svg_text)) = &svg {
         write_for(&job, &[(path, svg_text.as_bytes())]).map_err(|e| job.fail(e))?;
     }
-    emit(None, text.as_bytes()).map_err(|e| job.fail(e))?;
+    emit(text.as_bytes()).map_err(|e| job.fail(e))?;
     if plans.is_empty() {
         let mut failure = job.fail(Error::NoMethodSucceeded { failures });
         if let Some((path, _)) = &svg {

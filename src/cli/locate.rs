@@ -57,7 +57,7 @@ pub fn locate(opts: &LocateOptions) -> Result<String, Failure> {
         })?;
         write_for(&job, &[(path, svg.as_bytes())]).map_err(|e| job.fail(e))?;
     }
-    emit(None, out.as_bytes()).map_err(|e| job.fail(e))?;
+    emit(out.as_bytes()).map_err(|e| job.fail(e))?;
     Ok(format!(
         "gen-rapid locate: {}: R {:.3} m^2, {} points{}, {:.2} s",
         opts.cell.display(),

@@ -22,12 +22,6 @@ pub fn warn(job: &Loaded) {
     }
 }
 
-/// Writes `bytes` to `path` atomically: a temporary file beside it, then a rename, so a failed
-/// run leaves no half-written file and an existing file is replaced whole.
-pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    write_all_atomically(&[(path, bytes)])
-}
-
 /// Writes every file atomically and, as far as the file system allows, all or none: each goes
 /// to a temporary file beside its place first (a path that is a directory, or a directory that
 /// is missing or read-only, fails here, before any file is in place), and only when all of them
@@ -39,7 +33,7 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
 /// after every file is in place: a rename would replace the device with a file. A path that is
 /// a link to a file (`/dev/stdout` redirected to a file) replaces the file it leads to, not the
 /// link.
-pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), Error> {
+fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), Error> {
     use std::path::PathBuf;
     let err = |path: &Path| {
         let path = path.to_path_buf();
@@ -59,9 +53,10 @@ pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), Error> {
             continue;
         }
         let link = std::fs::symlink_metadata(named).is_ok_and(|m| m.file_type().is_symlink());
-        let path = match std::fs::canonicalize(named) {
-            Ok(resolved) if link => resolved,
-            _ => named.to_path_buf(),
+        let path = if link {
+            std::fs::canonicalize(named).unwrap_or_else(|_| named.to_path_buf())
+        } else {
+            named.to_path_buf()
         };
         let dir = path
             .parent()
@@ -134,7 +129,7 @@ pub fn write_for(job: &crate::pipeline::Loaded, files: &[(&Path, &[u8])]) -> Res
 
 /// Refuses to write over a file the run reads (the robot's URDF or controller file, known
 /// only once the cell is loaded; the cell and the template the command line checks first).
-pub fn refuse_inputs(outputs: &[(&Path, &[u8])], inputs: &[&Path]) -> Result<(), Error> {
+fn refuse_inputs(outputs: &[(&Path, &[u8])], inputs: &[&Path]) -> Result<(), Error> {
     for (path, _) in outputs {
         if inputs.iter().any(|input| same_file(path, input)) {
             return Err(Error::Write {
@@ -156,18 +151,14 @@ pub fn to_json<T: serde::Serialize>(value: &T) -> Result<String, Error> {
     Ok(text)
 }
 
-/// Writes to stdout (the module) or to a file; stdout only ever receives a complete result.
-pub fn emit(output: Option<&Path>, bytes: &[u8]) -> Result<(), Error> {
-    match output {
-        Some(p) => write_atomically(p, bytes),
-        None => {
-            let mut out = std::io::stdout().lock();
-            out.write_all(bytes)
-                .and_then(|_| out.flush())
-                .map_err(|source| Error::Write {
-                    path: "<stdout>".into(),
-                    source,
-                })
-        }
-    }
+/// Writes to stdout (the module, `compare`'s table, `locate`'s report); stdout only ever
+/// receives a complete result.
+pub fn emit(bytes: &[u8]) -> Result<(), Error> {
+    let mut out = std::io::stdout().lock();
+    out.write_all(bytes)
+        .and_then(|_| out.flush())
+        .map_err(|source| Error::Write {
+            path: "<stdout>".into(),
+            source,
+        })
 }

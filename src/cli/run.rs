@@ -91,7 +91,7 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     }
     write_for(&job, &all).map_err(|e| job.fail(e))?;
     if opts.output.is_none() {
-        emit(None, out.rendered.text.as_bytes()).map_err(|e| job.fail(e))?;
+        emit(out.rendered.text.as_bytes()).map_err(|e| job.fail(e))?;
     }
     for w in &out.warnings {
         eprintln!("{w}");

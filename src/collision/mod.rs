@@ -558,11 +558,7 @@ impl CollisionModel {
         arm_sincos: &[(f64, f64); 3],
         link1: Option<&Pose>,
     ) -> (bool, f64) {
-        let (Some(tool), Some(look), Some(flange)) = (
-            &self.tool,
-            &self.look,
-            self.flange_sincos(axes, arm_sincos, link1),
-        ) else {
+        let Some((tool, look, flange)) = self.look_parts(axes, arm_sincos, link1) else {
             return (true, f64::INFINITY);
         };
         let c = self.clearance_mm;
@@ -622,14 +618,26 @@ impl CollisionModel {
         axes: &[f64; 6],
         arm_sincos: &[(f64, f64); 3],
     ) -> [bool; FAR_SHAPES] {
-        match (
-            &self.tool,
-            &self.look,
-            self.flange_sincos(axes, arm_sincos, None),
-        ) {
-            (Some(tool), Some(look), Some(flange)) => self.ball_pass(tool, look, &flange).2,
-            _ => [false; FAR_SHAPES],
+        match self.look_parts(axes, arm_sincos, None) {
+            Some((tool, look, flange)) => self.ball_pass(tool, look, &flange).2,
+            None => [false; FAR_SHAPES],
         }
+    }
+
+    /// What a look works with: the tool, its look tables and the flange placed from sines and
+    /// cosines ([`flange_sincos`](Self::flange_sincos)); `None` without a tool.
+    #[inline]
+    fn look_parts(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+        link1: Option<&Pose>,
+    ) -> Option<(&ToolData, &ToolLook, Pose)> {
+        Some((
+            self.tool.as_ref()?,
+            self.look.as_ref()?,
+            self.flange_sincos(axes, arm_sincos, link1)?,
+        ))
     }
 
     /// The flange's pose (link 6, cell frame) from the chain of sines and cosines, the arm's

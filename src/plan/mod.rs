@@ -7,9 +7,9 @@
 //! the tool (if any) is clear at the leg's wrist, its steps the neighbour steps whose straight
 //! six-axis move is proven safe, and the walk back takes those steps only (on a wave numbered
 //! over every step between usable nodes first, else over those steps only: `leg`), so the
-//! search never runs out of steps (complete on its grid); for the extensile method shorten recursively
-//! ([`shorten`]); merge collinear moves ([`merge`]); round to the written precision (0.001 deg)
-//! and prove every move again. The route starts at the first point, visits every point in the
+//! search never runs out of steps (complete on its grid); for the extensile method shorten
+//! recursively ([`shorten`]); merge collinear moves ([`merge`]); round to the written precision
+//! (0.001 deg) and prove every move again. The route starts at the first point, visits every point in the
 //! cell's order, and each cell point is a waypoint exactly as given ([`route`]). Then the
 //! smallest clearance along every move, and so along the whole route, is certified
 //! ([`certify`]; [`plan`] does both, a run routes here and certifies in the refine stage the
@@ -539,8 +539,9 @@ const LEGS_EXTRA_MAX_BYTES: usize = 64 << 20;
 /// wave) and its tool memo (1 byte with a tool, `leg::ToolMemo`): 6 bytes a node with a tool, 5
 /// without. Over the IRB 1400's ranges at 1 deg (341 x 141 x 136 = 6.5 M nodes) that is 39 MB
 /// with a tool: two legs at once; at 0.5 deg (681 x 281 x 271 = 52 M nodes) 311 MB: leg by leg,
-/// as on any grid of more than 11.2 M nodes (13.4 M without a tool). A wave whose numbers outgrow `u16` takes `u32` labels, twice
-/// the bytes, but only at more than 65 533 steps from its start: on grids far past these.
+/// as on any grid of more than 11.2 M nodes (13.4 M without a tool). A wave whose numbers
+/// outgrow `u16` takes `u32` labels, twice the bytes, but only at more than 65 533 steps from
+/// its start: on grids far past these.
 pub fn legs_at_once(cs: &CSpace, model: &CollisionModel) -> usize {
     // Half bytes a node: two waves' labels and bit sets, and the tool memo.
     let halves = 2 * (2 * std::mem::size_of::<u16>() + 1) + 2 * usize::from(model.has_tool());

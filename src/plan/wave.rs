@@ -384,8 +384,8 @@ pub fn expand<G: Graph + ?Sized>(
 /// A number outgrew the label word of the node-by-node wave.
 struct TooLong;
 /// The expansion for 26 neighbours over a graph whose every step between usable nodes is a
-/// wave step ([`Graph::wave_steps_all`]), level by level on bit sets of axis-3 rows (a row: the nodes of
-/// fixed axes 1 and 2, one bit each, axis-3 index `64 j + b` at bit `b` of word `j`). The nodes
+/// wave step ([`Graph::wave_steps_all`]), level by level on bit sets of axis-3 rows (a row: the
+/// nodes of fixed axes 1 and 2, one bit each, axis-3 index `64 j + b` at bit `b` of word `j`). The nodes
 /// next numbered are the front's neighbours (a row's front shifted by one along axis 3 and
 /// spread to the neighbouring rows) not yet decided; each of those is looked at once (free on
 /// the grid, [`Graph::node_ok_coded`]) and numbered or decided unusable. The front is kept as

@@ -143,11 +143,7 @@ impl SinCosChain {
     /// The pose of link 3 for the sines and cosines of URDF joints 1..3 (for tests).
     #[cfg(test)]
     fn pose3(&self, sc: &[(f64, f64); 3]) -> Pose {
-        let first = Pose {
-            r: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
-            t: [0.0; 3],
-        };
-        let p1 = self.step(&first, 0, sc[0]);
+        let p1 = self.pose1(sc[0]);
         let p2 = self.step(&p1, 1, sc[1]);
         self.step(&p2, 2, sc[2])
     }

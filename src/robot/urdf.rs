@@ -19,9 +19,9 @@ const MM_PER_M: f64 = 1000.0;
 
 /// The largest length a URDF may give (m): 1 km, as a cell's numbers
 /// ([`crate::cell::MAX_MAGNITUDE`] mm).
-const MAX_LENGTH_M: f64 = 1000.0;
+const MAX_LENGTH_M: f64 = crate::cell::MAX_MAGNITUDE / MM_PER_M;
 
-/// Why the numbers of an `<origin>` (or `<axis>`) cannot be used, if they cannot: NaN or
+/// Why the numbers of an `<origin>` cannot be used, if they cannot: NaN or
 /// infinite, or a length beyond [`MAX_LENGTH_M`].
 fn pose_fault(p: &urdf_rs::Pose) -> Option<String> {
     let (xyz, rpy) = (*p.xyz, *p.rpy);

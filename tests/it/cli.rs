@@ -217,14 +217,11 @@ fn a_picture_that_cannot_be_written_leaves_stdout_empty() {
 #[test]
 fn a_run_writes_all_its_files_or_none() {
     let dir = tempfile::tempdir().expect("tempdir");
-    let p = |name: &str| dir.path().join(name).to_str().expect("utf-8").to_string();
+    let p = |name: &str| arg(&dir.path().join(name)).to_string();
     let (svg, report, html) = (p("route.svg"), p("run.json"), p("run.html"));
     // The module's FILE cannot be written (its directory is missing, or it is a directory):
     // before, the picture, page and report were in place already when the module failed.
-    for module in [
-        p("missing/x.mod"),
-        dir.path().to_str().expect("utf-8").into(),
-    ] {
+    for module in [p("missing/x.mod"), arg(dir.path()).into()] {
         let o = gen_rapid(&[
             "tests/ok/tool_wobj_robtargets.yaml",
             "--svg",
@@ -277,10 +274,10 @@ fn an_output_naming_another_file_of_the_run_is_a_usage_error() {
     let text = read("tests/ok/tool_wobj_robtargets.yaml")
         .replace("../../robots/", &format!("{}/robots/", root().display()));
     std::fs::write(&cell, &text).expect("write");
-    let cell = cell.to_str().expect("utf-8");
-    let out = dir.path().join("out").to_str().expect("utf-8").to_string();
+    let cell = arg(&cell);
+    let out = arg(&dir.path().join("out")).to_string();
     let dotted = dir.path().join(".").join("out");
-    let dotted = dotted.to_str().expect("utf-8");
+    let dotted = arg(&dotted);
     for (args, flags) in [
         (vec![cell, "-o", cell], "--output"),
         (vec![cell, "--svg", &out, "--report", dotted], "--report"),
@@ -350,7 +347,7 @@ fn the_tool_example_in_help_plans_as_printed() {
         format!("{head}{tcp}").replace("../robots/", "../../robots/"),
     )
     .expect("write");
-    let o = gen_rapid(&[path.to_str().expect("utf-8")]);
+    let o = gen_rapid(&[arg(&path)]);
     assert!(o.status.success(), "{}", stderr(&o));
     let text = stdout(&o);
     assert!(text.contains("PERS tooldata tTorch := [TRUE,"), "{text}");
@@ -451,13 +448,7 @@ fn a_terminal_gets_a_progress_bar_and_a_pipe_gets_none() {
 
 /// Writes the conveyor's module (at 3 deg) to `path` with `-o`: exit 0.
 fn module_to(path: &std::path::Path) {
-    let o = gen_rapid(&[
-        "cells/conveyor.yaml",
-        "--grid",
-        "3",
-        "-o",
-        path.to_str().expect("utf-8"),
-    ]);
+    let o = gen_rapid(&["cells/conveyor.yaml", "--grid", "3", "-o", arg(path)]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
 }
 
@@ -512,7 +503,7 @@ fn no_output_overwrites_an_input() {
         .replace("../robots/irb1400.urdf", "arm.urdf");
     assert!(text.contains("urdf: arm.urdf"), "the cell names the URDF");
     std::fs::write(&cell, &text).expect("cell");
-    let (urdf_s, cell_s) = (urdf.to_str().expect("utf-8"), cell.to_str().expect("utf-8"));
+    let (urdf_s, cell_s) = (arg(&urdf), arg(&cell));
     let o = gen_rapid(&[cell_s, "--grid", "3", "-o", urdf_s]);
     assert_eq!(o.status.code(), Some(4), "{}", stderr(&o));
     assert!(o.stdout.is_empty());
@@ -530,7 +521,7 @@ fn no_output_overwrites_an_input() {
     // The controller file beside the URDF (not named in the cell), and the pictures of
     // `locate` and `compare` onto the URDF: refused alike.
     let controller = dir.path().join("arm.controller.yaml");
-    let controller_s = controller.to_str().expect("utf-8");
+    let controller_s = arg(&controller);
     let controller_text = std::fs::read("robots/irb1400.controller.yaml").expect("controller");
     for args in [
         vec![cell_s, "--grid", "3", "-o", controller_s],
