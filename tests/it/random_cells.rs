@@ -256,7 +256,21 @@ fn random_cells_plan_safe_modules_or_fail_cleanly() {
         // The shortcut never lengthens a route, in moves or in estimated time; where the vias
         // fly by (odd cells), a via whose corner is too tight may be split in three
         // (`refine::split`), more moves for less time.
-        if let Ok(r) = paper_and_refined(&cell, rc.grid_deg) {
+        // The cell's own method (which `paper_and_refined` plans) fails only where it failed
+        // among every method's results, with a planning error.
+        let own = cell.planner.method.name();
+        let own_planned = results
+            .iter()
+            .any(|(m, p)| m == own && matches!(p, Planned::Module(_)));
+        let paper_refined = paper_and_refined(&cell, rc.grid_deg);
+        assert_eq!(
+            paper_refined.is_ok(),
+            own_planned,
+            "random cell {index}: {own} planned {own_planned}, paper and refined {:?}\n{}",
+            paper_refined.as_ref().err(),
+            rc.yaml
+        );
+        if let Ok(r) = paper_refined {
             let fly_by = index % 2 == 1;
             assert!(
                 (fly_by || r.refined.0 <= r.paper.0) && r.refined.1 <= r.paper.1 + 1e-9,
