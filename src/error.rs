@@ -192,7 +192,7 @@ impl Error {
                 let pad = " ".repeat(num.len());
                 out += &format!("{pad} |\n{num} | {}\n", window.text);
                 if column.is_some() {
-                    out += &format!("{pad} | {}^\n", " ".repeat(window.caret));
+                    out += &format!("{pad} | {}^\n", window.caret_pad());
                 }
             }
         } else if let Some(loc) = self.loc().filter(|l| l.line > 0) {
@@ -201,7 +201,7 @@ impl Error {
                 let window = excerpt::line_window(line, loc.column);
                 let num = loc.line.to_string();
                 let pad = " ".repeat(num.len());
-                let caret = " ".repeat(window.caret);
+                let caret = window.caret_pad();
                 out += &format!("{pad} |\n{num} | {}\n{pad} | {caret}^\n", window.text);
             }
         } else if matches!(

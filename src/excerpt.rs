@@ -16,6 +16,7 @@
 //! characters (as the YAML parser counts them), 1-based.
 
 use std::borrow::Cow;
+use unicode_width::UnicodeWidthChar;
 
 /// Longest source line shown whole, in characters.
 pub const MAX_LINE_CHARS: usize = 160;
@@ -37,6 +38,21 @@ pub struct Window {
     pub text: String,
     /// The caret's 0-based character offset in `text`.
     pub caret: usize,
+}
+
+impl Window {
+    /// The blanks before the caret: as wide on a terminal as the text before it (a CJK
+    /// character takes two columns, a combining mark none), so the caret stands under its
+    /// character whatever the script.
+    pub fn caret_pad(&self) -> String {
+        let width: usize = self
+            .text
+            .chars()
+            .take(self.caret)
+            .map(|c| UnicodeWidthChar::width(c).unwrap_or(0))
+            .sum();
+        " ".repeat(width)
+    }
 }
 
 /// One character as shown: a tab as a space, any other control character as U+FFFD, so each
@@ -157,6 +173,22 @@ pub fn number(v: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_caret_pad_is_as_wide_as_the_text_before_it() {
+        // Two wide characters (two columns each), a combining accent (none), then ASCII.
+        let w = line_window("  - { name: 名前e\u{301}, x: ]", 19);
+        assert_eq!(under(&w), 'x');
+        assert_eq!(w.caret, 18);
+        // 12 ASCII + 2 x 2 wide + 1 + 0 combining + 2 (", ") = 19 columns.
+        assert_eq!(w.caret_pad(), " ".repeat(19));
+        let w = line_window("  - { name: 名前, x: ]", 17);
+        assert_eq!(under(&w), 'x');
+        assert_eq!(w.caret_pad().len(), 18);
+        // ASCII alone: one column a character.
+        let w = line_window("abc", 3);
+        assert_eq!(w.caret_pad(), "  ");
+    }
 
     #[test]
     fn a_number_is_quoted_short() {
