@@ -103,13 +103,46 @@ pub(super) struct Swept<'b> {
 }
 
 impl Swept<'_> {
+    /// The cylinder at the axis-3 angle of sine `sn` and cosine `co` (the ends are split for
+    /// axis 3's value, not URDF joint 3's: `column.rs`).
     #[inline]
-    fn at(&self, q: f64) -> Cylinder {
-        let (sn, co) = q.sin_cos();
+    fn at(&self, (sn, co): (f64, f64)) -> Cylinder {
         Cylinder {
             a: turned(&self.ends[0], sn, co),
             b: turned(&self.ends[1], sn, co),
             radius: self.radius,
+        }
+    }
+}
+
+/// A slice's axis-3 values (deg, in the columns' order) with what the runs read of them: the
+/// values in radians and their sines and cosines, and per run `lo..hi` the middle value
+/// `mid_deg[lo + hi - 1]` (between `deg[(lo + hi - 1) / 2]` and `deg[(lo + hi) / 2]`, so inside
+/// the run where the values ascend) with its sine and cosine. Made once per slice (`column.rs`),
+/// so the columns take no `sin_cos` per node or run.
+pub struct Angles {
+    pub deg: Vec<f64>,
+    rad: Vec<f64>,
+    sc: Vec<(f64, f64)>,
+    mid_deg: Vec<f64>,
+    mid_sc: Vec<(f64, f64)>,
+    /// Whether `deg` ascends (the runs need it).
+    pub ascending: bool,
+}
+
+impl Angles {
+    pub fn new(a3_deg: &[f64]) -> Angles {
+        let rad: Vec<f64> = a3_deg.iter().map(|v| v.to_radians()).collect();
+        let mid_deg: Vec<f64> = (0..(2 * a3_deg.len()).saturating_sub(1))
+            .map(|s| 0.5 * (a3_deg[s / 2] + a3_deg[(s + 1) / 2]))
+            .collect();
+        Angles {
+            deg: a3_deg.to_vec(),
+            sc: rad.iter().map(|q| q.sin_cos()).collect(),
+            mid_sc: mid_deg.iter().map(|v| v.to_radians().sin_cos()).collect(),
+            rad,
+            mid_deg,
+            ascending: ascending(a3_deg),
         }
     }
 }
@@ -197,28 +230,30 @@ pub(super) fn ascending(v: &[f64]) -> bool {
 impl GridCheck<'_> {
     /// The codes of nodes `lo..hi` of a column for cylinder `s` against the boxes `set` (indices
     /// into `s.boxes`): the run's proofs (module doc), else its halves, else node by node.
-    /// `a3` must be ascending; `q3_of` gives URDF joint 3 (rad) of an axis-3 value.
-    #[allow(clippy::too_many_arguments)]
+    /// `a.deg` must be ascending.
     pub(super) fn arm_run(
         &self,
         s: &Swept<'_>,
-        a3: &[f64],
+        a: &Angles,
         out: &mut [u8],
         lo: usize,
         hi: usize,
         set: &[u8],
-        q3_of: &impl Fn(f64) -> f64,
     ) {
         if set.is_empty() || out[lo..hi].iter().all(|&f| f == 0) {
             return;
         }
         if hi - lo <= LEAF_NODES {
-            self.arm_nodes(s, a3, out, lo, hi, set, q3_of);
+            self.arm_nodes(s, a, out, lo, hi, set);
             return;
         }
-        let (q0, q1) = (q3_of(a3[lo]), q3_of(a3[hi - 1]));
-        let m = motion(s.reach_mm, 0.5 * (q1 - q0).abs());
-        let cyl = s.at(0.5 * (q0 + q1));
+        // The middle value and the most any node of the run lies from it (joint 3 moves by
+        // the same angle as axis 3 within a column).
+        let mid = lo + hi - 1;
+        let v = a.mid_deg[mid];
+        let h = (v - a.deg[lo]).max(a.deg[hi - 1] - v).to_radians();
+        let m = motion(s.reach_mm, h);
+        let cyl = s.at(a.mid_sc[mid]);
         let c = self.model.clearance_mm;
         let mut kept = [0u8; SET];
         let mut nk = 0;
@@ -244,34 +279,32 @@ impl GridCheck<'_> {
             return;
         }
         let mid = lo + (hi - lo) / 2;
-        self.arm_run(s, a3, out, lo, mid, &kept[..nk], q3_of);
-        self.arm_run(s, a3, out, mid, hi, &kept[..nk], q3_of);
+        self.arm_run(s, a, out, lo, mid, &kept[..nk]);
+        self.arm_run(s, a, out, mid, hi, &kept[..nk]);
     }
 
     /// Nodes `lo..hi` one by one (the node test of `column.rs`), with the coherence along the
     /// run: the capsule distance to a box changes by at most `R[2][L]` per radian of joint 3, so
     /// a box whose last capsule distance less that motion still exceeds the clearance is clear,
     /// as `link_clear_of_box`'s fast accept would find; that bound serves the depth.
-    #[allow(clippy::too_many_arguments)]
     pub(super) fn arm_nodes(
         &self,
         s: &Swept<'_>,
-        a3: &[f64],
+        a: &Angles,
         out: &mut [u8],
         lo: usize,
         hi: usize,
         set: &[u8],
-        q3_of: &impl Fn(f64) -> f64,
     ) {
         let c = self.model.clearance_mm;
         let reach = s.reach_mm;
         let mut lb = [f64::NEG_INFINITY; SET];
         let mut at = [0.0f64; SET];
-        for (f, &a3) in out[lo..hi].iter_mut().zip(&a3[lo..hi]) {
+        for (node, f) in out.iter_mut().enumerate().take(hi).skip(lo) {
             if *f == 0 {
                 continue;
             }
-            let q3 = q3_of(a3);
+            let q3 = a.rad[node];
             let mut cyl: Option<Cylinder> = None;
             let mut nearest = f64::INFINITY;
             for (slot, &k) in set.iter().enumerate() {
@@ -280,7 +313,7 @@ impl GridCheck<'_> {
                     nearest = nearest.min(coherent);
                     continue;
                 }
-                let cy = *cyl.get_or_insert_with(|| s.at(q3));
+                let cy = *cyl.get_or_insert_with(|| s.at(a.sc[node]));
                 let b = &s.boxes[k as usize].aabb;
                 // The capsule distance, and the axis point behind it for the node test.
                 let (near, axis) = axis_nearest(&cy, b);

@@ -11,12 +11,12 @@
 //! far from the boxes), or blocked, or the tool near at every node, costs one pose at its middle
 //! and no per-node work; only runs near an obstacle's boundary are halved down to the node test.
 
-use super::block::{ascending, Centre, Swept, SET, TOP_RUN_NODES};
+use super::block::{Angles, Centre, Swept, SET, TOP_RUN_NODES};
 use super::grid::{GridCheck, ARM_BITS, COLUMN_LEVELS, DEPTH_LEVELS};
 use super::proof::tight_lower_bound;
 use super::{link_clear_of_box, CylData};
 use crate::geometry::{distance_capsule_aabb, distance_point_aabb, Aabb, Cylinder, Point, Solid};
-use crate::robot::RangeViolation;
+use crate::robot::{Pose, RangeViolation};
 use nalgebra::Vector3;
 
 /// Safety margin (mm) of the per-column culling of boxes.
@@ -28,6 +28,16 @@ pub const MAX_FIXED: usize = 8;
 
 /// Per fixed cylinder, the slice's answer for link 1 (`GridCheck::slice_bytes`).
 pub type SliceBytes = [Option<Option<u8>>; MAX_FIXED];
+
+/// What the columns of one slice of axis 1 share ([`GridCheck::slice`]): link 1's answers
+/// ([`GridCheck::slice_bytes`]) and pose, and the axis-3 values with their sines and cosines
+/// (`block.rs`'s [`Angles`]).
+pub struct Slice {
+    a1_deg: f64,
+    bytes: SliceBytes,
+    pose1: Pose,
+    angles: Angles,
+}
 
 /// Obstacles per chunk of the per-column culling (the kept indices live on the stack).
 const CULL_CHUNK: usize = SET;
@@ -55,14 +65,18 @@ impl GridCheck<'_> {
         out: &mut [u8],
         column: &mut [u8],
     ) {
-        self.inspect_column_in(
+        self.inspect_column_in(a2_deg, out, column, &self.slice(a1_deg, a3_deg));
+    }
+
+    /// What every column `[a1_deg, *, a3_deg]` of one slice of axis 1 shares
+    /// ([`Slice`]): made once per slice by the grid build.
+    pub fn slice(&self, a1_deg: f64, a3_deg: &[f64]) -> Slice {
+        Slice {
             a1_deg,
-            a2_deg,
-            a3_deg,
-            out,
-            column,
-            &self.slice_bytes(a1_deg),
-        );
+            bytes: self.slice_bytes(a1_deg),
+            pose1: self.chain.pose1(a1_deg.to_radians().sin_cos()),
+            angles: Angles::new(a3_deg),
+        }
     }
 
     /// What the cylinders of link 1 (moved by axis 1 alone) give every column of the slice at
@@ -99,18 +113,12 @@ impl GridCheck<'_> {
         Some(self.depth_of(nearest, span, COLUMN_LEVELS))
     }
 
-    /// [`inspect_column`](Self::inspect_column) with the slice's link-1 answers
-    /// ([`slice_bytes`](Self::slice_bytes) of the same `a1_deg`) given.
-    pub fn inspect_column_in(
-        &self,
-        a1_deg: f64,
-        a2_deg: f64,
-        a3_deg: &[f64],
-        out: &mut [u8],
-        column: &mut [u8],
-        slice: &SliceBytes,
-    ) {
+    /// [`inspect_column`](Self::inspect_column) of the column at `a2_deg` of `slice`
+    /// ([`slice`](Self::slice): its `a1_deg`, axis-3 values, link 1's answers and pose).
+    pub fn inspect_column_in(&self, a2_deg: f64, out: &mut [u8], column: &mut [u8], slice: &Slice) {
         let model = self.model;
+        let (a1_deg, ang) = (slice.a1_deg, &slice.angles);
+        let a3_deg = &ang.deg[..];
         column.fill(0);
         let n = a3_deg.len().min(out.len());
         let (out, rest) = out.split_at_mut(n);
@@ -126,7 +134,7 @@ impl GridCheck<'_> {
             return;
         }
         // A link-1 cylinder within the clearance blocks the whole slice.
-        if slice.contains(&Some(None)) {
+        if slice.bytes.contains(&Some(None)) {
             out.fill(0);
             return;
         }
@@ -134,7 +142,7 @@ impl GridCheck<'_> {
         // Axes 1 and 2 are in range (above): per node axis 3 and the coupled range, which on
         // ascending values (the grid's) hold on one run of the column, found by bisection. The
         // runs of `block.rs` need the same order; without it every node is looked at.
-        let runs = ascending(&a3_deg[..n]);
+        let runs = ang.ascending;
         if runs {
             let robot = &model.robot;
             let first = a3_deg[..n].partition_point(|&v| robot.axis3_below(a2_deg, v));
@@ -152,14 +160,24 @@ impl GridCheck<'_> {
                 };
             }
         }
-        let poses = model.cell_link_poses(&[a1_deg, a2_deg, 0.0]);
+        // Link 2's pose from the slice's link 1 (URDF joint 2 is axis 2).
+        let sc2 = a2_deg.to_radians().sin_cos();
+        let pose2 = self.chain.pose2_from1(&slice.pose1, sc2);
         let c = model.clearance_mm;
         // Cylinders that axis 3 does not move: their test holds for the whole column, and their
         // depths go into the column's bytes (link 1's are the slice's).
         for (l, &i) in self.fixed.iter().enumerate() {
-            let answer = match slice.get(l).copied().flatten() {
+            let answer = match slice.bytes.get(l).copied().flatten() {
                 Some(known) => known,
-                None => self.fixed_byte(l, &model.cylinder_in(i, &poses)),
+                None => {
+                    let cy = &model.robot.cylinders[i];
+                    let cyl = Cylinder {
+                        a: pose2.point(&cy.a),
+                        b: pose2.point(&cy.b),
+                        radius: cy.radius_mm,
+                    };
+                    self.fixed_byte(l, &cyl)
+                }
             };
             let Some(byte) = answer else {
                 out.fill(0);
@@ -170,25 +188,22 @@ impl GridCheck<'_> {
                 *slot = byte;
             }
         }
-        // Frame of joint 3 (before its rotation), cell frame.
-        let j3 = poses[1] * model.robot.joints[2].origin;
-        let origin = Point::from(j3.translation.vector);
-        let axis = j3.rotation * model.robot.joints[2].axis.into_inner();
-        let q3_of = |a3: f64| {
-            model
-                .robot
-                .urdf_joints_deg(&[a1_deg, a2_deg, a3, 0.0, 0.0, 0.0])[2]
-                .to_radians()
-        };
+        // Frame of joint 3 (before its rotation), cell frame: origin and the turn of a vector.
+        let j3 = &model.robot.joints[2].origin;
+        let origin = pose2.point(&Point::from(j3.translation.vector));
+        let turn = |v: &Vector3<f64>| pose2.vector(&(j3.rotation * v));
+        let axis = turn(&model.robot.joints[2].axis.into_inner());
+        // URDF joint 3 is `a3 + t` with `t` set by axis 2 (the coupling): a split point
+        // `par + cos q perp + sin q cross` is `par + cos a3 perp' + sin a3 cross'` with
+        // `perp' = cos t perp + sin t cross`, `cross' = cos t cross - sin t perp`, so the
+        // nodes read the sines and cosines of their axis-3 values from the slice's tables.
+        let (st, ct) = model.robot.urdf_arm_sincos(&[(0.0, 1.0), sc2, (0.0, 1.0)])[2];
         for (i, cd) in model.cyl.iter().enumerate().filter(|(_, d)| d.joint == 2) {
             let span = self.arm_span;
             let deep = self.deep_mm(span);
             let ends = cd.split.map(|[par, perp, cross]| {
-                (
-                    origin + j3.rotation * par,
-                    j3.rotation * perp,
-                    j3.rotation * cross,
-                )
+                let (perp, cross) = (turn(&perp), turn(&cross));
+                (origin + turn(&par), perp * ct + cross * st, cross * ct - perp * st)
             });
             for chunk in model.obstacles.chunks(CULL_CHUNK) {
                 // Boxes the cylinder's sweep keeps farther than the clearance from are culled;
@@ -221,14 +236,26 @@ impl GridCheck<'_> {
                 };
                 if runs {
                     for (lo, hi) in top_runs(n) {
-                        self.arm_run(&swept, a3_deg, out, lo, hi, &kept[..nk], &q3_of);
+                        self.arm_run(&swept, ang, out, lo, hi, &kept[..nk]);
                     }
                 } else {
-                    self.arm_nodes(&swept, a3_deg, out, 0, n, &kept[..nk], &q3_of);
+                    self.arm_nodes(&swept, ang, out, 0, n, &kept[..nk]);
                 }
             }
         }
-        self.tool_codes(a3_deg, out, &origin, &j3, runs, &q3_of);
+        if model.tool.is_some() {
+            // The tool's bits from joint 3's frame as link 2's isometry places it.
+            let poses = model.cell_link_poses(&[a1_deg, a2_deg, 0.0]);
+            let j3 = poses[1] * model.robot.joints[2].origin;
+            let origin = Point::from(j3.translation.vector);
+            let q3_of = |a3: f64| {
+                model
+                    .robot
+                    .urdf_joints_deg(&[a1_deg, a2_deg, a3, 0.0, 0.0, 0.0])[2]
+                    .to_radians()
+            };
+            self.tool_codes(a3_deg, out, &origin, &j3, runs, &q3_of);
+        }
     }
 
     /// The tool's bits of the column's free nodes (`grid.rs`): the wrist centre `C` (a point of

@@ -48,6 +48,7 @@
 
 use super::proof::lowered;
 use super::CollisionModel;
+use crate::robot::SinCosChain;
 
 /// The node-code bit of a free node (the paper's node test of the arm); the grid
 /// (`plan::cspace`) reads only this bit.
@@ -87,6 +88,9 @@ pub struct GridCheck<'a> {
     need_fixed: Vec<[u8; 27]>,
     need_arm: [u8; 27],
     need_tool: [u8; 27],
+    /// Links 1 and 2 placed from sines and cosines, cell frame (the columns' frames of joint 3,
+    /// `column.rs`).
+    pub(super) chain: SinCosChain,
 }
 
 impl CollisionModel {
@@ -160,6 +164,7 @@ impl<'a> GridCheck<'a> {
             need_fixed,
             need_arm,
             need_tool,
+            chain: SinCosChain::new(&model.robot, &model.cell_from_robot),
         }
     }
 
