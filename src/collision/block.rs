@@ -296,11 +296,30 @@ impl GridCheck<'_> {
         hi: usize,
         set: &[u8],
     ) {
+        // The per-box memory on the stack, as small as the set allows (no 1 KB to clear per call).
+        if set.len() <= 4 {
+            self.arm_nodes_in::<4>(s, a, out, lo, hi, set);
+        } else {
+            self.arm_nodes_in::<SET>(s, a, out, lo, hi, set);
+        }
+    }
+
+    /// [`arm_nodes`](Self::arm_nodes) for a set of at most `N` boxes.
+    fn arm_nodes_in<const N: usize>(
+        &self,
+        s: &Swept<'_>,
+        a: &Angles,
+        out: &mut [u8],
+        lo: usize,
+        hi: usize,
+        set: &[u8],
+    ) {
         let c = self.model.clearance_mm;
         let reach = s.reach_mm;
-        let mut lb = [f64::NEG_INFINITY; SET];
-        let mut at = [0.0f64; SET];
-        for (node, f) in out.iter_mut().enumerate().take(hi).skip(lo) {
+        let mut lb = [f64::NEG_INFINITY; N];
+        let mut at = [0.0f64; N];
+        for node in lo..hi {
+            let f = &mut out[node];
             if *f == 0 {
                 continue;
             }

@@ -188,22 +188,25 @@ impl GridCheck<'_> {
                 *slot = byte;
             }
         }
-        // Frame of joint 3 (before its rotation), cell frame: origin and the turn of a vector.
-        let j3 = &model.robot.joints[2].origin;
-        let origin = pose2.point(&Point::from(j3.translation.vector));
-        let turn = |v: &Vector3<f64>| pose2.vector(&(j3.rotation * v));
-        let axis = turn(&model.robot.joints[2].axis.into_inner());
+        // Joint 3's origin and axis, cell frame.
+        let origin = pose2.point(&self.joint3.0);
+        let axis = pose2.vector(&self.joint3.1);
         // URDF joint 3 is `a3 + t` with `t` set by axis 2 (the coupling): a split point
         // `par + cos q perp + sin q cross` is `par + cos a3 perp' + sin a3 cross'` with
         // `perp' = cos t perp + sin t cross`, `cross' = cos t cross - sin t perp`, so the
         // nodes read the sines and cosines of their axis-3 values from the slice's tables.
         let (st, ct) = model.robot.urdf_arm_sincos(&[(0.0, 1.0), sc2, (0.0, 1.0)])[2];
-        for (i, cd) in model.cyl.iter().enumerate().filter(|(_, d)| d.joint == 2) {
+        for (i, split) in &self.split3 {
+            let (i, cd) = (*i, &model.cyl[*i]);
             let span = self.arm_span;
             let deep = self.deep_mm(span);
-            let ends = cd.split.map(|[par, perp, cross]| {
-                let (perp, cross) = (turn(&perp), turn(&cross));
-                (origin + turn(&par), perp * ct + cross * st, cross * ct - perp * st)
+            let ends = split.map(|[par, perp, cross]| {
+                let (perp, cross) = (pose2.vector(&perp), pose2.vector(&cross));
+                (
+                    pose2.point(&Point::from(par)),
+                    perp * ct + cross * st,
+                    cross * ct - perp * st,
+                )
             });
             for chunk in model.obstacles.chunks(CULL_CHUNK) {
                 // Boxes the cylinder's sweep keeps farther than the clearance from are culled;

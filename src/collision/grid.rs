@@ -49,6 +49,7 @@
 use super::proof::lowered;
 use super::CollisionModel;
 use crate::robot::SinCosChain;
+use nalgebra::{Point3, Vector3};
 
 /// The node-code bit of a free node (the paper's node test of the arm); the grid
 /// (`plan::cspace`) reads only this bit.
@@ -91,6 +92,11 @@ pub struct GridCheck<'a> {
     /// Links 1 and 2 placed from sines and cosines, cell frame (the columns' frames of joint 3,
     /// `column.rs`).
     pub(super) chain: SinCosChain,
+    /// Joint 3's origin and unit axis in link 2's frame, and per cylinder moved by axis 3 (by
+    /// index into `model.cyl`) its ends' split (`CylData::split`) in link 2's frame: the
+    /// parallel part as a point of link 2, the two others as its vectors.
+    pub(super) joint3: (Point3<f64>, Vector3<f64>),
+    pub(super) split3: Vec<(usize, [[Vector3<f64>; 3]; 2])>,
 }
 
 impl CollisionModel {
@@ -154,6 +160,16 @@ impl<'a> GridCheck<'a> {
             None => [0.0; 27],
         };
         let centre_span = max(&centre);
+        let j3 = model.robot.joints[2].origin;
+        let split3 = (0..model.cyl.len())
+            .filter(|&i| model.cyl[i].joint == 2)
+            .map(|i| {
+                let turn = |[par, perp, cross]: [Vector3<f64>; 3]| {
+                    [(j3 * Point3::from(par)).coords, j3.rotation * perp, j3.rotation * cross]
+                };
+                (i, model.cyl[i].split.map(turn))
+            })
+            .collect();
         let need_tool = std::array::from_fn(|o| need(DEPTH_LEVELS, centre[o], centre_span));
         GridCheck {
             model,
@@ -165,6 +181,11 @@ impl<'a> GridCheck<'a> {
             need_arm,
             need_tool,
             chain: SinCosChain::new(&model.robot, &model.cell_from_robot),
+            joint3: (
+                Point3::from(j3.translation.vector),
+                j3.rotation * model.robot.joints[2].axis.into_inner(),
+            ),
+            split3,
         }
     }
 
@@ -197,7 +218,8 @@ impl<'a> GridCheck<'a> {
         if span <= 0.0 || above >= span {
             return levels;
         }
-        ((k * above / span).floor() as u8).min(levels)
+        // `as` truncates, which is `floor` here (the quotient is at least 0).
+        ((k * above / span) as u8).min(levels)
     }
 
     /// [`depth_of`](Self::depth_of) on the node codes' [`DEPTH_LEVELS`].
