@@ -69,7 +69,7 @@ pub(super) const LEAF_NODES: usize = 2;
 pub(super) const SET: usize = 64;
 
 /// Margin (mm) of the proofs against the rounding of the distances.
-const MARGIN_MM: f64 = 1e-6;
+pub(super) const MARGIN_MM: f64 = 1e-6;
 
 /// The tool-near bit and tool-depth bits of a code.
 const TOOL_BITS: u8 = 0x78;
@@ -217,7 +217,7 @@ fn cap_depth(codes: &mut [u8], shift: u8, q: u8) {
 
 /// The motion bound over a run: `reach * h`, raised over its float value (module doc).
 #[inline]
-fn motion(reach: f64, h: f64) -> f64 {
+pub(super) fn motion(reach: f64, h: f64) -> f64 {
     (reach * h) * (1.0 + 1e-9) + 1e-9
 }
 

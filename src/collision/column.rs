@@ -11,7 +11,7 @@
 //! far from the boxes), or blocked, or the tool near at every node, costs one pose at its middle
 //! and no per-node work; only runs near an obstacle's boundary are halved down to the node test.
 
-use super::block::{Angles, Centre, Swept, SET, TOP_RUN_NODES};
+use super::block::{motion, Angles, Centre, Swept, MARGIN_MM, SET, TOP_RUN_NODES};
 use super::grid::{GridCheck, ARM_BITS, COLUMN_LEVELS, DEPTH_LEVELS};
 use super::proof::tight_lower_bound;
 use super::{link_clear_of_box, CylData};
@@ -39,6 +39,11 @@ pub struct Slice {
     angles: Angles,
 }
 
+/// Per link-2 cylinder and box, the capsule distance last measured along a slice and URDF
+/// joint 2's angle there (rad), for [`GridCheck::inspect_column_in`]'s next columns: one per
+/// slice ([`GridCheck::fixed_memo`]).
+pub struct FixedMemo(Vec<(f64, f64)>);
+
 /// Obstacles per chunk of the per-column culling (the kept indices live on the stack).
 const CULL_CHUNK: usize = SET;
 
@@ -65,7 +70,14 @@ impl GridCheck<'_> {
         out: &mut [u8],
         column: &mut [u8],
     ) {
-        self.inspect_column_in(a2_deg, out, column, &self.slice(a1_deg, a3_deg));
+        let mut memo = self.fixed_memo();
+        self.inspect_column_in(a2_deg, out, column, &self.slice(a1_deg, a3_deg), &mut memo);
+    }
+
+    /// An empty [`FixedMemo`] (nothing measured yet) for the columns of one slice.
+    pub fn fixed_memo(&self) -> FixedMemo {
+        let n = self.fixed.len() * self.model.obstacles.len();
+        FixedMemo(vec![(f64::NEG_INFINITY, 0.0); n])
     }
 
     /// What every column `[a1_deg, *, a3_deg]` of one slice of axis 1 shares
@@ -113,9 +125,50 @@ impl GridCheck<'_> {
         Some(self.depth_of(nearest, span, COLUMN_LEVELS))
     }
 
+    /// [`fixed_byte`](Self::fixed_byte) of a link-2 cylinder at URDF joint 2 = `q2` (rad), with
+    /// `memo` its capsule distances measured at other columns of the slice (by box index):
+    /// only joint 2 moved since, so a box whose last distance less the motion `R[1][L] |dq2|`
+    /// (and the margin) is still `deep_mm` or more is neither within the clearance nor below
+    /// depth `K_c`, and is not measured again; its byte is `fixed_byte`'s.
+    fn fixed_byte_along(
+        &self,
+        l: usize,
+        cyl: &Cylinder,
+        memo: &mut [(f64, f64)],
+        q2: f64,
+    ) -> Option<u8> {
+        let model = self.model;
+        let c = model.clearance_mm;
+        let span = self.fixed_span[l];
+        let deep = self.deep_mm(span);
+        let reach = model.cyl[self.fixed[l]].reach_mm[1];
+        let mut nearest = f64::INFINITY;
+        for (k, b) in model.checked_boxes(self.fixed[l]) {
+            let (last, at) = memo[k];
+            if last - motion(reach, (q2 - at).abs()) - MARGIN_MM >= deep {
+                continue;
+            }
+            let lo = distance_capsule_aabb(cyl, b);
+            memo[k] = (lo, q2);
+            if lo <= c && !link_clear_of_box(cyl, b, c) {
+                return None;
+            }
+            nearest = nearest.min(depth_bound(cyl, b, lo, deep));
+        }
+        Some(self.depth_of(nearest, span, COLUMN_LEVELS))
+    }
+
     /// [`inspect_column`](Self::inspect_column) of the column at `a2_deg` of `slice`
-    /// ([`slice`](Self::slice): its `a1_deg`, axis-3 values, link 1's answers and pose).
-    pub fn inspect_column_in(&self, a2_deg: f64, out: &mut [u8], column: &mut [u8], slice: &Slice) {
+    /// ([`slice`](Self::slice): its `a1_deg`, axis-3 values, link 1's answers and pose), with
+    /// `memo` the link-2 distances of the slice's columns inspected before (any order).
+    pub fn inspect_column_in(
+        &self,
+        a2_deg: f64,
+        out: &mut [u8],
+        column: &mut [u8],
+        slice: &Slice,
+        memo: &mut FixedMemo,
+    ) {
         let model = self.model;
         let (a1_deg, ang) = (slice.a1_deg, &slice.angles);
         let a3_deg = &ang.deg[..];
@@ -161,7 +214,8 @@ impl GridCheck<'_> {
             }
         }
         // Link 2's pose from the slice's link 1 (URDF joint 2 is axis 2).
-        let sc2 = a2_deg.to_radians().sin_cos();
+        let sc2_rad = a2_deg.to_radians();
+        let sc2 = sc2_rad.sin_cos();
         let pose2 = self.chain.pose2_from1(&slice.pose1, sc2);
         let c = model.clearance_mm;
         // Cylinders that axis 3 does not move: their test holds for the whole column, and their
@@ -176,7 +230,9 @@ impl GridCheck<'_> {
                         b: pose2.point(&cy.b),
                         radius: cy.radius_mm,
                     };
-                    self.fixed_byte(l, &cyl)
+                    let boxes = self.model.obstacles.len();
+                    let memo = &mut memo.0[l * boxes..(l + 1) * boxes];
+                    self.fixed_byte_along(l, &cyl, memo, sc2_rad)
                 }
             };
             let Some(byte) = answer else {
