@@ -388,3 +388,40 @@ fn a_slice_wise_build_keeps_an_off_axis_link_1_exact() {
         "{slices_blocked} blocked, {slices_open} open"
     );
 }
+
+/// Link 2's capsule distances carried along a slice (`column.rs`, `FixedMemo`): on random cells
+/// at 1 deg, where a box stays unmeasured over many columns, the slice-wise build's column bytes
+/// equal each column inspected alone (a fresh memo) and every free bit is `arm_is_free`'s. A
+/// motion bound too small for joint 2's steps would keep a box that came nearer unmeasured and
+/// leave a byte too deep (or a blocked column free).
+#[test]
+fn link_2_distances_carried_along_a_slice_change_no_byte() {
+    let mut rng = Rng(0xF1ED_0002_C0DE_0001);
+    let mut compared = 0;
+    for _ in 0..6 {
+        let model = random_model(&mut rng);
+        let a1 = (rng.range(-160.0, 160.0)).round();
+        let grid = Grid::over([[a1 - 3.0, a1 + 3.0], [-70.0, 70.0], [-65.0, 70.0]], 1.0);
+        let check = model.grid_check(grid.step_deg);
+        let built = CSpace::build(grid, &check);
+        let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
+        let mut codes = vec![0u8; a3.len()];
+        let mut bytes = vec![0u8; check.column_bytes()];
+        for i1 in 0..grid.dims[0] {
+            for i2 in 0..grid.dims[1] {
+                let (a1, a2) = (grid.value(0, i1 as i64), grid.value(1, i2 as i64));
+                check.inspect_column(a1, a2, &a3, &mut codes, &mut bytes);
+                let n = [i1 as i32, i2 as i32, 0];
+                assert_eq!(built.column(n), &bytes[..], "{a1} {a2}");
+                for (i3, &code) in codes.iter().enumerate().step_by(5) {
+                    let n = [i1 as i32, i2 as i32, i3 as i32];
+                    assert_eq!(built.code(n), code, "{n:?}");
+                    let axes = [a1, a2, a3[i3]];
+                    assert_eq!(built.is_free(n), model.arm_is_free(&axes), "{axes:?}");
+                    compared += 1;
+                }
+            }
+        }
+    }
+    assert!(compared > 10_000, "{compared}");
+}
