@@ -119,7 +119,9 @@ impl Swept<'_> {
 /// values in radians and their sines and cosines, and per run `lo..hi` the middle value
 /// `mid_deg[lo + hi - 1]` (between `deg[(lo + hi - 1) / 2]` and `deg[(lo + hi) / 2]`, so inside
 /// the run where the values ascend) with its sine and cosine. Made once per slice (`column.rs`),
-/// so the columns take no `sin_cos` per node or run.
+/// so the columns take no `sin_cos` per node or run; the grid's are made once
+/// (`GridCheck::angles`).
+#[derive(Clone, Debug)]
 pub struct Angles {
     pub deg: Vec<f64>,
     rad: Vec<f64>,

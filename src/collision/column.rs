@@ -18,6 +18,7 @@ use super::{link_clear_of_box, CylData};
 use crate::geometry::{distance_capsule_aabb, distance_point_aabb, Aabb, Cylinder, Point, Solid};
 use crate::robot::{Pose, RangeViolation};
 use nalgebra::Vector3;
+use std::borrow::Cow;
 
 /// Safety margin (mm) of the per-column culling of boxes.
 const CULL_MARGIN_MM: f64 = 1e-6;
@@ -32,11 +33,11 @@ pub type SliceBytes = [Option<Option<u8>>; MAX_FIXED];
 /// What the columns of one slice of axis 1 share ([`GridCheck::slice`]): link 1's answers
 /// ([`GridCheck::slice_bytes`]) and pose, and the axis-3 values with their sines and cosines
 /// (`block.rs`'s [`Angles`]).
-pub struct Slice {
+pub struct Slice<'a> {
     a1_deg: f64,
     bytes: SliceBytes,
     pose1: Pose,
-    angles: Angles,
+    angles: Cow<'a, Angles>,
 }
 
 /// Per link-2 cylinder and box, the capsule distance last measured along a slice and URDF
@@ -82,12 +83,20 @@ impl GridCheck<'_> {
 
     /// What every column `[a1_deg, *, a3_deg]` of one slice of axis 1 shares
     /// ([`Slice`]): made once per slice by the grid build.
-    pub fn slice(&self, a1_deg: f64, a3_deg: &[f64]) -> Slice {
+    pub fn slice(&self, a1_deg: f64, a3_deg: &[f64]) -> Slice<'_> {
+        // The grid's slices share their axis-3 values: their angles are made once.
+        let kept = self.angles.get_or_init(|| Angles::new(a3_deg));
+        let same = kept.deg.len() == a3_deg.len()
+            && kept.deg.iter().zip(a3_deg).all(|(a, b)| a.to_bits() == b.to_bits());
         Slice {
             a1_deg,
             bytes: self.slice_bytes(a1_deg),
             pose1: self.chain.pose1(a1_deg.to_radians().sin_cos()),
-            angles: Angles::new(a3_deg),
+            angles: if same {
+                Cow::Borrowed(kept)
+            } else {
+                Cow::Owned(Angles::new(a3_deg))
+            },
         }
     }
 
@@ -166,11 +175,11 @@ impl GridCheck<'_> {
         a2_deg: f64,
         out: &mut [u8],
         column: &mut [u8],
-        slice: &Slice,
+        slice: &Slice<'_>,
         memo: &mut FixedMemo,
     ) {
         let model = self.model;
-        let (a1_deg, ang) = (slice.a1_deg, &slice.angles);
+        let (a1_deg, ang) = (slice.a1_deg, &*slice.angles);
         let a3_deg = &ang.deg[..];
         column.fill(0);
         let n = a3_deg.len().min(out.len());

@@ -49,7 +49,9 @@
 use super::proof::lowered;
 use super::CollisionModel;
 use crate::robot::SinCosChain;
+use super::block::Angles;
 use nalgebra::{Point3, Vector3};
+use std::sync::OnceLock;
 
 /// The node-code bit of a free node (the paper's node test of the arm); the grid
 /// (`plan::cspace`) reads only this bit.
@@ -97,6 +99,8 @@ pub struct GridCheck<'a> {
     /// parallel part as a point of link 2, the two others as its vectors.
     pub(super) joint3: (Point3<f64>, Vector3<f64>),
     pub(super) split3: Vec<(usize, [[Vector3<f64>; 3]; 2])>,
+    /// The first slice's axis-3 angles, for every slice with the same values (the grid's).
+    pub(super) angles: OnceLock<Angles>,
 }
 
 impl CollisionModel {
@@ -186,6 +190,7 @@ impl<'a> GridCheck<'a> {
                 j3.rotation * model.robot.joints[2].axis.into_inner(),
             ),
             split3,
+            angles: OnceLock::new(),
         }
     }
 
