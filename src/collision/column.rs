@@ -289,8 +289,9 @@ impl GridCheck<'_> {
                     }
                 }
                 if culled < deep {
+                    // Every code at once (a blocked node's 0 stays 0).
                     let q = self.depth(culled, span);
-                    for f in out.iter_mut().filter(|f| **f != 0) {
+                    for f in out.iter_mut() {
                         *f = (*f & !ARM_BITS) | q.min(*f & ARM_BITS);
                     }
                 }
