@@ -136,7 +136,7 @@ impl Angles {
     pub fn new(a3_deg: &[f64]) -> Angles {
         let rad: Vec<f64> = a3_deg.iter().map(|v| v.to_radians()).collect();
         let mid_deg: Vec<f64> = (0..(2 * a3_deg.len()).saturating_sub(1))
-            .map(|s| 0.5 * (a3_deg[s / 2] + a3_deg[(s + 1) / 2]))
+            .map(|s| 0.5 * (a3_deg[s / 2] + a3_deg[s.div_ceil(2)]))
             .collect();
         Angles {
             deg: a3_deg.to_vec(),
@@ -320,12 +320,11 @@ impl GridCheck<'_> {
         let reach = s.reach_mm;
         let mut lb = [f64::NEG_INFINITY; N];
         let mut at = [0.0f64; N];
-        for node in lo..hi {
-            let f = &mut out[node];
+        let nodes = out[lo..hi].iter_mut().zip(&a.rad[lo..hi]).zip(&a.sc[lo..hi]);
+        for ((f, &q3), &sc) in nodes {
             if *f == 0 {
                 continue;
             }
-            let q3 = a.rad[node];
             let mut cyl: Option<Cylinder> = None;
             let mut nearest = f64::INFINITY;
             for (slot, &k) in set.iter().enumerate() {
@@ -334,7 +333,7 @@ impl GridCheck<'_> {
                     nearest = nearest.min(coherent);
                     continue;
                 }
-                let cy = *cyl.get_or_insert_with(|| s.at(a.sc[node]));
+                let cy = *cyl.get_or_insert_with(|| s.at(sc));
                 let b = &s.boxes[k as usize].aabb;
                 // The capsule distance, and the axis point behind it for the node test.
                 let (near, axis) = axis_nearest(&cy, b);

@@ -87,7 +87,11 @@ impl GridCheck<'_> {
         // The grid's slices share their axis-3 values: their angles are made once.
         let kept = self.angles.get_or_init(|| Angles::new(a3_deg));
         let same = kept.deg.len() == a3_deg.len()
-            && kept.deg.iter().zip(a3_deg).all(|(a, b)| a.to_bits() == b.to_bits());
+            && kept
+                .deg
+                .iter()
+                .zip(a3_deg)
+                .all(|(a, b)| a.to_bits() == b.to_bits());
         Slice {
             a1_deg,
             bytes: self.slice_bytes(a1_deg),

@@ -46,10 +46,10 @@
 //! wrist: bit 6 is clear and the tool needs no look at that node. Where bit 6 is set, the leg's
 //! wrist at the node decides ([`CollisionModel::tool_is_free`]).
 
+use super::block::Angles;
 use super::proof::lowered;
 use super::CollisionModel;
 use crate::robot::SinCosChain;
-use super::block::Angles;
 use nalgebra::{Point3, Vector3};
 use std::sync::OnceLock;
 
@@ -169,7 +169,11 @@ impl<'a> GridCheck<'a> {
             .filter(|&i| model.cyl[i].joint == 2)
             .map(|i| {
                 let turn = |[par, perp, cross]: [Vector3<f64>; 3]| {
-                    [(j3 * Point3::from(par)).coords, j3.rotation * perp, j3.rotation * cross]
+                    [
+                        (j3 * Point3::from(par)).coords,
+                        j3.rotation * perp,
+                        j3.rotation * cross,
+                    ]
                 };
                 (i, model.cyl[i].split.map(turn))
             })
