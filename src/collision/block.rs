@@ -96,6 +96,8 @@ pub(super) struct Swept<'b> {
     pub radius: f64,
     /// `R[2][L]`, mm.
     pub reach_mm: f64,
+    /// The most any point moves per radian of axis 2, axes 1 and 3 fixed, mm (`grid.rs`).
+    pub shift_mm: f64,
     pub boxes: &'b [Obstacle],
     /// `deep_mm` of the arm's scale.
     pub deep: f64,
@@ -233,6 +235,11 @@ impl GridCheck<'_> {
     /// The codes of nodes `lo..hi` of a column for cylinder `s` against the boxes `set` (indices
     /// into `s.boxes`): the run's proofs (module doc), else its halves, else node by node.
     /// `a.deg` must be ascending.
+    ///
+    /// `memo` (a top run's): per box of `s.boxes`, the free bound `l - M` (less the margin)
+    /// this run had at an earlier column of the slice and axis 2 there (rad), with axis 2 here:
+    /// the run's middle cylinder has moved at most `shift_mm |da2|` since, so a box whose bound
+    /// less that is still `deep` or more is dropped unmeasured (what the capsule would give).
     pub(super) fn arm_run(
         &self,
         s: &Swept<'_>,
@@ -241,6 +248,7 @@ impl GridCheck<'_> {
         lo: usize,
         hi: usize,
         set: &[u8],
+        mut memo: Option<(&mut [(f64, f64)], f64)>,
     ) {
         if set.is_empty() || out[lo..hi].iter().all(|&f| f == 0) {
             return;
@@ -261,8 +269,17 @@ impl GridCheck<'_> {
         let mut nk = 0;
         for &k in set {
             let b = &s.boxes[k as usize].aabb;
+            if let Some((memo, a2)) = &mut memo {
+                let (last, at) = memo[k as usize];
+                if last - motion(s.shift_mm, (*a2 - at).abs()) - MARGIN_MM >= s.deep {
+                    continue;
+                }
+            }
             let lb = distance_capsule_aabb(&cyl, b);
             let free = lb - m - MARGIN_MM;
+            if let Some((memo, a2)) = &mut memo {
+                memo[k as usize] = (free, *a2);
+            }
             if free > c {
                 // Free at every node of the run; the run's bound serves the depth.
                 if free < s.deep {
@@ -281,8 +298,8 @@ impl GridCheck<'_> {
             return;
         }
         let mid = lo + (hi - lo) / 2;
-        self.arm_run(s, a, out, lo, mid, &kept[..nk]);
-        self.arm_run(s, a, out, mid, hi, &kept[..nk]);
+        self.arm_run(s, a, out, lo, mid, &kept[..nk], None);
+        self.arm_run(s, a, out, mid, hi, &kept[..nk], None);
     }
 
     /// Nodes `lo..hi` one by one (the node test of `column.rs`), with the coherence along the

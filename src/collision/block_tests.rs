@@ -389,13 +389,14 @@ fn a_slice_wise_build_keeps_an_off_axis_link_1_exact() {
     );
 }
 
-/// Link 2's capsule distances carried along a slice (`column.rs`, `FixedMemo`): on random cells
-/// at 1 deg, where a box stays unmeasured over many columns, the slice-wise build's column bytes
-/// equal each column inspected alone (a fresh memo) and every free bit is `arm_is_free`'s. A
-/// motion bound too small for joint 2's steps would keep a box that came nearer unmeasured and
-/// leave a byte too deep (or a blocked column free).
+/// What the columns of a slice carry along (`column.rs`, `FixedMemo`): link 2's capsule
+/// distances and the top runs' free bounds of the cylinders axis 3 moves. On random cells at 1
+/// deg, where a box stays unmeasured over many columns, the slice-wise build's codes and column
+/// bytes equal each column inspected alone (a fresh memo), and the free bits are `arm_is_free`'s.
+/// A motion bound too small for axis 2's steps would keep a box that came nearer unmeasured and
+/// leave a code or byte too deep (or a blocked column free).
 #[test]
-fn link_2_distances_carried_along_a_slice_change_no_byte() {
+fn bounds_carried_along_a_slice_change_no_byte() {
     let mut rng = Rng(0xF1ED_0002_C0DE_0001);
     let mut compared = 0;
     for _ in 0..6 {
@@ -413,15 +414,47 @@ fn link_2_distances_carried_along_a_slice_change_no_byte() {
                 check.inspect_column(a1, a2, &a3, &mut codes, &mut bytes);
                 let n = [i1 as i32, i2 as i32, 0];
                 assert_eq!(built.column(n), &bytes[..], "{a1} {a2}");
-                for (i3, &code) in codes.iter().enumerate().step_by(5) {
+                for (i3, &code) in codes.iter().enumerate() {
                     let n = [i1 as i32, i2 as i32, i3 as i32];
                     assert_eq!(built.code(n), code, "{n:?}");
-                    let axes = [a1, a2, a3[i3]];
-                    assert_eq!(built.is_free(n), model.arm_is_free(&axes), "{axes:?}");
-                    compared += 1;
+                    if i3 % 5 == 0 {
+                        let axes = [a1, a2, a3[i3]];
+                        assert_eq!(built.is_free(n), model.arm_is_free(&axes), "{axes:?}");
+                        compared += 1;
+                    }
                 }
             }
         }
     }
     assert!(compared > 10_000, "{compared}");
+}
+
+/// The shift of the cylinders axis 3 moves (`grid.rs`, `shift3`): with axes 1 and 3 fixed, no
+/// end of such a cylinder moves more than `shift |da2|` (rad) between random poses; under the
+/// IRB 1400's parallelogram coupling link 3 only translates, by joint 3's origin's chord about
+/// joint 2 (600 mm of radius), far less than the general bound `R[1] + R[2]`.
+#[test]
+fn the_axis_2_shift_bounds_link_3s_motion() {
+    let mut rng = Rng(0x5A1F_7000_0000_0003);
+    let model = random_model(&mut rng);
+    let check = model.grid_check(1.0);
+    let mut tight = 0;
+    for &(i, _, shift) in &check.split3 {
+        let general = model.cyl[i].reach_mm[1] + model.cyl[i].reach_mm[2];
+        assert!(shift <= general, "{shift} {general}");
+        if shift < 0.5 * general {
+            tight += 1;
+        }
+        for _ in 0..2000 {
+            let a1 = rng.range(-170.0, 170.0);
+            let (a2, b2) = (rng.range(-70.0, 70.0), rng.range(-70.0, 70.0));
+            let a3 = rng.range(-65.0, 70.0);
+            let at = |a2: f64| model.cylinder_in(i, &model.cell_link_poses(&[a1, a2, a3]));
+            let (p, q) = (at(a2), at(b2));
+            let bound = shift * (a2 - b2).abs().to_radians() + 1e-9;
+            assert!((p.a - q.a).norm() <= bound, "{a1} {a2} {b2} {a3}");
+            assert!((p.b - q.b).norm() <= bound, "{a1} {a2} {b2} {a3}");
+        }
+    }
+    assert!(tight > 0, "{tight}");
 }

@@ -43,7 +43,9 @@ pub struct Slice<'a> {
 /// Per link-2 cylinder and box, the capsule distance last measured along a slice and URDF
 /// joint 2's angle there (rad), for [`GridCheck::inspect_column_in`]'s next columns: one per
 /// slice ([`GridCheck::fixed_memo`]).
-pub struct FixedMemo(Vec<(f64, f64)>);
+/// Also, per cylinder moved by axis 3, chunk of boxes, top run and box, the run's free bound
+/// measured last and axis 2 there (rad) (`block.rs`, [`GridCheck::arm_run`]'s `memo`).
+pub struct FixedMemo(Vec<(f64, f64)>, Vec<(f64, f64)>);
 
 /// Obstacles per chunk of the per-column culling (the kept indices live on the stack).
 const CULL_CHUNK: usize = SET;
@@ -78,7 +80,7 @@ impl GridCheck<'_> {
     /// An empty [`FixedMemo`] (nothing measured yet) for the columns of one slice.
     pub fn fixed_memo(&self) -> FixedMemo {
         let n = self.fixed.len() * self.model.obstacles.len();
-        FixedMemo(vec![(f64::NEG_INFINITY, 0.0); n])
+        FixedMemo(vec![(f64::NEG_INFINITY, 0.0); n], Vec::new())
     }
 
     /// What every column `[a1_deg, *, a3_deg]` of one slice of axis 1 shares
@@ -227,8 +229,8 @@ impl GridCheck<'_> {
             }
         }
         // Link 2's pose from the slice's link 1 (URDF joint 2 is axis 2).
-        let sc2_rad = a2_deg.to_radians();
-        let sc2 = sc2_rad.sin_cos();
+        let a2_rad = a2_deg.to_radians();
+        let sc2 = a2_rad.sin_cos();
         let pose2 = self.chain.pose2_from1(&slice.pose1, sc2);
         let c = model.clearance_mm;
         // Cylinders that axis 3 does not move: their test holds for the whole column, and their
@@ -245,7 +247,7 @@ impl GridCheck<'_> {
                     };
                     let boxes = self.model.obstacles.len();
                     let memo = &mut memo.0[l * boxes..(l + 1) * boxes];
-                    self.fixed_byte_along(l, &cyl, memo, sc2_rad)
+                    self.fixed_byte_along(l, &cyl, memo, a2_rad)
                 }
             };
             let Some(byte) = answer else {
@@ -265,7 +267,14 @@ impl GridCheck<'_> {
         // `perp' = cos t perp + sin t cross`, `cross' = cos t cross - sin t perp`, so the
         // nodes read the sines and cosines of their axis-3 values from the slice's tables.
         let (st, ct) = model.robot.urdf_arm_sincos(&[(0.0, 1.0), sc2, (0.0, 1.0)])[2];
-        for (i, split) in &self.split3 {
+        // The top runs' bounds carried along the slice: per cylinder, chunk, top run, box.
+        let chunks = model.obstacles.len().div_ceil(CULL_CHUNK);
+        let tops = n.div_ceil(TOP_RUN_NODES);
+        let need = self.split3.len() * chunks * tops * CULL_CHUNK;
+        if memo.1.len() < need {
+            memo.1.resize(need, (f64::NEG_INFINITY, 0.0));
+        }
+        for (slot, (i, split, shift)) in self.split3.iter().enumerate() {
             let (i, cd) = (*i, &model.cyl[*i]);
             let span = self.arm_span;
             let deep = self.deep_mm(span);
@@ -277,7 +286,7 @@ impl GridCheck<'_> {
                     cross * ct - perp * st,
                 )
             });
-            for chunk in model.obstacles.chunks(CULL_CHUNK) {
+            for (ch, chunk) in model.obstacles.chunks(CULL_CHUNK).enumerate() {
                 // Boxes the cylinder's sweep keeps farther than the clearance from are culled;
                 // the nearest of them still bounds the depth of every node of the column.
                 let mut kept = [0u8; CULL_CHUNK];
@@ -303,13 +312,16 @@ impl GridCheck<'_> {
                     ends,
                     radius: model.robot.cylinders[i].radius_mm,
                     reach_mm: cd.reach_mm[2],
+                    shift_mm: *shift,
                     boxes: chunk,
                     deep,
                     span,
                 };
                 if runs {
-                    for (lo, hi) in top_runs(n) {
-                        self.arm_run(&swept, ang, out, lo, hi, &kept[..nk]);
+                    for (t, (lo, hi)) in top_runs(n).enumerate() {
+                        let at = ((slot * chunks + ch) * tops + t) * CULL_CHUNK;
+                        let memo = (&mut memo.1[at..at + CULL_CHUNK], a2_rad);
+                        self.arm_run(&swept, ang, out, lo, hi, &kept[..nk], Some(memo));
                     }
                 } else {
                     self.arm_nodes(&swept, ang, out, 0, n, &kept[..nk]);

@@ -95,10 +95,11 @@ pub struct GridCheck<'a> {
     /// `column.rs`).
     pub(super) chain: SinCosChain,
     /// Joint 3's origin and unit axis in link 2's frame, and per cylinder moved by axis 3 (by
-    /// index into `model.cyl`) its ends' split (`CylData::split`) in link 2's frame: the
-    /// parallel part as a point of link 2, the two others as its vectors.
+    /// index into `model.cyl`) its ends' split (`CylData::split`) in link 2's frame (the
+    /// parallel part as a point of link 2, the two others as its vectors) and its shift: the
+    /// most any of its points moves per radian of axis 2 with axes 1 and 3 fixed, mm.
     pub(super) joint3: (Point3<f64>, Vector3<f64>),
-    pub(super) split3: Vec<(usize, [[Vector3<f64>; 3]; 2])>,
+    pub(super) split3: Vec<(usize, [[Vector3<f64>; 3]; 2], f64)>,
     /// The first slice's axis-3 angles, for every slice with the same values (the grid's).
     pub(super) angles: OnceLock<Angles>,
 }
@@ -107,6 +108,28 @@ impl CollisionModel {
     /// The model on a grid of spacing `step_deg` (deg): node codes and the step check.
     pub fn grid_check(&self, step_deg: f64) -> GridCheck<'_> {
         GridCheck::new(self, step_deg)
+    }
+}
+
+/// The most any point of cylinder `i` (moved by axis 3) moves per radian of axis 2 with axes 1
+/// and 3 fixed, mm. URDF joint 2 moves with axis 2 and joint 3 by `dq3 / da2` (-1 under a
+/// parallelogram coupling, else 0): in general `R[1] + R[2] |dq3 / da2|` (`proof.rs`). Where
+/// the coupling takes joint 3 back by joint 2's angle about the same axis (joint 3's origin
+/// not rotated, both axes the same vector), link 3 keeps its orientation and only joint 3's
+/// origin moves, on a circle about joint 2's axis: the shift is that circle's radius.
+fn shift3(model: &CollisionModel, i: usize) -> f64 {
+    let robot = &model.robot;
+    let urdf = |a2: f64| robot.urdf_joints_deg(&[0.0, a2, 0.0, 0.0, 0.0, 0.0]);
+    let (dq2, dq3) = (urdf(1.0)[1] - urdf(0.0)[1], urdf(1.0)[2] - urdf(0.0)[2]);
+    let reach = model.cyl[i].reach_mm;
+    let general = reach[1] * dq2.abs() + reach[2] * dq3.abs();
+    let (j2, j3) = (&robot.joints[1], &robot.joints[2]);
+    if dq2 == 1.0 && dq3 == -1.0 && j2.axis == j3.axis && j3.origin.rotation == Default::default() {
+        let t = j3.origin.translation.vector;
+        let u = j2.axis.into_inner();
+        (t - u * u.dot(&t)).norm().min(general)
+    } else {
+        general
     }
 }
 
@@ -175,7 +198,7 @@ impl<'a> GridCheck<'a> {
                         j3.rotation * cross,
                     ]
                 };
-                (i, model.cyl[i].split.map(turn))
+                (i, model.cyl[i].split.map(turn), shift3(model, i))
             })
             .collect();
         let need_tool = std::array::from_fn(|o| need(DEPTH_LEVELS, centre[o], centre_span));
