@@ -337,7 +337,10 @@ impl GridCheck<'_> {
         let reach = s.reach_mm;
         let mut lb = [f64::NEG_INFINITY; N];
         let mut at = [0.0f64; N];
-        let nodes = out[lo..hi].iter_mut().zip(&a.rad[lo..hi]).zip(&a.sc[lo..hi]);
+        let nodes = out[lo..hi]
+            .iter_mut()
+            .zip(&a.rad[lo..hi])
+            .zip(&a.sc[lo..hi]);
         for ((f, &q3), &sc) in nodes {
             if *f == 0 {
                 continue;

@@ -398,13 +398,21 @@ fn a_slice_wise_build_keeps_an_off_axis_link_1_exact() {
 #[test]
 fn bounds_carried_along_a_slice_change_no_byte() {
     let mut rng = Rng(0xF1ED_0002_C0DE_0001);
-    let mut compared = 0;
-    for _ in 0..6 {
+    let (mut cells, mut compared) = (0, 0);
+    for _ in 0..200 {
+        if cells == 10 {
+            break;
+        }
         let model = random_model(&mut rng);
         let a1 = (rng.range(-160.0, 160.0)).round();
-        let grid = Grid::over([[a1 - 3.0, a1 + 3.0], [-70.0, 70.0], [-65.0, 70.0]], 1.0);
+        let grid = Grid::over([[a1 - 2.0, a1 + 2.0], [-70.0, 70.0], [-65.0, 70.0]], 1.0);
         let check = model.grid_check(grid.step_deg);
         let built = CSpace::build(grid, &check);
+        // Most random cells block link 1 or 2 in a few slices: only open ones are compared.
+        if built.free_count() < 10_000 {
+            continue;
+        }
+        cells += 1;
         let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
         let mut codes = vec![0u8; a3.len()];
         let mut bytes = vec![0u8; check.column_bytes()];
@@ -426,7 +434,7 @@ fn bounds_carried_along_a_slice_change_no_byte() {
             }
         }
     }
-    assert!(compared > 10_000, "{compared}");
+    assert!(cells == 10 && compared > 50_000, "{cells} {compared}");
 }
 
 /// The shift of the cylinders axis 3 moves (`grid.rs`, `shift3`): with axes 1 and 3 fixed, no
