@@ -46,7 +46,13 @@
 //! Nodes of halved runs get the node path's depths, where the second node of a 2-node run may
 //! reuse the first's bound (`block_tests.rs`: about 14 % of the free nodes of random cells come
 //! out shallower than measured alone, none deeper). The split points depend on the
-//! column alone, so the result does not depend on the threads.
+//! column alone, so the result does not depend on the threads. A top run may drop a box
+//! unmeasured by its bound carried from an earlier column of the slice (`column.rs`), only
+//! where the measurement would have dropped it with depth `K`: the same codes.
+//!
+//! *Angles.* The run's middle is read from the slice's table (`Angles`: the value between
+//! its two central nodes, inside the run), and `h` is the larger of its distances to the run's
+//! first and last values: every node of the run lies within `h` of it.
 
 use super::grid::{GridCheck, ARM_BITS, DEPTH_LEVELS};
 use super::{axis_nearest, link_clear_near};

@@ -1,15 +1,29 @@
 //! Node inspection of a whole grid column at once: the hot path of the configuration-space
 //! grid (paper section 3). Per node it writes the code of `grid.rs`: the free bit is exactly
 //! [`CollisionModel::arm_is_free`]'s answer; the depths are lower bounds, quantised. The work that
-//! depends on axis 1 alone is done once per slice of axis 1 (link 1's checks,
-//! [`GridCheck::slice_bytes`]); the work that does not depend on axis 3 once per column (the
-//! range of axes 1 and 2, link 2's checks, the frame of joint 3), and boxes the links moved by
-//! axis 3 cannot come near are culled. Axis 3's range and the coupled one hold on one run of the
-//! column's ascending values, found by two bisections (node by node where the values are not
-//! ascending). The rest goes by runs of the column (`block.rs`, beyond the paper), 32 nodes to
-//! start with: a run whose motion bound proves it free (with the run's own depth, or full depth
-//! far from the boxes), or blocked, or the tool near at every node, costs one pose at its middle
-//! and no per-node work; only runs near an obstacle's boundary are halved down to the node test.
+//! depends on axis 1 alone is done once per slice of axis 1 ([`Slice`]: link 1's checks,
+//! [`GridCheck::slice_bytes`], and link 1's pose); the axis-3 values' sines and cosines once per
+//! grid (`block.rs`'s `Angles`: the nodes' and every run's middle); the work that does not
+//! depend on axis 3 once per column (the range of axes 1 and 2, link 2 placed from link 1's
+//! pose and checked, the frame of joint 3), and boxes the links moved by axis 3 cannot come near
+//! are culled. Joint 3 is axis 3 plus an angle set by axis 2 (the coupling), so the column turns
+//! the cylinders' split ends by that angle once and every node and run reads its axis-3 value's
+//! sine and cosine from the table: no `sin_cos` per node or run. Axis 3's range and the coupled
+//! one hold on one run of the column's ascending values, found by two bisections (node by node
+//! where the values are not ascending). The rest goes by runs of the column (`block.rs`, beyond
+//! the paper), 32 nodes to start with: a run whose motion bound proves it free (with the run's
+//! own depth, or full depth far from the boxes), or blocked, or the tool near at every node,
+//! costs one pose at its middle and no per-node work; only runs near an obstacle's boundary are
+//! halved down to the node test.
+//!
+//! *Carried along a slice* ([`FixedMemo`], beyond the paper). From one column of a slice to the
+//! next only axis 2 moves. A link-2 cylinder's capsule distance to a box changes by at most
+//! `R[1][L] |da2|`, and the middle cylinder of a top run of the cylinders axis 3 moves by at most
+//! their shift `|da2|` (`grid.rs`: under the IRB 1400's parallelogram coupling link 3 only
+//! translates, by joint 3's origin's chord about joint 2). A box whose last measured bound, less
+//! that motion and a margin of 1e-6 mm, is still `deep_mm` or more is dropped unmeasured: its
+//! measurement would have dropped it too (clear, depth `K`), so every code and column byte is
+//! the column's alone (`block_tests.rs`), whatever order the columns come in.
 
 use super::block::{motion, Angles, Centre, Swept, MARGIN_MM, SET, TOP_RUN_NODES};
 use super::grid::{GridCheck, ARM_BITS, COLUMN_LEVELS, DEPTH_LEVELS};
@@ -54,17 +68,20 @@ impl GridCheck<'_> {
     /// The hot path of the grid build: the node code (`grid.rs`) of `[a1, a2, a3[k]]` for one
     /// column into `out[k]`; 0 for a node that is not free.
     ///
-    /// Per column: the range of axes 1 and 2, the poses of links 1 and 2 and their cylinders'
-    /// checks and depths (link 1's from [`slice_bytes`](Self::slice_bytes), which the grid
-    /// build makes once per slice), the frame of joint 3, and the culling of boxes the cylinders
-    /// moved by axis 3 (and the tool's wrist centre) cannot come near: a sphere about joint 3
-    /// and a slab along its axis hold their whole sweep. The range of axis 3 and the coupled
-    /// one by bisection of the (ascending) values. The cylinders
-    /// moved by axis 3 and the tool's wrist centre by runs (`block.rs`; node by node when the
-    /// axis-3 values are not ascending): per run one `sin_cos` at its middle and the remaining
-    /// boxes; per node, in runs near a boundary, one `sin_cos`, the end points and the
-    /// remaining boxes. No allocation. Only `min(a3_deg.len(), out.len())` nodes are inspected;
-    /// any further entries of `out` are set to 0.
+    /// Per column: the range of axes 1 and 2, link 2's pose (from link 1's, kept per slice) and
+    /// its cylinders' checks and depths (link 1's from [`slice_bytes`](Self::slice_bytes), which
+    /// the grid build makes once per slice), the frame of joint 3, and the culling of boxes the
+    /// cylinders moved by axis 3 (and the tool's wrist centre) cannot come near: a sphere about
+    /// joint 3 and a slab along its axis hold their whole sweep. The range of axis 3 and the
+    /// coupled one by bisection of the (ascending) values. The cylinders moved by axis 3 and the
+    /// tool's wrist centre by runs (`block.rs`; node by node when the axis-3 values are not
+    /// ascending): per run its middle pose from the slice's table of sines and cosines and the
+    /// remaining boxes; per node, in runs near a boundary, the end points from the table and the
+    /// remaining boxes (the tool's wrist centre still takes a `sin_cos` per run or node). This
+    /// one column makes its own `Slice` and `FixedMemo` (the grid build makes them once per
+    /// slice and calls [`inspect_column_in`](Self::inspect_column_in)). Only
+    /// `min(a3_deg.len(), out.len())` nodes are inspected; any further entries of `out` are set
+    /// to 0.
     pub fn inspect_column(
         &self,
         a1_deg: f64,
@@ -77,14 +94,14 @@ impl GridCheck<'_> {
         self.inspect_column_in(a2_deg, out, column, &self.slice(a1_deg, a3_deg), &mut memo);
     }
 
-    /// An empty [`FixedMemo`] (nothing measured yet) for the columns of one slice.
+    /// An empty `FixedMemo` (nothing measured yet) for the columns of one slice.
     pub fn fixed_memo(&self) -> FixedMemo {
         let n = self.fixed.len() * self.model.obstacles.len();
         FixedMemo(vec![(f64::NEG_INFINITY, 0.0); n], Vec::new())
     }
 
     /// What every column `[a1_deg, *, a3_deg]` of one slice of axis 1 shares
-    /// ([`Slice`]): made once per slice by the grid build.
+    /// (`Slice`): made once per slice by the grid build.
     pub fn slice(&self, a1_deg: f64, a3_deg: &[f64]) -> Slice<'_> {
         // The grid's slices share their axis-3 values: their angles are made once.
         let kept = self.angles.get_or_init(|| Angles::new(a3_deg));

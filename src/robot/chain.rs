@@ -184,7 +184,7 @@ impl SinCosChain {
     }
 
     /// The pose of link 2 from link 1's pose `p1` ([`pose1`](Self::pose1)) and the sine and
-    /// cosine of URDF joint 2: the second step of [`pose6`](Self::pose6) (the grid build's
+    /// cosine of URDF joint 2: the second step of `pose6` (the grid build's
     /// columns, `collision::column`).
     #[inline(always)]
     pub fn pose2_from1(&self, p1: &Pose, sc: (f64, f64)) -> Pose {
