@@ -246,6 +246,7 @@ impl GridCheck<'_> {
     /// this run had at an earlier column of the slice and axis 2 there (rad), with axis 2 here:
     /// the run's middle cylinder has moved at most `shift_mm |da2|` since, so a box whose bound
     /// less that is still `deep` or more is dropped unmeasured (what the capsule would give).
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn arm_run(
         &self,
         s: &Swept<'_>,

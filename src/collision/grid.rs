@@ -99,7 +99,7 @@ pub struct GridCheck<'a> {
     /// parallel part as a point of link 2, the two others as its vectors) and its shift: the
     /// most any of its points moves per radian of axis 2 with axes 1 and 3 fixed, mm.
     pub(super) joint3: (Point3<f64>, Vector3<f64>),
-    pub(super) split3: Vec<(usize, [[Vector3<f64>; 3]; 2], f64)>,
+    pub(super) split3: Vec<(usize, EndsSplit, f64)>,
     /// The first slice's axis-3 angles, for every slice with the same values (the grid's).
     pub(super) angles: OnceLock<Angles>,
 }
@@ -110,6 +110,10 @@ impl CollisionModel {
         GridCheck::new(self, step_deg)
     }
 }
+
+/// A cylinder's two ends split about joint 3's axis (`CylData::split`): per end the parallel
+/// part and the two turning vectors.
+pub(super) type EndsSplit = [[Vector3<f64>; 3]; 2];
 
 /// The most any point of cylinder `i` (moved by axis 3) moves per radian of axis 2 with axes 1
 /// and 3 fixed, mm. URDF joint 2 moves with axis 2 and joint 3 by `dq3 / da2` (-1 under a
