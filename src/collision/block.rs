@@ -46,7 +46,13 @@
 //! Nodes of halved runs get the node path's depths, where the second node of a 2-node run may
 //! reuse the first's bound (`block_tests.rs`: about 14 % of the free nodes of random cells come
 //! out shallower than measured alone, none deeper). The split points depend on the
-//! column alone, so the result does not depend on the threads.
+//! column alone, so the result does not depend on the threads. A top run may drop a box
+//! unmeasured by its bound carried from an earlier column of the slice (`column.rs`), only
+//! where the measurement would have dropped it with depth `K`: the same codes.
+//!
+//! *Angles.* The run's middle is read from the slice's table (`Angles`: the value between
+//! its two central nodes, inside the run), and `h` is the larger of its distances to the run's
+//! first and last values: every node of the run lies within `h` of it.
 
 use super::grid::{GridCheck, ARM_BITS, DEPTH_LEVELS};
 use super::{axis_nearest, link_clear_near};
@@ -69,7 +75,7 @@ pub(super) const LEAF_NODES: usize = 2;
 pub(super) const SET: usize = 64;
 
 /// Margin (mm) of the proofs against the rounding of the distances.
-const MARGIN_MM: f64 = 1e-6;
+pub(super) const MARGIN_MM: f64 = 1e-6;
 
 /// The tool-near bit and tool-depth bits of a code.
 const TOOL_BITS: u8 = 0x78;
@@ -96,6 +102,8 @@ pub(super) struct Swept<'b> {
     pub radius: f64,
     /// `R[2][L]`, mm.
     pub reach_mm: f64,
+    /// The most any point moves per radian of axis 2, axes 1 and 3 fixed, mm (`grid.rs`).
+    pub shift_mm: f64,
     pub boxes: &'b [Obstacle],
     /// `deep_mm` of the arm's scale.
     pub deep: f64,
@@ -103,13 +111,48 @@ pub(super) struct Swept<'b> {
 }
 
 impl Swept<'_> {
+    /// The cylinder at the axis-3 angle of sine `sn` and cosine `co` (the ends are split for
+    /// axis 3's value, not URDF joint 3's: `column.rs`).
     #[inline]
-    fn at(&self, q: f64) -> Cylinder {
-        let (sn, co) = q.sin_cos();
+    fn at(&self, (sn, co): (f64, f64)) -> Cylinder {
         Cylinder {
             a: turned(&self.ends[0], sn, co),
             b: turned(&self.ends[1], sn, co),
             radius: self.radius,
+        }
+    }
+}
+
+/// A slice's axis-3 values (deg, in the columns' order) with what the runs read of them: the
+/// values in radians and their sines and cosines, and per run `lo..hi` the middle value
+/// `mid_deg[lo + hi - 1]` (between `deg[(lo + hi - 1) / 2]` and `deg[(lo + hi) / 2]`, so inside
+/// the run where the values ascend) with its sine and cosine. Made once per slice (`column.rs`),
+/// so the columns take no `sin_cos` per node or run; the grid's are made once
+/// (`GridCheck::angles`).
+#[derive(Clone, Debug)]
+pub struct Angles {
+    pub deg: Vec<f64>,
+    rad: Vec<f64>,
+    sc: Vec<(f64, f64)>,
+    mid_deg: Vec<f64>,
+    mid_sc: Vec<(f64, f64)>,
+    /// Whether `deg` ascends (the runs need it).
+    pub ascending: bool,
+}
+
+impl Angles {
+    pub fn new(a3_deg: &[f64]) -> Angles {
+        let rad: Vec<f64> = a3_deg.iter().map(|v| v.to_radians()).collect();
+        let mid_deg: Vec<f64> = (0..(2 * a3_deg.len()).saturating_sub(1))
+            .map(|s| 0.5 * (a3_deg[s / 2] + a3_deg[s.div_ceil(2)]))
+            .collect();
+        Angles {
+            deg: a3_deg.to_vec(),
+            sc: rad.iter().map(|q| q.sin_cos()).collect(),
+            mid_sc: mid_deg.iter().map(|v| v.to_radians().sin_cos()).collect(),
+            rad,
+            mid_deg,
+            ascending: ascending(a3_deg),
         }
     }
 }
@@ -184,7 +227,7 @@ fn cap_depth(codes: &mut [u8], shift: u8, q: u8) {
 
 /// The motion bound over a run: `reach * h`, raised over its float value (module doc).
 #[inline]
-fn motion(reach: f64, h: f64) -> f64 {
+pub(super) fn motion(reach: f64, h: f64) -> f64 {
     (reach * h) * (1.0 + 1e-9) + 1e-9
 }
 
@@ -197,35 +240,53 @@ pub(super) fn ascending(v: &[f64]) -> bool {
 impl GridCheck<'_> {
     /// The codes of nodes `lo..hi` of a column for cylinder `s` against the boxes `set` (indices
     /// into `s.boxes`): the run's proofs (module doc), else its halves, else node by node.
-    /// `a3` must be ascending; `q3_of` gives URDF joint 3 (rad) of an axis-3 value.
+    /// `a.deg` must be ascending.
+    ///
+    /// `memo` (a top run's): per box of `s.boxes`, the free bound `l - M` (less the margin)
+    /// this run had at an earlier column of the slice and axis 2 there (rad), with axis 2 here:
+    /// the run's middle cylinder has moved at most `shift_mm |da2|` since, so a box whose bound
+    /// less that is still `deep` or more is dropped unmeasured (what the capsule would give).
     #[allow(clippy::too_many_arguments)]
     pub(super) fn arm_run(
         &self,
         s: &Swept<'_>,
-        a3: &[f64],
+        a: &Angles,
         out: &mut [u8],
         lo: usize,
         hi: usize,
         set: &[u8],
-        q3_of: &impl Fn(f64) -> f64,
+        mut memo: Option<(&mut [(f64, f64)], f64)>,
     ) {
         if set.is_empty() || out[lo..hi].iter().all(|&f| f == 0) {
             return;
         }
         if hi - lo <= LEAF_NODES {
-            self.arm_nodes(s, a3, out, lo, hi, set, q3_of);
+            self.arm_nodes(s, a, out, lo, hi, set);
             return;
         }
-        let (q0, q1) = (q3_of(a3[lo]), q3_of(a3[hi - 1]));
-        let m = motion(s.reach_mm, 0.5 * (q1 - q0).abs());
-        let cyl = s.at(0.5 * (q0 + q1));
+        // The middle value and the most any node of the run lies from it (joint 3 moves by
+        // the same angle as axis 3 within a column).
+        let mid = lo + hi - 1;
+        let v = a.mid_deg[mid];
+        let h = (v - a.deg[lo]).max(a.deg[hi - 1] - v).to_radians();
+        let m = motion(s.reach_mm, h);
+        let cyl = s.at(a.mid_sc[mid]);
         let c = self.model.clearance_mm;
         let mut kept = [0u8; SET];
         let mut nk = 0;
         for &k in set {
             let b = &s.boxes[k as usize].aabb;
+            if let Some((memo, a2)) = &mut memo {
+                let (last, at) = memo[k as usize];
+                if last - motion(s.shift_mm, (*a2 - at).abs()) - MARGIN_MM >= s.deep {
+                    continue;
+                }
+            }
             let lb = distance_capsule_aabb(&cyl, b);
             let free = lb - m - MARGIN_MM;
+            if let Some((memo, a2)) = &mut memo {
+                memo[k as usize] = (free, *a2);
+            }
             if free > c {
                 // Free at every node of the run; the run's bound serves the depth.
                 if free < s.deep {
@@ -244,34 +305,53 @@ impl GridCheck<'_> {
             return;
         }
         let mid = lo + (hi - lo) / 2;
-        self.arm_run(s, a3, out, lo, mid, &kept[..nk], q3_of);
-        self.arm_run(s, a3, out, mid, hi, &kept[..nk], q3_of);
+        self.arm_run(s, a, out, lo, mid, &kept[..nk], None);
+        self.arm_run(s, a, out, mid, hi, &kept[..nk], None);
     }
 
     /// Nodes `lo..hi` one by one (the node test of `column.rs`), with the coherence along the
     /// run: the capsule distance to a box changes by at most `R[2][L]` per radian of joint 3, so
     /// a box whose last capsule distance less that motion still exceeds the clearance is clear,
     /// as `link_clear_of_box`'s fast accept would find; that bound serves the depth.
-    #[allow(clippy::too_many_arguments)]
     pub(super) fn arm_nodes(
         &self,
         s: &Swept<'_>,
-        a3: &[f64],
+        a: &Angles,
         out: &mut [u8],
         lo: usize,
         hi: usize,
         set: &[u8],
-        q3_of: &impl Fn(f64) -> f64,
+    ) {
+        // The per-box memory on the stack, as small as the set allows (no 1 KB to clear per call).
+        if set.len() <= 4 {
+            self.arm_nodes_in::<4>(s, a, out, lo, hi, set);
+        } else {
+            self.arm_nodes_in::<SET>(s, a, out, lo, hi, set);
+        }
+    }
+
+    /// [`arm_nodes`](Self::arm_nodes) for a set of at most `N` boxes.
+    fn arm_nodes_in<const N: usize>(
+        &self,
+        s: &Swept<'_>,
+        a: &Angles,
+        out: &mut [u8],
+        lo: usize,
+        hi: usize,
+        set: &[u8],
     ) {
         let c = self.model.clearance_mm;
         let reach = s.reach_mm;
-        let mut lb = [f64::NEG_INFINITY; SET];
-        let mut at = [0.0f64; SET];
-        for (f, &a3) in out[lo..hi].iter_mut().zip(&a3[lo..hi]) {
+        let mut lb = [f64::NEG_INFINITY; N];
+        let mut at = [0.0f64; N];
+        let nodes = out[lo..hi]
+            .iter_mut()
+            .zip(&a.rad[lo..hi])
+            .zip(&a.sc[lo..hi]);
+        for ((f, &q3), &sc) in nodes {
             if *f == 0 {
                 continue;
             }
-            let q3 = q3_of(a3);
             let mut cyl: Option<Cylinder> = None;
             let mut nearest = f64::INFINITY;
             for (slot, &k) in set.iter().enumerate() {
@@ -280,7 +360,7 @@ impl GridCheck<'_> {
                     nearest = nearest.min(coherent);
                     continue;
                 }
-                let cy = *cyl.get_or_insert_with(|| s.at(q3));
+                let cy = *cyl.get_or_insert_with(|| s.at(sc));
                 let b = &s.boxes[k as usize].aabb;
                 // The capsule distance, and the axis point behind it for the node test.
                 let (near, axis) = axis_nearest(&cy, b);

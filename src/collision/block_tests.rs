@@ -388,3 +388,81 @@ fn a_slice_wise_build_keeps_an_off_axis_link_1_exact() {
         "{slices_blocked} blocked, {slices_open} open"
     );
 }
+
+/// What the columns of a slice carry along (`column.rs`, `FixedMemo`): link 2's capsule
+/// distances and the top runs' free bounds of the cylinders axis 3 moves. On random cells at 1
+/// deg, where a box stays unmeasured over many columns, the slice-wise build's codes and column
+/// bytes equal each column inspected alone (a fresh memo), and the free bits are `arm_is_free`'s.
+/// A motion bound too small for axis 2's steps would keep a box that came nearer unmeasured and
+/// leave a code or byte too deep (or a blocked column free).
+#[test]
+fn bounds_carried_along_a_slice_change_no_byte() {
+    let mut rng = Rng(0xF1ED_0002_C0DE_0001);
+    let (mut cells, mut compared) = (0, 0);
+    for _ in 0..200 {
+        if cells == 10 {
+            break;
+        }
+        let model = random_model(&mut rng);
+        let a1 = (rng.range(-160.0, 160.0)).round();
+        let grid = Grid::over([[a1 - 2.0, a1 + 2.0], [-70.0, 70.0], [-65.0, 70.0]], 1.0);
+        let check = model.grid_check(grid.step_deg);
+        let built = CSpace::build(grid, &check);
+        // Most random cells block link 1 or 2 in a few slices: only open ones are compared.
+        if built.free_count() < 10_000 {
+            continue;
+        }
+        cells += 1;
+        let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
+        let mut codes = vec![0u8; a3.len()];
+        let mut bytes = vec![0u8; check.column_bytes()];
+        for i1 in 0..grid.dims[0] {
+            for i2 in 0..grid.dims[1] {
+                let (a1, a2) = (grid.value(0, i1 as i64), grid.value(1, i2 as i64));
+                check.inspect_column(a1, a2, &a3, &mut codes, &mut bytes);
+                let n = [i1 as i32, i2 as i32, 0];
+                assert_eq!(built.column(n), &bytes[..], "{a1} {a2}");
+                for (i3, &code) in codes.iter().enumerate() {
+                    let n = [i1 as i32, i2 as i32, i3 as i32];
+                    assert_eq!(built.code(n), code, "{n:?}");
+                    if i3 % 5 == 0 {
+                        let axes = [a1, a2, a3[i3]];
+                        assert_eq!(built.is_free(n), model.arm_is_free(&axes), "{axes:?}");
+                        compared += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(cells == 10 && compared > 50_000, "{cells} {compared}");
+}
+
+/// The shift of the cylinders axis 3 moves (`grid.rs`, `shift3`): with axes 1 and 3 fixed, no
+/// end of such a cylinder moves more than `shift |da2|` (rad) between random poses; under the
+/// IRB 1400's parallelogram coupling link 3 only translates, by joint 3's origin's chord about
+/// joint 2 (600 mm of radius), far less than the general bound `R[1] + R[2]`.
+#[test]
+fn the_axis_2_shift_bounds_link_3s_motion() {
+    let mut rng = Rng(0x5A1F_7000_0000_0003);
+    let model = random_model(&mut rng);
+    let check = model.grid_check(1.0);
+    let mut tight = 0;
+    for &(i, _, shift) in &check.split3 {
+        let general = model.cyl[i].reach_mm[1] + model.cyl[i].reach_mm[2];
+        assert!(shift <= general, "{shift} {general}");
+        if shift < 0.5 * general {
+            tight += 1;
+        }
+        for _ in 0..2000 {
+            let a1 = rng.range(-170.0, 170.0);
+            let (a2, b2) = (rng.range(-70.0, 70.0), rng.range(-70.0, 70.0));
+            let a3 = rng.range(-65.0, 70.0);
+            let at = |a2: f64| model.cylinder_in(i, &model.cell_link_poses(&[a1, a2, a3]));
+            let (p, q) = (at(a2), at(b2));
+            let bound = shift * (a2 - b2).abs().to_radians() + 1e-9;
+            assert!((p.a - q.a).norm() <= bound, "{a1} {a2} {b2} {a3}");
+            assert!((p.b - q.b).norm() <= bound, "{a1} {a2} {b2} {a3}");
+        }
+    }
+    assert!(tight > 0, "{tight}");
+}

@@ -1,23 +1,38 @@
 //! Node inspection of a whole grid column at once: the hot path of the configuration-space
 //! grid (paper section 3). Per node it writes the code of `grid.rs`: the free bit is exactly
 //! [`CollisionModel::arm_is_free`]'s answer; the depths are lower bounds, quantised. The work that
-//! depends on axis 1 alone is done once per slice of axis 1 (link 1's checks,
-//! [`GridCheck::slice_bytes`]); the work that does not depend on axis 3 once per column (the
-//! range of axes 1 and 2, link 2's checks, the frame of joint 3), and boxes the links moved by
-//! axis 3 cannot come near are culled. Axis 3's range and the coupled one hold on one run of the
-//! column's ascending values, found by two bisections (node by node where the values are not
-//! ascending). The rest goes by runs of the column (`block.rs`, beyond the paper), 32 nodes to
-//! start with: a run whose motion bound proves it free (with the run's own depth, or full depth
-//! far from the boxes), or blocked, or the tool near at every node, costs one pose at its middle
-//! and no per-node work; only runs near an obstacle's boundary are halved down to the node test.
+//! depends on axis 1 alone is done once per slice of axis 1 ([`Slice`]: link 1's checks,
+//! [`GridCheck::slice_bytes`], and link 1's pose); the axis-3 values' sines and cosines once per
+//! grid (`block.rs`'s `Angles`: the nodes' and every run's middle); the work that does not
+//! depend on axis 3 once per column (the range of axes 1 and 2, link 2 placed from link 1's
+//! pose and checked, the frame of joint 3), and boxes the links moved by axis 3 cannot come near
+//! are culled. Joint 3 is axis 3 plus an angle set by axis 2 (the coupling), so the column turns
+//! the cylinders' split ends by that angle once and every node and run reads its axis-3 value's
+//! sine and cosine from the table: no `sin_cos` per node or run. Axis 3's range and the coupled
+//! one hold on one run of the column's ascending values, found by two bisections (node by node
+//! where the values are not ascending). The rest goes by runs of the column (`block.rs`, beyond
+//! the paper), 32 nodes to start with: a run whose motion bound proves it free (with the run's
+//! own depth, or full depth far from the boxes), or blocked, or the tool near at every node,
+//! costs one pose at its middle and no per-node work; only runs near an obstacle's boundary are
+//! halved down to the node test.
+//!
+//! *Carried along a slice* ([`FixedMemo`], beyond the paper). From one column of a slice to the
+//! next only axis 2 moves. A link-2 cylinder's capsule distance to a box changes by at most
+//! `R[1][L] |da2|`, and the middle cylinder of a top run of the cylinders axis 3 moves by at most
+//! their shift `|da2|` (`grid.rs`: under the IRB 1400's parallelogram coupling link 3 only
+//! translates, by joint 3's origin's chord about joint 2). A box whose last measured bound, less
+//! that motion and a margin of 1e-6 mm, is still `deep_mm` or more is dropped unmeasured: its
+//! measurement would have dropped it too (clear, depth `K`), so every code and column byte is
+//! the column's alone (`block_tests.rs`), whatever order the columns come in.
 
-use super::block::{ascending, Centre, Swept, SET, TOP_RUN_NODES};
+use super::block::{motion, Angles, Centre, Swept, MARGIN_MM, SET, TOP_RUN_NODES};
 use super::grid::{GridCheck, ARM_BITS, COLUMN_LEVELS, DEPTH_LEVELS};
 use super::proof::tight_lower_bound;
 use super::{link_clear_of_box, CylData};
 use crate::geometry::{distance_capsule_aabb, distance_point_aabb, Aabb, Cylinder, Point, Solid};
-use crate::robot::RangeViolation;
+use crate::robot::{Pose, RangeViolation};
 use nalgebra::Vector3;
+use std::borrow::Cow;
 
 /// Safety margin (mm) of the per-column culling of boxes.
 const CULL_MARGIN_MM: f64 = 1e-6;
@@ -29,6 +44,23 @@ pub const MAX_FIXED: usize = 8;
 /// Per fixed cylinder, the slice's answer for link 1 (`GridCheck::slice_bytes`).
 pub type SliceBytes = [Option<Option<u8>>; MAX_FIXED];
 
+/// What the columns of one slice of axis 1 share ([`GridCheck::slice`]): link 1's answers
+/// ([`GridCheck::slice_bytes`]) and pose, and the axis-3 values with their sines and cosines
+/// (`block.rs`'s [`Angles`]).
+pub struct Slice<'a> {
+    a1_deg: f64,
+    bytes: SliceBytes,
+    pose1: Pose,
+    angles: Cow<'a, Angles>,
+}
+
+/// Per link-2 cylinder and box, the capsule distance last measured along a slice and URDF
+/// joint 2's angle there (rad), for [`GridCheck::inspect_column_in`]'s next columns: one per
+/// slice ([`GridCheck::fixed_memo`]).
+/// Also, per cylinder moved by axis 3, chunk of boxes, top run and box, the run's free bound
+/// measured last and axis 2 there (rad) (`block.rs`, [`GridCheck::arm_run`]'s `memo`).
+pub struct FixedMemo(Vec<(f64, f64)>, Vec<(f64, f64)>);
+
 /// Obstacles per chunk of the per-column culling (the kept indices live on the stack).
 const CULL_CHUNK: usize = SET;
 
@@ -36,17 +68,20 @@ impl GridCheck<'_> {
     /// The hot path of the grid build: the node code (`grid.rs`) of `[a1, a2, a3[k]]` for one
     /// column into `out[k]`; 0 for a node that is not free.
     ///
-    /// Per column: the range of axes 1 and 2, the poses of links 1 and 2 and their cylinders'
-    /// checks and depths (link 1's from [`slice_bytes`](Self::slice_bytes), which the grid
-    /// build makes once per slice), the frame of joint 3, and the culling of boxes the cylinders
-    /// moved by axis 3 (and the tool's wrist centre) cannot come near: a sphere about joint 3
-    /// and a slab along its axis hold their whole sweep. The range of axis 3 and the coupled
-    /// one by bisection of the (ascending) values. The cylinders
-    /// moved by axis 3 and the tool's wrist centre by runs (`block.rs`; node by node when the
-    /// axis-3 values are not ascending): per run one `sin_cos` at its middle and the remaining
-    /// boxes; per node, in runs near a boundary, one `sin_cos`, the end points and the
-    /// remaining boxes. No allocation. Only `min(a3_deg.len(), out.len())` nodes are inspected;
-    /// any further entries of `out` are set to 0.
+    /// Per column: the range of axes 1 and 2, link 2's pose (from link 1's, kept per slice) and
+    /// its cylinders' checks and depths (link 1's from [`slice_bytes`](Self::slice_bytes), which
+    /// the grid build makes once per slice), the frame of joint 3, and the culling of boxes the
+    /// cylinders moved by axis 3 (and the tool's wrist centre) cannot come near: a sphere about
+    /// joint 3 and a slab along its axis hold their whole sweep. The range of axis 3 and the
+    /// coupled one by bisection of the (ascending) values. The cylinders moved by axis 3 and the
+    /// tool's wrist centre by runs (`block.rs`; node by node when the axis-3 values are not
+    /// ascending): per run its middle pose from the slice's table of sines and cosines and the
+    /// remaining boxes; per node, in runs near a boundary, the end points from the table and the
+    /// remaining boxes (the tool's wrist centre still takes a `sin_cos` per run or node). This
+    /// one column makes its own `Slice` and `FixedMemo` (the grid build makes them once per
+    /// slice and calls [`inspect_column_in`](Self::inspect_column_in)). Only
+    /// `min(a3_deg.len(), out.len())` nodes are inspected; any further entries of `out` are set
+    /// to 0.
     pub fn inspect_column(
         &self,
         a1_deg: f64,
@@ -55,14 +90,37 @@ impl GridCheck<'_> {
         out: &mut [u8],
         column: &mut [u8],
     ) {
-        self.inspect_column_in(
+        let mut memo = self.fixed_memo();
+        self.inspect_column_in(a2_deg, out, column, &self.slice(a1_deg, a3_deg), &mut memo);
+    }
+
+    /// An empty `FixedMemo` (nothing measured yet) for the columns of one slice.
+    pub fn fixed_memo(&self) -> FixedMemo {
+        let n = self.fixed.len() * self.model.obstacles.len();
+        FixedMemo(vec![(f64::NEG_INFINITY, 0.0); n], Vec::new())
+    }
+
+    /// What every column `[a1_deg, *, a3_deg]` of one slice of axis 1 shares
+    /// (`Slice`): made once per slice by the grid build.
+    pub fn slice(&self, a1_deg: f64, a3_deg: &[f64]) -> Slice<'_> {
+        // The grid's slices share their axis-3 values: their angles are made once.
+        let kept = self.angles.get_or_init(|| Angles::new(a3_deg));
+        let same = kept.deg.len() == a3_deg.len()
+            && kept
+                .deg
+                .iter()
+                .zip(a3_deg)
+                .all(|(a, b)| a.to_bits() == b.to_bits());
+        Slice {
             a1_deg,
-            a2_deg,
-            a3_deg,
-            out,
-            column,
-            &self.slice_bytes(a1_deg),
-        );
+            bytes: self.slice_bytes(a1_deg),
+            pose1: self.chain.pose1(a1_deg.to_radians().sin_cos()),
+            angles: if same {
+                Cow::Borrowed(kept)
+            } else {
+                Cow::Owned(Angles::new(a3_deg))
+            },
+        }
     }
 
     /// What the cylinders of link 1 (moved by axis 1 alone) give every column of the slice at
@@ -99,18 +157,53 @@ impl GridCheck<'_> {
         Some(self.depth_of(nearest, span, COLUMN_LEVELS))
     }
 
-    /// [`inspect_column`](Self::inspect_column) with the slice's link-1 answers
-    /// ([`slice_bytes`](Self::slice_bytes) of the same `a1_deg`) given.
+    /// [`fixed_byte`](Self::fixed_byte) of a link-2 cylinder at URDF joint 2 = `q2` (rad), with
+    /// `memo` its capsule distances measured at other columns of the slice (by box index):
+    /// only joint 2 moved since, so a box whose last distance less the motion `R[1][L] |dq2|`
+    /// (and the margin) is still `deep_mm` or more is neither within the clearance nor below
+    /// depth `K_c`, and is not measured again; its byte is `fixed_byte`'s.
+    fn fixed_byte_along(
+        &self,
+        l: usize,
+        cyl: &Cylinder,
+        memo: &mut [(f64, f64)],
+        q2: f64,
+    ) -> Option<u8> {
+        let model = self.model;
+        let c = model.clearance_mm;
+        let span = self.fixed_span[l];
+        let deep = self.deep_mm(span);
+        let reach = model.cyl[self.fixed[l]].reach_mm[1];
+        let mut nearest = f64::INFINITY;
+        for (k, b) in model.checked_boxes(self.fixed[l]) {
+            let (last, at) = memo[k];
+            if last - motion(reach, (q2 - at).abs()) - MARGIN_MM >= deep {
+                continue;
+            }
+            let lo = distance_capsule_aabb(cyl, b);
+            memo[k] = (lo, q2);
+            if lo <= c && !link_clear_of_box(cyl, b, c) {
+                return None;
+            }
+            nearest = nearest.min(depth_bound(cyl, b, lo, deep));
+        }
+        Some(self.depth_of(nearest, span, COLUMN_LEVELS))
+    }
+
+    /// [`inspect_column`](Self::inspect_column) of the column at `a2_deg` of `slice`
+    /// ([`slice`](Self::slice): its `a1_deg`, axis-3 values, link 1's answers and pose), with
+    /// `memo` the link-2 distances of the slice's columns inspected before (any order).
     pub fn inspect_column_in(
         &self,
-        a1_deg: f64,
         a2_deg: f64,
-        a3_deg: &[f64],
         out: &mut [u8],
         column: &mut [u8],
-        slice: &SliceBytes,
+        slice: &Slice<'_>,
+        memo: &mut FixedMemo,
     ) {
         let model = self.model;
+        let (a1_deg, ang) = (slice.a1_deg, &*slice.angles);
+        let a3_deg = &ang.deg[..];
         column.fill(0);
         let n = a3_deg.len().min(out.len());
         let (out, rest) = out.split_at_mut(n);
@@ -126,7 +219,7 @@ impl GridCheck<'_> {
             return;
         }
         // A link-1 cylinder within the clearance blocks the whole slice.
-        if slice.contains(&Some(None)) {
+        if slice.bytes.contains(&Some(None)) {
             out.fill(0);
             return;
         }
@@ -134,7 +227,7 @@ impl GridCheck<'_> {
         // Axes 1 and 2 are in range (above): per node axis 3 and the coupled range, which on
         // ascending values (the grid's) hold on one run of the column, found by bisection. The
         // runs of `block.rs` need the same order; without it every node is looked at.
-        let runs = ascending(&a3_deg[..n]);
+        let runs = ang.ascending;
         if runs {
             let robot = &model.robot;
             let first = a3_deg[..n].partition_point(|&v| robot.axis3_below(a2_deg, v));
@@ -152,14 +245,27 @@ impl GridCheck<'_> {
                 };
             }
         }
-        let poses = model.cell_link_poses(&[a1_deg, a2_deg, 0.0]);
+        // Link 2's pose from the slice's link 1 (URDF joint 2 is axis 2).
+        let a2_rad = a2_deg.to_radians();
+        let sc2 = a2_rad.sin_cos();
+        let pose2 = self.chain.pose2_from1(&slice.pose1, sc2);
         let c = model.clearance_mm;
         // Cylinders that axis 3 does not move: their test holds for the whole column, and their
         // depths go into the column's bytes (link 1's are the slice's).
         for (l, &i) in self.fixed.iter().enumerate() {
-            let answer = match slice.get(l).copied().flatten() {
+            let answer = match slice.bytes.get(l).copied().flatten() {
                 Some(known) => known,
-                None => self.fixed_byte(l, &model.cylinder_in(i, &poses)),
+                None => {
+                    let cy = &model.robot.cylinders[i];
+                    let cyl = Cylinder {
+                        a: pose2.point(&cy.a),
+                        b: pose2.point(&cy.b),
+                        radius: cy.radius_mm,
+                    };
+                    let boxes = self.model.obstacles.len();
+                    let memo = &mut memo.0[l * boxes..(l + 1) * boxes];
+                    self.fixed_byte_along(l, &cyl, memo, a2_rad)
+                }
             };
             let Some(byte) = answer else {
                 out.fill(0);
@@ -170,27 +276,34 @@ impl GridCheck<'_> {
                 *slot = byte;
             }
         }
-        // Frame of joint 3 (before its rotation), cell frame.
-        let j3 = poses[1] * model.robot.joints[2].origin;
-        let origin = Point::from(j3.translation.vector);
-        let axis = j3.rotation * model.robot.joints[2].axis.into_inner();
-        let q3_of = |a3: f64| {
-            model
-                .robot
-                .urdf_joints_deg(&[a1_deg, a2_deg, a3, 0.0, 0.0, 0.0])[2]
-                .to_radians()
-        };
-        for (i, cd) in model.cyl.iter().enumerate().filter(|(_, d)| d.joint == 2) {
+        // Joint 3's origin and axis, cell frame.
+        let origin = pose2.point(&self.joint3.0);
+        let axis = pose2.vector(&self.joint3.1);
+        // URDF joint 3 is `a3 + t` with `t` set by axis 2 (the coupling): a split point
+        // `par + cos q perp + sin q cross` is `par + cos a3 perp' + sin a3 cross'` with
+        // `perp' = cos t perp + sin t cross`, `cross' = cos t cross - sin t perp`, so the
+        // nodes read the sines and cosines of their axis-3 values from the slice's tables.
+        let (st, ct) = model.robot.urdf_arm_sincos(&[(0.0, 1.0), sc2, (0.0, 1.0)])[2];
+        // The top runs' bounds carried along the slice: per cylinder, chunk, top run, box.
+        let chunks = model.obstacles.len().div_ceil(CULL_CHUNK);
+        let tops = n.div_ceil(TOP_RUN_NODES);
+        let need = self.split3.len() * chunks * tops * CULL_CHUNK;
+        if memo.1.len() < need {
+            memo.1.resize(need, (f64::NEG_INFINITY, 0.0));
+        }
+        for (slot, (i, split, shift)) in self.split3.iter().enumerate() {
+            let (i, cd) = (*i, &model.cyl[*i]);
             let span = self.arm_span;
             let deep = self.deep_mm(span);
-            let ends = cd.split.map(|[par, perp, cross]| {
+            let ends = split.map(|[par, perp, cross]| {
+                let (perp, cross) = (pose2.vector(&perp), pose2.vector(&cross));
                 (
-                    origin + j3.rotation * par,
-                    j3.rotation * perp,
-                    j3.rotation * cross,
+                    pose2.point(&Point::from(par)),
+                    perp * ct + cross * st,
+                    cross * ct - perp * st,
                 )
             });
-            for chunk in model.obstacles.chunks(CULL_CHUNK) {
+            for (ch, chunk) in model.obstacles.chunks(CULL_CHUNK).enumerate() {
                 // Boxes the cylinder's sweep keeps farther than the clearance from are culled;
                 // the nearest of them still bounds the depth of every node of the column.
                 let mut kept = [0u8; CULL_CHUNK];
@@ -206,8 +319,9 @@ impl GridCheck<'_> {
                     }
                 }
                 if culled < deep {
+                    // Every code at once (a blocked node's 0 stays 0).
                     let q = self.depth(culled, span);
-                    for f in out.iter_mut().filter(|f| **f != 0) {
+                    for f in out.iter_mut() {
                         *f = (*f & !ARM_BITS) | q.min(*f & ARM_BITS);
                     }
                 }
@@ -215,20 +329,35 @@ impl GridCheck<'_> {
                     ends,
                     radius: model.robot.cylinders[i].radius_mm,
                     reach_mm: cd.reach_mm[2],
+                    shift_mm: *shift,
                     boxes: chunk,
                     deep,
                     span,
                 };
                 if runs {
-                    for (lo, hi) in top_runs(n) {
-                        self.arm_run(&swept, a3_deg, out, lo, hi, &kept[..nk], &q3_of);
+                    for (t, (lo, hi)) in top_runs(n).enumerate() {
+                        let at = ((slot * chunks + ch) * tops + t) * CULL_CHUNK;
+                        let memo = (&mut memo.1[at..at + CULL_CHUNK], a2_rad);
+                        self.arm_run(&swept, ang, out, lo, hi, &kept[..nk], Some(memo));
                     }
                 } else {
-                    self.arm_nodes(&swept, a3_deg, out, 0, n, &kept[..nk], &q3_of);
+                    self.arm_nodes(&swept, ang, out, 0, n, &kept[..nk]);
                 }
             }
         }
-        self.tool_codes(a3_deg, out, &origin, &j3, runs, &q3_of);
+        if model.tool.is_some() {
+            // The tool's bits from joint 3's frame as link 2's isometry places it.
+            let poses = model.cell_link_poses(&[a1_deg, a2_deg, 0.0]);
+            let j3 = poses[1] * model.robot.joints[2].origin;
+            let origin = Point::from(j3.translation.vector);
+            let q3_of = |a3: f64| {
+                model
+                    .robot
+                    .urdf_joints_deg(&[a1_deg, a2_deg, a3, 0.0, 0.0, 0.0])[2]
+                    .to_radians()
+            };
+            self.tool_codes(a3_deg, out, &origin, &j3, runs, &q3_of);
+        }
     }
 
     /// The tool's bits of the column's free nodes (`grid.rs`): the wrist centre `C` (a point of

@@ -46,8 +46,12 @@
 //! wrist: bit 6 is clear and the tool needs no look at that node. Where bit 6 is set, the leg's
 //! wrist at the node decides ([`CollisionModel::tool_is_free`]).
 
+use super::block::Angles;
 use super::proof::lowered;
 use super::CollisionModel;
+use crate::robot::SinCosChain;
+use nalgebra::{Point3, Vector3};
+use std::sync::OnceLock;
 
 /// The node-code bit of a free node (the paper's node test of the arm); the grid
 /// (`plan::cspace`) reads only this bit.
@@ -87,12 +91,49 @@ pub struct GridCheck<'a> {
     need_fixed: Vec<[u8; 27]>,
     need_arm: [u8; 27],
     need_tool: [u8; 27],
+    /// Links 1 and 2 placed from sines and cosines, cell frame (the columns' frames of joint 3,
+    /// `column.rs`).
+    pub(super) chain: SinCosChain,
+    /// Joint 3's origin and unit axis in link 2's frame, and per cylinder moved by axis 3 (by
+    /// index into `model.cyl`) its ends' split (`CylData::split`) in link 2's frame (the
+    /// parallel part as a point of link 2, the two others as its vectors) and its shift: the
+    /// most any of its points moves per radian of axis 2 with axes 1 and 3 fixed, mm.
+    pub(super) joint3: (Point3<f64>, Vector3<f64>),
+    pub(super) split3: Vec<(usize, EndsSplit, f64)>,
+    /// The first slice's axis-3 angles, for every slice with the same values (the grid's).
+    pub(super) angles: OnceLock<Angles>,
 }
 
 impl CollisionModel {
     /// The model on a grid of spacing `step_deg` (deg): node codes and the step check.
     pub fn grid_check(&self, step_deg: f64) -> GridCheck<'_> {
         GridCheck::new(self, step_deg)
+    }
+}
+
+/// A cylinder's two ends split about joint 3's axis (`CylData::split`): per end the parallel
+/// part and the two turning vectors.
+pub(super) type EndsSplit = [[Vector3<f64>; 3]; 2];
+
+/// The most any point of cylinder `i` (moved by axis 3) moves per radian of axis 2 with axes 1
+/// and 3 fixed, mm. URDF joint 2 moves with axis 2 and joint 3 by `dq3 / da2` (-1 under a
+/// parallelogram coupling, else 0): in general `R[1] + R[2] |dq3 / da2|` (`proof.rs`). Where
+/// the coupling takes joint 3 back by joint 2's angle about the same axis (joint 3's origin
+/// not rotated, both axes the same vector), link 3 keeps its orientation and only joint 3's
+/// origin moves, on a circle about joint 2's axis: the shift is that circle's radius.
+fn shift3(model: &CollisionModel, i: usize) -> f64 {
+    let robot = &model.robot;
+    let urdf = |a2: f64| robot.urdf_joints_deg(&[0.0, a2, 0.0, 0.0, 0.0, 0.0]);
+    let (dq2, dq3) = (urdf(1.0)[1] - urdf(0.0)[1], urdf(1.0)[2] - urdf(0.0)[2]);
+    let reach = model.cyl[i].reach_mm;
+    let general = reach[1] * dq2.abs() + reach[2] * dq3.abs();
+    let (j2, j3) = (&robot.joints[1], &robot.joints[2]);
+    if dq2 == 1.0 && dq3 == -1.0 && j2.axis == j3.axis && j3.origin.rotation == Default::default() {
+        let t = j3.origin.translation.vector;
+        let u = j2.axis.into_inner();
+        (t - u * u.dot(&t)).norm().min(general)
+    } else {
+        general
     }
 }
 
@@ -150,6 +191,20 @@ impl<'a> GridCheck<'a> {
             None => [0.0; 27],
         };
         let centre_span = max(&centre);
+        let j3 = model.robot.joints[2].origin;
+        let split3 = (0..model.cyl.len())
+            .filter(|&i| model.cyl[i].joint == 2)
+            .map(|i| {
+                let turn = |[par, perp, cross]: [Vector3<f64>; 3]| {
+                    [
+                        (j3 * Point3::from(par)).coords,
+                        j3.rotation * perp,
+                        j3.rotation * cross,
+                    ]
+                };
+                (i, model.cyl[i].split.map(turn), shift3(model, i))
+            })
+            .collect();
         let need_tool = std::array::from_fn(|o| need(DEPTH_LEVELS, centre[o], centre_span));
         GridCheck {
             model,
@@ -160,6 +215,13 @@ impl<'a> GridCheck<'a> {
             need_fixed,
             need_arm,
             need_tool,
+            chain: SinCosChain::new(&model.robot, &model.cell_from_robot),
+            joint3: (
+                Point3::from(j3.translation.vector),
+                j3.rotation * model.robot.joints[2].axis.into_inner(),
+            ),
+            split3,
+            angles: OnceLock::new(),
         }
     }
 
@@ -192,7 +254,8 @@ impl<'a> GridCheck<'a> {
         if span <= 0.0 || above >= span {
             return levels;
         }
-        ((k * above / span).floor() as u8).min(levels)
+        // `as` truncates, which is `floor` here (the quotient is at least 0).
+        ((k * above / span) as u8).min(levels)
     }
 
     /// [`depth_of`](Self::depth_of) on the node codes' [`DEPTH_LEVELS`].

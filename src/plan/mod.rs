@@ -331,8 +331,9 @@ impl cspace::Inspector for GridCheck<'_> {
         code: &mut [u8],
         column: &mut [u8],
     ) {
-        // Link 1's checks once for the slice (`collision::column`).
-        let slice = self.slice_bytes(a1_deg);
+        // Link 1's checks and pose and the axis-3 angles once for the slice (`collision::column`).
+        let slice = self.slice(a1_deg, a3_deg);
+        let mut memo = self.fixed_memo();
         let width = GridCheck::column_bytes(self);
         cspace::each_column(
             a2_deg,
@@ -340,7 +341,7 @@ impl cspace::Inspector for GridCheck<'_> {
             width,
             code,
             column,
-            |a2, codes, own| self.inspect_column_in(a1_deg, a2, a3_deg, codes, own, &slice),
+            |a2, codes, own| self.inspect_column_in(a2, codes, own, &slice, &mut memo),
         );
     }
 }

@@ -15,7 +15,7 @@
 //! step (`pose6`), to the bit. Beyond the paper: a speed device only.
 
 use super::Robot;
-use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3};
+use nalgebra::{Isometry3, Matrix3, Point3, Rotation3, Translation3, UnitQuaternion, Vector3};
 
 /// A 3x3 matrix as rows, for the hand-unrolled products of the chain.
 type M3 = [[f64; 3]; 3];
@@ -73,6 +73,19 @@ impl Pose {
     pub fn apply(&self, x: &[f64; 3]) -> [f64; 3] {
         let (r, t) = (&self.r, &self.t);
         std::array::from_fn(|k| t[k] + r[k][0] * x[0] + r[k][1] * x[1] + r[k][2] * x[2])
+    }
+
+    /// Point `p` (in this pose's frame) in the parent frame.
+    #[inline(always)]
+    pub fn point(&self, p: &Point3<f64>) -> Point3<f64> {
+        Point3::from(self.apply(&[p.x, p.y, p.z]))
+    }
+
+    /// Vector `v` (in this pose's frame) turned into the parent frame.
+    #[inline(always)]
+    pub fn vector(&self, v: &Vector3<f64>) -> Vector3<f64> {
+        let r = &self.r;
+        Vector3::from_fn(|k, _| r[k][0] * v.x + r[k][1] * v.y + r[k][2] * v.z)
     }
 }
 
@@ -168,6 +181,14 @@ impl SinCosChain {
             t: [0.0; 3],
         };
         self.step(&first, 0, sc)
+    }
+
+    /// The pose of link 2 from link 1's pose `p1` ([`pose1`](Self::pose1)) and the sine and
+    /// cosine of URDF joint 2: the second step of `pose6` (the grid build's
+    /// columns, `collision::column`).
+    #[inline(always)]
+    pub fn pose2_from1(&self, p1: &Pose, sc: (f64, f64)) -> Pose {
+        self.step(p1, 1, sc)
     }
 
     /// [`pose6`](Self::pose6) from link 1's pose `p1` ([`pose1`](Self::pose1) of the same
