@@ -297,9 +297,10 @@ fn least_sq_masked(p: &Point, mut mask: u16, by_box: &[[f64; 6]]) -> f64 {
 
 /// How far beyond its radius and the clearance a tool ball measures the boxes in a look, mm: a
 /// box farther is left out of its balls' pass (`near.rs`), and the look's margin is at most
-/// about this. Above the largest motion a leg's spread asks at 1 deg on the example cells (two
-/// grid steps on every axis: about 240 mm on torch-trunk), so the spreads are those of the
-/// whole pass there.
+/// about this. A larger margin would spread a look only over the farthest of a leg's 124
+/// offsets (at 1 deg on torch-trunk, up to about 240 mm of motion), and a larger reach keeps
+/// more boxes a ball: whole runs of torch-trunk at 1 deg took 4123 / 4073 / 4073 / 4080 M
+/// instructions at 80 / 120 / 150 / 180 mm (30 mm cubes).
 const LOOK_REACH_MM: f64 = 150.0;
 
 /// How many tool shapes a look tells its exact test are far from every box
@@ -562,7 +563,8 @@ impl CollisionModel {
     /// move is proven again on `link_poses`) and a margin, mm: how much more than the clearance
     /// every tool shape keeps from every box at least, from each shape's ball (`parts.rs`, one
     /// point placed per shape), after the slack of `proof.rs`; 0 where the balls do not show
-    /// the tool clear (`INFINITY` without a tool or boxes). Where the margin is not positive,
+    /// the tool clear (`INFINITY` without a tool or boxes), capped at about [`LOOK_REACH_MM`]
+    /// where the balls are measured by the cubes of `near.rs`. Where the margin is not positive,
     /// a shape whose inner ball (`parts.rs`: about the ball's centre, inside the shape) comes
     /// within the clearance less [`UPPER_BOUND_SLACK_MM`] of a box answers blocked; else the
     /// exact test runs, each shape near a box first measured by an upper bound
@@ -634,6 +636,14 @@ impl CollisionModel {
     /// ball is farther than the clearance plus [`SINCOS_POSE_SLACK_MM`] (which covers the
     /// rounding between `flange` and its isometry) from every box, so that the exact test need
     /// not look at the boxes for it (its own ball test would pass every one).
+    ///
+    /// Each ball is measured against the boxes its cube names (`near.rs`): a box left out is
+    /// farther from the ball's centre than the masks' reach `L`, which is above the ball's
+    /// radius plus the clearance and [`LOOK_REACH_MM`], so it is far for the shape and its
+    /// inner ball is not within the clearance of it, and it keeps more than `L - r_max` from
+    /// the ball (`r_max` the largest ball radius): the least is capped there, the rest is the
+    /// pass over every box to the bit ([`ball_pass_all`](Self::ball_pass_all); the tests hold
+    /// them to that).
     #[inline]
     fn ball_pass(
         &self,
@@ -668,6 +678,22 @@ impl CollisionModel {
             // A box a ball's cube leaves out is farther than the reach from it (`near.rs`).
             return (nearest.min(near.reach_mm - near.ball_mm), within, far);
         }
+        self.ball_pass_all(tool, look, flange)
+    }
+
+    /// [`ball_pass`](Self::ball_pass) against every box (a model with more boxes than a mask
+    /// names, or whose clearance grew after the masks were made).
+    #[inline]
+    fn ball_pass_all(
+        &self,
+        tool: &ToolData,
+        look: &ToolLook,
+        flange: &Pose,
+    ) -> (f64, bool, [bool; FAR_SHAPES]) {
+        let c = self.clearance_mm;
+        let mut nearest = f64::INFINITY;
+        let mut within = false;
+        let mut far = [false; FAR_SHAPES];
         for (i, three) in tool.shapes.chunks(3).enumerate() {
             let centre = |k: usize| {
                 let (centre, _) = three[k.min(three.len() - 1)].ball;
@@ -699,6 +725,30 @@ impl CollisionModel {
             Some((tool, look, flange)) => self.ball_pass(tool, look, &flange).2,
             None => [false; FAR_SHAPES],
         }
+    }
+
+    /// The balls' pass at `axes` by the cubes' masks and over every box
+    /// ([`ball_pass`](Self::ball_pass), [`ball_pass_all`](Self::ball_pass_all)), and the cap
+    /// of the masked pass's least (for tests; `None` without a tool or masks).
+    #[cfg(test)]
+    #[allow(clippy::type_complexity)]
+    pub(crate) fn ball_passes_for_test(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+    ) -> Option<(
+        (f64, bool, [bool; FAR_SHAPES]),
+        (f64, bool, [bool; FAR_SHAPES]),
+        f64,
+    )> {
+        let (tool, look, flange) = self.look_parts(axes, arm_sincos, None)?;
+        let masked = self.ball_pass(tool, look, &flange);
+        let near = look.near.get()?.as_ref()?;
+        Some((
+            masked,
+            self.ball_pass_all(tool, look, &flange),
+            near.reach_mm - near.ball_mm,
+        ))
     }
 
     /// What a look works with: the tool, its look tables and the flange placed from sines and

@@ -152,3 +152,92 @@ impl NearBoxes {
             .unwrap_or(self.all)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::testing::Rng;
+    use crate::geometry::{distance_point_aabb, Aabb};
+
+    fn random_boxes(rng: &mut Rng, n: usize) -> Vec<Obstacle> {
+        (0..n)
+            .map(|k| {
+                let c = [0, 1, 2].map(|_| rng.range(-1000.0, 1000.0));
+                let h = [0, 1, 2].map(|_| rng.range(1.0, 400.0));
+                Obstacle {
+                    name: format!("b{k}"),
+                    aabb: Aabb::new(
+                        Point::new(c[0] - h[0], c[1] - h[1], c[2] - h[2]),
+                        Point::new(c[0] + h[0], c[1] + h[1], c[2] + h[2]),
+                    ),
+                    loc: crate::cell::Loc { line: 1, column: 1 },
+                }
+            })
+            .collect()
+    }
+
+    /// Every box a point's mask leaves out is farther than the reach from the point, for random
+    /// boxes, reaches and points (in the boxes' region, near its border and far off it), and
+    /// the masks do leave boxes out (else the test would hold for masks of every box).
+    /// Points are drawn near the cubes' corners too, where a mask made from the cube's centre
+    /// without its half diagonal would name too few boxes.
+    #[test]
+    fn a_box_left_out_is_farther_than_the_reach() {
+        let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+        let (mut left_out, mut named) = (0usize, 0usize);
+        for case in 0..40 {
+            let boxes = random_boxes(&mut rng, 1 + case % MAX_BOXES);
+            let reach = rng.range(5.0, 400.0);
+            let near = NearBoxes::new(&boxes, 50.0, reach).expect("masks");
+            let side = 1.0 / near.inv_side;
+            for _ in 0..3000 {
+                let p = if rng.range(0.0, 1.0) < 0.5 {
+                    Point::new(
+                        rng.range(-2000.0, 2000.0),
+                        rng.range(-2000.0, 2000.0),
+                        rng.range(-2000.0, 2000.0),
+                    )
+                } else {
+                    // Near a corner of a cube.
+                    let i = [0, 1, 2].map(|k| (rng.range(0.0, near.dims[k] as f64)).floor());
+                    let e = [0, 1, 2].map(|_| rng.range(-1e-6, 1e-6) * side);
+                    Point::new(
+                        near.origin[0] + i[0] * side + e[0],
+                        near.origin[1] + i[1] * side + e[1],
+                        near.origin[2] + i[2] * side + e[2],
+                    )
+                };
+                let mask = near.mask(&p);
+                for (b, o) in boxes.iter().enumerate() {
+                    if mask >> b & 1 == 0 {
+                        left_out += 1;
+                        let d = distance_point_aabb(&p, &o.aabb);
+                        assert!(d > reach, "case {case}: box {b} at {d} <= {reach} left out");
+                    } else {
+                        named += 1;
+                    }
+                }
+            }
+            // Far off every box: no box; not a number: every box.
+            assert_eq!(near.mask(&Point::new(1e7, 0.0, 0.0)), 0);
+            assert_eq!(near.mask(&Point::new(-1e7, -1e7, -1e7)), 0);
+            assert_eq!(near.mask(&Point::new(f64::NAN, 0.0, 0.0)), near.all);
+        }
+        assert!(
+            left_out > 10 * named / 100,
+            "{left_out} left out, {named} named"
+        );
+        assert!(named > 0);
+    }
+
+    /// No masks without boxes, with more boxes than a mask holds, or without a reach.
+    #[test]
+    fn no_masks_where_they_cannot_hold() {
+        let mut rng = Rng(7);
+        assert!(NearBoxes::new(&[], 10.0, 100.0).is_none());
+        assert!(NearBoxes::new(&random_boxes(&mut rng, MAX_BOXES + 1), 10.0, 100.0).is_none());
+        assert!(NearBoxes::new(&random_boxes(&mut rng, 3), 10.0, 0.0).is_none());
+        assert!(NearBoxes::new(&random_boxes(&mut rng, 3), 10.0, f64::NAN).is_none());
+        assert!(NearBoxes::new(&random_boxes(&mut rng, MAX_BOXES), 10.0, 100.0).is_some());
+    }
+}
