@@ -37,6 +37,8 @@ pub(super) struct NearBoxes {
     inv_side: f64,
     /// Cubes along x, y, z.
     dims: [usize; 3],
+    /// The same as numbers.
+    dims_f: [f64; 3],
     /// Per cube (x fastest, then y, then z): bit `b` set where box `b` may be within `L`.
     masks: Vec<u16>,
     /// Every box's bit (the mask of a point that is not a number).
@@ -122,6 +124,7 @@ impl NearBoxes {
             origin: lo,
             inv_side: 1.0 / side,
             dims,
+            dims_f: dims.map(|d| d as f64),
             masks,
             all: ((1u32 << obstacles.len()) - 1) as u16,
             reach_mm,
@@ -132,24 +135,30 @@ impl NearBoxes {
     /// The boxes that may be within the reach of `p` (module doc): bit `b` for box `b`.
     #[inline]
     pub(super) fn mask(&self, p: &Point) -> u16 {
-        let f = |k: usize| (p[k] - self.origin[k]) * self.inv_side;
-        let (x, y, z) = (f(0), f(1), f(2));
+        let [x, y, z] = [0, 1, 2].map(|k| (p[k] - self.origin[k]) * self.inv_side);
+        let [dx, dy, dz] = self.dims_f;
+        // On the grid: the cube's mask. The index is `x - 1/2` rounded to the nearest integer
+        // by adding `1.5 2^52` (the integer in the low bits; at most `2 MAX_VOXELS`): `floor(x)`
+        // except within a few ulps of a cube's face, where either cube's mask holds (the masks'
+        // test has 1e-3 mm of room).
+        if x >= 0.0 && y >= 0.0 && z >= 0.0 && x < dx && y < dy && z < dz {
+            const ROUND: f64 = 6_755_399_441_055_744.0;
+            let index = |v: f64| ((v - 0.5) + ROUND).to_bits() as u32 as usize;
+            let (x, y, z) = (index(x), index(y), index(z));
+            let [nx, ny, _] = self.dims;
+            return self
+                .masks
+                .get((z * ny + y) * nx + x)
+                .copied()
+                .unwrap_or(self.all);
+        }
+        // Not a number: every box; else off the grid (below 0, or at or past the last cube),
+        // so off the grown bounding box: none.
         if x.is_nan() || y.is_nan() || z.is_nan() {
-            return self.all;
+            self.all
+        } else {
+            0
         }
-        let [dx, dy, dz] = self.dims;
-        // Off the grid (below 0, or at or past the last cube): off the grown bounding box.
-        if !(x >= 0.0 && y >= 0.0 && z >= 0.0) {
-            return 0;
-        }
-        let (x, y, z) = (x as usize, y as usize, z as usize);
-        if x >= dx || y >= dy || z >= dz {
-            return 0;
-        }
-        self.masks
-            .get((z * dy + y) * dx + x)
-            .copied()
-            .unwrap_or(self.all)
     }
 }
 
