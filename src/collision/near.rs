@@ -54,7 +54,11 @@ impl NearBoxes {
     /// `None` without boxes or with more than [`MAX_BOXES`], or for a reach that is not a
     /// positive number.
     pub(super) fn new(obstacles: &[Obstacle], ball_mm: f64, reach_mm: f64) -> Option<NearBoxes> {
-        if obstacles.is_empty() || obstacles.len() > MAX_BOXES || !(reach_mm > 0.0) {
+        if obstacles.is_empty()
+            || obstacles.len() > MAX_BOXES
+            || reach_mm.is_nan()
+            || reach_mm <= 0.0
+        {
             return None;
         }
         let grow = reach_mm + 1.0;
@@ -72,7 +76,7 @@ impl NearBoxes {
                 .fold(f64::NEG_INFINITY, f64::max)
                 + grow
         });
-        if !(lo.iter().chain(&hi).all(|v| v.is_finite())) {
+        if !lo.iter().chain(&hi).all(|v| v.is_finite()) {
             return None;
         }
         let volume: f64 = (0..3).map(|k| hi[k] - lo[k]).product();
