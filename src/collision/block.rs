@@ -407,14 +407,16 @@ impl GridCheck<'_> {
             let c = self.model.clearance_mm;
             let mut kept = [0u8; SET];
             let mut nk = 0;
+            // The least bound of the boxes far at every node: the depth of the least is the least
+            // of the depths (`depth` does not fall with the distance), so the codes are capped
+            // once.
+            let mut least_far = f64::INFINITY;
             for &k in set {
                 let f = distance_point_aabb(&centre, t.boxes[k as usize]) - t.radius;
                 let far = f - m - MARGIN_MM;
                 if far > not_near(c) {
                     // Not near for this box at any node; the run's bound serves the depth.
-                    if far < t.deep {
-                        cap_depth(&mut out[lo..hi], 3, self.depth(far, self.centre_span));
-                    }
+                    least_far = least_far.min(far);
                     continue;
                 }
                 if f + m + MARGIN_MM <= c {
@@ -426,6 +428,9 @@ impl GridCheck<'_> {
                 }
                 kept[nk] = k;
                 nk += 1;
+            }
+            if least_far < t.deep {
+                cap_depth(&mut out[lo..hi], 3, self.depth(least_far, self.centre_span));
             }
             if nk > 0 {
                 let mid = lo + (hi - lo) / 2;

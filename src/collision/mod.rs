@@ -60,6 +60,7 @@ mod block_tests;
 mod column;
 mod corner;
 mod grid;
+mod near;
 mod parts;
 mod proof;
 #[cfg(test)]
@@ -79,7 +80,9 @@ use crate::geometry::{
 use crate::place::{Placement, PoseCheck};
 use crate::robot::{MilliDegSinCos, Pose, RangeViolation, Robot, SinCosChain};
 use nalgebra::{Isometry3, Vector3};
+use near::NearBoxes;
 use parts::ToolData;
+use std::sync::OnceLock;
 
 /// A box whose top is within this of the base's mounting plane (or below it) counts as what the
 /// robot stands on, mm.
@@ -203,6 +206,12 @@ struct ToolLook {
     /// The boxes' bounds by coordinate, `[min x, min y, min z, max x, max y, max z]` per box
     /// index, for the balls' distances in one pass ([`least_sq_distances`]).
     bounds: [Vec<f64>; 6],
+    /// The same bounds by box, for the passes over the boxes a ball's cube names
+    /// ([`least_sq_masked`]).
+    by_box: Vec<[f64; 6]>,
+    /// Which boxes a ball can come near, by cube (`near.rs`), made on the first look; `None`
+    /// for a model with too many boxes.
+    near: OnceLock<Option<NearBoxes>>,
 }
 
 /// The boxes' bounds by coordinate (the layout of `ToolLook::bounds`).
@@ -255,6 +264,44 @@ fn least_sq_distances<const N: usize>(ps: &[Point; N], bounds: &[Vec<f64>; 6]) -
     }
     least
 }
+
+/// The least squared distance from `p` to the boxes of `by_box` whose bits `mask` sets (bit `b`
+/// for box `b`), each the same number as [`least_sq_distances`]'s (the same sums in the same
+/// order); `INFINITY` for an empty mask.
+#[inline]
+fn least_sq_masked(p: &Point, mut mask: u16, by_box: &[[f64; 6]]) -> f64 {
+    let excess = |x: f64, lo: f64, hi: f64| {
+        let (a, b) = (lo - x, x - hi);
+        let e = if a > b { a } else { b };
+        if e > 0.0 {
+            e
+        } else {
+            0.0
+        }
+    };
+    let mut least = f64::INFINITY;
+    while mask != 0 {
+        let k = mask.trailing_zeros() as usize;
+        mask &= mask - 1;
+        let Some(&[x0, y0, z0, x1, y1, z1]) = by_box.get(k) else {
+            continue;
+        };
+        let ex = excess(p.x, x0, x1);
+        let ey = excess(p.y, y0, y1);
+        let ez = excess(p.z, z0, z1);
+        let d = ex * ex + ey * ey + ez * ez;
+        least = if d < least { d } else { least };
+    }
+    least
+}
+
+/// How far beyond its radius and the clearance a tool ball measures the boxes in a look, mm: a
+/// box farther is left out of its balls' pass (`near.rs`), and the look's margin is at most
+/// about this. A larger margin would spread a look only over the farthest of a leg's 124
+/// offsets (at 1 deg on torch-trunk, up to about 240 mm of motion), and a larger reach keeps
+/// more boxes a ball: whole runs of torch-trunk at 1 deg took 4123 / 4073 / 4073 / 4080 M
+/// instructions at 80 / 120 / 150 / 180 mm (30 mm cubes).
+const LOOK_REACH_MM: f64 = 150.0;
 
 /// How many tool shapes a look tells its exact test are far from every box
 /// ([`CollisionModel::tool_look_sincos`]); the exact test looks at the boxes for any further
@@ -359,6 +406,14 @@ impl CollisionModel {
                 chain: SinCosChain::new(robot, &cell_from_robot),
                 wrist: MilliDegSinCos::new(lo, hi),
                 bounds: bounds_by_coordinate(&obstacles),
+                by_box: obstacles
+                    .iter()
+                    .map(|o| {
+                        let (a, b) = (o.aabb.min, o.aabb.max);
+                        [a.x, a.y, a.z, b.x, b.y, b.z]
+                    })
+                    .collect(),
+                near: OnceLock::new(),
             })
         });
         CollisionModel {
@@ -508,7 +563,8 @@ impl CollisionModel {
     /// move is proven again on `link_poses`) and a margin, mm: how much more than the clearance
     /// every tool shape keeps from every box at least, from each shape's ball (`parts.rs`, one
     /// point placed per shape), after the slack of `proof.rs`; 0 where the balls do not show
-    /// the tool clear (`INFINITY` without a tool or boxes). Where the margin is not positive,
+    /// the tool clear (`INFINITY` without a tool or boxes), capped at about [`LOOK_REACH_MM`]
+    /// where the balls are measured by the cubes of `near.rs`. Where the margin is not positive,
     /// a shape whose inner ball (`parts.rs`: about the ball's centre, inside the shape) comes
     /// within the clearance less [`UPPER_BOUND_SLACK_MM`] of a box answers blocked; else the
     /// exact test runs, each shape near a box first measured by an upper bound
@@ -580,8 +636,55 @@ impl CollisionModel {
     /// ball is farther than the clearance plus [`SINCOS_POSE_SLACK_MM`] (which covers the
     /// rounding between `flange` and its isometry) from every box, so that the exact test need
     /// not look at the boxes for it (its own ball test would pass every one).
+    ///
+    /// Each ball is measured against the boxes its cube names (`near.rs`): a box left out is
+    /// farther from the ball's centre than the masks' reach `L`, which is above the ball's
+    /// radius plus the clearance and [`LOOK_REACH_MM`], so it is far for the shape and its
+    /// inner ball is not within the clearance of it, and it keeps more than `L - r_max` from
+    /// the ball (`r_max` the largest ball radius): the least is capped there, the rest is the
+    /// pass over every box to the bit ([`ball_pass_all`](Self::ball_pass_all); the tests hold
+    /// them to that).
     #[inline]
     fn ball_pass(
+        &self,
+        tool: &ToolData,
+        look: &ToolLook,
+        flange: &Pose,
+    ) -> (f64, bool, [bool; FAR_SHAPES]) {
+        let c = self.clearance_mm;
+        let mut nearest = f64::INFINITY;
+        let mut within = false;
+        let mut far = [false; FAR_SHAPES];
+        let near = look
+            .near
+            .get_or_init(|| {
+                let r_max = tool.shapes.iter().map(|s| s.ball.1).fold(0.0, f64::max);
+                NearBoxes::new(&self.obstacles, r_max, r_max + c + LOOK_REACH_MM)
+            })
+            .as_ref()
+            // Made for this clearance (a model with a margin shares its parent's masks).
+            .filter(|n| n.reach_mm >= n.ball_mm + c + 1.0);
+        if let Some(near) = near {
+            for (i, s) in tool.shapes.iter().enumerate() {
+                let (centre, radius) = s.ball;
+                let centre = Point::from(flange.apply(&centre.coords.into()));
+                let d = least_sq_masked(&centre, near.mask(&centre), &look.by_box).sqrt();
+                nearest = nearest.min(d - radius);
+                within |= d - s.inner_mm <= c - UPPER_BOUND_SLACK_MM;
+                if let Some(f) = far.get_mut(i) {
+                    *f = d > radius + c + SINCOS_POSE_SLACK_MM;
+                }
+            }
+            // A box a ball's cube leaves out is farther than the reach from it (`near.rs`).
+            return (nearest.min(near.reach_mm - near.ball_mm), within, far);
+        }
+        self.ball_pass_all(tool, look, flange)
+    }
+
+    /// [`ball_pass`](Self::ball_pass) against every box (a model with more boxes than a mask
+    /// names, or whose clearance grew after the masks were made).
+    #[inline]
+    fn ball_pass_all(
         &self,
         tool: &ToolData,
         look: &ToolLook,
@@ -622,6 +725,30 @@ impl CollisionModel {
             Some((tool, look, flange)) => self.ball_pass(tool, look, &flange).2,
             None => [false; FAR_SHAPES],
         }
+    }
+
+    /// The balls' pass at `axes` by the cubes' masks and over every box
+    /// ([`ball_pass`](Self::ball_pass), [`ball_pass_all`](Self::ball_pass_all)), and the cap
+    /// of the masked pass's least (for tests; `None` without a tool or masks).
+    #[cfg(test)]
+    #[allow(clippy::type_complexity)]
+    pub(crate) fn ball_passes_for_test(
+        &self,
+        axes: &[f64; 6],
+        arm_sincos: &[(f64, f64); 3],
+    ) -> Option<(
+        (f64, bool, [bool; FAR_SHAPES]),
+        (f64, bool, [bool; FAR_SHAPES]),
+        f64,
+    )> {
+        let (tool, look, flange) = self.look_parts(axes, arm_sincos, None)?;
+        let masked = self.ball_pass(tool, look, &flange);
+        let near = look.near.get()?.as_ref()?;
+        Some((
+            masked,
+            self.ball_pass_all(tool, look, &flange),
+            near.reach_mm - near.ball_mm,
+        ))
     }
 
     /// What a look works with: the tool, its look tables and the flange placed from sines and

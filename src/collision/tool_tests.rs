@@ -949,3 +949,37 @@ fn a_tool_of_many_shapes_marks_only_far_shapes_and_answers_as_the_exact_test() {
         "shapes called far {called_far:?}, {by_exact} looks left to the exact test"
     );
 }
+
+/// The balls' pass by the cubes' masks (`near.rs`) is the pass over every box: the same inner
+/// balls within the clearance and far shapes, and the same least, capped at the masks' reach
+/// less the largest ball radius, to the bit; at every node of a 5 deg grid in front of the
+/// robot, two legs' wrists, three clearances. Both some leasts above the cap and many below it
+/// (the bit-equality holds there), and blocked and far answers, must occur.
+#[test]
+fn the_masked_balls_pass_is_the_whole_pass() {
+    let g = look_grid();
+    let (mut capped, mut equal, mut within, mut far) = (0, 0, 0, 0);
+    for clearance in [0.0, 10.0, 60.0] {
+        let m = torch_model(clearance);
+        for schedule in look_schedules() {
+            for i in 0..g.len() {
+                let (six, sc) = look_pose(&schedule, &g, i);
+                let (masked, all, cap) = m.ball_passes_for_test(&six, &sc).expect("masks");
+                assert_eq!((masked.1, masked.2), (all.1, all.2), "at {six:?}");
+                assert_eq!(masked.0.to_bits(), all.0.min(cap).to_bits(), "at {six:?}");
+                if all.0 > cap {
+                    capped += 1;
+                } else {
+                    equal += 1;
+                }
+                within += usize::from(all.1);
+                far += all.2.iter().filter(|f| **f).count();
+            }
+        }
+    }
+    assert!(
+        capped > 100 && equal > 1000,
+        "{capped} capped, {equal} below the cap"
+    );
+    assert!(within > 100 && far > 1000, "{within} within, {far} far");
+}

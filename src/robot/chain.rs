@@ -48,6 +48,9 @@ struct Joint {
     /// `Some((k, sign))` when the origin does not rotate and the axis is `sign * e_k` (most
     /// URDFs): then the step turns two columns of the pose instead of composing matrices.
     aligned: Option<(usize, f64)>,
+    /// Which coordinates of `t` are not 0 (bit `k` for coordinate `k`): the step leaves out
+    /// the products by the others (most URDF origins lie on one or two axes).
+    t_nonzero: u8,
 }
 
 /// A pose of the chain (rotation rows and translation, mm), without nalgebra's types, for
@@ -111,8 +114,10 @@ impl SinCosChain {
                     .find(|&e| u[e].abs() == 1.0 && u[(e + 1) % 3] == 0.0 && u[(e + 2) % 3] == 0.0)
                     .filter(|_| a == Matrix3::identity())
                     .map(|e| (e, u[e]));
+                let t: [f64; 3] = origin.translation.vector.into();
                 Joint {
                     aligned,
+                    t_nonzero: (0..3).filter(|&k| t[k] != 0.0).fold(0, |m, k| m | 1 << k),
                     a: rows(&a),
                     ak: rows(&(a * k)),
                     ak2: rows(&(a * (k * k))),
@@ -127,9 +132,17 @@ impl SinCosChain {
     fn step(&self, pose: &Pose, i: usize, sc: (f64, f64)) -> Pose {
         let j = &self.joints[i];
         let p = &pose.r;
-        let t = std::array::from_fn(|r| {
-            pose.t[r] + p[r][0] * j.t[0] + p[r][1] * j.t[1] + p[r][2] * j.t[2]
-        });
+        // The translation's products by the coordinates of `t` that are not 0 (a product by 0
+        // adds nothing: the same sums, up to the sign of a zero).
+        let t: [f64; 3] = match j.t_nonzero {
+            0b001 => std::array::from_fn(|r| pose.t[r] + p[r][0] * j.t[0]),
+            0b010 => std::array::from_fn(|r| pose.t[r] + p[r][1] * j.t[1]),
+            0b100 => std::array::from_fn(|r| pose.t[r] + p[r][2] * j.t[2]),
+            0b101 => std::array::from_fn(|r| pose.t[r] + p[r][0] * j.t[0] + p[r][2] * j.t[2]),
+            _ => std::array::from_fn(|r| {
+                pose.t[r] + p[r][0] * j.t[0] + p[r][1] * j.t[1] + p[r][2] * j.t[2]
+            }),
+        };
         if let Some((k, sign)) = j.aligned {
             // pose * Rot(sign e_k, q): columns a = k+1, b = k+2 turn, column k stays (the
             // columns named at compile time, so the pose stays in registers).
