@@ -243,15 +243,6 @@ fn least_sq_distances<const N: usize>(ps: &[Point; N], bounds: &[Vec<f64>; 6]) -
     let [x0, y0, z0, x1, y1, z1] = bounds;
     let n = x0.len();
     let (x0, y0, z0, x1, y1, z1) = (&x0[..n], &y0[..n], &z0[..n], &x1[..n], &y1[..n], &z1[..n]);
-    let excess = |x: f64, lo: f64, hi: f64| {
-        let (a, b) = (lo - x, x - hi);
-        let e = if a > b { a } else { b };
-        if e > 0.0 {
-            e
-        } else {
-            0.0
-        }
-    };
     let mut least = [f64::INFINITY; N];
     for k in 0..n {
         for (l, p) in least.iter_mut().zip(ps) {
@@ -265,20 +256,24 @@ fn least_sq_distances<const N: usize>(ps: &[Point; N], bounds: &[Vec<f64>; 6]) -
     least
 }
 
+/// How far `x` lies outside `lo..hi` (0 inside), written with selects, not branches, for the
+/// balls' passes ([`least_sq_distances`], [`least_sq_masked`]: the same number in both).
+#[inline]
+fn excess(x: f64, lo: f64, hi: f64) -> f64 {
+    let (a, b) = (lo - x, x - hi);
+    let e = if a > b { a } else { b };
+    if e > 0.0 {
+        e
+    } else {
+        0.0
+    }
+}
+
 /// The least squared distance from `p` to the boxes of `by_box` whose bits `mask` sets (bit `b`
 /// for box `b`), each the same number as [`least_sq_distances`]'s (the same sums in the same
 /// order); `INFINITY` for an empty mask.
 #[inline]
 fn least_sq_masked(p: &Point, mut mask: u16, by_box: &[[f64; 6]]) -> f64 {
-    let excess = |x: f64, lo: f64, hi: f64| {
-        let (a, b) = (lo - x, x - hi);
-        let e = if a > b { a } else { b };
-        if e > 0.0 {
-            e
-        } else {
-            0.0
-        }
-    };
     let mut least = f64::INFINITY;
     while mask != 0 {
         let k = mask.trailing_zeros() as usize;
