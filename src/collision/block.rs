@@ -5,8 +5,10 @@
 //! of [`TOP_RUN_NODES`] nodes.
 //!
 //! *Motion over a run.* Within a column axes 1 and 2 are fixed, so between the run's middle
-//! angle `q_c` (URDF joint 3, the middle of its first and last node's values) and any of its
-//! nodes only joint 3 moves, by at most `h` = half the run's range: no point of a part with
+//! angle `q_c` (URDF joint 3; for the arm's runs from the slice's table, *Angles* below, for the
+//! tool's the middle of its first and last node's values) and any of its nodes only joint 3
+//! moves, by at most `h` (the most any node lies from `q_c`; half the run's range for the
+//! tool's): no point of a part with
 //! reach `R[2][P]` moves more than `M = R[2][P] h` (raised by 1e-9 relative and 1e-9 mm over its
 //! float value, as in `grid.rs`). The runs need the column's values in ascending order (the
 //! grid's are); a column that is not is inspected node by node.

@@ -10,6 +10,7 @@ use super::tool_tests::torch;
 use super::*;
 use crate::geometry::testing::Rng;
 use crate::plan::cspace::{CSpace, Grid};
+use crate::robot::LinkCylinder;
 use nalgebra::{Point3, Rotation3, Unit};
 
 /// A random cell about a random placement of the IRB 1400: 1..6 boxes of 20..900 mm within
@@ -336,7 +337,11 @@ fn the_blocked_bound_holds_under_bounded_motions() {
 /// block some slices of axis 1 and not others, and every free bit must be `arm_is_free`'s.
 #[test]
 fn a_slice_wise_build_keeps_an_off_axis_link_1_exact() {
-    let mut rng = Rng(0x511C_E0FF_A815_0001);
+    slice_wise_link_1_exact(off_axis_link_1());
+}
+
+/// The IRB 1400 with its link-1 cylinder 400 mm off axis 1.
+fn off_axis_link_1() -> Robot {
     let mut robot = Robot::irb1400();
     let l1 = robot
         .cylinders
@@ -345,6 +350,32 @@ fn a_slice_wise_build_keeps_an_off_axis_link_1_exact() {
         .expect("the IRB 1400 has a link-1 cylinder");
     robot.cylinders[l1].a.x += 400.0;
     robot.cylinders[l1].b.x += 400.0;
+    robot
+}
+
+/// The same with link 1's cylinder after [`MAX_FIXED`](super::column::MAX_FIXED) others of
+/// link 1 (tiny, at the base, clear of every post): its slice answer is not kept, so each
+/// column places it itself, on link 1 (it was placed on link 2: free bits wrong).
+#[test]
+fn a_link_1_cylinder_past_the_slices_answers_is_placed_on_link_1() {
+    let mut robot = off_axis_link_1();
+    let tiny = LinkCylinder {
+        link: "link_1".into(),
+        joint_index: 0,
+        a: Point3::new(0.0, 0.0, 0.0),
+        b: Point3::new(0.0, 0.0, 1.0),
+        radius_mm: 0.5,
+    };
+    for _ in 0..super::column::MAX_FIXED {
+        robot.cylinders.insert(0, tiny.clone());
+    }
+    slice_wise_link_1_exact(robot);
+}
+
+/// Every free bit of a slice-wise build of `robot` among posts around its base is
+/// `arm_is_free`'s, with some slices of axis 1 blocked and some open.
+fn slice_wise_link_1_exact(robot: Robot) {
+    let mut rng = Rng(0x511C_E0FF_A815_0001);
     let (mut slices_blocked, mut slices_open) = (0, 0);
     for _ in 0..4 {
         let placement = Placement {

@@ -37,8 +37,8 @@ use std::borrow::Cow;
 /// Safety margin (mm) of the per-column culling of boxes.
 const CULL_MARGIN_MM: f64 = 1e-6;
 
-/// Most fixed cylinders (links 1 and 2) whose slice answers are kept (more are checked per
-/// column).
+/// Most fixed cylinders (links 1 and 2) whose slice answers are kept (link 1's beyond them are
+/// placed and checked per column, on link 1's pose of the slice).
 pub const MAX_FIXED: usize = 8;
 
 /// Per fixed cylinder, the slice's answer for link 1 (`GridCheck::slice_bytes`).
@@ -47,19 +47,19 @@ pub type SliceBytes = [Option<Option<u8>>; MAX_FIXED];
 /// What the columns of one slice of axis 1 share ([`GridCheck::slice`]): link 1's answers
 /// ([`GridCheck::slice_bytes`]) and pose, and the axis-3 values with their sines and cosines
 /// (`block.rs`'s [`Angles`]).
-pub struct Slice<'a> {
+pub(crate) struct Slice<'a> {
     a1_deg: f64,
     bytes: SliceBytes,
     pose1: Pose,
     angles: Cow<'a, Angles>,
 }
 
-/// Per link-2 cylinder and box, the capsule distance last measured along a slice and URDF
-/// joint 2's angle there (rad), for [`GridCheck::inspect_column_in`]'s next columns: one per
+/// Per fixed cylinder (link 1's slots unused: their answers are the slice's) and box, the
+/// capsule distance last measured along a slice and URDF joint 2's angle there (rad), for [`GridCheck::inspect_column_in`]'s next columns: one per
 /// slice ([`GridCheck::fixed_memo`]).
 /// Also, per cylinder moved by axis 3, chunk of boxes, top run and box, the run's free bound
 /// measured last and axis 2 there (rad) (`block.rs`, [`GridCheck::arm_run`]'s `memo`).
-pub struct FixedMemo(Vec<(f64, f64)>, Vec<(f64, f64)>);
+pub(crate) struct FixedMemo(Vec<(f64, f64)>, Vec<(f64, f64)>);
 
 /// Obstacles per chunk of the per-column culling (the kept indices live on the stack).
 const CULL_CHUNK: usize = SET;
@@ -95,14 +95,14 @@ impl GridCheck<'_> {
     }
 
     /// An empty `FixedMemo` (nothing measured yet) for the columns of one slice.
-    pub fn fixed_memo(&self) -> FixedMemo {
+    pub(crate) fn fixed_memo(&self) -> FixedMemo {
         let n = self.fixed.len() * self.model.obstacles.len();
         FixedMemo(vec![(f64::NEG_INFINITY, 0.0); n], Vec::new())
     }
 
     /// What every column `[a1_deg, *, a3_deg]` of one slice of axis 1 shares
     /// (`Slice`): made once per slice by the grid build.
-    pub fn slice(&self, a1_deg: f64, a3_deg: &[f64]) -> Slice<'_> {
+    pub(crate) fn slice(&self, a1_deg: f64, a3_deg: &[f64]) -> Slice<'_> {
         // The grid's slices share their axis-3 values: their angles are made once.
         let kept = self.angles.get_or_init(|| Angles::new(a3_deg));
         let same = kept.deg.len() == a3_deg.len()
@@ -193,7 +193,7 @@ impl GridCheck<'_> {
     /// [`inspect_column`](Self::inspect_column) of the column at `a2_deg` of `slice`
     /// ([`slice`](Self::slice): its `a1_deg`, axis-3 values, link 1's answers and pose), with
     /// `memo` the link-2 distances of the slice's columns inspected before (any order).
-    pub fn inspect_column_in(
+    pub(crate) fn inspect_column_in(
         &self,
         a2_deg: f64,
         out: &mut [u8],
@@ -256,15 +256,23 @@ impl GridCheck<'_> {
             let answer = match slice.bytes.get(l).copied().flatten() {
                 Some(known) => known,
                 None => {
+                    // A link-2 cylinder, or one of link 1's past the slice's kept answers
+                    // (`MAX_FIXED`): placed on its own link.
+                    let on_link_1 = model.cyl[i].joint == 0;
+                    let pose = if on_link_1 { &slice.pose1 } else { &pose2 };
                     let cy = &model.robot.cylinders[i];
                     let cyl = Cylinder {
-                        a: pose2.point(&cy.a),
-                        b: pose2.point(&cy.b),
+                        a: pose.point(&cy.a),
+                        b: pose.point(&cy.b),
                         radius: cy.radius_mm,
                     };
-                    let boxes = self.model.obstacles.len();
-                    let memo = &mut memo.0[l * boxes..(l + 1) * boxes];
-                    self.fixed_byte_along(l, &cyl, memo, a2_rad)
+                    if on_link_1 {
+                        self.fixed_byte(l, &cyl)
+                    } else {
+                        let boxes = self.model.obstacles.len();
+                        let memo = &mut memo.0[l * boxes..(l + 1) * boxes];
+                        self.fixed_byte_along(l, &cyl, memo, a2_rad)
+                    }
                 }
             };
             let Some(byte) = answer else {
