@@ -210,7 +210,7 @@ struct ToolLook {
     /// ([`least_sq_masked`]).
     by_box: Vec<[f64; 6]>,
     /// Which boxes a ball can come near, by cube (`near.rs`), made on the first look; `None`
-    /// for a model with too many boxes.
+    /// for a model with too many boxes, or whose boxes' region would take too many cubes.
     near: OnceLock<Option<NearBoxes>>,
 }
 
@@ -634,7 +634,8 @@ impl CollisionModel {
     ///
     /// Each ball is measured against the boxes its cube names (`near.rs`): a box left out is
     /// farther from the ball's centre than the masks' reach `L`, which is above the ball's
-    /// radius plus the clearance and [`LOOK_REACH_MM`], so it is far for the shape and its
+    /// radius plus the clearance and [`LOOK_REACH_MM`] (for a model with a margin sharing its
+    /// parent's masks, at least plus the clearance and 1 mm), so it is far for the shape and its
     /// inner ball is not within the clearance of it, and it keeps more than `L - r_max` from
     /// the ball (`r_max` the largest ball radius): the least is capped there, the rest is the
     /// pass over every box to the bit ([`ball_pass_all`](Self::ball_pass_all); the tests hold
@@ -676,8 +677,10 @@ impl CollisionModel {
         self.ball_pass_all(tool, look, flange)
     }
 
-    /// [`ball_pass`](Self::ball_pass) against every box (a model with more boxes than a mask
-    /// names, or whose clearance grew after the masks were made).
+    /// [`ball_pass`](Self::ball_pass) against every box (a model without masks: more boxes
+    /// than a mask names, or a region of too many cubes; or one whose clearance grew so far
+    /// after the masks were made, by `with_margin`, that their reach no longer covers the
+    /// balls' radius and the clearance plus 1 mm).
     #[inline]
     fn ball_pass_all(
         &self,

@@ -23,7 +23,9 @@ use crate::geometry::Point;
 /// The least side of a cube, mm.
 pub(super) const VOXEL_MM: f64 = 30.0;
 
-/// The most cubes made: the side grows beyond [`VOXEL_MM`] for a region that would hold more.
+/// The cubes a region is cut into at most, about: the side grows beyond [`VOXEL_MM`] for a
+/// region that would hold more; a region whose sides round up to over twice as many (a long
+/// thin one) gets no masks.
 pub(super) const MAX_VOXELS: usize = 1_000_000;
 
 /// The most boxes a mask can name (one bit each); a model with more measures every box.
@@ -52,8 +54,9 @@ pub(super) struct NearBoxes {
 
 impl NearBoxes {
     /// The masks of `obstacles` for reach `reach_mm`, for balls of radius up to `ball_mm`;
-    /// `None` without boxes or with more than [`MAX_BOXES`], or for a reach that is not a
-    /// positive number.
+    /// `None` without boxes or with more than [`MAX_BOXES`], for a reach that is not a
+    /// positive number, for bounds that are not finite, or for a region of over twice
+    /// [`MAX_VOXELS`] cubes.
     pub(super) fn new(obstacles: &[Obstacle], ball_mm: f64, reach_mm: f64) -> Option<NearBoxes> {
         if obstacles.is_empty()
             || obstacles.len() > MAX_BOXES

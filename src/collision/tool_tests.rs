@@ -983,3 +983,29 @@ fn the_masked_balls_pass_is_the_whole_pass() {
     );
     assert!(within > 100 && far > 1000, "{within} within, {far} far");
 }
+
+/// A model whose clearance grew after its masks were made (`with_margin` clones the masks made
+/// for the smaller clearance: their reach is too short for the new one) takes the whole pass:
+/// the same least, within and far answers to the bit.
+#[test]
+fn a_clearance_grown_past_the_masks_takes_the_whole_pass() {
+    let g = look_grid();
+    let m = torch_model(10.0);
+    let schedules = look_schedules();
+    // A look on the small clearance makes the masks, then the clone shares them.
+    let (six, sc) = look_pose(&schedules[0], &g, 0);
+    m.ball_passes_for_test(&six, &sc).expect("masks made");
+    let grown = m.with_margin(200.0);
+    let mut differ_if_masked = 0;
+    for schedule in &schedules {
+        for i in 0..g.len() {
+            let (six, sc) = look_pose(schedule, &g, i);
+            let (pass, all, cap) = grown.ball_passes_for_test(&six, &sc).expect("masks");
+            assert_eq!((pass.1, pass.2), (all.1, all.2), "at {six:?}");
+            assert_eq!(pass.0.to_bits(), all.0.to_bits(), "at {six:?}");
+            differ_if_masked += usize::from(all.0 > cap);
+        }
+    }
+    // Poses where the shared masks, had they been used, would have capped the least.
+    assert!(differ_if_masked > 100, "{differ_if_masked}");
+}

@@ -24,12 +24,12 @@
 //! as the exact test (up to the flange pose's rounding, far inside the margin's slack; every
 //! move is proven again on `link_poses`), found with about a fifth of the tool placements on
 //! `torch-trunk` (a node well inside the grid reaches the nodes around it by their index
-//! deltas, kept with the offsets). The balls are measured against the boxes their 30 mm cube
-//! names (`collision/near.rs`: the others are farther than the margin can use), so the margin is
-//! capped at about `LOOK_REACH_MM` (150 mm, two steps on most offsets at 1 deg). Where a shape's
-//! inner ball, or an upper bound of its distance
-//! to a box, lies within the clearance, the look answers blocked without the exact test (the
-//! exact test's answer: `CollisionModel::tool_look_sincos`); a shape whose ball the look found
+//! deltas, kept with the offsets). The balls are measured against the boxes their cube (30 mm,
+//! larger in a very large cell) names (`collision/near.rs`: the others are farther than the
+//! margin can use), so the margin is capped at about `LOOK_REACH_MM` (150 mm, two steps on most
+//! offsets at 1 deg). Where a shape's inner ball, or an upper bound of its distance to a box,
+//! lies within the clearance, the look answers blocked without the exact test (the exact test's
+//! answer: `CollisionModel::tool_look_sincos`); a shape whose ball the look found
 //! farther than the clearance from every box is passed by the exact test without its boxes. A
 //! look places the flange from sines and cosines: those of axes 1..3 from the memo's tables of
 //! the grid's values, and link 1's pose from the memo's table per value of axis 1
