@@ -26,7 +26,7 @@ use crate::names::{check_identifier, robtarget_name, ROBTARGET_SUFFIX};
 use crate::precision::{LENGTH_DECIMALS, YAW_DECIMALS};
 use nalgebra::Point3;
 use serde_saphyr::Spanned;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::path::Path;
 use values::{
     bounded, data_name, decimals, identifier, invalid, invalid_help, joint_value, loc, triple,
@@ -460,7 +460,13 @@ fn one_name_space(
             loc: Loc::default(),
         }),
     }
-    for (i, d) in declared.iter().enumerate() {
+    // Each name (RAPID's case folding) and what it first was: the used names first, then
+    // the declared ones in order, so a clash names the same as a scan of them in that order.
+    let mut taken: HashMap<String, &str> = HashMap::new();
+    for (n, w) in &used {
+        taken.entry(n.to_ascii_lowercase()).or_insert(w.as_str());
+    }
+    for d in &declared {
         if d.kind == "robtarget name" {
             check_identifier(&d.name).map_err(|e| {
                 invalid_help(
@@ -470,14 +476,8 @@ fn one_name_space(
                 )
             })?;
         }
-        let earlier = declared[..i]
-            .iter()
-            .map(|e| (e.name.as_str(), e.what.as_str()));
-        let mut taken = used
-            .iter()
-            .map(|(n, w)| (n.as_str(), w.as_str()))
-            .chain(earlier);
-        if let Some((_, what)) = taken.find(|(n, _)| n.eq_ignore_ascii_case(&d.name)) {
+        let key = d.name.to_ascii_lowercase();
+        if let Some(what) = taken.get(&key) {
             let rename = d.kind.trim_end_matches(" name");
             let message = match d.kind {
                 "robtarget name" => format!(
@@ -498,6 +498,7 @@ fn one_name_space(
                 format!("RAPID names are case-insensitive and share one name space in a module; rename the {rename}"),
             ));
         }
+        taken.insert(key, d.what.as_str());
     }
     Ok(())
 }

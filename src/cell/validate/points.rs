@@ -8,6 +8,7 @@ use super::values::{
 };
 use crate::robot::ik::Branch;
 use serde_saphyr::Spanned;
+use std::collections::HashMap;
 
 /// The help line of a point given in no way or in two.
 const POINT_HELP: &str = "a point is given one way: `joints` (controller values, deg), `xyz` (the wrist centre, mm) or `robtarget` (the TCP pose)";
@@ -25,15 +26,14 @@ pub(super) fn points(raw: &Spanned<Vec<Spanned<RawPoint>>>) -> Result<Vec<Point>
         ));
     }
     let mut points: Vec<Point> = Vec::new();
+    // Each name (RAPID's case folding) and the line of its first point: one look-up a point.
+    let mut first_line: HashMap<String, u64> = HashMap::new();
     for p in &raw.value {
         let name = identifier(&p.value.name, "point name")?;
-        if let Some(first) = points.iter().find(|q| q.name.eq_ignore_ascii_case(&name)) {
+        if let Some(first) = first_line.get(&name.to_ascii_lowercase()) {
             return Err(invalid_help(
                 loc(&p.value.name),
-                format!(
-                    "point name '{name}' is used twice (first at line {})",
-                    first.loc.line
-                ),
+                format!("point name '{name}' is used twice (first at line {first})"),
                 "RAPID names are case-insensitive; give every point its own name",
             ));
         }
@@ -45,6 +45,7 @@ pub(super) fn points(raw: &Spanned<Vec<Spanned<RawPoint>>>) -> Result<Vec<Point>
             Some(z) => Some(data_name(z, &format!("point '{name}' zone"))?),
             None => None,
         };
+        first_line.insert(name.to_ascii_lowercase(), loc(p).line);
         points.push(Point {
             target: target(&name, p)?,
             name,

@@ -97,6 +97,7 @@ use header::comment_text;
 
 use minijinja::{value::Serde, AutoEscape, Environment, UndefinedBehavior};
 use serde::Serialize;
+use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
 
 /// The module template, embedded at compile time.
@@ -657,9 +658,10 @@ fn check_name_space(program: &Program, target_names: &[String]) -> Result<(), Ra
     if let Some(w) = &program.wobj {
         declared.push((w.name.clone(), format!("the work object `{}`", w.name)));
     }
+    let mut listed: HashSet<String> = used.iter().map(|(n, _)| n.clone()).collect();
     for t in &program.targets {
         for (role, name) in [("speed", &t.speed), ("zone", &t.zone)] {
-            if !used.iter().any(|(n, _)| n == name) {
+            if listed.insert(name.clone()) {
                 used.push((name.clone(), format!("the {role} data `{name}`")));
             }
         }
@@ -678,17 +680,21 @@ fn check_name_space(program: &Program, target_names: &[String]) -> Result<(), Ra
             declared.push((r.clone(), format!("the robtarget `{r}`")));
         }
     }
-    for (i, (name, _)) in declared.iter().enumerate() {
-        let clash = used
-            .iter()
-            .chain(&declared[..i])
-            .find(|(n, _)| n.eq_ignore_ascii_case(name));
-        if let Some((_, other)) = clash {
+    // Each name (RAPID's case folding) and what it first was: the used names, then the
+    // declared ones in order (a clash names the first, as a scan in that order would).
+    let mut taken: HashMap<String, &str> = HashMap::new();
+    for (n, what) in &used {
+        taken.entry(n.to_ascii_lowercase()).or_insert(what.as_str());
+    }
+    for (name, what) in &declared {
+        let key = name.to_ascii_lowercase();
+        if let Some(other) = taken.get(&key) {
             return Err(RapidError::NameClash {
                 name: name.clone(),
-                other: other.clone(),
+                other: (*other).to_string(),
             });
         }
+        taken.insert(key, what.as_str());
     }
     Ok(())
 }

@@ -2,7 +2,7 @@
 
 use super::{JointTarget, RapidError, TargetKind};
 use crate::names::check_identifier;
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 /// Number of decimal digits of `n` (at least 1).
 fn digits(n: usize) -> usize {
@@ -40,7 +40,7 @@ pub fn target_names_avoiding(
 ) -> Result<Vec<String>, RapidError> {
     // 1. Cell points: validate and reserve; then the other names.
     let mut taken: HashSet<String> = reserved.iter().map(|n| n.to_ascii_lowercase()).collect();
-    let mut owners: Vec<(String, String)> = Vec::new(); // lowercase -> original
+    let mut owners: HashMap<String, String> = HashMap::new(); // lowercase -> original
     for (position, target) in targets.iter().enumerate() {
         if let TargetKind::CellPoint { name } = &target.kind {
             check_identifier(name).map_err(|source| RapidError::InvalidTargetName {
@@ -49,13 +49,13 @@ pub fn target_names_avoiding(
                 source,
             })?;
             let key = name.to_ascii_lowercase();
-            if let Some((_, first)) = owners.iter().find(|(k, _)| *k == key) {
+            if let Some(first) = owners.get(&key) {
                 return Err(RapidError::NameClash {
                     name: name.clone(),
                     other: format!("cell point `{first}`"),
                 });
             }
-            owners.push((key.clone(), name.clone()));
+            owners.insert(key.clone(), name.clone());
             taken.insert(key);
         }
     }
