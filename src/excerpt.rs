@@ -16,7 +16,7 @@
 //! characters (as the YAML parser counts them), 1-based.
 
 use std::borrow::Cow;
-use unicode_width::UnicodeWidthChar;
+use unicode_width::UnicodeWidthStr;
 
 /// Longest source line shown whole, in characters.
 pub const MAX_LINE_CHARS: usize = 160;
@@ -45,13 +45,12 @@ impl Window {
     /// character takes two columns, a combining mark none), so the caret stands under its
     /// character whatever the script.
     pub fn caret_pad(&self) -> String {
-        let width: usize = self
+        let end = self
             .text
-            .chars()
-            .take(self.caret)
-            .map(|c| UnicodeWidthChar::width(c).unwrap_or(0))
-            .sum();
-        " ".repeat(width)
+            .char_indices()
+            .nth(self.caret)
+            .map_or(self.text.len(), |(i, _)| i);
+        " ".repeat(UnicodeWidthStr::width(&self.text[..end]))
     }
 }
 
@@ -188,6 +187,12 @@ mod tests {
         // ASCII alone: one column a character.
         let w = line_window("abc", 3);
         assert_eq!(w.caret_pad(), "  ");
+        // An emoji with its presentation selector takes two columns as a whole (one by its
+        // characters); past the end of the line, the whole line's width.
+        let w = line_window("a: \u{263A}\u{FE0F}x", 6);
+        assert_eq!(under(&w), 'x');
+        assert_eq!(w.caret_pad().len(), 5);
+        assert_eq!(line_window("名前", 9).caret_pad().len(), 4);
     }
 
     #[test]

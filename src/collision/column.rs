@@ -54,9 +54,10 @@ pub(crate) struct Slice<'a> {
     angles: Cow<'a, Angles>,
 }
 
-/// Per fixed cylinder (link 1's slots unused: their answers are the slice's) and box, the
-/// capsule distance last measured along a slice and URDF joint 2's angle there (rad), for [`GridCheck::inspect_column_in`]'s next columns: one per
-/// slice ([`GridCheck::fixed_memo`]).
+/// Per fixed cylinder and box, the capsule distance last measured along a slice and URDF joint
+/// 2's angle there (rad), for [`GridCheck::inspect_column_in`]'s next columns: one per slice
+/// ([`GridCheck::fixed_memo`]); link 1's slots unused (the slice's answers, or, past
+/// [`MAX_FIXED`], checked whole in every column).
 /// Also, per cylinder moved by axis 3, chunk of boxes, top run and box, the run's free bound
 /// measured last and axis 2 there (rad) (`block.rs`, [`GridCheck::arm_run`]'s `memo`).
 pub(crate) struct FixedMemo(Vec<(f64, f64)>, Vec<(f64, f64)>);

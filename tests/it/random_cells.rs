@@ -253,11 +253,8 @@ fn random_cells_plan_safe_modules_or_fail_cleanly() {
         let results = plan_every_method(&cell, rc.grid_deg)
             .unwrap_or_else(|e| panic!("random cell {index}: unexpected error {e}\n{}", rc.yaml));
         assert_searches_agree(&results, &format!("random cell {index}\n{}", rc.yaml));
-        // The shortcut never lengthens a route, in moves or in estimated time; where the vias
-        // fly by (odd cells), a via whose corner is too tight may be split in three
-        // (`refine::split`), more moves for less time.
         // The cell's own method (which `paper_and_refined` plans) fails only where it failed
-        // among every method's results, with a planning error.
+        // among every method's results (`plan_every_method`: with a planning error).
         let own = cell.planner.method.name();
         let own_planned = results
             .iter()
@@ -270,6 +267,9 @@ fn random_cells_plan_safe_modules_or_fail_cleanly() {
             paper_refined.as_ref().err(),
             rc.yaml
         );
+        // The shortcut never lengthens a route, in moves or in estimated time; where the vias
+        // fly by (odd cells), a via whose corner is too tight may be split in three
+        // (`refine::split`), more moves for less time.
         if let Ok(r) = paper_refined {
             let fly_by = index % 2 == 1;
             assert!(

@@ -275,10 +275,12 @@ impl TemplateError {
         let line = e.line();
         let line_text =
             line.and_then(|l| source.lines().nth(l.checked_sub(1)?).map(str::to_string));
-        // The column of the range's start, on its line (byte offsets; templates are text).
+        // The column of the range's start, on its line, in characters (as a cell's columns and
+        // the caret count them; the range is in bytes).
         let column = e.range().and_then(|r| {
             let before = source.get(..r.start)?;
-            Some(r.start - before.rfind('\n').map_or(0, |i| i + 1) + 1)
+            let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+            Some(before[line_start..].chars().count() + 1)
         });
         let message = match e.detail() {
             Some(d) => format!("{}: {d}", e.kind()),

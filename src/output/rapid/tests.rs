@@ -741,3 +741,24 @@ fn a_huge_module_renders_within_the_fuel_and_a_runaway_template_is_stopped() {
     let help = crate::error::Error::Rapid(err).help().expect("a help line");
     assert!(help.contains("strict undefined names"), "{help}");
 }
+
+/// A template fault's column counts characters, as a cell's columns do: non-ASCII text before
+/// it on its line (the range minijinja gives is in bytes) does not push it right.
+#[test]
+fn a_template_faults_column_counts_characters() {
+    let path = Path::new("t.mod.j2");
+    let source = "! Größe: {{ no_such_name }}\n";
+    let undefined = ModuleTemplate::user(path, source.into()).expect("compiles");
+    let err = render_with(&small_program(), &undefined).expect_err("strict");
+    let RapidError::UserTemplate(TemplateError::Invalid { line, column, .. }) = err else {
+        panic!("not a template fault: {err:?}");
+    };
+    assert_eq!(line, Some(1));
+    // `no_such_name` starts at character 13 (byte 15: ö and ß take two bytes each).
+    let chars: Vec<char> = source.chars().collect();
+    let col = column.expect("a column");
+    assert_eq!(
+        chars[col - 1..col - 1 + 12].iter().collect::<String>(),
+        "no_such_name"
+    );
+}
