@@ -248,19 +248,31 @@ fn a_grid_built_on_threads_equals_a_column_by_column_fill() {
         let grid = Grid::over([[-170.0, 170.0], [-70.0, 70.0], [-65.0, 70.0]], 5.0);
         let check = model.grid_check(grid.step_deg);
         let built = CSpace::build(grid, &check);
-        let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
-        let mut codes = vec![0u8; a3.len()];
-        let mut bytes = vec![0u8; check.column_bytes()];
-        for i1 in 0..grid.dims[0] {
-            for i2 in 0..grid.dims[1] {
-                let (a1, a2) = (grid.value(0, i1 as i64), grid.value(1, i2 as i64));
-                check.inspect_column(a1, a2, &a3, &mut codes, &mut bytes);
-                for (i3, &code) in codes.iter().enumerate() {
-                    let n = [i1 as i32, i2 as i32, i3 as i32];
-                    assert_eq!(built.code(n), code, "{n:?}");
-                }
-                let n = [i1 as i32, i2 as i32, 0];
-                assert_eq!(built.column(n), &bytes[..], "{n:?}");
+        each_column_alone(&check, &grid, &built, |_, _| {});
+    }
+}
+
+/// Every column of `grid` inspected alone (`inspect_column`: a fresh slice and memo) gives the
+/// codes and column bytes of `built`, and `at_node` sees every node with its axes.
+fn each_column_alone(
+    check: &GridCheck<'_>,
+    grid: &Grid,
+    built: &CSpace,
+    mut at_node: impl FnMut([i32; 3], [f64; 3]),
+) {
+    let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
+    let mut codes = vec![0u8; a3.len()];
+    let mut bytes = vec![0u8; check.column_bytes()];
+    for i1 in 0..grid.dims[0] {
+        for i2 in 0..grid.dims[1] {
+            let (a1, a2) = (grid.value(0, i1 as i64), grid.value(1, i2 as i64));
+            check.inspect_column(a1, a2, &a3, &mut codes, &mut bytes);
+            let n = [i1 as i32, i2 as i32, 0];
+            assert_eq!(built.column(n), &bytes[..], "{a1} {a2}");
+            for (i3, &code) in codes.iter().enumerate() {
+                let n = [i1 as i32, i2 as i32, i3 as i32];
+                assert_eq!(built.code(n), code, "{n:?}");
+                at_node(n, [a1, a2, a3[i3]]);
             }
         }
     }
@@ -454,26 +466,12 @@ fn carried_bounds_change_no_byte(robot: &Robot, want: usize) {
             continue;
         }
         cells += 1;
-        let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
-        let mut codes = vec![0u8; a3.len()];
-        let mut bytes = vec![0u8; check.column_bytes()];
-        for i1 in 0..grid.dims[0] {
-            for i2 in 0..grid.dims[1] {
-                let (a1, a2) = (grid.value(0, i1 as i64), grid.value(1, i2 as i64));
-                check.inspect_column(a1, a2, &a3, &mut codes, &mut bytes);
-                let n = [i1 as i32, i2 as i32, 0];
-                assert_eq!(built.column(n), &bytes[..], "{a1} {a2}");
-                for (i3, &code) in codes.iter().enumerate() {
-                    let n = [i1 as i32, i2 as i32, i3 as i32];
-                    assert_eq!(built.code(n), code, "{n:?}");
-                    if i3 % 5 == 0 {
-                        let axes = [a1, a2, a3[i3]];
-                        assert_eq!(built.is_free(n), model.arm_is_free(&axes), "{axes:?}");
-                        compared += 1;
-                    }
-                }
+        each_column_alone(&check, &grid, &built, |n, axes| {
+            if n[2] % 5 == 0 {
+                assert_eq!(built.is_free(n), model.arm_is_free(&axes), "{axes:?}");
+                compared += 1;
             }
-        }
+        });
     }
     assert!(
         cells == want && compared > 5_000 * want,

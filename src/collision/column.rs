@@ -143,32 +143,19 @@ impl GridCheck<'_> {
     /// Fixed cylinder `l` (index into `fixed`) placed as `cyl`: its column byte, or `None` when
     /// it comes within the clearance of a box.
     fn fixed_byte(&self, l: usize, cyl: &Cylinder) -> Option<u8> {
-        let model = self.model;
-        let c = model.clearance_mm;
-        let span = self.fixed_span[l];
-        let deep = self.deep_mm(span);
-        let mut nearest = f64::INFINITY;
-        for (_, b) in model.checked_boxes(self.fixed[l]) {
-            let lo = distance_capsule_aabb(cyl, b);
-            if lo <= c && !link_clear_of_box(cyl, b, c) {
-                return None;
-            }
-            nearest = nearest.min(depth_bound(cyl, b, lo, deep));
-        }
-        Some(self.depth_of(nearest, span, COLUMN_LEVELS))
+        self.fixed_byte_along(l, cyl, None)
     }
 
-    /// [`fixed_byte`](Self::fixed_byte) of a link-2 cylinder at URDF joint 2 = `q2` (rad), with
-    /// `memo` its capsule distances measured at other columns of the slice (by box index):
-    /// only joint 2 moved since, so a box whose last distance less the motion `R[1][L] |dq2|`
-    /// (and the margin) is still `deep_mm` or more is neither within the clearance nor below
-    /// depth `K_c`, and is not measured again; its byte is `fixed_byte`'s.
+    /// [`fixed_byte`](Self::fixed_byte), for a link-2 cylinder at URDF joint 2 = `q2` (rad)
+    /// with `memo` (`Some((memo, q2))`) its capsule distances measured at other columns of the
+    /// slice (by box index): only joint 2 moved since, so a box whose last distance less the
+    /// motion `R[1][L] |dq2|` (and the margin) is still `deep_mm` or more is neither within the
+    /// clearance nor below depth `K_c`, and is not measured again; the byte is the same.
     fn fixed_byte_along(
         &self,
         l: usize,
         cyl: &Cylinder,
-        memo: &mut [(f64, f64)],
-        q2: f64,
+        mut memo: Option<(&mut [(f64, f64)], f64)>,
     ) -> Option<u8> {
         let model = self.model;
         let c = model.clearance_mm;
@@ -177,12 +164,16 @@ impl GridCheck<'_> {
         let reach = model.cyl[self.fixed[l]].reach_mm[1];
         let mut nearest = f64::INFINITY;
         for (k, b) in model.checked_boxes(self.fixed[l]) {
-            let (last, at) = memo[k];
-            if last - motion(reach, (q2 - at).abs()) - MARGIN_MM >= deep {
-                continue;
+            if let Some((memo, q2)) = &mut memo {
+                let (last, at) = memo[k];
+                if last - motion(reach, (*q2 - at).abs()) - MARGIN_MM >= deep {
+                    continue;
+                }
             }
             let lo = distance_capsule_aabb(cyl, b);
-            memo[k] = (lo, q2);
+            if let Some((memo, q2)) = &mut memo {
+                memo[k] = (lo, *q2);
+            }
             if lo <= c && !link_clear_of_box(cyl, b, c) {
                 return None;
             }
@@ -272,7 +263,7 @@ impl GridCheck<'_> {
                     } else {
                         let boxes = self.model.obstacles.len();
                         let memo = &mut memo.0[l * boxes..(l + 1) * boxes];
-                        self.fixed_byte_along(l, &cyl, memo, a2_rad)
+                        self.fixed_byte_along(l, &cyl, Some((memo, a2_rad)))
                     }
                 }
             };

@@ -290,6 +290,38 @@ fn least_sq_masked(p: &Point, mut mask: u16, by_box: &[[f64; 6]]) -> f64 {
     least
 }
 
+/// What a balls' pass gathers ([`CollisionModel::ball_pass`]): the least ball distance less its
+/// radius, whether an inner ball comes within the clearance less [`UPPER_BOUND_SLACK_MM`], and
+/// per shape (the first [`FAR_SHAPES`]) whether its ball is farther than the clearance plus
+/// [`SINCOS_POSE_SLACK_MM`].
+struct Balls {
+    nearest: f64,
+    within: bool,
+    far: [bool; FAR_SHAPES],
+}
+
+impl Balls {
+    fn new() -> Balls {
+        Balls {
+            nearest: f64::INFINITY,
+            within: false,
+            far: [false; FAR_SHAPES],
+        }
+    }
+
+    /// Shape `i` (`s`) whose ball's centre lies `d` from the nearest box, at clearance `c`.
+    #[inline]
+    fn add(&mut self, i: usize, s: &parts::ShapeData, d: f64, c: f64) {
+        let radius = s.ball.1;
+        self.nearest = self.nearest.min(d - radius);
+        // The inner ball's point nearest to the box is a point of the shape.
+        self.within |= d - s.inner_mm <= c - UPPER_BOUND_SLACK_MM;
+        if let Some(f) = self.far.get_mut(i) {
+            *f = d > radius + c + SINCOS_POSE_SLACK_MM;
+        }
+    }
+}
+
 /// How far beyond its radius and the clearance a tool ball measures the boxes in a look, mm: a
 /// box farther is left out of its balls' pass (`near.rs`), and the look's margin is at most
 /// about this. A larger margin would spread a look only over the farthest of a leg's 124
@@ -648,9 +680,6 @@ impl CollisionModel {
         flange: &Pose,
     ) -> (f64, bool, [bool; FAR_SHAPES]) {
         let c = self.clearance_mm;
-        let mut nearest = f64::INFINITY;
-        let mut within = false;
-        let mut far = [false; FAR_SHAPES];
         let near = look
             .near
             .get_or_init(|| {
@@ -661,18 +690,18 @@ impl CollisionModel {
             // Made for this clearance (a model with a margin shares its parent's masks).
             .filter(|n| n.reach_mm >= n.ball_mm + c + 1.0);
         if let Some(near) = near {
+            let mut balls = Balls::new();
             for (i, s) in tool.shapes.iter().enumerate() {
-                let (centre, radius) = s.ball;
-                let centre = Point::from(flange.apply(&centre.coords.into()));
+                let centre = flange.point(&s.ball.0);
                 let d = least_sq_masked(&centre, near.mask(&centre), &look.by_box).sqrt();
-                nearest = nearest.min(d - radius);
-                within |= d - s.inner_mm <= c - UPPER_BOUND_SLACK_MM;
-                if let Some(f) = far.get_mut(i) {
-                    *f = d > radius + c + SINCOS_POSE_SLACK_MM;
-                }
+                balls.add(i, s, d, c);
             }
             // A box a ball's cube leaves out is farther than the reach from it (`near.rs`).
-            return (nearest.min(near.reach_mm - near.ball_mm), within, far);
+            return (
+                balls.nearest.min(near.reach_mm - near.ball_mm),
+                balls.within,
+                balls.far,
+            );
         }
         self.ball_pass_all(tool, look, flange)
     }
@@ -689,26 +718,15 @@ impl CollisionModel {
         flange: &Pose,
     ) -> (f64, bool, [bool; FAR_SHAPES]) {
         let c = self.clearance_mm;
-        let mut nearest = f64::INFINITY;
-        let mut within = false;
-        let mut far = [false; FAR_SHAPES];
+        let mut balls = Balls::new();
         for (i, three) in tool.shapes.chunks(3).enumerate() {
-            let centre = |k: usize| {
-                let (centre, _) = three[k.min(three.len() - 1)].ball;
-                Point::from(flange.apply(&centre.coords.into()))
-            };
+            let centre = |k: usize| flange.point(&three[k.min(three.len() - 1)].ball.0);
             let sq = least_sq_distances(&[centre(0), centre(1), centre(2)], &look.bounds);
             for (t, (s, sq)) in three.iter().zip(sq).enumerate() {
-                let d = sq.sqrt();
-                nearest = nearest.min(d - s.ball.1);
-                // The inner ball's point nearest to the box is a point of the shape.
-                within |= d - s.inner_mm <= c - UPPER_BOUND_SLACK_MM;
-                if let Some(f) = far.get_mut(3 * i + t) {
-                    *f = d > s.ball.1 + c + SINCOS_POSE_SLACK_MM;
-                }
+                balls.add(3 * i + t, s, sq.sqrt(), c);
             }
         }
-        (nearest, within, far)
+        (balls.nearest, balls.within, balls.far)
     }
 
     /// The shapes the balls' pass at `axes` calls far ([`ball_pass`](Self::ball_pass)), the
