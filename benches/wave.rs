@@ -1,7 +1,8 @@
 //! The wave expansion alone on `cells/trunk.yaml` at 1 degree (the grid inspected once, outside
 //! the timing): leg 1's optimistic 26-neighbour wave both ways (the extensile search's two
-//! waves, numbered row by row) and its 6-neighbour wave (the depth-first search's, node by
-//! node).
+//! waves whole, numbered row by row), the two numbered together from both ends keeping only
+//! the shortest paths' nodes (what the extensile search numbers now, `wave::expand_both`), and
+//! its 6-neighbour wave (the depth-first search's, node by node).
 //! Run: `cargo bench --bench wave`. Figures are recorded in benches/README.md.
 
 use criterion::{criterion_group, criterion_main, Criterion};
@@ -53,6 +54,12 @@ fn waves(c: &mut Criterion) {
             })
         });
     }
+    g.bench_function("wave26_both_corridor", |bench| {
+        bench.iter(|| {
+            let (here, there) = wave::expand_both(cs, &graph, a, b);
+            black_box(here.expect("joined").n() + there.expect("joined").n())
+        })
+    });
     g.finish();
 }
 

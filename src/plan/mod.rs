@@ -521,12 +521,12 @@ fn route_leg(
     Ok((planned.grid_path, planned.waypoints))
 }
 
-/// The most legs [`route`] plans at once: two, each with its two waves on two threads (the
-/// extensile search), keep two cores busy where one leg alone leaves one idle (its two waves
-/// take unequal times, and the walks back, merge, shortening and proofs after them run on one
-/// thread). On `torch-trunk` at 1 deg (2 cores) the route takes 168 ms instead
-/// of 196 and the whole run 0.33 s instead of 0.35 (`benches/README.md`); its longest leg, 72
-/// ms, bounds the gain.
+/// The most legs [`route`] plans at once: two keep two cores busy where one leg alone leaves
+/// one idle (its waves, numbered together from both ends, run on one thread, and so do its
+/// merge, shortening and proofs; only its two walks back run side by side). When the extensile
+/// search's two waves were numbered whole on two threads, on `torch-trunk` at 1 deg (2 cores)
+/// the route took 168 ms instead of 196 and the whole run 0.33 s instead of 0.35
+/// (`benches/README.md`).
 pub const LEGS_AT_ONCE_MAX: usize = 2;
 
 /// The most memory the legs planned beside the first may hold, bytes ([`legs_at_once`]).
@@ -535,10 +535,11 @@ const LEGS_EXTRA_MAX_BYTES: usize = 64 << 20;
 /// How many legs [`route`] plans at once: [`LEGS_AT_ONCE_MAX`] where the legs beside the first
 /// hold at most [`LEGS_EXTRA_MAX_BYTES`], else one (leg by leg, the memory of one leg as
 /// ever). A leg in hand holds, per grid node, at most: its two waves' labels (2 bytes each,
-/// `u16`, for a node-by-node wave; the row wave's residues take 2 bits), their bit sets (the
-/// decided nodes and the candidates, with the rows' words rounded up: up to 4 bits a node a
-/// wave) and its tool memo (1 byte with a tool, `leg::ToolMemo`): 6 bytes a node with a tool, 5
-/// without. Over the IRB 1400's ranges at 1 deg (341 x 141 x 136 = 6.5 M nodes) that is 39 MB
+/// `u16`, for a node-by-node wave; the row wave's residues take 2 bits, and the two numbered
+/// together from both ends hold 4 planes of 2 bits while they gather the shortest paths'
+/// nodes), their bit sets (the decided nodes and the candidates, with the rows' words rounded
+/// up: up to 4 bits a node a wave) and its tool memo (1 byte with a tool, `leg::ToolMemo`): 6
+/// bytes a node with a tool, 5 without. Over the IRB 1400's ranges at 1 deg (341 x 141 x 136 = 6.5 M nodes) that is 39 MB
 /// with a tool: two legs at once; at 0.5 deg (681 x 281 x 271 = 52 M nodes) 311 MB: leg by leg,
 /// as on any grid of more than 11.2 M nodes (13.4 M without a tool). A wave whose numbers
 /// outgrow `u16` takes `u32` labels, twice the bytes, but only at more than 65 533 steps from

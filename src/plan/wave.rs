@@ -24,6 +24,14 @@
 //! ([`Wave::label_next_to`]). The node-by-node wave keeps the numbers (2 bytes a node, 4 for a
 //! path of over 65 533 steps).
 //!
+//! Beyond the paper, for speed only: the searches that walk back only to neighbours numbered
+//! one less (extensile and neighboring) get their row waves with the numbers kept only on the
+//! nodes of the shortest paths between the ends ([`expand_both`], [`expand_corridor`]): a wave
+//! from each end, the one with the smaller front a level at a time, until they meet (about two
+//! balls of half the distance instead of one or two of the whole), then the shortest paths'
+//! nodes gathered back from where they met. Every walk back takes the same steps as over the
+//! whole wave (`corridor_rows` says why); the tests hold both against the whole waves.
+//!
 //! Beyond the paper: the wave runs on a [`Graph`], whose nodes are the grid's free nodes that the
 //! graph accepts (a leg's tool at its wrist) and whose edges are the neighbour steps it accepts
 //! (the whole-move check). So the numbers count accepted steps, and every numbered node but the
@@ -34,6 +42,23 @@
 //! leads to `l - 1`.
 
 use crate::plan::cspace::{CSpace, Node, FREE};
+
+/// Calls a row wave function with the row's word count as a constant where it is small (the
+/// loops over a row's words unrolled): 3 at 1 deg, 5 at 0.5 deg, 9 at 0.25 deg over the IRB
+/// 1400's axis 3; 0 (any count) otherwise.
+macro_rules! by_row_words {
+    ($cs:expr, $f:ident::<$g:ty>($($arg:expr),*)) => {
+        match $cs.grid.dims[2].div_ceil(64) {
+            1 => $f::<$g, 1>($($arg),*),
+            2 => $f::<$g, 2>($($arg),*),
+            3 => $f::<$g, 3>($($arg),*),
+            4 => $f::<$g, 4>($($arg),*),
+            5 => $f::<$g, 5>($($arg),*),
+            9 => $f::<$g, 9>($($arg),*),
+            _ => $f::<$g, 0>($($arg),*),
+        }
+    };
+}
 
 /// What a wave and a search walk on: which free nodes of the grid they may use and which
 /// neighbour steps between them exist.
@@ -344,17 +369,7 @@ pub fn expand<G: Graph + ?Sized>(
         return None;
     }
     let (labels, n) = if graph.wave_steps_all() && connectivity == Connectivity::TwentySix {
-        // The row's word count as a constant where it is small (the loops over a row's words
-        // unrolled): 3 at 1 deg, 5 at 0.5 deg, 9 at 0.25 deg over the IRB 1400's axis 3.
-        match cs.grid.dims[2].div_ceil(64) {
-            1 => number_rows::<G, 1>(cs, graph, start, end),
-            2 => number_rows::<G, 2>(cs, graph, start, end),
-            3 => number_rows::<G, 3>(cs, graph, start, end),
-            4 => number_rows::<G, 4>(cs, graph, start, end),
-            5 => number_rows::<G, 5>(cs, graph, start, end),
-            9 => number_rows::<G, 9>(cs, graph, start, end),
-            _ => number_rows::<G, 0>(cs, graph, start, end),
-        }?
+        by_row_words!(cs, number_rows::<G>(cs, graph, start, end))?
     } else {
         let end_index = g.index(end);
         match number_scalar::<u16, G>(cs, graph, start, end, connectivity) {
@@ -381,95 +396,339 @@ pub fn expand<G: Graph + ?Sized>(
     })
 }
 
+/// Both waves of the extensile search, from `start` to `end` and from `end` to `start`, with
+/// the numbers [`expand`] gives them (26 neighbours) on the nodes of the shortest paths between
+/// the two; off those, either may number fewer nodes. When every step between usable nodes is
+/// a wave step, the two are numbered together and only about two balls of half the distance
+/// are numbered ([`corridor_rows`], which says why a walk back over either takes the same
+/// steps as over the whole wave); otherwise each is numbered whole, on two threads. `None`
+/// for a wave whose end cannot be reached.
+pub fn expand_both<G: Graph + ?Sized>(
+    cs: &CSpace,
+    graph: &G,
+    start: Node,
+    end: Node,
+) -> (Option<Wave>, Option<Wave>) {
+    if !graph.wave_steps_all() {
+        return std::thread::scope(|s| {
+            let other = s.spawn(|| expand(cs, graph, end, start, Connectivity::TwentySix));
+            let here = expand(cs, graph, start, end, Connectivity::TwentySix);
+            // A panic in the other wave is a defect; fall back to computing it here.
+            let there = other
+                .join()
+                .unwrap_or_else(|_| expand(cs, graph, end, start, Connectivity::TwentySix));
+            (here, there)
+        });
+    }
+    match corridor_waves(cs, graph, start, end) {
+        Some((here, there)) => (Some(here), Some(there)),
+        None => (None, None),
+    }
+}
+
+/// The wave from `start` to `end` with the numbers [`expand`] gives it (26 neighbours) on the
+/// nodes of the shortest paths between the two, for a search that walks back over it and only
+/// ever steps to a neighbour numbered one less (the neighboring search): numbered with the
+/// wave from the end as [`expand_both`] does when every step between usable nodes is a wave
+/// step, else whole ([`expand`]). `None` when the end cannot be reached.
+pub fn expand_corridor<G: Graph + ?Sized>(
+    cs: &CSpace,
+    graph: &G,
+    start: Node,
+    end: Node,
+) -> Option<Wave> {
+    if !graph.wave_steps_all() {
+        return expand(cs, graph, start, end, Connectivity::TwentySix);
+    }
+    corridor_waves(cs, graph, start, end).map(|(here, _)| here)
+}
+
+/// [`corridor_rows`]'s two waves, from `start` and from `end`, for a graph whose every step
+/// between usable nodes is a wave step.
+fn corridor_waves<G: Graph + ?Sized>(
+    cs: &CSpace,
+    graph: &G,
+    start: Node,
+    end: Node,
+) -> Option<(Wave, Wave)> {
+    if !cs.is_free(start) || !cs.is_free(end) || !graph.node_ok(start) || !graph.node_ok(end) {
+        return None;
+    }
+    let (ls, le, n) = by_row_words!(cs, corridor_rows::<G>(cs, graph, start, end))?;
+    let wave = |start, end, labels| Wave {
+        start,
+        end,
+        connectivity: Connectivity::TwentySix,
+        labels,
+        dims: cs.grid.dims,
+        n,
+    };
+    Some((wave(start, end, ls), wave(end, start, le)))
+}
+
 /// A number outgrew the label word of the node-by-node wave.
 struct TooLong;
 /// The expansion for 26 neighbours over a graph whose every step between usable nodes is a
 /// wave step ([`Graph::wave_steps_all`]), level by level on bit sets of axis-3 rows (a row: the
-/// nodes of fixed axes 1 and 2, one bit each, axis-3 index `64 j + b` at bit `b` of word `j`). The nodes
-/// next numbered are the front's neighbours (a row's front shifted by one along axis 3 and
-/// spread to the neighbouring rows) not yet decided; each of those is looked at once (free on
-/// the grid, [`Graph::node_ok_coded`]) and numbered or decided unusable. The front is kept as
-/// its words that hold front nodes (by ascending index), and only those are spread, each into
-/// the same word of the 3 x 3 rows around (a bit at a word's end carried into the word beside);
-/// the rows spread into are marked by groups of [`GROUP_ROWS`] rows, and the candidates are
-/// looked for in the rows of the groups marked and the rows just beside them. A level's new
-/// nodes are labelled a word at a time, OR-ed into the residue planes its number's residue
-/// code picks ([`Labels::Residues`]: 2 bits a node, no node written one by one, nothing to
-/// clear and no number too long), so a level costs a few word operations per front word and per
-/// row it reaches, and one look per node it numbers. When the graph names the code bits its
-/// answer depends on ([`Graph::look_bits`]), the free nodes without them come a word at a time
-/// from the grid's row bit set ([`CSpace::row_bits`], grids up to [`ROW_BITS_MAX_BYTES`] of
-/// it): numbered without a look; only the other
-/// candidates (blocked, or with those bits) are looked at one by one. No node past the end in
-/// the end's word is looked at. `K`: the words a row, or 0 for any number. Returns the labels
-/// and the end's number, `None` when the end cannot be reached.
+/// nodes of fixed axes 1 and 2, one bit each, axis-3 index `64 j + b` at bit `b` of word `j`).
+/// The nodes next numbered are the front's neighbours ([`Reach`]) not yet decided; each of
+/// those is looked at once (free on the grid, [`Graph::node_ok_coded`]) and numbered or decided
+/// unusable. A level's new nodes are labelled a word at a time, OR-ed into the residue planes
+/// its number's residue code picks ([`Labels::Residues`]: 2 bits a node, no node written one by
+/// one, nothing to clear and no number too long), so a level costs a few word operations per
+/// front word and per row it reaches, and one look per node it numbers. When the graph names
+/// the code bits its answer depends on ([`Graph::look_bits`]), the free nodes without them come
+/// a word at a time from the grid's row bit set ([`CSpace::row_bits`], grids up to
+/// [`ROW_BITS_MAX_BYTES`] of it): numbered without a look; only the other candidates (blocked,
+/// or with those bits) are looked at one by one. No node past the end in the end's word is
+/// looked at. `K`: the words a row, or 0 for any number. Returns the labels and the end's
+/// number, `None` when the end cannot be reached.
 fn number_rows<G: Graph + ?Sized, const K: usize>(
     cs: &CSpace,
     graph: &G,
     start: Node,
     end: Node,
 ) -> Option<(Labels, u32)> {
-    let g = &cs.grid;
-    let start_index = g.index(start);
-    let end_index = g.index(end);
-    let [d0, d1, d2] = g.dims;
-    let words = if K == 0 { d2.div_ceil(64) } else { K };
-    debug_assert_eq!(words, d2.div_ceil(64));
-    let rows = d0 * d1;
-    // The residue planes (number 1's code, 1: the low plane only).
-    let mut planes = vec![0u64; 2 * rows * words];
-    let (r0, j0, b0) = (
-        start_index / d2,
-        (start_index % d2) / 64,
-        (start_index % d2) % 64,
-    );
-    planes[2 * (r0 * words + j0)] |= 1 << b0;
-    let labels = |planes| Labels::Residues { planes, words };
-    if start_index == end_index {
-        return Some((labels(planes), 1));
+    let end_index = cs.grid.index(end);
+    let mut wave = RowWave::<G, K>::new(cs, graph, cs.grid.index(start), Some(end_index));
+    if cs.grid.index(start) == end_index {
+        return Some((wave.labels(), 1));
     }
-    // The bits of a row's last word that are nodes.
-    let last_mask = match d2 % 64 {
-        0 => u64::MAX,
-        r => (1u64 << r) - 1,
-    };
-    // The end's word, its bit, and its bits up to the end's.
-    let end_word = (end_index / d2) * words + (end_index % d2) / 64;
-    let end_bit = 1u64 << ((end_index % d2) % 64);
-    let upto_end = end_bit | (end_bit - 1);
-    // The free nodes usable without a look, when the graph says which those are.
-    let rows_kept = graph
-        .look_bits()
-        .filter(|_| g.dims[0] * g.dims[1] * g.dims[2].div_ceil(64) * 8 <= ROW_BITS_MAX_BYTES)
-        .map(|bits| cs.row_bits(bits));
-    let plain = rows_kept.as_deref().map(|r| r.plain.as_slice());
-    // Decided nodes: numbered, not free, or not usable.
-    let mut decided = vec![0u64; rows * words];
-    // The next level's candidates (`words` a row, every row; cleared as they are looked at)
-    // and the groups of `GROUP_ROWS` rows whose candidates, or those of the rows just beside
-    // them, may hold some (`groups`, a bit a group).
-    let mut cand = vec![0u64; rows * words];
-    let mut groups = vec![0u64; rows.div_ceil(GROUP_ROWS * 64)];
-    // The front: its words that hold front nodes, as (index into `decided`, the front's bits),
-    // by ascending index.
-    decided[r0 * words + j0] |= 1 << b0;
-    let mut front: Vec<(usize, u64)> = vec![(r0 * words + j0, 1 << b0)];
-    let mut next_front: Vec<(usize, u64)> = Vec::new();
-    // A word's neighbour words in the 3 x 3 rows around, from the first (a row off the grid's
-    // border on axes 1 and 2).
-    let around: [usize; 9] = std::array::from_fn(|k| ((k / 3) * d1 + k % 3) * words);
-    // The level's number (below `MAX_NODES`, a `u32`) and its residue code's planes.
-    let mut level = 1u32;
-    while let (Some(&(first, _)), Some(&(last, _))) = (front.first(), front.last()) {
-        let next = level + 1;
+    loop {
+        match wave.next_level() {
+            Level::End => {
+                let n = wave.level;
+                return Some((wave.labels(), n));
+            }
+            Level::Numbered => {}
+            Level::Exhausted => return None,
+        }
+    }
+}
+
+/// How a row wave's level ended.
+enum Level {
+    /// The end node was numbered (the level was left there).
+    End,
+    /// The level was numbered whole.
+    Numbered,
+    /// Nothing was left to number: the front was empty.
+    Exhausted,
+}
+
+/// A row wave between levels ([`number_rows`], [`corridor_rows`]).
+struct RowWave<'a, G: Graph + ?Sized, const K: usize> {
+    cs: &'a CSpace,
+    graph: &'a G,
+    reach: Reach<K>,
+    /// The grid's row bit set of the free nodes usable without a look, if any.
+    rows_kept: Option<std::sync::Arc<crate::plan::cspace::RowBits>>,
+    /// The bits of a row's last word that are nodes.
+    last_mask: u64,
+    /// The end's word, its bit, and its bits up to the end's (no end: a word past the grid).
+    end_word: usize,
+    end_bit: u64,
+    upto_end: u64,
+    /// The residue planes.
+    planes: Vec<u64>,
+    /// Decided nodes: numbered, not free, or not usable.
+    decided: Vec<u64>,
+    /// The front: its words that hold front nodes, as (row word index, the front's bits), by
+    /// ascending index.
+    front: Vec<(usize, u64)>,
+    next_front: Vec<(usize, u64)>,
+    /// The number of the last level numbered (below `MAX_NODES`, a `u32`).
+    level: u32,
+}
+
+impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
+    /// The wave with its start (linear index) numbered 1; `end` the linear index at which it
+    /// stops, if any.
+    fn new(cs: &'a CSpace, graph: &'a G, start: usize, end: Option<usize>) -> Self {
+        let g = &cs.grid;
+        let d2 = g.dims[2];
+        let reach = Reach::<K>::new(g.dims);
+        let words = reach.words;
+        let rows = reach.rows;
+        let mut planes = vec![0u64; 2 * rows * words];
+        let mut decided = vec![0u64; rows * words];
+        let (r0, j0, b0) = (start / d2, (start % d2) / 64, (start % d2) % 64);
+        // Number 1's code, 1: the low plane only.
+        planes[2 * (r0 * words + j0)] |= 1 << b0;
+        decided[r0 * words + j0] |= 1 << b0;
+        let last_mask = match d2 % 64 {
+            0 => u64::MAX,
+            r => (1u64 << r) - 1,
+        };
+        let (end_word, end_bit) = match end {
+            Some(e) => ((e / d2) * words + (e % d2) / 64, 1u64 << ((e % d2) % 64)),
+            None => (usize::MAX, 1),
+        };
+        let rows_kept = graph
+            .look_bits()
+            .filter(|_| rows * words * 8 <= ROW_BITS_MAX_BYTES)
+            .map(|bits| cs.row_bits(bits));
+        RowWave {
+            cs,
+            graph,
+            reach,
+            rows_kept,
+            last_mask,
+            end_word,
+            end_bit,
+            upto_end: end_bit | (end_bit - 1),
+            planes,
+            decided,
+            front: vec![(r0 * words + j0, 1 << b0)],
+            next_front: Vec::new(),
+            level: 1,
+        }
+    }
+
+    fn labels(self) -> Labels {
+        Labels::Residues {
+            planes: self.planes,
+            words: self.reach.words,
+        }
+    }
+
+    /// Numbers the next level: the front's neighbours not decided yet, looked at by ascending
+    /// row, numbered when usable; they become the front.
+    fn next_level(&mut self) -> Level {
+        let (Some(&(first, _)), Some(&(last, _))) = (self.front.first(), self.front.last()) else {
+            return Level::Exhausted;
+        };
+        let next = self.level + 1;
         let rc = residue_code(next);
         let (low, high) = (rc & 1 != 0, rc & 2 != 0);
-        // Gather: each front word's neighbours into `cand`: its bits spread by one along axis 3
-        // (themselves included: they are decided), a bit at either end carried into the
-        // word beside, into the same words of the 3 x 3 rows around its row. Only the words
-        // that hold front nodes are spread (inside a wide front, a row's front is its two
-        // ends).
-        for &(w, bits) in &front {
+        self.reach.spread(&self.front);
+        let (cs, graph) = (self.cs, self.graph);
+        let d1 = cs.grid.dims[1];
+        let d2 = cs.grid.dims[2];
+        let words = self.reach.words;
+        let plain = self.rows_kept.as_deref().map(|r| r.plain.as_slice());
+        let (last_mask, end_word, end_bit, upto_end) =
+            (self.last_mask, self.end_word, self.end_bit, self.upto_end);
+        let (decided, planes, next_front) =
+            (&mut self.decided, &mut self.planes, &mut self.next_front);
+        let ended = self.reach.drain(first, last, |t, j, w, taken| {
+            let mut c = taken & !decided[w];
+            if c == 0 {
+                return false;
+            }
+            if j + 1 == words {
+                c &= last_mask;
+            }
+            if w == end_word && c & end_bit != 0 {
+                c &= upto_end;
+            }
+            decided[w] |= c;
+            let base = t * d2 + j * 64;
+            // The usable candidates: the plain ones at once, the others looked at.
+            let (mut numbered, mut look) = match plain {
+                Some(p) => (c & p[w], c & !p[w]),
+                None => (0, c),
+            };
+            while look != 0 {
+                let b = look.trailing_zeros() as usize;
+                look &= look - 1;
+                let code = cs.code_index(base + b);
+                if code & FREE != 0
+                    && graph.node_ok_coded(
+                        [(t / d1) as i32, (t % d1) as i32, (j * 64 + b) as i32],
+                        code,
+                    )
+                {
+                    numbered |= 1 << b;
+                }
+            }
+            if low {
+                planes[2 * w] |= numbered;
+            }
+            if high {
+                planes[2 * w + 1] |= numbered;
+            }
+            if w == end_word && numbered & end_bit != 0 {
+                return true;
+            }
+            if numbered != 0 {
+                next_front.push((w, numbered));
+            }
+            false
+        });
+        self.level = next;
+        if ended {
+            return Level::End;
+        }
+        // Ascending: a group's scan starts below the rows of the group before only on rows
+        // that group's scan cleared (with `GROUP_ROWS` at least 2), so the bounds above hold.
+        debug_assert!(self.next_front.windows(2).all(|p| p[0].0 < p[1].0));
+        std::mem::swap(&mut self.front, &mut self.next_front);
+        self.next_front.clear();
+        Level::Numbered
+    }
+
+    /// Whether any node of row word `w`'s `bits` is numbered.
+    #[inline]
+    fn numbered_in(&self, w: usize, bits: u64) -> bool {
+        bits & (self.planes[2 * w] | self.planes[2 * w + 1]) != 0
+    }
+}
+
+/// The nodes of row word `w` of residue `planes` numbered with residue code `code` (1, 2 or 3).
+#[inline]
+fn with_code(planes: &[u64], w: usize, code: u32) -> u64 {
+    let (lo, hi) = (planes[2 * w], planes[2 * w + 1]);
+    match code {
+        1 => lo & !hi,
+        2 => !lo & hi,
+        _ => lo & hi,
+    }
+}
+
+/// The neighbours of a set of row words, gathered a level at a time: each word's bits spread
+/// by one along axis 3 (themselves included), a bit at either end carried into the word
+/// beside, into the same words of the 3 x 3 rows around its row. Only the words given are
+/// spread (inside a wide front, a row's front is its two ends). The rows spread into are
+/// marked by groups of [`GROUP_ROWS`] rows, and [`drain`](Self::drain) takes the gathered words
+/// from the rows of the groups marked and the rows just beside them, leaving every word clear.
+struct Reach<const K: usize> {
+    d0: usize,
+    d1: usize,
+    words: usize,
+    rows: usize,
+    /// The gathered words (`words` a row, every row).
+    cand: Vec<u64>,
+    /// The groups of `GROUP_ROWS` rows whose words, or those of the rows just beside them, may
+    /// hold some (a bit a group).
+    groups: Vec<u64>,
+    /// A word's neighbour words in the 3 x 3 rows around, from the first (a row off the
+    /// grid's border on axes 1 and 2).
+    around: [usize; 9],
+}
+
+impl<const K: usize> Reach<K> {
+    fn new(dims: [usize; 3]) -> Self {
+        let [d0, d1, d2] = dims;
+        let words = if K == 0 { d2.div_ceil(64) } else { K };
+        debug_assert_eq!(words, d2.div_ceil(64));
+        let rows = d0 * d1;
+        Reach {
+            d0,
+            d1,
+            words,
+            rows,
+            cand: vec![0u64; rows * words],
+            groups: vec![0u64; rows.div_ceil(GROUP_ROWS * 64)],
+            around: std::array::from_fn(|k| ((k / 3) * d1 + k % 3) * words),
+        }
+    }
+
+    /// Gathers the neighbours of `front` (row words by ascending index).
+    fn spread(&mut self, front: &[(usize, u64)]) {
+        let (d0, d1, words) = (self.d0, self.d1, self.words);
+        let (cand, groups) = (&mut self.cand, &mut self.groups);
+        for &(w, bits) in front {
             let (t, j) = (w / words, w % words);
             let (i0, i1) = (
                 (t as u32 / d1 as u32) as usize,
@@ -479,8 +738,8 @@ fn number_rows<G: Graph + ?Sized, const K: usize>(
             let below = if j > 0 { (bits & 1) << 63 } else { 0 };
             let above = if j + 1 < words { bits >> 63 } else { 0 };
             if below | above == 0 && i0 > 0 && i0 + 1 < d0 && i1 > 0 && i1 + 1 < d1 {
-                let from = w - around[4];
-                for a in around {
+                let from = w - self.around[4];
+                for a in self.around {
                     cand[from + a] |= spread;
                 }
                 for t0 in [t - d1, t, t + d1] {
@@ -506,75 +765,169 @@ fn number_rows<G: Graph + ?Sized, const K: usize>(
                 groups[g / 64] |= 1 << (g % 64);
             }
         }
-        // Look at the candidates not decided yet, by ascending row: the rows of each group
-        // marked and those just beside it (the groups marked lie within a plane of rows of the
-        // front's first and last words).
+    }
+
+    /// Takes the gathered words by ascending row (the rows of each group marked and those just
+    /// beside it; the groups marked lie within a plane of rows of the spread front's `first`
+    /// and `last` words), clearing them, and hands each nonzero one to `f` as (row, word in
+    /// the row, row word index, bits). Stops when `f` says so (true), leaving words gathered;
+    /// returns whether it stopped.
+    #[inline]
+    fn drain(
+        &mut self,
+        first: usize,
+        last: usize,
+        mut f: impl FnMut(usize, usize, usize, u64) -> bool,
+    ) -> bool {
+        let (d1, words, rows) = (self.d1, self.words, self.rows);
         let (lo, hi) = (
             (first / words).saturating_sub(d1 + 1) / (GROUP_ROWS * 64),
             (last / words + d1 + 1) / (GROUP_ROWS * 64),
         );
-        for gi in lo..=hi.min(groups.len() - 1) {
-            let mut m = std::mem::take(&mut groups[gi]);
+        for gi in lo..=hi.min(self.groups.len() - 1) {
+            let mut m = std::mem::take(&mut self.groups[gi]);
             while m != 0 {
                 let g = gi * 64 + m.trailing_zeros() as usize;
                 m &= m - 1;
                 for t in (g * GROUP_ROWS).saturating_sub(1)..((g + 1) * GROUP_ROWS + 1).min(rows) {
                     for j in 0..words {
                         let w = t * words + j;
-                        let mut c = std::mem::take(&mut cand[w]) & !decided[w];
-                        if c == 0 {
-                            continue;
-                        }
-                        if j + 1 == words {
-                            c &= last_mask;
-                        }
-                        if w == end_word && c & end_bit != 0 {
-                            c &= upto_end;
-                        }
-                        decided[w] |= c;
-                        let base = t * d2 + j * 64;
-                        // The usable candidates: the plain ones at once, the others looked at.
-                        let (mut numbered, mut look) = match &plain {
-                            Some(p) => (c & p[w], c & !p[w]),
-                            None => (0, c),
-                        };
-                        while look != 0 {
-                            let b = look.trailing_zeros() as usize;
-                            look &= look - 1;
-                            let code = cs.code_index(base + b);
-                            if code & FREE != 0
-                                && graph.node_ok_coded(
-                                    [(t / d1) as i32, (t % d1) as i32, (j * 64 + b) as i32],
-                                    code,
-                                )
-                            {
-                                numbered |= 1 << b;
-                            }
-                        }
-                        if low {
-                            planes[2 * w] |= numbered;
-                        }
-                        if high {
-                            planes[2 * w + 1] |= numbered;
-                        }
-                        if w == end_word && numbered & end_bit != 0 {
-                            return Some((labels(planes), next));
-                        }
-                        if numbered != 0 {
-                            next_front.push((w, numbered));
+                        let c = std::mem::take(&mut self.cand[w]);
+                        if c != 0 && f(t, j, w, c) {
+                            return true;
                         }
                     }
                 }
             }
         }
-        // Ascending: a group's scan starts below the rows of the group before only on rows
-        // that group's scan cleared (with `GROUP_ROWS` at least 2), so the bounds above hold.
-        debug_assert!(next_front.windows(2).all(|p| p[0].0 < p[1].0));
-        std::mem::swap(&mut front, &mut next_front);
-        next_front.clear();
-        level = next;
+        false
     }
-    None
+}
+
+/// Both waves of the extensile search at once, from `start` and from `end`, numbering only the
+/// nodes on shortest paths between the two (the corridor), each with its number in that wave:
+/// the two labels and n, `None` when the ends are not joined. Beyond the paper, for speed only:
+/// each walk back takes the same steps as over the whole wave.
+///
+/// Why the corridor is enough, with `d_s` and `d_e` a node's distances in steps from `start`
+/// and from `end`, and `D` the ends' distance: a walk back from the end over the wave from the
+/// start ([`descend`](crate::plan::search::descend)) only ever steps to a neighbour numbered
+/// one less, over a step of the graph. The end has `d_s + d_e = D`; if a walked node `x` has
+/// it and `d_s(x) = l`, a neighbour `m` it steps to has `d_s(m) = l - 1` and
+/// `d_e(m) <= d_e(x) + 1 = D - d_s(m)`, so `d_s(m) + d_e(m) <= D`, which the triangle
+/// inequality makes `= D`. So
+/// every node the walk stands on, and every neighbour it may step to, lies on the corridor; a
+/// wave that numbers exactly the corridor, each node with its `d_s`, offers the walk the same
+/// choices: the neighbours numbered one less are the same nodes, in the same order (the
+/// candidates' order ranks one less before the rest), and the others it skips whatever they
+/// read. The same holds the other way round.
+///
+/// How: two row waves ([`RowWave`]), each numbering whole levels, the one with the smaller
+/// front next, until a level of one meets nodes the other numbered. When the wave from the
+/// start numbers its level `a` (distance) and meets the other's levels up to `b`, `D = a + b`
+/// and the nodes met are the corridor's nodes at `d_s = a`, `d_e = b`: before that level no
+/// node had `d_s < a` and `d_e <= b`, so a shortest path's node at `d_s = a - 1` had `d_e >
+/// b` (`D >= a + b`), and a node met has `d_e <= b` (`D <= a + b`), so `d_e(x) >= D - a = b`.
+/// (The same with the sides swapped.) From the nodes met, the corridor is gathered back down
+/// each wave: its nodes at `d_s = k - 1` are the neighbours of those at `k` that the wave
+/// numbered at `k - 1` (a node on a shortest path is followed on it by a node one step
+/// farther; a numbered neighbour of a corridor node at `k` at distance `k - 1` has `d_e <= D -
+/// k + 1`, so it is on the corridor). A neighbour's distance is `k - 1`, `k` or `k + 1`, which
+/// the residue tells apart. Each wave's labels are then its own residues on its half of the
+/// corridor and, on the other half, the other wave's turned round (`d_s = D - d_e`); both
+/// numbered about two balls of half the radius instead of two of the whole.
+fn corridor_rows<G: Graph + ?Sized, const K: usize>(
+    cs: &CSpace,
+    graph: &G,
+    start: Node,
+    end: Node,
+) -> Option<(Labels, Labels, u32)> {
+    let (si, ei) = (cs.grid.index(start), cs.grid.index(end));
+    let mut from_start = RowWave::<G, K>::new(cs, graph, si, None);
+    let mut from_end = RowWave::<G, K>::new(cs, graph, ei, None);
+    if si == ei {
+        return Some((from_start.labels(), from_end.labels(), 1));
+    }
+    // Level by level until the waves meet; `met`: the nodes met, as row words.
+    let met: Vec<(usize, u64)> = loop {
+        let forward = from_start.front.len() <= from_end.front.len();
+        let (side, other) = if forward {
+            (&mut from_start, &from_end)
+        } else {
+            (&mut from_end, &from_start)
+        };
+        match side.next_level() {
+            Level::Numbered => {}
+            Level::End | Level::Exhausted => return None,
+        }
+        let met: Vec<(usize, u64)> = side
+            .front
+            .iter()
+            .filter(|&&(w, bits)| other.numbered_in(w, bits))
+            .map(|&(w, bits)| (w, bits & (other.planes[2 * w] | other.planes[2 * w + 1])))
+            .collect();
+        if !met.is_empty() {
+            break met;
+        }
+    };
+    // The end's number in the wave from the start: d_s + d_e + 1 of the nodes met.
+    let n = from_start.level + from_end.level - 1;
+    // The labels, in fresh planes: each wave's half of the corridor, gathered back down it from
+    // the nodes met, a level at a time. A node numbered `k` by one wave is numbered `n + 1 - k`
+    // by the other.
+    let words = from_start.reach.words;
+    let (mut ls, mut le) = (
+        vec![0u64; from_start.planes.len()],
+        vec![0u64; from_start.planes.len()],
+    );
+    for (wave, forward) in [(&mut from_start, true), (&mut from_end, false)] {
+        let (own, other) = if forward {
+            (&mut ls, &mut le)
+        } else {
+            (&mut le, &mut ls)
+        };
+        let mut here = met.clone();
+        let mut k = wave.level;
+        loop {
+            for &(w, bits) in &here {
+                label_word(own, w, bits, k);
+                label_word(other, w, bits, n + 1 - k);
+            }
+            let (Some(&(first, _)), Some(&(last, _))) = (here.first(), here.last()) else {
+                break;
+            };
+            if k == 1 {
+                break;
+            }
+            let below = residue_code(k - 1);
+            let mut down = Vec::new();
+            wave.reach.spread(&here);
+            let planes = &wave.planes;
+            wave.reach.drain(first, last, |_, _, w, taken| {
+                let on = taken & with_code(planes, w, below);
+                if on != 0 {
+                    down.push((w, on));
+                }
+                false
+            });
+            here = down;
+            k -= 1;
+        }
+    }
+    let labels = |planes| Labels::Residues { planes, words };
+    Some((labels(ls), labels(le), n))
+}
+
+/// Numbers the nodes `bits` of row word `w` with `number` in residue `planes`.
+#[inline]
+fn label_word(planes: &mut [u64], w: usize, bits: u64, number: u32) {
+    let c = residue_code(number);
+    if c & 1 != 0 {
+        planes[2 * w] |= bits;
+    }
+    if c & 2 != 0 {
+        planes[2 * w + 1] |= bits;
+    }
 }
 
 /// The expansion node by node in words `W`: the labels when `end` was numbered, `Ok(None)`
@@ -1042,6 +1395,130 @@ mod tests {
             "numbered nodes not reached from the start"
         );
         out
+    }
+
+    /// Scattered free nodes and usable ones; a graph whose wave counts every step between
+    /// usable nodes and that refuses some of them when walked (`refuse`), as a leg's optimistic
+    /// wave does.
+    struct Scatter {
+        salt: u32,
+        refuse: bool,
+    }
+
+    fn scatter_hash(n: Node, salt: u32) -> u32 {
+        let h = (n[0] as u32).wrapping_mul(73_856_093)
+            ^ (n[1] as u32).wrapping_mul(19_349_663)
+            ^ (n[2] as u32).wrapping_mul(83_492_791)
+            ^ salt.wrapping_mul(2_246_822_519);
+        h.wrapping_mul(2_654_435_761) >> 5
+    }
+
+    impl Graph for Scatter {
+        fn node_ok(&self, n: Node) -> bool {
+            scatter_hash(n, self.salt) % 6 != 0
+        }
+        fn step_ok(&self, a: Node, b: Node) -> bool {
+            let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+            let key = [lo[0] * 3 + hi[0], lo[1] * 5 + hi[1], lo[2] * 7 + hi[2]];
+            !self.refuse || scatter_hash(key, self.salt + 7) % 4 != 0
+        }
+        fn wave_steps_all(&self) -> bool {
+            true
+        }
+    }
+
+    /// The two waves numbered together (`expand_both`) number exactly the nodes on shortest
+    /// paths between the ends (distance from the start plus distance from the end equal to the
+    /// ends' distance, by two plain breadth-first counts), each with its distance from its own
+    /// start, over rows of one, two and three words; a walk back over either takes the same
+    /// steps as over the whole wave, also where the graph refuses steps and the walk backs up.
+    #[test]
+    fn both_waves_number_the_shortest_paths_and_walk_like_the_whole_waves() {
+        use crate::plan::search::{descend, extensile::candidates};
+        let mut walks = 0;
+        for (z, salt) in [(20usize, 1u32), (70, 2), (150, 3)] {
+            let g = Grid::over([[0.0, 15.0], [0.0, 13.0], [0.0, z as f64 - 1.0]], 1.0);
+            let cs = CSpace::from_fn(g, |n| scatter_hash(n, salt + 100) % 4 != 0);
+            for refuse in [false, true] {
+                let graph = Scatter { salt, refuse };
+                let usable = |n: Node| cs.is_free(n) && graph.node_ok(n);
+                let start = (0..g.len())
+                    .map(|i| g.node(i))
+                    .find(|&n| usable(n))
+                    .expect("a start");
+                let ds = bfs(&g, start, usable);
+                let (far, mid) = far_and_middle(&ds);
+                for end in [g.node(far), g.node(mid)] {
+                    let what = format!("rows of {z}, refuse {refuse}, {start:?} -> {end:?}");
+                    let de = bfs(&g, end, usable);
+                    let n = ds[g.index(end)];
+                    assert!(n > 6, "too near to test: {what}");
+                    let whole = |a, b| expand(&cs, &graph, a, b, Connectivity::TwentySix);
+                    let (there, back) = (whole(start, end), whole(end, start));
+                    let (there, back) = (there.expect("joined"), back.expect("joined"));
+                    let (fs, fe) = expand_both(&cs, &graph, start, end);
+                    let (fs, fe) = (fs.expect("joined"), fe.expect("joined"));
+                    for (w, from, to, whole) in [(&fs, &ds, &de, &there), (&fe, &de, &ds, &back)] {
+                        assert!(matches!(w.labels, Labels::Residues { .. }), "{what}");
+                        assert_eq!(w.n(), n, "{what}");
+                        assert_eq!((w.start, w.end), (whole.start, whole.end), "{what}");
+                        let labels = numbers(w);
+                        let mut corridor = 0;
+                        for i in 0..g.len() {
+                            // Numbers are distances plus one: on a shortest path when
+                            // (from - 1) + (to - 1) = n - 1.
+                            let on = from[i] > 0 && to[i] > 0 && from[i] + to[i] == n + 1;
+                            corridor += usize::from(on);
+                            let want = if on { from[i] } else { 0 };
+                            assert_eq!(labels[i], want, "{:?}: {what}", g.node(i));
+                        }
+                        assert!(
+                            corridor < whole.numbered(),
+                            "the corridor ({corridor}) is all the whole wave numbered: {what}"
+                        );
+                        let path = descend(w, &candidates, &graph);
+                        assert_eq!(path, descend(whole, &candidates, &graph), "{what}");
+                        walks += usize::from(path.is_some());
+                    }
+                }
+            }
+        }
+        assert!(walks >= 12, "too few walks reached the start: {walks}");
+    }
+
+    /// `expand_both` of a node with itself numbers it alone; of ends that are not joined (or
+    /// not usable), neither wave; over a graph whose wave does not count every step, both
+    /// waves whole (`expand`'s numbers).
+    #[test]
+    fn both_waves_of_one_node_of_parted_ends_and_of_a_stepwise_graph() {
+        let cs = open(12.0);
+        let (fs, fe) = expand_both(&cs, &Open, [3, 4, 5], [3, 4, 5]);
+        for w in [fs.expect("itself"), fe.expect("itself")] {
+            assert_eq!((w.n(), w.numbered()), (1, 1));
+            assert_eq!(w.label_next_to([3, 4, 5], 2), 1);
+        }
+        let walled = CSpace::from_fn(cs.grid, |n| n[0] != 6);
+        let (fs, fe) = expand_both(&walled, &Open, [0, 0, 0], [12, 12, 12]);
+        assert!(fs.is_none() && fe.is_none());
+        let (fs, fe) = expand_both(&walled, &Open, [0, 0, 0], [6, 0, 0]);
+        assert!(fs.is_none() && fe.is_none());
+        // A closure graph counts only the steps it accepts: whole waves, numbered node by node.
+        let stepwise = |_: Node, _: Node| true;
+        let (a, b) = ([0, 0, 0], [9, 4, 7]);
+        let (fs, fe) = expand_both(&cs, &stepwise, a, b);
+        let whole = |a, b| expand(&cs, &stepwise, a, b, Connectivity::TwentySix).expect("joined");
+        for (w, whole) in [
+            (fs.expect("joined"), whole(a, b)),
+            (fe.expect("joined"), whole(b, a)),
+        ] {
+            assert_eq!(w.numbered(), whole.numbered());
+            assert_eq!(numbers(&w), numbers(&whole));
+        }
+        // Over the open graph: fewer nodes, the same n.
+        let (fs, _) = expand_both(&cs, &Open, a, b);
+        let (fs, whole) = (fs.expect("joined"), whole(a, b));
+        assert_eq!(fs.n(), whole.n());
+        assert!(fs.numbered() < whole.numbered());
     }
 
     /// The farthest node reached (the last by index) and the first node half as far.

@@ -258,6 +258,7 @@ mod tests {
 #[cfg(test)]
 pub(crate) mod testing {
     use crate::plan::cspace::{CSpace, Grid, Node};
+    use crate::plan::wave::Graph;
 
     /// A grid of `nx` x `ny` x `nz` nodes at 1 deg, free where `free` says.
     pub fn grid(nx: usize, ny: usize, nz: usize, free: impl Fn(Node) -> bool) -> CSpace {
@@ -270,6 +271,53 @@ pub(crate) mod testing {
             1.0,
         );
         CSpace::from_fn(g, free)
+    }
+
+    fn hash(v: [i32; 3], salt: u32) -> u32 {
+        let h = (v[0] as u32).wrapping_mul(73_856_093)
+            ^ (v[1] as u32).wrapping_mul(19_349_663)
+            ^ (v[2] as u32).wrapping_mul(83_492_791)
+            ^ salt.wrapping_mul(2_246_822_519);
+        h.wrapping_mul(2_654_435_761) >> 5
+    }
+
+    /// A graph like a leg's optimistic one: scattered nodes refused, and scattered steps
+    /// refused when walked though the wave counts every step between usable nodes.
+    pub struct Refusing(u32);
+
+    impl Graph for Refusing {
+        fn node_ok(&self, n: Node) -> bool {
+            hash(n, self.0) % 9 != 0
+        }
+        fn step_ok(&self, a: Node, b: Node) -> bool {
+            let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+            let key = [lo[0] * 3 + hi[0], lo[1] * 5 + hi[1], lo[2] * 7 + hi[2]];
+            hash(key, self.0 + 1) % 5 != 0
+        }
+        fn wave_steps_all(&self) -> bool {
+            true
+        }
+    }
+
+    /// Searches on three grids of scattered blocked nodes with a [`Refusing`] graph, from a
+    /// corner to many usable ends (joined or not): (grid, graph, start, end).
+    pub fn refusing_cases() -> Vec<(CSpace, Refusing, Node, Node)> {
+        let mut cases = Vec::new();
+        for salt in 1..4u32 {
+            let cs = grid(14, 12, 70, |n| hash(n, salt + 50) % 5 != 0);
+            let graph = Refusing(salt);
+            let start = [0, 0, 0];
+            for k in 0..40 {
+                let end = [(k * 5) % 14, (k * 7) % 12, (k * 13) % 70];
+                if [start, end]
+                    .iter()
+                    .all(|&n| cs.is_free(n) && graph.node_ok(n))
+                {
+                    cases.push((cs.clone(), Refusing(salt), start, end));
+                }
+            }
+        }
+        cases
     }
 
     /// Every step moves to a neighbour; ends are right.

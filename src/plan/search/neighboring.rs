@@ -31,23 +31,43 @@ pub(crate) fn candidates(w: &Wave, n: Node, here: u32, _prev: Option<[i32; 3]>) 
     c
 }
 
-/// The path start -> end on the 26-neighbour wave of `graph` from `start`.
+/// The path start -> end on the 26-neighbour wave of `graph` from `start`. The walk back only
+/// steps to neighbours numbered one less, so the wave numbers only the nodes on shortest paths
+/// between the ends where it can ([`wave::expand_corridor`]): the same steps.
 pub fn search<G: Graph>(
     cs: &CSpace,
     start: Node,
     end: Node,
     graph: &G,
 ) -> Result<GridPath, SearchFailure> {
-    let w = wave::expand(cs, graph, start, end, Connectivity::TwentySix)
-        .ok_or(SearchFailure::NotConnected)?;
+    let w = wave::expand_corridor(cs, graph, start, end).ok_or(SearchFailure::NotConnected)?;
     descend(&w, &candidates, graph).ok_or(SearchFailure::WalkFailed)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plan::search::testing::{assert_path, grid};
+    use crate::plan::search::testing::{assert_path, grid, refusing_cases};
     use crate::plan::wave::Open;
+
+    /// Where the graph refuses nodes and steps, the search over the wave of the shortest
+    /// paths' nodes gives the same path, or the same failure, as over the whole wave.
+    #[test]
+    fn the_corridor_wave_changes_no_search() {
+        let (mut found, mut failed) = (0, 0);
+        for (cs, graph, start, end) in refusing_cases() {
+            let got = search(&cs, start, end, &graph);
+            let whole = wave::expand(&cs, &graph, start, end, Connectivity::TwentySix)
+                .ok_or(SearchFailure::NotConnected)
+                .and_then(|w| descend(&w, &candidates, &graph).ok_or(SearchFailure::WalkFailed));
+            assert_eq!(got, whole, "{end:?}");
+            match got {
+                Ok(_) => found += 1,
+                Err(_) => failed += 1,
+            }
+        }
+        assert!(found >= 20 && failed >= 1, "found {found}, failed {failed}");
+    }
 
     #[test]
     fn finds_a_shortest_path_heading_for_the_start() {
