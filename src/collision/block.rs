@@ -59,9 +59,7 @@
 use super::grid::{GridCheck, ARM_BITS, DEPTH_LEVELS};
 use super::{axis_nearest, link_clear_near};
 use crate::cell::Obstacle;
-use crate::geometry::{
-    distance_capsule_aabb, distance_point_aabb, distance_segment_aabb, Aabb, Cylinder, Point,
-};
+use crate::geometry::{closest_param_segment_aabb, distance_point_aabb, Aabb, Cylinder, Point};
 use nalgebra::Vector3;
 
 /// A column is cut into runs of this many nodes before any halving. Longer runs almost never
@@ -184,19 +182,33 @@ pub(super) fn signed_distance_point_aabb(p: &Point, b: &Aabb) -> f64 {
 /// doc, *Blocked*): `s` is the least signed distance of the inner capsule's axis from the box
 /// where the axis stays outside (the segment's distance), else the least of 0 and five samples.
 #[inline]
+#[cfg(test)]
 pub(super) fn blocked_bound(c: &Cylinder, b: &Aabb, m: f64) -> f64 {
+    blocked_bound_at(c, b, m, closest_param_segment_aabb(&c.a, &(c.b - c.a), b))
+}
+
+/// [`blocked_bound`] with `t` the parameter of the point of the whole axis `c.a + t (c.b -
+/// c.a)` nearest the box (`closest_param_segment_aabb`, which the capsule distance found
+/// already). The squared distance from the box along the axis is convex in `t`, so on the
+/// inner capsule's axis, the part `[rho / L, 1 - rho / L]` of it, the nearest point is at `t`
+/// clamped into that range: one point, not a second segment query. Any point of the inner axis
+/// serves for `s` (its distance is at least the least signed distance), so the bound is an
+/// upper bound whatever `t` is; with the nearest `t` it is the segment's distance.
+#[inline]
+pub(super) fn blocked_bound_at(c: &Cylinder, b: &Aabb, m: f64, t: f64) -> f64 {
     let d = c.b - c.a;
     let len = d.norm();
     let r = c.radius.max(0.0);
     let rho = r.min(0.5 * len);
-    let (p, q) = if len > 0.0 {
-        (c.a + d * (rho / len), c.b - d * (rho / len))
+    let (p, q, inner) = if len > 0.0 {
+        let f = rho / len;
+        (c.a + d * f, c.b - d * f, c.a + d * t.max(f).min(1.0 - f))
     } else {
-        (c.a, c.a)
+        (c.a, c.a, c.a)
     };
-    // Outside the box the least signed distance is the segment's distance; a segment that
-    // meets the box has a least signed distance of at most 0 and of at most each sample's.
-    let outside = distance_segment_aabb(&p, &q, b);
+    // Outside the box the least signed distance is the inner axis' distance; an inner axis
+    // that meets the box has a least signed distance of at most 0 and of at most each sample's.
+    let outside = distance_point_aabb(&inner, b);
     let s = if outside > 0.0 {
         outside
     } else {
@@ -273,6 +285,7 @@ impl GridCheck<'_> {
         let h = (v - a.deg[lo]).max(a.deg[hi - 1] - v).to_radians();
         let m = motion(s.reach_mm, h);
         let cyl = s.at(a.mid_sc[mid]);
+        let axis = cyl.b - cyl.a;
         let c = self.model.clearance_mm;
         let mut kept = [0u8; SET];
         let mut nk = 0;
@@ -284,7 +297,10 @@ impl GridCheck<'_> {
                     continue;
                 }
             }
-            let lb = distance_capsule_aabb(&cyl, b);
+            // The capsule distance (`distance_capsule_aabb`'s very operations), keeping the
+            // axis point nearest the box for the blocked bound.
+            let t = closest_param_segment_aabb(&cyl.a, &axis, b);
+            let lb = (distance_point_aabb(&(cyl.a + axis * t), b) - cyl.radius.max(0.0)).max(0.0);
             let free = lb - m - MARGIN_MM;
             if let Some((memo, a2)) = &mut memo {
                 memo[k as usize] = (free, *a2);
@@ -296,7 +312,9 @@ impl GridCheck<'_> {
                 }
                 continue;
             }
-            if lb <= (c - m).max(0.0) && blocked_bound(&cyl, b, m) <= c - MARGIN_MM * (1.0 + c) {
+            if lb <= (c - m).max(0.0)
+                && blocked_bound_at(&cyl, b, m, t) <= c - MARGIN_MM * (1.0 + c)
+            {
                 out[lo..hi].fill(0);
                 return;
             }
