@@ -48,7 +48,10 @@
 //! is within `c - m` of a box is blocked without penetrating it, and the rim ball proves the
 //! cap's rim near a box, which the inner capsule (held `rho` back from the caps) cannot. A
 //! blocked proof changes no code: its nodes are 0, what their node tests would find; it only
-//! spares those tests (on the trunk's 1 deg build about 28 % of the leaves).
+//! spares those tests (on the trunk's 1 deg build about 28 % of the leaves). Runs of up to
+//! `2 LEAF_NODES` nodes try the rim ball too where the inner capsule's bound fails; longer
+//! runs do not (their `m` needs a deep penetration, which the inner capsule mostly shows
+//! already: there the ball cost more than it spared).
 //!
 //! *The tool.* The wrist centre `C` moves at most `m = R[2][C] h` over a run; `f` is a box's
 //! distance from `C` at `q_c` less the tool's radius `R_T`. Where `f - m` is at least `deep_mm`
@@ -360,8 +363,11 @@ impl GridCheck<'_> {
                 }
                 continue;
             }
+            // The rim ball on short runs only (module doc, *Blocked leaves*).
+            let enough = c - MARGIN_MM * (1.0 + c);
             if lb <= (c - m).max(0.0)
-                && blocked_bound_at(&cyl, b, m, t) <= c - MARGIN_MM * (1.0 + c)
+                && (blocked_bound_at(&cyl, b, m, t) <= enough
+                    || (hi - lo <= 2 * LEAF_NODES && rim_ball_bound(&cyl, b, m, t) <= enough))
             {
                 out[lo..hi].fill(0);
                 return;
