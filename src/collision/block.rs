@@ -1,8 +1,8 @@
 //! Block inspection along a grid column (beyond the paper): a run of consecutive nodes
 //! `a3[lo..hi]` of one column is proven free, or blocked, at once by the motion bound of
 //! `proof.rs`, and split in halves only where neither proof holds, down to runs of
-//! [`LEAF_NODES`] nodes, which are inspected node by node (`column.rs`). A column starts as runs
-//! of [`TOP_RUN_NODES`] nodes.
+//! [`LEAF_NODES`] nodes, which are tried for blocked at once (*Blocked leaves* below) and else
+//! inspected node by node (`column.rs`). A column starts as runs of [`TOP_RUN_NODES`] nodes.
 //!
 //! *Motion over a run.* Within a column axes 1 and 2 are fixed, so between the run's middle
 //! angle `q_c` (URDF joint 3; for the arm's runs from the slice's table, *Angles* below, for the
