@@ -4,7 +4,7 @@
 //! accepted by the whole-move proof; a grid built on threads equals a column-by-column fill;
 //! and the blocked bound holds under random motions.
 
-use super::block::{blocked_bound, signed_distance_point_aabb};
+use super::block::{blocked_bound, blocked_bound_at, rim_ball_bound, signed_distance_point_aabb};
 use super::grid::{COLUMN_LEVELS, DEPTH_LEVELS};
 use super::tool_tests::torch;
 use super::*;
@@ -280,7 +280,10 @@ fn each_column_alone(
 
 /// The blocked bound of `block.rs` under random rigid motions of at most `m` per point: the
 /// moved cylinder's exact distance never exceeds `max(0, bound)`; the signed distance is the
-/// distance outside and minus the depth inside.
+/// distance outside and minus the depth inside. The same for the bound from any point of the
+/// axis (`blocked_bound_at` with a random `t`: its inner axis point is still one), and for the
+/// ball at a cap's rim (`rim_ball_bound`, for either cap), which must be better than the inner
+/// capsule's in some cases (a cap's rim towards the box).
 #[test]
 fn the_blocked_bound_holds_under_bounded_motions() {
     let mut rng = Rng(0xB10C_0004_0000_0001);
@@ -300,7 +303,7 @@ fn the_blocked_bound_holds_under_bounded_motions() {
         signed_distance_point_aabb(&Point3::new(-100.0, 0.0, 100.0), &b),
         0.0
     );
-    let mut tight = 0;
+    let (mut tight, mut rim_better) = (0, 0);
     for _ in 0..3000 {
         let cyl = Cylinder {
             a: rng.point(-400.0, 400.0),
@@ -338,8 +341,19 @@ fn the_blocked_bound_holds_under_bounded_motions() {
         if d > 0.0 && d > bound - 5.0 {
             tight += 1;
         }
+        let t = rng.range(0.0, 1.0);
+        let at = blocked_bound_at(&cyl, &b, m, t);
+        assert!(d <= at.max(0.0) + 1e-6, "{cyl:?} m {m} t {t}: {d} > {at}");
+        let rim = rim_ball_bound(&cyl, &b, m, t);
+        assert!(
+            d <= rim.max(0.0) + 1e-6,
+            "{cyl:?} m {m} t {t}: {d} > rim {rim}"
+        );
+        if rim < bound.min(at) - 1.0 {
+            rim_better += 1;
+        }
     }
-    assert!(tight > 40, "{tight}");
+    assert!(tight > 40 && rim_better > 100, "{tight} {rim_better}");
 }
 
 /// The slice-wise build (link 1's checks once per slice of axis 1) against the node test at

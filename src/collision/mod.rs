@@ -1138,21 +1138,44 @@ pub(super) fn link_clear_near(
             }
         }
         // Segment shortened by s at both ends, radius sqrt(r^2 + s^2): contains the cylinder.
-        for k in [1.0, 2.5, 6.0] {
-            let s = (k * r).min(0.5 * len);
-            // sqrt(r^2 + s^2) raised over its rounding (`hypot` costs about ten times more).
-            let radius = (r * r + s * s).sqrt() * (1.0 + 1e-15);
-            let lb = distance_segment_aabb(&(c.a + u * s), &(c.b - u * s), b) - radius;
-            if lb > clearance {
-                return true;
-            }
+        // The first shortening settles most clear cylinders; where it does not, the
+        // projections come before the two longer ones: in the grid build they settle nearly
+        // all of what is left (most of it within the clearance, which no lower bound can show)
+        // for less than the two segment queries.
+        if shortened_clear(c, b, clearance, &u, len, r, 1.0) {
+            return true;
+        }
+        if let Some(clear) = crate::geometry::clear_by_projection(c, b, clearance) {
+            return clear;
+        }
+        if shortened_clear(c, b, clearance, &u, len, r, 2.5)
+            || shortened_clear(c, b, clearance, &u, len, r, 6.0)
+        {
+            return true;
         }
     }
-    if let Some(clear) = crate::geometry::clear_by_projection(c, b, clearance) {
-        return clear;
-    }
-    // What the projections left open (a distance within their slack of the clearance): GJK.
+    // What the projections left open (a distance within their slack of the clearance, or no
+    // radius or length to project onto): GJK.
     distance_cylinder_aabb_exact(c, b) > clearance
+}
+
+/// Whether the capsule about `c`'s axis shortened by `s = min(k r, len / 2)` at both ends, of
+/// radius `sqrt(r^2 + s^2)` (it contains the cylinder), keeps more than `clearance` from the
+/// box (`u` the unit axis, `len` its length, `r > 0` the radius).
+#[inline]
+fn shortened_clear(
+    c: &Cylinder,
+    b: &Aabb,
+    clearance: f64,
+    u: &Vector3<f64>,
+    len: f64,
+    r: f64,
+    k: f64,
+) -> bool {
+    let s = (k * r).min(0.5 * len);
+    // sqrt(r^2 + s^2) raised over its rounding (`hypot` costs about ten times more).
+    let radius = (r * r + s * s).sqrt() * (1.0 + 1e-15);
+    distance_segment_aabb(&(c.a + u * s), &(c.b - u * s), b) - radius > clearance
 }
 
 /// The place stage's question: why a pose (an IK solution, or a point given as joints) cannot be
