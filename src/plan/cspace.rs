@@ -221,6 +221,10 @@ pub struct RowBits {
     pub plain: Vec<u64>,
 }
 
+/// The chunks of rows a row bit set is made in ([`CSpace::row_bits`]), handed to the cores one
+/// at a time.
+const ROW_BITS_CHUNKS: usize = 16;
+
 /// The row bit sets made so far, one per set of code bits asked for; a copy of the grid starts
 /// with none.
 #[derive(Debug, Default)]
@@ -373,11 +377,12 @@ impl CSpace {
         r
     }
 
+    /// [`row_bits`](Self::row_bits)' set, made in [`ROW_BITS_CHUNKS`] chunks of rows on all
+    /// cores: the first wave of a route waits for it.
     fn make_row_bits(&self, bits: u8) -> RowBits {
         let d2 = self.grid.dims[2];
         let words = d2.div_ceil(64);
         let rows = self.grid.dims[0] * self.grid.dims[1];
-        let mut plain = vec![0u64; rows * words];
         const HIGH: u64 = 0x8080_8080_8080_8080;
         const LOW7: u64 = 0x7f7f_7f7f_7f7f_7f7f;
         // Each byte's high bit, gathered into the top byte (bit 7 of byte k to bit 56 + k).
@@ -385,24 +390,36 @@ impl CSpace {
         const _: () = assert!(FREE == 0x80, "the free bit is each byte's high bit");
         let spread = u64::from_ne_bytes([bits; 8]);
         let top = |x: u64| ((x >> 7) & 0x0101_0101_0101_0101).wrapping_mul(GATHER) >> 56;
-        if d2 == 0 {
-            return RowBits { words, plain };
+        if d2 == 0 || rows == 0 {
+            return RowBits {
+                words,
+                plain: vec![0u64; rows * words],
+            };
         }
-        for (r, codes) in self.code.chunks_exact(d2).enumerate() {
-            for (j, chunk) in codes.chunks(64).enumerate() {
-                let mut p = 0u64;
-                for (k, eight) in chunk.chunks(8).enumerate() {
-                    let mut b = [0u8; 8];
-                    b[..eight.len()].copy_from_slice(eight);
-                    let x = u64::from_le_bytes(b);
-                    let hit = x & spread;
-                    // The high bit of each byte of `hit` that is not zero.
-                    let any = ((hit & LOW7).wrapping_add(LOW7) | hit) & HIGH;
-                    p |= top(x & HIGH & !any) << (8 * k);
+        // Rows in chunks on all cores (each word depends on its row's codes alone), put
+        // together in order.
+        let chunk = rows.div_ceil(ROW_BITS_CHUNKS);
+        let codes: Vec<&[u8]> = self.code.chunks(chunk * d2).collect();
+        let parts = crate::parallel::map(&codes, |codes| {
+            let mut plain = Vec::with_capacity(codes.len() / d2 * words);
+            for row in codes.chunks_exact(d2) {
+                for sixty_four in row.chunks(64) {
+                    let mut p = 0u64;
+                    for (k, eight) in sixty_four.chunks(8).enumerate() {
+                        let mut b = [0u8; 8];
+                        b[..eight.len()].copy_from_slice(eight);
+                        let x = u64::from_le_bytes(b);
+                        let hit = x & spread;
+                        // The high bit of each byte of `hit` that is not zero.
+                        let any = ((hit & LOW7).wrapping_add(LOW7) | hit) & HIGH;
+                        p |= top(x & HIGH & !any) << (8 * k);
+                    }
+                    plain.push(p);
                 }
-                plain[r * words + j] = p;
             }
-        }
+            plain
+        });
+        let plain = parts.concat();
         RowBits { words, plain }
     }
 }
