@@ -5,11 +5,9 @@
 //! inspected node by node (`column.rs`). A column starts as runs of [`TOP_RUN_NODES`] nodes.
 //!
 //! *Motion over a run.* Within a column axes 1 and 2 are fixed, so between the run's middle
-//! angle `q_c` (URDF joint 3; for the arm's runs from the slice's table, *Angles* below, for the
-//! tool's the middle of its first and last node's values) and any of its nodes only joint 3
-//! moves, by at most `h` (the most any node lies from `q_c`; half the run's range for the
-//! tool's): no point of a part with
-//! reach `R[2][P]` moves more than `M = R[2][P] h` (raised by 1e-9 relative and 1e-9 mm over its
+//! angle `q_c` (URDF joint 3, from the slice's table, *Angles* below, for the arm's runs and
+//! the tool's alike) and any of its nodes only joint 3 moves, by at most `h` (the most any
+//! node lies from `q_c`): no point of a part with reach `R[2][P]` moves more than `M = R[2][P] h` (raised by 1e-9 relative and 1e-9 mm over its
 //! float value, as in `grid.rs`). The runs need the column's values in ascending order (the
 //! grid's are); a column that is not is inspected node by node.
 //!
@@ -100,12 +98,6 @@ const TOOL_BITS: u8 = 0x78;
 /// A point of link 3 (or an end of a cylinder's axis) split about joint 3's axis, cell frame:
 /// `p(q) = par + cos q perp + sin q cross` after a joint-3 rotation `q`.
 pub(super) type Split = (Point, Vector3<f64>, Vector3<f64>);
-
-#[inline]
-fn at(s: &Split, q: f64) -> Point {
-    let (sn, co) = q.sin_cos();
-    turned(s, sn, co)
-}
 
 /// `p(q)` of a split point from `sin q` and `cos q`.
 #[inline]
@@ -483,24 +475,29 @@ impl GridCheck<'_> {
     /// `t.boxes`): a run whose boxes are all far is left as it is (tool far, depth `K`);
     /// else its halves, else node by node. Each node's tool bits only get nearer and
     /// shallower (the boxes come in chunks: the near bit is the OR, the depth the least).
-    #[allow(clippy::too_many_arguments)]
+    /// The centre's split is for axis 3's values (`column.rs`): the run's middle and its
+    /// nodes read their sines and cosines from `a` (*Angles*).
     pub(super) fn tool_run(
         &self,
         t: &Centre<'_>,
-        a3: &[f64],
+        a: &Angles,
         out: &mut [u8],
         lo: usize,
         hi: usize,
         set: &[u8],
-        q3_of: &impl Fn(f64) -> f64,
     ) {
         if set.is_empty() || out[lo..hi].iter().all(|&f| f == 0) {
             return;
         }
         if hi - lo > LEAF_NODES {
-            let (q0, q1) = (q3_of(a3[lo]), q3_of(a3[hi - 1]));
-            let m = motion(t.reach_mm, 0.5 * (q1 - q0).abs());
-            let centre = at(&t.split, 0.5 * (q0 + q1));
+            // The middle value and the most any node of the run lies from it (joint 3 moves by
+            // the same angle as axis 3 within a column).
+            let mid = lo + hi - 1;
+            let v = a.mid_deg[mid];
+            let h = (v - a.deg[lo]).max(a.deg[hi - 1] - v).to_radians();
+            let m = motion(t.reach_mm, h);
+            let (sn, co) = a.mid_sc[mid];
+            let centre = turned(&t.split, sn, co);
             let c = self.model.clearance_mm;
             let mut kept = [0u8; SET];
             let mut nk = 0;
@@ -531,32 +528,30 @@ impl GridCheck<'_> {
             }
             if nk > 0 {
                 let mid = lo + (hi - lo) / 2;
-                self.tool_run(t, a3, out, lo, mid, &kept[..nk], q3_of);
-                self.tool_run(t, a3, out, mid, hi, &kept[..nk], q3_of);
+                self.tool_run(t, a, out, lo, mid, &kept[..nk]);
+                self.tool_run(t, a, out, mid, hi, &kept[..nk]);
             }
             return;
         }
-        self.tool_nodes(t, a3, out, lo, hi, set, q3_of);
+        self.tool_nodes(t, a, out, lo, hi, set);
     }
 
     /// The tool's bits of the free nodes `lo..hi`, node by node, for the boxes `set`.
-    #[allow(clippy::too_many_arguments)]
     pub(super) fn tool_nodes(
         &self,
         t: &Centre<'_>,
-        a3: &[f64],
+        a: &Angles,
         out: &mut [u8],
         lo: usize,
         hi: usize,
         set: &[u8],
-        q3_of: &impl Fn(f64) -> f64,
     ) {
         let clearance = self.model.clearance_mm;
-        for (f, &a3) in out[lo..hi].iter_mut().zip(&a3[lo..hi]) {
+        for (f, &(sn, co)) in out[lo..hi].iter_mut().zip(&a.sc[lo..hi]) {
             if *f == 0 {
                 continue;
             }
-            let centre = at(&t.split, q3_of(a3));
+            let centre = turned(&t.split, sn, co);
             let d = set
                 .iter()
                 .map(|&k| distance_point_aabb(&centre, t.boxes[k as usize]))

@@ -7,8 +7,9 @@
 //! depend on axis 3 once per column (the range of axes 1 and 2, link 2 placed from link 1's
 //! pose and checked, the frame of joint 3), and boxes the links moved by axis 3 cannot come near
 //! are culled. Joint 3 is axis 3 plus an angle set by axis 2 (the coupling), so the column turns
-//! the cylinders' split ends by that angle once and every node and run reads its axis-3 value's
-//! sine and cosine from the table: no `sin_cos` per node or run. Axis 3's range and the coupled
+//! the cylinders' split ends, and the tool's wrist centre's, by that angle once and every node
+//! and run reads its axis-3 value's sine and cosine from the table: no `sin_cos` per node or
+//! run, and no pose per column beyond link 2's (the tool's bits, too, from link 2's pose). Axis 3's range and the coupled
 //! one hold on one run of the column's ascending values, found by two bisections (node by node
 //! where the values are not ascending). The rest goes by runs of the column (`block.rs`, beyond
 //! the paper), 32 nodes to start with: a run whose motion bound proves it free (with the run's
@@ -25,7 +26,7 @@
 //! measurement would have dropped it too (clear, depth `K`), so every code and column byte is
 //! the column's alone (`block_tests.rs`), whatever order the columns come in.
 
-use super::block::{motion, Angles, Centre, Swept, MARGIN_MM, SET, TOP_RUN_NODES};
+use super::block::{motion, Angles, Centre, Split, Swept, MARGIN_MM, SET, TOP_RUN_NODES};
 use super::grid::{GridCheck, ARM_BITS, COLUMN_LEVELS, DEPTH_LEVELS};
 use super::proof::tight_lower_bound;
 use super::{link_clear_of_box, CylData};
@@ -345,46 +346,29 @@ impl GridCheck<'_> {
                 }
             }
         }
-        if model.tool.is_some() {
-            // The tool's bits from joint 3's frame as link 2's isometry places it.
-            let poses = model.cell_link_poses(&[a1_deg, a2_deg, 0.0]);
-            let j3 = poses[1] * model.robot.joints[2].origin;
-            let origin = Point::from(j3.translation.vector);
-            let q3_of = |a3: f64| {
-                model
-                    .robot
-                    .urdf_joints_deg(&[a1_deg, a2_deg, a3, 0.0, 0.0, 0.0])[2]
-                    .to_radians()
-            };
-            self.tool_codes(a3_deg, out, &origin, &j3, runs, &q3_of);
+        if let Some([par, perp, cross]) = self.centre3 {
+            // The wrist centre split as the cylinders' ends are: from link 2's pose, the
+            // coupling folded in, so the nodes read the slice's sines and cosines.
+            let (perp, cross) = (pose2.vector(&perp), pose2.vector(&cross));
+            let split = (
+                pose2.point(&Point::from(par)),
+                perp * ct + cross * st,
+                cross * ct - perp * st,
+            );
+            self.tool_codes(ang, out, &origin, split, runs);
         }
     }
 
     /// The tool's bits of the column's free nodes (`grid.rs`): the wrist centre `C` (a point of
-    /// link 3, split about joint 3's axis as the cylinders' ends are), its distance to the
-    /// boxes less the tool's radius `R_T`, and from it the near bit and the tool's depth; by
-    /// runs where `runs` (`block.rs`), else node by node.
-    fn tool_codes(
-        &self,
-        a3_deg: &[f64],
-        out: &mut [u8],
-        origin: &Point,
-        j3: &nalgebra::Isometry3<f64>,
-        runs: bool,
-        q3_of: &impl Fn(f64) -> f64,
-    ) {
+    /// link 3, `split` about joint 3's axis for axis 3's values as the cylinders' ends are,
+    /// joint 3's origin at `origin`), its distance to the boxes less the tool's radius `R_T`,
+    /// and from it the near bit and the tool's depth; by runs where `runs` (`block.rs`), else
+    /// node by node. The nodes' sines and cosines are the slice's (`ang`).
+    fn tool_codes(&self, ang: &Angles, out: &mut [u8], origin: &Point, split: Split, runs: bool) {
         let model = self.model;
         let Some(tool) = &model.tool else {
             return;
         };
-        let u = model.robot.joints[2].axis.into_inner();
-        let par = u * u.dot(&tool.centre);
-        let perp = tool.centre - par;
-        let split = (
-            origin + j3.rotation * par,
-            j3.rotation * perp,
-            j3.rotation * u.cross(&perp),
-        );
         // Every free node starts with the tool far and deep; the boxes make it nearer.
         for f in out.iter_mut().filter(|f| **f != 0) {
             *f = Self::code(false, DEPTH_LEVELS, *f & ARM_BITS);
@@ -393,7 +377,7 @@ impl GridCheck<'_> {
         // radius, the clearance and one step's motion never matter.
         let r_t = tool.radius_mm;
         let deep = self.deep_mm(self.centre_span);
-        let sweep = par.norm() + perp.norm();
+        let sweep = self.centre_sweep;
         let n = out.len();
         for chunk in model.obstacles.chunks(CULL_CHUNK) {
             let mut boxes: [&Aabb; CULL_CHUNK] = [&chunk[0].aabb; CULL_CHUNK];
@@ -414,10 +398,10 @@ impl GridCheck<'_> {
             };
             if runs {
                 for (lo, hi) in top_runs(n) {
-                    self.tool_run(&centre, a3_deg, out, lo, hi, &set[..nk], q3_of);
+                    self.tool_run(&centre, ang, out, lo, hi, &set[..nk]);
                 }
             } else {
-                self.tool_nodes(&centre, a3_deg, out, 0, n, &set[..nk], q3_of);
+                self.tool_nodes(&centre, ang, out, 0, n, &set[..nk]);
             }
         }
     }

@@ -100,6 +100,11 @@ pub struct GridCheck<'a> {
     /// most any of its points moves per radian of axis 2 with axes 1 and 3 fixed, mm.
     pub(super) joint3: (Point3<f64>, Vector3<f64>),
     pub(super) split3: Vec<(usize, EndsSplit, f64)>,
+    /// With a tool: its wrist centre `C` (`parts.rs`, a point of link 3) split about joint 3's
+    /// axis in link 2's frame as `split3`'s ends are, and how far `C` can lie from joint 3's
+    /// origin (the parallel part's length plus the turning part's), mm.
+    pub(super) centre3: Option<[Vector3<f64>; 3]>,
+    pub(super) centre_sweep: f64,
     /// The first slice's axis-3 angles, for every slice with the same values (the grid's).
     pub(super) angles: OnceLock<Angles>,
 }
@@ -206,6 +211,20 @@ impl<'a> GridCheck<'a> {
             })
             .collect();
         let need_tool = std::array::from_fn(|o| need(DEPTH_LEVELS, centre[o], centre_span));
+        let u3 = model.robot.joints[2].axis.into_inner();
+        let centre_parts = model.tool.as_ref().map(|t| {
+            let par = u3 * u3.dot(&t.centre);
+            let perp = t.centre - par;
+            (par, perp, u3.cross(&perp))
+        });
+        let centre3 = centre_parts.map(|(par, perp, cross)| {
+            [
+                (j3 * Point3::from(par)).coords,
+                j3.rotation * perp,
+                j3.rotation * cross,
+            ]
+        });
+        let centre_sweep = centre_parts.map_or(0.0, |(par, perp, _)| par.norm() + perp.norm());
         GridCheck {
             model,
             fixed,
@@ -221,6 +240,8 @@ impl<'a> GridCheck<'a> {
                 j3.rotation * model.robot.joints[2].axis.into_inner(),
             ),
             split3,
+            centre3,
+            centre_sweep,
             angles: OnceLock::new(),
         }
     }
