@@ -122,8 +122,8 @@ impl WristSchedule {
 }
 
 /// What a leg has learned about its tool at the grid's nodes, shared by every wave and walk of
-/// the leg (two waves run at once in the extensile search, and the eager wave follows the
-/// optimistic one): per node 0 (not looked at yet), [`TOOL_CLEAR`] or [`TOOL_BLOCKED`]. Empty
+/// the leg (the extensile search's two walks back run at once, as do the eager search's two
+/// whole waves, and the eager waves follow the optimistic ones): per node 0 (not looked at yet), [`TOOL_CLEAR`] or [`TOOL_BLOCKED`]. Empty
 /// without a tool (then no node needs a look). Filled in any order, by any thread: the answer
 /// at a node is a pure function of the node and the leg, so a race only repeats the work.
 /// Beside it, made on the first spread ([`LegGraph::spread_clear`]), the neighbour offsets with

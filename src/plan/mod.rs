@@ -535,11 +535,11 @@ const LEGS_EXTRA_MAX_BYTES: usize = 64 << 20;
 /// How many legs [`route`] plans at once: [`LEGS_AT_ONCE_MAX`] where the legs beside the first
 /// hold at most [`LEGS_EXTRA_MAX_BYTES`], else one (leg by leg, the memory of one leg as
 /// ever). A leg in hand holds, per grid node, at most: its two waves' labels (2 bytes each,
-/// `u16`, for a node-by-node wave; the row wave's residues take 2 bits, and the two numbered
-/// together from both ends hold 4 planes of 2 bits while they gather the shortest paths'
-/// nodes), their bit sets (the decided nodes and the candidates, with the rows' words rounded
-/// up: up to 4 bits a node a wave) and its tool memo (1 byte with a tool, `leg::ToolMemo`): 6
-/// bytes a node with a tool, 5 without. Over the IRB 1400's ranges at 1 deg (341 x 141 x 136 = 6.5 M nodes) that is 39 MB
+/// `u16`, for a node-by-node wave; the row wave's residues take 2 bits, and the two waves
+/// numbered together from both ends hold four sets of 2-bit residues while they gather the
+/// shortest paths' nodes), their bit sets (the decided nodes and the candidates, with the
+/// rows' words rounded up: up to 4 bits a node a wave) and its tool memo (1 byte with a tool,
+/// `leg::ToolMemo`): 6 bytes a node with a tool, 5 without. Over the IRB 1400's ranges at 1 deg (341 x 141 x 136 = 6.5 M nodes) that is 39 MB
 /// with a tool: two legs at once; at 0.5 deg (681 x 281 x 271 = 52 M nodes) 311 MB: leg by leg,
 /// as on any grid of more than 11.2 M nodes (13.4 M without a tool). A wave whose numbers
 /// outgrow `u16` takes `u32` labels, twice the bytes, but only at more than 65 533 steps from

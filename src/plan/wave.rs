@@ -539,6 +539,8 @@ struct RowWave<'a, G: Graph + ?Sized, const K: usize> {
     next_front: Vec<(usize, u64)>,
     /// The number of the last level numbered (below `MAX_NODES`, a `u32`).
     level: u32,
+    /// The end was numbered ([`Level::End`]).
+    ended: bool,
 }
 
 impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
@@ -582,6 +584,7 @@ impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
             front: vec![(r0 * words + j0, 1 << b0)],
             next_front: Vec::new(),
             level: 1,
+            ended: false,
         }
     }
 
@@ -593,8 +596,10 @@ impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
     }
 
     /// Numbers the next level: the front's neighbours not decided yet, looked at by ascending
-    /// row, numbered when usable; they become the front.
+    /// row, numbered when usable; they become the front. After [`Level::End`] the wave is left
+    /// mid-level (its gathered words not cleared): it must not be asked for another.
     fn next_level(&mut self) -> Level {
+        debug_assert!(!self.ended, "a row wave asked for a level past its end");
         let (Some(&(first, _)), Some(&(last, _))) = (self.front.first(), self.front.last()) else {
             return Level::Exhausted;
         };
@@ -658,6 +663,7 @@ impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
         });
         self.level = next;
         if ended {
+            self.ended = true;
             return Level::End;
         }
         // Ascending: a group's scan starts below the rows of the group before only on rows
@@ -812,10 +818,12 @@ impl<const K: usize> Reach<K> {
 /// Why the corridor is enough, with `d_s` and `d_e` a node's distances in steps from `start`
 /// and from `end`, and `D` the ends' distance: a walk back from the end over the wave from the
 /// start ([`descend`](crate::plan::search::descend)) only ever steps to a neighbour numbered
-/// one less, over a step of the graph. The end has `d_s + d_e = D`; if a walked node `x` has
-/// it and `d_s(x) = l`, a neighbour `m` it steps to has `d_s(m) = l - 1` and
-/// `d_e(m) <= d_e(x) + 1 = D - d_s(m)`, so `d_s(m) + d_e(m) <= D`, which the triangle
-/// inequality makes `= D`. So
+/// one less. Every step between usable neighbours is a step of these waves (the graph's
+/// [`Graph::wave_steps_all`], which `expand_both` asks), so distances differ by at most one
+/// between neighbours. The end has `d_s + d_e = D`; if a walked node `x` has it and
+/// `d_s(x) = l`, any neighbour `m` numbered `l - 1` (whether or not the graph accepts the
+/// step to it) has `d_e(m) <= d_e(x) + 1 = D - d_s(m)`, so `d_s(m) + d_e(m) <= D`, which the
+/// triangle inequality makes `= D`. So
 /// every node the walk stands on, and every neighbour it may step to, lies on the corridor; a
 /// wave that numbers exactly the corridor, each node with its `d_s`, offers the walk the same
 /// choices: the neighbours numbered one less are the same nodes, in the same order (the
@@ -823,7 +831,7 @@ impl<const K: usize> Reach<K> {
 /// read. The same holds the other way round.
 ///
 /// How: two row waves ([`RowWave`]), each numbering whole levels, the one with the smaller
-/// front next, until a level of one meets nodes the other numbered. When the wave from the
+/// front (fewer row words) next, until a level of one meets nodes the other numbered. When the wave from the
 /// start numbers its level `a` (distance) and meets the other's levels up to `b`, `D = a + b`
 /// and the nodes met are the corridor's nodes at `d_s = a`, `d_e = b`: before that level no
 /// node had `d_s < a` and `d_e <= b`, so a shortest path's node at `d_s = a - 1` had `d_e >
@@ -858,7 +866,9 @@ fn corridor_rows<G: Graph + ?Sized, const K: usize>(
         };
         match side.next_level() {
             Level::Numbered => {}
-            Level::End | Level::Exhausted => return None,
+            Level::Exhausted => return None,
+            // Neither wave has an end to stop at.
+            Level::End => unreachable!("a wave without an end numbered its end"),
         }
         let met: Vec<(usize, u64)> = side
             .front
@@ -874,7 +884,10 @@ fn corridor_rows<G: Graph + ?Sized, const K: usize>(
     let n = from_start.level + from_end.level - 1;
     // The labels, in fresh planes: each wave's half of the corridor, gathered back down it from
     // the nodes met, a level at a time. A node numbered `k` by one wave is numbered `n + 1 - k`
-    // by the other.
+    // by the other. The decided sets are not needed any more.
+    for wave in [&mut from_start, &mut from_end] {
+        wave.decided = Vec::new();
+    }
     let words = from_start.reach.words;
     let (mut ls, mut le) = (
         vec![0u64; from_start.planes.len()],
@@ -910,6 +923,8 @@ fn corridor_rows<G: Graph + ?Sized, const K: usize>(
                 }
                 false
             });
+            // Ascending, as the drain's bounds need (it takes the rows in order).
+            debug_assert!(down.windows(2).all(|p| p[0].0 < p[1].0));
             here = down;
             k -= 1;
         }
@@ -1154,13 +1169,7 @@ mod tests {
     /// (`Some(0)`) numbers refused nodes, and the same check catches it.
     #[test]
     fn row_wave_from_the_row_bits_numbers_like_the_look_at_every_node() {
-        fn hash(n: Node, salt: u32) -> u32 {
-            let h = (n[0] as u32).wrapping_mul(73_856_093)
-                ^ (n[1] as u32).wrapping_mul(19_349_663)
-                ^ (n[2] as u32).wrapping_mul(83_492_791)
-                ^ salt.wrapping_mul(2_246_822_519);
-            h.wrapping_mul(2_654_435_761) >> 5
-        }
+        use crate::plan::search::testing::hash;
         struct Codes;
         impl crate::plan::cspace::Inspector for Codes {
             fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], code: &mut [u8], _: &mut [u8]) {
@@ -1397,93 +1406,165 @@ mod tests {
         out
     }
 
-    /// Scattered free nodes and usable ones; a graph whose wave counts every step between
-    /// usable nodes and that refuses some of them when walked (`refuse`), as a leg's optimistic
-    /// wave does.
-    struct Scatter {
-        salt: u32,
-        refuse: bool,
-    }
-
-    fn scatter_hash(n: Node, salt: u32) -> u32 {
-        let h = (n[0] as u32).wrapping_mul(73_856_093)
-            ^ (n[1] as u32).wrapping_mul(19_349_663)
-            ^ (n[2] as u32).wrapping_mul(83_492_791)
-            ^ salt.wrapping_mul(2_246_822_519);
-        h.wrapping_mul(2_654_435_761) >> 5
-    }
-
-    impl Graph for Scatter {
-        fn node_ok(&self, n: Node) -> bool {
-            scatter_hash(n, self.salt) % 6 != 0
-        }
-        fn step_ok(&self, a: Node, b: Node) -> bool {
-            let (lo, hi) = if a < b { (a, b) } else { (b, a) };
-            let key = [lo[0] * 3 + hi[0], lo[1] * 5 + hi[1], lo[2] * 7 + hi[2]];
-            !self.refuse || scatter_hash(key, self.salt + 7) % 4 != 0
-        }
-        fn wave_steps_all(&self) -> bool {
-            true
-        }
-    }
-
-    /// The two waves numbered together (`expand_both`) number exactly the nodes on shortest
-    /// paths between the ends (distance from the start plus distance from the end equal to the
-    /// ends' distance, by two plain breadth-first counts), each with its distance from its own
-    /// start, over rows of one, two and three words; a walk back over either takes the same
-    /// steps as over the whole wave, also where the graph refuses steps and the walk backs up.
+    /// The two waves numbered together (`expand_both`, and `expand_corridor`'s one) hold
+    /// exactly the nodes on shortest paths between the ends (distance from the start plus
+    /// distance from the end equal to the ends' distance, by two plain breadth-first counts),
+    /// each with the residue code of its distance from its own start, read straight from the
+    /// planes (no other bit set anywhere); they exist exactly when the whole waves do; a walk
+    /// back over either (extensile's and neighboring's candidates) takes the same steps as over
+    /// the whole wave, and the extensile search equals its reference on whole waves. On thin and
+    /// flat grids, rows of 1 to 11 words (every `K`, partial last words), scattered blocked
+    /// and refused nodes and refused steps, from random starts to themselves, a neighbour, any
+    /// node and any usable node.
     #[test]
-    fn both_waves_number_the_shortest_paths_and_walk_like_the_whole_waves() {
-        use crate::plan::search::{descend, extensile::candidates};
-        let mut walks = 0;
-        for (z, salt) in [(20usize, 1u32), (70, 2), (150, 3)] {
-            let g = Grid::over([[0.0, 15.0], [0.0, 13.0], [0.0, z as f64 - 1.0]], 1.0);
-            let cs = CSpace::from_fn(g, |n| scatter_hash(n, salt + 100) % 4 != 0);
-            for refuse in [false, true] {
-                let graph = Scatter { salt, refuse };
-                let usable = |n: Node| cs.is_free(n) && graph.node_ok(n);
-                let start = (0..g.len())
-                    .map(|i| g.node(i))
-                    .find(|&n| usable(n))
-                    .expect("a start");
-                let ds = bfs(&g, start, usable);
-                let (far, mid) = far_and_middle(&ds);
-                for end in [g.node(far), g.node(mid)] {
-                    let what = format!("rows of {z}, refuse {refuse}, {start:?} -> {end:?}");
-                    let de = bfs(&g, end, usable);
-                    let n = ds[g.index(end)];
-                    assert!(n > 6, "too near to test: {what}");
-                    let whole = |a, b| expand(&cs, &graph, a, b, Connectivity::TwentySix);
-                    let (there, back) = (whole(start, end), whole(end, start));
-                    let (there, back) = (there.expect("joined"), back.expect("joined"));
-                    let (fs, fe) = expand_both(&cs, &graph, start, end);
-                    let (fs, fe) = (fs.expect("joined"), fe.expect("joined"));
-                    for (w, from, to, whole) in [(&fs, &ds, &de, &there), (&fe, &de, &ds, &back)] {
-                        assert!(matches!(w.labels, Labels::Residues { .. }), "{what}");
-                        assert_eq!(w.n(), n, "{what}");
-                        assert_eq!((w.start, w.end), (whole.start, whole.end), "{what}");
-                        let labels = numbers(w);
-                        let mut corridor = 0;
-                        for i in 0..g.len() {
-                            // Numbers are distances plus one: on a shortest path when
-                            // (from - 1) + (to - 1) = n - 1.
-                            let on = from[i] > 0 && to[i] > 0 && from[i] + to[i] == n + 1;
-                            corridor += usize::from(on);
-                            let want = if on { from[i] } else { 0 };
-                            assert_eq!(labels[i], want, "{:?}: {what}", g.node(i));
+    fn both_waves_hold_the_shortest_paths_and_walk_like_the_whole_waves() {
+        use crate::plan::search::testing::{hash, Refusing};
+        use crate::plan::search::{descend, extensile, neighboring, Candidates, SearchFailure};
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed as usize
+        };
+        let shapes: [[usize; 3]; 20] = [
+            [1, 1, 1],
+            [1, 1, 2],
+            [1, 1, 70],
+            [1, 1, 700],
+            [40, 1, 1],
+            [1, 40, 1],
+            [2, 1, 1],
+            [3, 3, 700],
+            [2, 2, 257],
+            [2, 3, 576],
+            [3, 2, 384],
+            [4, 3, 64],
+            [5, 4, 128],
+            [6, 5, 65],
+            [9, 7, 3],
+            [12, 11, 130],
+            [8, 8, 200],
+            [1, 30, 30],
+            [30, 30, 1],
+            [3, 40, 63],
+        ];
+        let (mut joined, mut corridor_nodes, mut walks) = (0, 0, 0);
+        for round in 0..6u32 {
+            for [a, b, c] in shapes {
+                let g = Grid::over(
+                    [
+                        [0.0, (a - 1) as f64],
+                        [0.0, (b - 1) as f64],
+                        [0.0, (c - 1) as f64],
+                    ],
+                    1.0,
+                );
+                let density = [0, 2, 3, 4][round as usize % 4];
+                let salt = round * 31 + (a * 7 + b * 13 + c) as u32;
+                let cs =
+                    CSpace::from_fn(g, |n| density == 0 || hash(n, salt + 100) % 10 >= density);
+                for steps in [false, true] {
+                    let graph = Refusing {
+                        salt,
+                        every: 6,
+                        steps,
+                    };
+                    let usable = |n: Node| cs.is_free(n) && graph.node_ok(n);
+                    let us: Vec<usize> = (0..g.len()).filter(|&i| usable(g.node(i))).collect();
+                    if us.is_empty() {
+                        continue;
+                    }
+                    for t in 0..8 {
+                        let start = g.node(us[next() % us.len()]);
+                        let end = match t {
+                            0 => start,
+                            1 => {
+                                let o = offsets(Connectivity::TwentySix)[next() % 26];
+                                let m = [start[0] + o[0], start[1] + o[1], start[2] + o[2]];
+                                if !g.contains(m) {
+                                    continue;
+                                }
+                                m
+                            }
+                            2 => g.node(next() % g.len()),
+                            _ => g.node(us[next() % us.len()]),
+                        };
+                        let what = format!("{:?} {density} {steps} {start:?} -> {end:?}", g.dims);
+                        let whole = |a, b| expand(&cs, &graph, a, b, Connectivity::TwentySix);
+                        let (there, back) = (whole(start, end), whole(end, start));
+                        let (fs, fe) = expand_both(&cs, &graph, start, end);
+                        let fc = expand_corridor(&cs, &graph, start, end);
+                        assert_eq!(there.is_some(), fs.is_some(), "{what}");
+                        assert_eq!(back.is_some(), fe.is_some(), "{what}");
+                        assert_eq!(there.is_some(), fc.is_some(), "{what}");
+                        let (Some(there), Some(back), Some(fs), Some(fe), Some(fc)) =
+                            (there, back, fs, fe, fc)
+                        else {
+                            continue;
+                        };
+                        joined += 1;
+                        let (ds, de) = (bfs(&g, start, usable), bfs(&g, end, usable));
+                        let n = ds[g.index(end)];
+                        let on = |i: usize| ds[i] > 0 && de[i] > 0 && ds[i] + de[i] == n + 1;
+                        let corridor = (0..g.len()).filter(|&i| on(i)).count();
+                        corridor_nodes += corridor;
+                        for (w, from, whole) in
+                            [(&fs, &ds, &there), (&fe, &de, &back), (&fc, &ds, &there)]
+                        {
+                            assert_eq!((w.n(), whole.n()), (n, n), "{what}");
+                            assert_eq!((w.start, w.end), (whole.start, whole.end), "{what}");
+                            let Labels::Residues { planes, words } = &w.labels else {
+                                panic!("not a row wave: {what}");
+                            };
+                            for (i, &d) in from.iter().enumerate() {
+                                let want = if on(i) { residue_code(d) } else { 0 };
+                                let [x, y, z] = g.node(i);
+                                let word =
+                                    (x as usize * g.dims[1] + y as usize) * words + z as usize / 64;
+                                let bit = z as usize % 64;
+                                let code = ((planes[2 * word] >> bit) & 1)
+                                    | (((planes[2 * word + 1] >> bit) & 1) << 1);
+                                assert_eq!(code as u32, want, "{:?}: {what}", g.node(i));
+                            }
+                            // No bit set anywhere else (past a row's last node either).
+                            let set: usize = planes
+                                .chunks_exact(2)
+                                .map(|p| (p[0] | p[1]).count_ones() as usize)
+                                .sum();
+                            assert_eq!(set, corridor, "{what}");
+                            let orders: [&Candidates; 2] =
+                                [&extensile::candidates, &neighboring::candidates];
+                            for c in orders {
+                                let path = descend(w, c, &graph);
+                                assert_eq!(path, descend(whole, c, &graph), "{what}");
+                                walks += usize::from(path.is_some());
+                            }
                         }
-                        assert!(
-                            corridor < whole.numbered(),
-                            "the corridor ({corridor}) is all the whole wave numbered: {what}"
+                        let forward = descend(&there, &extensile::candidates, &graph);
+                        let backward =
+                            descend(&back, &extensile::candidates, &graph).map(|mut p| {
+                                p.reverse();
+                                p
+                            });
+                        let reference = match (forward, backward) {
+                            (None, _) => Err(SearchFailure::WalkFailed),
+                            (Some(f), Some(b)) => Ok(extensile::merge_paths(&f, &b, &graph)),
+                            (Some(f), None) => Ok(f),
+                        };
+                        assert_eq!(
+                            extensile::search(&cs, start, end, &graph),
+                            reference,
+                            "{what}"
                         );
-                        let path = descend(w, &candidates, &graph);
-                        assert_eq!(path, descend(whole, &candidates, &graph), "{what}");
-                        walks += usize::from(path.is_some());
                     }
                 }
             }
         }
-        assert!(walks >= 12, "too few walks reached the start: {walks}");
+        assert!(
+            joined > 500 && corridor_nodes > 20_000 && walks > 1000,
+            "too few cases: {joined} joined, {corridor_nodes} corridor nodes, {walks} walks"
+        );
     }
 
     /// `expand_both` of a node with itself numbers it alone; of ends that are not joined (or

@@ -173,8 +173,8 @@ mod tests {
         assert_eq!(turns, 1, "{p:?}");
     }
 
-    /// The search with both waves whole, as it was before the second became the guided one
-    /// (`wave::expand_within`): the reference the search must equal.
+    /// The search with both waves whole (`wave::expand`), as it was before the two were
+    /// numbered together: the reference the search must equal.
     fn search_with_whole_waves<G: Graph>(
         cs: &CSpace,
         start: Node,

@@ -273,7 +273,8 @@ pub(crate) mod testing {
         CSpace::from_fn(g, free)
     }
 
-    fn hash(v: [i32; 3], salt: u32) -> u32 {
+    /// A fixed pseudo-random number of a node (or any three integers) and a salt.
+    pub fn hash(v: [i32; 3], salt: u32) -> u32 {
         let h = (v[0] as u32).wrapping_mul(73_856_093)
             ^ (v[1] as u32).wrapping_mul(19_349_663)
             ^ (v[2] as u32).wrapping_mul(83_492_791)
@@ -281,18 +282,23 @@ pub(crate) mod testing {
         h.wrapping_mul(2_654_435_761) >> 5
     }
 
-    /// A graph like a leg's optimistic one: scattered nodes refused, and scattered steps
-    /// refused when walked though the wave counts every step between usable nodes.
-    pub struct Refusing(u32);
+    /// A graph like a leg's optimistic one: one node in `every` refused (scattered), and, when
+    /// `steps`, one step in 5 refused when walked, though the wave counts every step between
+    /// usable nodes.
+    pub struct Refusing {
+        pub salt: u32,
+        pub every: u32,
+        pub steps: bool,
+    }
 
     impl Graph for Refusing {
         fn node_ok(&self, n: Node) -> bool {
-            hash(n, self.0) % 9 != 0
+            hash(n, self.salt) % self.every != 0
         }
         fn step_ok(&self, a: Node, b: Node) -> bool {
             let (lo, hi) = if a < b { (a, b) } else { (b, a) };
             let key = [lo[0] * 3 + hi[0], lo[1] * 5 + hi[1], lo[2] * 7 + hi[2]];
-            hash(key, self.0 + 1) % 5 != 0
+            !self.steps || hash(key, self.salt + 1) % 5 != 0
         }
         fn wave_steps_all(&self) -> bool {
             true
@@ -305,15 +311,19 @@ pub(crate) mod testing {
         let mut cases = Vec::new();
         for salt in 1..4u32 {
             let cs = grid(14, 12, 70, |n| hash(n, salt + 50) % 5 != 0);
-            let graph = Refusing(salt);
+            let graph = |salt| Refusing {
+                salt,
+                every: 9,
+                steps: true,
+            };
             let start = [0, 0, 0];
             for k in 0..40 {
                 let end = [(k * 5) % 14, (k * 7) % 12, (k * 13) % 70];
                 if [start, end]
                     .iter()
-                    .all(|&n| cs.is_free(n) && graph.node_ok(n))
+                    .all(|&n| cs.is_free(n) && graph(salt).node_ok(n))
                 {
-                    cases.push((cs.clone(), Refusing(salt), start, end));
+                    cases.push((cs.clone(), graph(salt), start, end));
                 }
             }
         }
