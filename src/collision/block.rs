@@ -39,11 +39,12 @@
 //!
 //! *Blocked leaves* (beyond the paper). A run of [`LEAF_NODES`] nodes is not proven free at
 //! once (its nodes' own depths are kept), but it is tried for *Blocked* before its node tests,
-//! with a second ball besides the inner capsule's: radius `rho' = rho / 8` at the rim of the cap
-//! nearer the box (centre `rho'` inside the cap and `r - rho'` off the axis towards the box, so
-//! the ball lies in the cylinder; `s'` its centre's signed distance, bound `s' + m - rho'`).
-//! Over a leaf `m` is below the clearance at the grid's spacings, so a leaf whose middle pose
-//! is within `c - m` of a box is blocked without penetrating it, and the rim ball proves the
+//! with a second ball besides the inner capsule's: radius `rho' = min(r, L / 2) / 8` at the rim
+//! of the cap nearer the box (centre `rho'` inside the cap and `r - rho'` off the axis towards
+//! the box, so the ball lies in the cylinder, a short one's thickness too; `s'` its centre's
+//! signed distance, bound `s' + m - rho'`). Where a leaf's motion `m` is below the clearance,
+//! a leaf whose middle pose is within `c - m` of a box is blocked without penetrating it (else
+//! the middle must touch the box), and the rim ball proves the
 //! cap's rim near a box, which the inner capsule (held `rho` back from the caps) cannot. A
 //! blocked proof changes no code: its nodes are 0, what their node tests would find; it only
 //! spares those tests (on the trunk's 1 deg build about 28 % of the leaves). Runs of up to

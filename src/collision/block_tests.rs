@@ -283,7 +283,8 @@ fn each_column_alone(
 /// distance outside and minus the depth inside. The same for the bound from any point of the
 /// axis (`blocked_bound_at` with a random `t`: its inner axis point is still one), and for the
 /// ball at a cap's rim (`rim_ball_bound`, for either cap), which must be better than the inner
-/// capsule's in some cases (a cap's rim towards the box).
+/// capsule's in some cases (a cap's rim towards the box). A third of the cylinders are short
+/// discs (the rim ball must stay inside the cap's thickness too).
 #[test]
 fn the_blocked_bound_holds_under_bounded_motions() {
     let mut rng = Rng(0xB10C_0004_0000_0001);
@@ -304,11 +305,20 @@ fn the_blocked_bound_holds_under_bounded_motions() {
         0.0
     );
     let (mut tight, mut rim_better) = (0, 0);
-    for _ in 0..3000 {
+    for k in 0..4500 {
+        // A third of the cylinders short (a disc up to twice its radius long), where a ball
+        // too large for the cap would poke out of its face.
+        let (a, radius) = (rng.point(-400.0, 400.0), rng.range(0.0, 150.0));
+        let b_end = if k % 3 == 0 {
+            let dir = rng.point(-1.0, 1.0).coords + Vector3::new(1e-9, 0.0, 0.0);
+            a + dir.normalize() * rng.range(0.01, 2.0 * radius.max(0.01))
+        } else {
+            rng.point(-400.0, 400.0)
+        };
         let cyl = Cylinder {
-            a: rng.point(-400.0, 400.0),
-            b: rng.point(-400.0, 400.0),
-            radius: rng.range(0.0, 150.0),
+            a,
+            b: b_end,
+            radius,
         };
         let m = rng.range(0.0, 120.0);
         let bound = blocked_bound(&cyl, &b, m);
