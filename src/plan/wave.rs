@@ -24,9 +24,10 @@
 //! ([`Wave::label_next_to`]). The node-by-node wave keeps the numbers (2 bytes a node, 4 for a
 //! path of over 65 533 steps).
 //!
-//! Beyond the paper, for speed only: the searches that walk back only to neighbours numbered
-//! one less (extensile and neighboring) get their row waves with the numbers kept only on the
-//! nodes of the shortest paths between the ends ([`expand_both`], [`expand_corridor`]): a wave
+//! Beyond the paper, for speed only: the searches walk back only to neighbours numbered one
+//! less (extensile and neighboring over 26 neighbours, depth-first over the 6 axis
+//! neighbours), so they get row waves with the numbers kept only on the nodes of the shortest
+//! paths between the ends ([`expand_both`], [`expand_corridor`]): a wave
 //! from each end, the one with the smaller front a level at a time, until they meet (about two
 //! balls of half the distance instead of one or two of the whole), then the shortest paths'
 //! nodes gathered back from where they met. Every walk back takes the same steps as over the
@@ -420,27 +421,29 @@ pub fn expand_both<G: Graph + ?Sized>(
             (here, there)
         });
     }
-    match corridor_waves(cs, graph, start, end) {
+    match corridor_waves(cs, graph, start, end, Connectivity::TwentySix) {
         Some((here, there)) => (Some(here), Some(there)),
         None => (None, None),
     }
 }
 
-/// The wave from `start` to `end` with the numbers [`expand`] gives it (26 neighbours) on the
-/// nodes of the shortest paths between the two, for a search that walks back over it and only
-/// ever steps to a neighbour numbered one less (the neighboring search): numbered with the
-/// wave from the end as [`expand_both`] does when every step between usable nodes is a wave
-/// step, else whole ([`expand`]). `None` when the end cannot be reached.
+/// The wave from `start` to `end` over `connectivity` with the numbers [`expand`] gives it on
+/// the nodes of the shortest paths between the two, for a search that walks back over it and
+/// only ever steps to a neighbour (of that connectivity) numbered one less (the neighboring and
+/// the depth-first searches): numbered with the wave from the end as [`expand_both`] does when
+/// every step between usable nodes is a wave step, else whole ([`expand`]). `None` when the
+/// end cannot be reached.
 pub fn expand_corridor<G: Graph + ?Sized>(
     cs: &CSpace,
     graph: &G,
     start: Node,
     end: Node,
+    connectivity: Connectivity,
 ) -> Option<Wave> {
     if !graph.wave_steps_all() {
-        return expand(cs, graph, start, end, Connectivity::TwentySix);
+        return expand(cs, graph, start, end, connectivity);
     }
-    corridor_waves(cs, graph, start, end).map(|(here, _)| here)
+    corridor_waves(cs, graph, start, end, connectivity).map(|(here, _)| here)
 }
 
 /// [`corridor_rows`]'s two waves, from `start` and from `end`, for a graph whose every step
@@ -450,15 +453,17 @@ fn corridor_waves<G: Graph + ?Sized>(
     graph: &G,
     start: Node,
     end: Node,
+    connectivity: Connectivity,
 ) -> Option<(Wave, Wave)> {
     if !cs.is_free(start) || !cs.is_free(end) || !graph.node_ok(start) || !graph.node_ok(end) {
         return None;
     }
-    let (ls, le, n) = by_row_words!(cs, corridor_rows::<G>(cs, graph, start, end))?;
+    let six = connectivity == Connectivity::Six;
+    let (ls, le, n) = by_row_words!(cs, corridor_rows::<G>(cs, graph, start, end, six))?;
     let wave = |start, end, labels| Wave {
         start,
         end,
-        connectivity: Connectivity::TwentySix,
+        connectivity,
         labels,
         dims: cs.grid.dims,
         n,
@@ -490,7 +495,7 @@ fn number_rows<G: Graph + ?Sized, const K: usize>(
     end: Node,
 ) -> Option<(Labels, u32)> {
     let end_index = cs.grid.index(end);
-    let mut wave = RowWave::<G, K>::new(cs, graph, cs.grid.index(start), Some(end_index));
+    let mut wave = RowWave::<G, K>::new(cs, graph, cs.grid.index(start), Some(end_index), false);
     if cs.grid.index(start) == end_index {
         return Some((wave.labels(), 1));
     }
@@ -545,11 +550,11 @@ struct RowWave<'a, G: Graph + ?Sized, const K: usize> {
 
 impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
     /// The wave with its start (linear index) numbered 1; `end` the linear index at which it
-    /// stops, if any.
-    fn new(cs: &'a CSpace, graph: &'a G, start: usize, end: Option<usize>) -> Self {
+    /// stops, if any; over the 6 axis neighbours when `six`, else the 26.
+    fn new(cs: &'a CSpace, graph: &'a G, start: usize, end: Option<usize>, six: bool) -> Self {
         let g = &cs.grid;
         let d2 = g.dims[2];
-        let reach = Reach::<K>::new(g.dims);
+        let reach = Reach::<K>::new(g.dims, six);
         let words = reach.words;
         let rows = reach.rows;
         let mut planes = vec![0u64; 2 * rows * words];
@@ -711,10 +716,13 @@ struct Reach<const K: usize> {
     /// A word's neighbour words in the 3 x 3 rows around, from the first (a row off the
     /// grid's border on axes 1 and 2).
     around: [usize; 9],
+    /// Over the 6 axis neighbours only: a word spreads along axis 3 in its own row and only
+    /// into the same bits of the 4 rows beside along axes 1 and 2.
+    six: bool,
 }
 
 impl<const K: usize> Reach<K> {
-    fn new(dims: [usize; 3]) -> Self {
+    fn new(dims: [usize; 3], six: bool) -> Self {
         let [d0, d1, d2] = dims;
         let words = if K == 0 { d2.div_ceil(64) } else { K };
         debug_assert_eq!(words, d2.div_ceil(64));
@@ -727,11 +735,15 @@ impl<const K: usize> Reach<K> {
             cand: vec![0u64; rows * words],
             groups: vec![0u64; rows.div_ceil(GROUP_ROWS * 64)],
             around: std::array::from_fn(|k| ((k / 3) * d1 + k % 3) * words),
+            six,
         }
     }
 
     /// Gathers the neighbours of `front` (row words by ascending index).
     fn spread(&mut self, front: &[(usize, u64)]) {
+        if self.six {
+            return self.spread_six(front);
+        }
         let (d0, d1, words) = (self.d0, self.d1, self.words);
         let (cand, groups) = (&mut self.cand, &mut self.groups);
         for &(w, bits) in front {
@@ -770,6 +782,48 @@ impl<const K: usize> Reach<K> {
                 let g = (t0 * d1 + i1) / GROUP_ROWS;
                 groups[g / 64] |= 1 << (g % 64);
             }
+        }
+    }
+
+    /// [`spread`](Self::spread) over the 6 axis neighbours: a word's bits spread by one along
+    /// axis 3 in its own row (a bit at either end carried into the word beside), and the same
+    /// bits into the same word of the rows one step along axis 1 and along axis 2.
+    fn spread_six(&mut self, front: &[(usize, u64)]) {
+        let (d0, d1, words) = (self.d0, self.d1, self.words);
+        let (cand, groups) = (&mut self.cand, &mut self.groups);
+        let mut mark = |t: usize| {
+            let g = t / GROUP_ROWS;
+            groups[g / 64] |= 1 << (g % 64);
+        };
+        for &(w, bits) in front {
+            let (t, j) = (w / words, w % words);
+            let (i0, i1) = (
+                (t as u32 / d1 as u32) as usize,
+                (t as u32 % d1 as u32) as usize,
+            );
+            cand[w] |= bits | (bits << 1) | (bits >> 1);
+            if j > 0 {
+                cand[w - 1] |= (bits & 1) << 63;
+            }
+            if j + 1 < words {
+                cand[w + 1] |= bits >> 63;
+            }
+            if i0 > 0 {
+                cand[w - d1 * words] |= bits;
+                mark(t - d1);
+            }
+            if i0 + 1 < d0 {
+                cand[w + d1 * words] |= bits;
+                mark(t + d1);
+            }
+            if i1 > 0 {
+                cand[w - words] |= bits;
+            }
+            if i1 + 1 < d1 {
+                cand[w + words] |= bits;
+            }
+            // The rows beside along axis 2 are within a row of `t`'s group: its scan reads them.
+            mark(t);
         }
     }
 
@@ -849,10 +903,11 @@ fn corridor_rows<G: Graph + ?Sized, const K: usize>(
     graph: &G,
     start: Node,
     end: Node,
+    six: bool,
 ) -> Option<(Labels, Labels, u32)> {
     let (si, ei) = (cs.grid.index(start), cs.grid.index(end));
-    let mut from_start = RowWave::<G, K>::new(cs, graph, si, None);
-    let mut from_end = RowWave::<G, K>::new(cs, graph, ei, None);
+    let mut from_start = RowWave::<G, K>::new(cs, graph, si, None, six);
+    let mut from_end = RowWave::<G, K>::new(cs, graph, ei, None, six);
     if si == ei {
         return Some((from_start.labels(), from_end.labels(), 1));
     }
@@ -1419,7 +1474,9 @@ mod tests {
     #[test]
     fn both_waves_hold_the_shortest_paths_and_walk_like_the_whole_waves() {
         use crate::plan::search::testing::{hash, Refusing};
-        use crate::plan::search::{descend, extensile, neighboring, Candidates, SearchFailure};
+        use crate::plan::search::{
+            depth_first, descend, extensile, neighboring, Candidates, SearchFailure,
+        };
         let mut seed = 0x9e37_79b9_7f4a_7c15u64;
         let mut next = move || {
             seed ^= seed << 13;
@@ -1449,7 +1506,7 @@ mod tests {
             [30, 30, 1],
             [3, 40, 63],
         ];
-        let (mut joined, mut corridor_nodes, mut walks) = (0, 0, 0);
+        let (mut joined, mut joined_six, mut corridor_nodes, mut walks) = (0, 0, 0, 0);
         for round in 0..6u32 {
             for [a, b, c] in shapes {
                 let g = Grid::over(
@@ -1491,10 +1548,27 @@ mod tests {
                             _ => g.node(us[next() % us.len()]),
                         };
                         let what = format!("{:?} {density} {steps} {start:?} -> {end:?}", g.dims);
+                        // The axis-step wave (the depth-first search's) first.
+                        let whole6 = expand(&cs, &graph, start, end, Connectivity::Six);
+                        let f6 = expand_corridor(&cs, &graph, start, end, Connectivity::Six);
+                        assert_eq!(whole6.is_some(), f6.is_some(), "six: {what}");
+                        if let (Some(whole6), Some(f6)) = (whole6, f6) {
+                            let ds = bfs_over(&g, start, usable, Connectivity::Six);
+                            let de = bfs_over(&g, end, usable, Connectivity::Six);
+                            joined_six += 1;
+                            assert_corridor(&g, &f6, &whole6, &ds, &de, &format!("six: {what}"));
+                            let path = descend(&f6, &depth_first::candidates, &graph);
+                            assert_eq!(
+                                path,
+                                descend(&whole6, &depth_first::candidates, &graph),
+                                "six: {what}"
+                            );
+                            walks += usize::from(path.is_some());
+                        }
                         let whole = |a, b| expand(&cs, &graph, a, b, Connectivity::TwentySix);
                         let (there, back) = (whole(start, end), whole(end, start));
                         let (fs, fe) = expand_both(&cs, &graph, start, end);
-                        let fc = expand_corridor(&cs, &graph, start, end);
+                        let fc = expand_corridor(&cs, &graph, start, end, Connectivity::TwentySix);
                         assert_eq!(there.is_some(), fs.is_some(), "{what}");
                         assert_eq!(back.is_some(), fe.is_some(), "{what}");
                         assert_eq!(there.is_some(), fc.is_some(), "{what}");
@@ -1505,34 +1579,12 @@ mod tests {
                         };
                         joined += 1;
                         let (ds, de) = (bfs(&g, start, usable), bfs(&g, end, usable));
-                        let n = ds[g.index(end)];
-                        let on = |i: usize| ds[i] > 0 && de[i] > 0 && ds[i] + de[i] == n + 1;
-                        let corridor = (0..g.len()).filter(|&i| on(i)).count();
-                        corridor_nodes += corridor;
-                        for (w, from, whole) in
-                            [(&fs, &ds, &there), (&fe, &de, &back), (&fc, &ds, &there)]
-                        {
-                            assert_eq!((w.n(), whole.n()), (n, n), "{what}");
-                            assert_eq!((w.start, w.end), (whole.start, whole.end), "{what}");
-                            let Labels::Residues { planes, words } = &w.labels else {
-                                panic!("not a row wave: {what}");
-                            };
-                            for (i, &d) in from.iter().enumerate() {
-                                let want = if on(i) { residue_code(d) } else { 0 };
-                                let [x, y, z] = g.node(i);
-                                let word =
-                                    (x as usize * g.dims[1] + y as usize) * words + z as usize / 64;
-                                let bit = z as usize % 64;
-                                let code = ((planes[2 * word] >> bit) & 1)
-                                    | (((planes[2 * word + 1] >> bit) & 1) << 1);
-                                assert_eq!(code as u32, want, "{:?}: {what}", g.node(i));
-                            }
-                            // No bit set anywhere else (past a row's last node either).
-                            let set: usize = planes
-                                .chunks_exact(2)
-                                .map(|p| (p[0] | p[1]).count_ones() as usize)
-                                .sum();
-                            assert_eq!(set, corridor, "{what}");
+                        for (w, from, to, whole) in [
+                            (&fs, &ds, &de, &there),
+                            (&fe, &de, &ds, &back),
+                            (&fc, &ds, &de, &there),
+                        ] {
+                            corridor_nodes += assert_corridor(&g, w, whole, from, to, &what);
                             let orders: [&Candidates; 2] =
                                 [&extensile::candidates, &neighboring::candidates];
                             for c in orders {
@@ -1561,6 +1613,10 @@ mod tests {
                 }
             }
         }
+        assert!(
+            joined_six > 300,
+            "too few axis-step cases: {joined_six} joined"
+        );
         assert!(
             joined > 500 && corridor_nodes > 20_000 && walks > 1000,
             "too few cases: {joined} joined, {corridor_nodes} corridor nodes, {walks} walks"
@@ -1613,14 +1669,62 @@ mod tests {
         (far, mid)
     }
 
+    /// That the corridor wave `w` holds exactly the nodes on shortest paths between its ends
+    /// (`from` and `to`: the breadth-first distances plus one from its start and its end), each
+    /// with the residue code of its number in `from`, read straight from its planes, with no
+    /// other bit set anywhere (past a row's last node either), and the same ends and n as the
+    /// whole wave: the corridor's size.
+    fn assert_corridor(
+        g: &Grid,
+        w: &Wave,
+        whole: &Wave,
+        from: &[u32],
+        to: &[u32],
+        what: &str,
+    ) -> usize {
+        let n = from[g.index(w.end)];
+        assert_eq!((w.n(), whole.n()), (n, n), "{what}");
+        assert_eq!((w.start, w.end), (whole.start, whole.end), "{what}");
+        assert_eq!(w.connectivity, whole.connectivity, "{what}");
+        let on = |i: usize| from[i] > 0 && to[i] > 0 && from[i] + to[i] == n + 1;
+        let Labels::Residues { planes, words } = &w.labels else {
+            panic!("not a row wave: {what}");
+        };
+        for (i, &d) in from.iter().enumerate() {
+            let want = if on(i) { residue_code(d) } else { 0 };
+            let [x, y, z] = g.node(i);
+            let word = (x as usize * g.dims[1] + y as usize) * words + z as usize / 64;
+            let bit = z as usize % 64;
+            let code = ((planes[2 * word] >> bit) & 1) | (((planes[2 * word + 1] >> bit) & 1) << 1);
+            assert_eq!(code as u32, want, "{:?}: {what}", g.node(i));
+        }
+        let corridor = (0..g.len()).filter(|&i| on(i)).count();
+        let set: usize = planes
+            .chunks_exact(2)
+            .map(|p| (p[0] | p[1]).count_ones() as usize)
+            .sum();
+        assert_eq!(set, corridor, "{what}");
+        corridor
+    }
+
     /// Breadth-first distances (plus one, 0 = not reached) over the usable nodes of `g` and
     /// their 26 neighbours, from `start`.
     fn bfs(g: &Grid, start: Node, usable: impl Fn(Node) -> bool) -> Vec<u32> {
+        bfs_over(g, start, usable, Connectivity::TwentySix)
+    }
+
+    /// [`bfs`] over the neighbours of `connectivity`.
+    fn bfs_over(
+        g: &Grid,
+        start: Node,
+        usable: impl Fn(Node) -> bool,
+        connectivity: Connectivity,
+    ) -> Vec<u32> {
         let mut dist = vec![0u32; g.len()];
         dist[g.index(start)] = 1;
         let mut queue = VecDeque::from([start]);
         while let Some(n) = queue.pop_front() {
-            for o in offsets(Connectivity::TwentySix) {
+            for o in offsets(connectivity) {
                 let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
                 if g.contains(m) && usable(m) && dist[g.index(m)] == 0 {
                     dist[g.index(m)] = dist[g.index(n)] + 1;

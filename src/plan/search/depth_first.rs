@@ -27,14 +27,16 @@ pub(crate) fn candidates(w: &Wave, n: Node, label: u32, prev: Option<[i32; 3]>) 
 /// The path start -> end by axis steps of `graph`. When the axis-step wave cannot reach the
 /// end, a 26-neighbour wave tells whether the graph joins the nodes only through diagonal steps
 /// (the paper's Fig. 8: [`SearchFailure::OnlyDiagonal`]) or not at all
-/// ([`SearchFailure::NotConnected`]).
+/// ([`SearchFailure::NotConnected`]). The walk back only steps to axis neighbours numbered one
+/// less, so the axis-step wave numbers only the nodes on shortest axis-step paths between the
+/// ends where it can ([`wave::expand_corridor`]): the same steps.
 pub fn search<G: Graph>(
     cs: &CSpace,
     start: Node,
     end: Node,
     graph: &G,
 ) -> Result<GridPath, SearchFailure> {
-    let Some(w) = wave::expand(cs, graph, start, end, Connectivity::Six) else {
+    let Some(w) = wave::expand_corridor(cs, graph, start, end, Connectivity::Six) else {
         return Err(
             match wave::expand(cs, graph, start, end, Connectivity::TwentySix) {
                 Some(_) => SearchFailure::OnlyDiagonal,
@@ -48,8 +50,33 @@ pub fn search<G: Graph>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plan::search::testing::{assert_path, grid};
+    use crate::plan::search::testing::{assert_path, grid, refusing_cases};
     use crate::plan::wave::Open;
+
+    /// Where the graph refuses nodes and steps, the search over the axis-step wave of the
+    /// shortest paths' nodes gives the same path, or the same failure, as over the whole wave.
+    #[test]
+    fn the_corridor_wave_changes_no_search() {
+        let (mut found, mut failed) = (0, 0);
+        for (cs, graph, start, end) in refusing_cases() {
+            let got = search(&cs, start, end, &graph);
+            let whole = match wave::expand(&cs, &graph, start, end, Connectivity::Six) {
+                Some(w) => descend(&w, &candidates, &graph).ok_or(SearchFailure::WalkFailed),
+                None => Err(
+                    match wave::expand(&cs, &graph, start, end, Connectivity::TwentySix) {
+                        Some(_) => SearchFailure::OnlyDiagonal,
+                        None => SearchFailure::NotConnected,
+                    },
+                ),
+            };
+            assert_eq!(got, whole, "{end:?}");
+            match got {
+                Ok(_) => found += 1,
+                Err(_) => failed += 1,
+            }
+        }
+        assert!(found >= 20 && failed >= 1, "found {found}, failed {failed}");
+    }
 
     #[test]
     fn walks_axis_steps_in_the_fixed_order() {

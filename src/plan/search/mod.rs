@@ -300,6 +300,9 @@ pub(crate) mod testing {
             let key = [lo[0] * 3 + hi[0], lo[1] * 5 + hi[1], lo[2] * 7 + hi[2]];
             !self.steps || hash(key, self.salt + 1) % 5 != 0
         }
+        fn wave_step_ok(&self, _: Node, _: Node) -> bool {
+            true
+        }
         fn wave_steps_all(&self) -> bool {
             true
         }

@@ -40,7 +40,8 @@ pub fn search<G: Graph>(
     end: Node,
     graph: &G,
 ) -> Result<GridPath, SearchFailure> {
-    let w = wave::expand_corridor(cs, graph, start, end).ok_or(SearchFailure::NotConnected)?;
+    let w = wave::expand_corridor(cs, graph, start, end, Connectivity::TwentySix)
+        .ok_or(SearchFailure::NotConnected)?;
     descend(&w, &candidates, graph).ok_or(SearchFailure::WalkFailed)
 }
 
