@@ -134,6 +134,16 @@ impl CollisionModel {
             let m = speeds[p];
             let (s0, s1) = (self.solid(p, &p0), self.solid(p, &p1));
             for (k, b) in self.part_boxes(p) {
+                // A box (a tool's mount) has no closed-form bound cheaper than its exact
+                // distance: its enclosing box's gap first. `interval_bound` grows with both
+                // ends, so where the gaps keep the clearance over the move the exact distances
+                // do too, and the pair is passed as it would be below.
+                if matches!(s0, Solid::Box(_)) {
+                    let (g0, g1) = (s0.coarse_lower_bound_aabb(b), s1.coarse_lower_bound_aabb(b));
+                    if interval_bound(g0, g1, m) >= self.clearance_mm {
+                        continue;
+                    }
+                }
                 let (l0, l1) = (s0.lower_bound_aabb(b), s1.lower_bound_aabb(b));
                 if interval_bound(l0, l1, m) >= self.clearance_mm {
                     continue;

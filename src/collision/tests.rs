@@ -733,3 +733,28 @@ fn the_tool_looks_least_distance_is_distance_sq_point_aabb_to_the_bit() {
         }
     }
 }
+
+/// The proof's interval bound grows with both ends (for any reach): a pair passed on lower
+/// bounds of the ends' distances (the mount box's enclosing-box gap in `parts_are_safe`) would
+/// be passed on the distances themselves.
+#[test]
+fn the_interval_bound_grows_with_both_ends() {
+    let mut rng = crate::geometry::testing::Rng(0x1B0_0D5_6A0);
+    for _ in 0..20_000 {
+        let (d0, d1) = (rng.range(-50.0, 500.0), rng.range(-50.0, 500.0));
+        let (e0, e1) = (d0 + rng.range(0.0, 80.0), d1 + rng.range(0.0, 80.0));
+        let reach = rng.range(0.0, 300.0);
+        let (lo, hi) = (
+            super::proof::interval_bound(d0, d1, reach),
+            super::proof::interval_bound(e0, e1, reach),
+        );
+        assert!(
+            lo <= hi,
+            "{d0} {d1} -> {e0} {e1}, reach {reach}: {lo} > {hi}"
+        );
+    }
+    assert_eq!(
+        super::proof::interval_bound(f64::INFINITY, f64::INFINITY, 10.0),
+        f64::INFINITY
+    );
+}
