@@ -142,6 +142,30 @@ pub fn merge_paths<G: Graph + ?Sized>(a: &[Node], b: &[Node], graph: &G) -> Grid
     path
 }
 
+/// The search with both waves whole (`wave::expand`), as it was before the two were
+/// numbered together: the reference the search must equal.
+#[cfg(test)]
+pub(crate) fn search_with_whole_waves<G: Graph>(
+    cs: &CSpace,
+    start: Node,
+    end: Node,
+    graph: &G,
+) -> Result<GridPath, SearchFailure> {
+    let from_start = wave::expand(cs, graph, start, end, Connectivity::TwentySix)
+        .ok_or(SearchFailure::NotConnected)?;
+    let forward = descend(&from_start, &candidates, graph).ok_or(SearchFailure::WalkFailed)?;
+    let backward = wave::expand(cs, graph, end, start, Connectivity::TwentySix)
+        .and_then(|w| descend(&w, &candidates, graph))
+        .map(|mut p| {
+            p.reverse();
+            p
+        });
+    Ok(match backward {
+        Some(b) => merge_paths(&forward, &b, graph),
+        None => forward,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -171,29 +195,6 @@ mod tests {
             .filter(|w| (0..3).any(|k| w[1][k] - w[0][k] != w[2][k] - w[1][k]))
             .count();
         assert_eq!(turns, 1, "{p:?}");
-    }
-
-    /// The search with both waves whole (`wave::expand`), as it was before the two were
-    /// numbered together: the reference the search must equal.
-    fn search_with_whole_waves<G: Graph>(
-        cs: &CSpace,
-        start: Node,
-        end: Node,
-        graph: &G,
-    ) -> Result<GridPath, SearchFailure> {
-        let from_start = wave::expand(cs, graph, start, end, Connectivity::TwentySix)
-            .ok_or(SearchFailure::NotConnected)?;
-        let forward = descend(&from_start, &candidates, graph).ok_or(SearchFailure::WalkFailed)?;
-        let backward = wave::expand(cs, graph, end, start, Connectivity::TwentySix)
-            .and_then(|w| descend(&w, &candidates, graph))
-            .map(|mut p| {
-                p.reverse();
-                p
-            });
-        Ok(match backward {
-            Some(b) => merge_paths(&forward, &b, graph),
-            None => forward,
-        })
     }
 
     /// Scattered blocked nodes and refused steps (an optimistic wave's graph: the wave counts
