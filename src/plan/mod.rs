@@ -17,8 +17,9 @@
 //!
 //! Beyond the paper, for speed only: the legs are independent (each a pure function of the grid,
 //! the model, its two points and the method), so [`route`] plans two at once where the memory
-//! of the second is small ([`legs_at_once`]) and puts them together in order: the same plan,
-//! and the same error (the first failing leg's), as leg by leg.
+//! of the second is small ([`legs_at_once`]), the longest first ([`longest_first`]), and puts
+//! them together in order: the same plan, and the same error (the first failing leg's), as leg
+//! by leg.
 //!
 //! Axes 4..6: the grid is over axes 1..3 (the paper's lumped arm); a waypoint carries all six. A
 //! cell point keeps its own wrist ([`PlacedPoint::joints_deg`]); a via gets the leg's wrist
@@ -405,12 +406,17 @@ pub fn route_on(
     }
     let grid = &cs.grid;
     let check = model.grid_check(grid.step_deg);
-    let legs: Vec<usize> = (0..points.len() - 1).collect();
-    // The legs on up to `at_once` threads. A leg after a failed one is not started (the
-    // legs are handed out in order, so every leg before the first failure is planned): the
+    let legs = if at_once > 1 {
+        longest_first(points)
+    } else {
+        (0..points.len() - 1).collect()
+    };
+    // The legs on up to `at_once` threads. A leg after a failed one is not started (every leg
+    // before the first failure is planned, whatever the order they are handed out in): the
     // error is the first failing leg's, as leg by leg.
     let first_failed = AtomicUsize::new(usize::MAX);
-    let planned = crate::parallel::map_on(at_once, &legs, |&i| {
+    let mut planned: Vec<Option<_>> = (0..legs.len()).map(|_| None).collect();
+    let done = crate::parallel::map_on(at_once, &legs, |&i| {
         if i > first_failed.load(Ordering::Relaxed) {
             return None;
         }
@@ -420,6 +426,9 @@ pub fn route_on(
         }
         Some(leg)
     });
+    for (&i, leg) in legs.iter().zip(done) {
+        planned[i] = leg;
+    }
     let mut made = Route::default();
     for (i, leg) in planned.into_iter().enumerate() {
         // A leg not started follows a failed one, whose error returned first: planned here
@@ -441,6 +450,25 @@ pub fn route_on(
         paper: None,
         zones: Vec::new(),
     })
+}
+
+/// The legs of the route through `points`, longest first: by the most any of axes 1..3 turns
+/// between the leg's two points (the number of levels its waves need, which the leg's time
+/// grows with), then by their summed turn, then in route order. Handed out in this order, the
+/// long legs start first, so no long leg starts last while the other core idles (the
+/// longest-processing-time rule of scheduling). The plan is the same in any order.
+fn longest_first(points: &[PlacedPoint]) -> Vec<usize> {
+    let turn = |i: usize| {
+        let (a, b) = (points[i].arm_deg(), points[i + 1].arm_deg());
+        let d = [0, 1, 2].map(|k| (a[k] - b[k]).abs());
+        (d[0].max(d[1]).max(d[2]), d[0] + d[1] + d[2])
+    };
+    let mut legs: Vec<usize> = (0..points.len().saturating_sub(1)).collect();
+    legs.sort_by(|&i, &j| {
+        let ((mi, si), (mj, sj)) = (turn(i), turn(j));
+        mj.total_cmp(&mi).then(sj.total_cmp(&si)).then(i.cmp(&j))
+    });
+    legs
 }
 
 /// Leg `i` of the route (point `i` to point `i + 1`): its grid path (empty for a wrist turn in
@@ -836,6 +864,23 @@ mod tests {
                 other => panic!("{at_once} at once: {other:?}"),
             }
         }
+    }
+
+    #[test]
+    fn legs_are_handed_out_longest_first() {
+        let w = [0.0, 30.0, 0.0];
+        let pts = [
+            point("A", [30.0, -6.0, -9.0], w),
+            point("B", [39.0, 21.0, -21.0], w), // A -> B: most 27 (axis 2), in all 48
+            point("E", [-30.0, 9.0, 0.0], w),   // B -> E: most 69
+            point("F", [-39.0, -6.0, 12.0], w), // E -> F: most 15
+            point("C", [42.0, 21.0, 12.0], w),  // F -> C: most 81
+            point("G", [42.0, -6.0, 0.0], w),   // C -> G: most 27, in all 39
+            point("H", [42.0, 21.0, 0.0], w),   // G -> H: most 27, in all 27
+            point("I", [42.0, 48.0, 0.0], w),   // H -> I: most 27, in all 27 (after G -> H)
+        ];
+        assert_eq!(longest_first(&pts), [3, 1, 0, 4, 5, 6, 2]);
+        assert!(longest_first(&pts[..1]).is_empty());
     }
 
     #[test]
