@@ -19,7 +19,20 @@
 //! for a zone's corner (`collision::corner`); so where a fly-by zone is asked, the refine stage
 //! also runs this pass on a model asking a margin more clearance and keeps the faster result
 //! (`refine`).
-//! Deterministic: fixed order, no randomness.
+//!
+//! **On all cores, decided on one** (`crate::parallel::map`; beyond the paper, as the pass is).
+//! The proofs are almost all the cost; the decisions (the time of the whole plan, a float sum,
+//! against the best so far) stay one at a time in the order above, so the plan is the one a
+//! single core makes, bit for bit. A leg's joins read only its own waypoints, which no other
+//! leg's joins move: every leg's kept waypoints are proven at once, then each leg's change is
+//! decided in leg order. A slide reads only its via, the via's two neighbours and its leg's cell
+//! points (for the wrist schedule), and a leg's slides touch no other leg's vias: each leg's
+//! chain of slides is computed ahead at once, as if every proven slide were kept (the usual
+//! case), each slide with the three joints it started from. The slides are then decided in
+//! route order, each taking the slide computed ahead only where its via and neighbours hold the
+//! same joints, bit for bit, and computing it anew where they do not (after a slide of its leg
+//! was turned down).
+//! Deterministic: fixed order of decisions, no randomness, whichever core proves what.
 
 use crate::collision::CollisionModel;
 use crate::parallel;
@@ -344,7 +357,10 @@ mod tests {
                 .iter()
                 .map(|w| w.joints_deg.map(f64::to_bits))
                 .collect(),
-            p.waypoints.iter().map(|w| format!("{:?}", w.kind)).collect(),
+            p.waypoints
+                .iter()
+                .map(|w| format!("{:?}", w.kind))
+                .collect(),
             p.legs.iter().map(|l| l.waypoints.clone()).collect(),
         )
     }
