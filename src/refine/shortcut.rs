@@ -56,7 +56,10 @@ pub fn shortcut(mut plan: Plan, model: &CollisionModel, time_s: &dyn Fn(&Plan) -
         let legs: Vec<usize> = (0..plan.legs.len())
             .filter(|&l| plan.legs[l].waypoints.len() > 2)
             .collect();
-        let kept = parallel::map(&legs, |&l| {
+        // A leg of one via asks one proof, less than the threads cost: such legs alone stay here.
+        let big = legs.iter().filter(|&&l| plan.legs[l].waypoints.len() > 3);
+        let threads = if big.count() >= 2 { usize::MAX } else { 1 };
+        let kept = parallel::map_on(threads, &legs, |&l| {
             join_kept(&plan.waypoints[plan.legs[l].waypoints.clone()], model)
         });
         for (&l, kept) in legs.iter().zip(kept) {
@@ -109,9 +112,15 @@ struct Guess {
 /// meets a via with the same three joints (bit for bit) as its guess, the guess is what the
 /// slide computes there; where an earlier slide of the leg was not kept, the key differs and
 /// the pass computes the slide anew.
+/// Only the legs with a via that can move are computed ahead (a leg whose vias all sit at their
+/// neighbours' midpoint, rounded, asks no proof).
 fn guess_slides(plan: &Plan, model: &CollisionModel) -> Vec<Option<Guess>> {
+    let w = &plan.waypoints;
     let legs: Vec<usize> = (0..plan.legs.len())
-        .filter(|&l| plan.legs[l].waypoints.len() > 2)
+        .filter(|&l| {
+            let r = plan.legs[l].waypoints.clone();
+            (r.start + 1..r.end - 1).any(|k| can_slide(&w[k - 1], &w[k], &w[k + 1]))
+        })
         .collect();
     let per_leg = parallel::map(&legs, |&l| {
         let range = plan.legs[l].waypoints.clone();
@@ -136,6 +145,14 @@ fn guess_slides(plan: &Plan, model: &CollisionModel) -> Vec<Option<Guess>> {
         all[k] = Some(g);
     }
     all
+}
+
+/// Whether via `via` can slide at all between `prev` and `next`: its neighbours' midpoint,
+/// rounded, is not where it is (else every fraction of the slide rounds back to it, as the via
+/// is at the written precision). Only chooses what is computed ahead, never a change.
+fn can_slide(prev: &Waypoint, via: &Waypoint, next: &Waypoint) -> bool {
+    let (p, v, n) = (prev.arm_deg(), via.arm_deg(), next.arm_deg());
+    quantize_joints(std::array::from_fn(|x| 0.5 * (p[x] + n[x]))) != v
 }
 
 /// Whether two keys hold the same bits (a `-0.0` is not a `0.0` here).
