@@ -131,6 +131,13 @@ fn guess_slides(plan: &Plan, model: &CollisionModel) -> Vec<Option<Guess>> {
         let schedule = schedule_of(plan, l);
         let mut guesses = Vec::with_capacity(ws.len() - 2);
         for i in 1..ws.len() - 1 {
+            // The pass slides a via on the schedule of the leg it names: that is this leg.
+            let WaypointKind::Via { leg, .. } = plan.waypoints[range.start + i].kind else {
+                break;
+            };
+            if leg != l {
+                break;
+            }
             let key = [ws[i - 1], ws[i], ws[i + 1]];
             let six = slide_six(&key, &schedule, model);
             if let Some(six) = six {
