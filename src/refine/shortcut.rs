@@ -20,18 +20,18 @@
 //! also runs this pass on a model asking a margin more clearance and keeps the faster result
 //! (`refine`).
 //!
-//! **On all cores, decided on one** (`crate::parallel::map`; beyond the paper, as the pass is).
-//! The proofs are almost all the cost; the decisions (the time of the whole plan, a float sum,
-//! against the best so far) stay one at a time in the order above, so the plan is the one a
-//! single core makes, bit for bit. A leg's joins read only its own waypoints, which no other
-//! leg's joins move: every leg's kept waypoints are proven at once, then each leg's change is
-//! decided in leg order. A slide reads only its via, the via's two neighbours and its leg's cell
-//! points (for the wrist schedule), and a leg's slides touch no other leg's vias: each leg's
-//! chain of slides is computed ahead at once, as if every proven slide were kept (the usual
-//! case), each slide with the three joints it started from. The slides are then decided in
-//! route order, each taking the slide computed ahead only where its via and neighbours hold the
-//! same joints, bit for bit, and computing it anew where they do not (after a slide of its leg
-//! was turned down).
+//! **On all cores, decided on one** (`crate::parallel::map_on`; beyond the paper, as the pass
+//! is). The proofs are almost all the cost; the decisions (the time of the whole plan, a float
+//! sum, against the best so far) stay one at a time in the order above, so the plan is the one
+//! a single core makes, bit for bit. At the start of each round every leg's proofs are made at
+//! once, a leg to a core, as if every proven change were kept (the usual case): its joins, then
+//! the chain of its slides, via after via, on the waypoints the joins keep, each slide with the
+//! three joints it started from. A leg's joins read only its own waypoints, which no other leg's
+//! change touches, so its kept waypoints are the ones the one-core pass proves at its turn. A
+//! slide reads only its via, the via's two neighbours and its leg's cell points (the wrist
+//! schedule; no change moves them), so the pass, deciding the slides in route order, takes the
+//! slide computed ahead where its via and neighbours hold the same joints, bit for bit, and
+//! computes it anew where they do not (after a change of its leg was turned down).
 //! Deterministic: fixed order of decisions, no randomness, whichever core proves what.
 
 use crate::collision::CollisionModel;
@@ -51,35 +51,29 @@ pub fn shortcut(mut plan: Plan, model: &CollisionModel, time_s: &dyn Fn(&Plan) -
     let mut best_s = time_s(&plan);
     for _ in 0..ROUNDS {
         let mut changed = false;
-        // 1. Joins: every leg's proofs on all cores (a leg's joins read only its own waypoints,
-        // which no earlier leg's change touches), each change then decided in leg order.
-        let legs: Vec<usize> = (0..plan.legs.len())
-            .filter(|&l| plan.legs[l].waypoints.len() > 2)
-            .collect();
-        // A leg of one via asks one proof, less than the threads cost: such legs alone stay here.
-        let big = legs.iter().filter(|&&l| plan.legs[l].waypoints.len() > 3);
-        let threads = if big.count() >= 2 { usize::MAX } else { 1 };
-        let kept = parallel::map_on(threads, &legs, |&l| {
-            join_kept(&plan.waypoints[plan.legs[l].waypoints.clone()], model)
-        });
-        for (&l, kept) in legs.iter().zip(kept) {
-            if let Some(kept) = kept {
-                let c = with_leg(&plan, l, kept);
+        // Every leg's proofs of the round at once (module doc), then the decisions in order.
+        let ahead = ahead_of_round(&plan, model);
+        // 1. Joins, in leg order. Leg `l`'s waypoints are those `ahead` started from: an
+        // earlier leg's change moves them in the route, never changes them.
+        for (l, a) in ahead.iter().enumerate() {
+            if let Some(kept) = &a.kept {
+                let c = with_leg(&plan, l, kept.clone());
                 let t = time_s(&c);
                 if t <= best_s {
                     (plan, best_s, changed) = (c, t, true);
                 }
             }
         }
-        // 2. Slides: each leg's chain guessed on all cores, then decided in route order.
-        let guessed = guess_slides(&plan, model);
+        // 2. Slides, in route order: a slide computed ahead where its key holds.
         for k in 1..plan.waypoints.len().saturating_sub(1) {
             let WaypointKind::Via { leg, .. } = plan.waypoints[k].kind else {
                 continue;
             };
             let w = &plan.waypoints;
             let key = [w[k - 1].joints_deg, w[k].joints_deg, w[k + 1].joints_deg];
-            let six = match &guessed[k] {
+            // `slides[i]` is the slide of the leg's waypoint `i + 1` (its first is a cell point).
+            let i = k.checked_sub(plan.legs[leg].waypoints.start + 1);
+            let six = match i.and_then(|i| ahead[leg].slides.get(i)) {
                 Some(g) if same_bits(&g.key, &key) => g.six,
                 _ => slide_six(&key, &schedule_of(&plan, leg), model),
             };
@@ -99,6 +93,14 @@ pub fn shortcut(mut plan: Plan, model: &CollisionModel, time_s: &dyn Fn(&Plan) -
     plan
 }
 
+/// A leg's proofs of a round, computed ahead: the waypoints its joins keep (`None`: no via
+/// dropped), and the slides of the leg's vias after them, in order.
+#[derive(Default)]
+struct Ahead {
+    kept: Option<Vec<Waypoint>>,
+    slides: Vec<Guess>,
+}
+
 /// A slide computed ahead: the joints of the via's previous waypoint, the via and its next
 /// waypoint it was computed from, and the via's new joints (`None`: no slide proven).
 struct Guess {
@@ -106,57 +108,63 @@ struct Guess {
     six: Option<[f64; 6]>,
 }
 
-/// Every via's slide computed ahead, legs on all cores, indexed by waypoint: along each leg in
-/// order, as if every proven slide were kept (the usual case). A slide reads only its via, the
-/// via's two neighbours and the leg's cell points (which no slide moves), so where the pass
-/// meets a via with the same three joints (bit for bit) as its guess, the guess is what the
-/// slide computes there; where an earlier slide of the leg was not kept, the key differs and
-/// the pass computes the slide anew.
-/// Only the legs with a via that can move are computed ahead (a leg whose vias all sit at their
-/// neighbours' midpoint, rounded, asks no proof).
-fn guess_slides(plan: &Plan, model: &CollisionModel) -> Vec<Option<Guess>> {
+/// Every leg's [`Ahead`] for a round of `plan`, legs on all cores: its joins, then the chain of
+/// its slides on the waypoints the joins keep, as if every proven change were kept (the usual
+/// case). A slide reads only its via, the via's two neighbours and the leg's cell points (which
+/// no change moves), so where the pass meets a via with the same three joints, bit for bit, as
+/// a slide computed ahead, that slide is what it would compute there; where an earlier change of
+/// the leg was not kept, the joints differ and the pass computes the slide anew.
+fn ahead_of_round(plan: &Plan, model: &CollisionModel) -> Vec<Ahead> {
     let w = &plan.waypoints;
     let legs: Vec<usize> = (0..plan.legs.len())
-        .filter(|&l| {
-            let r = plan.legs[l].waypoints.clone();
-            (r.start + 1..r.end - 1).any(|k| can_slide(&w[k - 1], &w[k], &w[k + 1]))
-        })
+        .filter(|&l| plan.legs[l].waypoints.len() > 2)
         .collect();
-    let per_leg = parallel::map(&legs, |&l| {
-        let range = plan.legs[l].waypoints.clone();
-        let mut ws: Vec<[f64; 6]> = plan.waypoints[range.clone()]
-            .iter()
-            .map(|w| w.joints_deg)
-            .collect();
-        let schedule = schedule_of(plan, l);
-        let mut guesses = Vec::with_capacity(ws.len() - 2);
-        for i in 1..ws.len() - 1 {
-            // The pass slides a via on the schedule of the leg it names: that is this leg.
-            let WaypointKind::Via { leg, .. } = plan.waypoints[range.start + i].kind else {
-                break;
-            };
-            if leg != l {
-                break;
-            }
-            let key = [ws[i - 1], ws[i], ws[i + 1]];
-            let six = slide_six(&key, &schedule, model);
-            if let Some(six) = six {
-                ws[i] = six;
-            }
-            guesses.push((range.start + i, Guess { key, six }));
-        }
-        guesses
+    // A map costs about a proof's time, and a leg with one via that cannot slide asks one
+    // proof (its join): with one leg or none asking more, the legs are proven here, in turn.
+    let busy = legs.iter().filter(|&&l| {
+        let r = plan.legs[l].waypoints.clone();
+        r.len() > 3 || (r.start + 1..r.end - 1).any(|k| can_slide(&w[k - 1], &w[k], &w[k + 1]))
     });
-    let mut all: Vec<Option<Guess>> = plan.waypoints.iter().map(|_| None).collect();
-    for (k, g) in per_leg.into_iter().flatten() {
-        all[k] = Some(g);
+    let threads = if busy.count() >= 2 { usize::MAX } else { 1 };
+    let per_leg = parallel::map_on(threads, &legs, |&l| {
+        let ws = &plan.waypoints[plan.legs[l].waypoints.clone()];
+        let kept = join_kept(ws, model);
+        let slides = slide_chain(kept.as_deref().unwrap_or(ws), l, model);
+        Ahead { kept, slides }
+    });
+    let mut all: Vec<Ahead> = plan.legs.iter().map(|_| Ahead::default()).collect();
+    for (&l, a) in legs.iter().zip(per_leg) {
+        all[l] = a;
     }
     all
 }
 
+/// The slides of leg `l`'s vias computed ahead along its waypoints `ws`, each via in order,
+/// every proven slide kept for the next; up to the first waypoint that is no via of leg `l` (the
+/// pass slides a via on the schedule of the leg it names).
+fn slide_chain(ws: &[Waypoint], l: usize, model: &CollisionModel) -> Vec<Guess> {
+    let m = ws.len();
+    let schedule = WristSchedule::new(&ws[0].joints_deg, &ws[m - 1].joints_deg);
+    let mut joints: Vec<[f64; 6]> = ws.iter().map(|w| w.joints_deg).collect();
+    let mut slides = Vec::with_capacity(m.saturating_sub(2));
+    for i in 1..m.saturating_sub(1) {
+        if !matches!(ws[i].kind, WaypointKind::Via { leg, .. } if leg == l) {
+            break;
+        }
+        let key = [joints[i - 1], joints[i], joints[i + 1]];
+        let six = slide_six(&key, &schedule, model);
+        if let Some(six) = six {
+            joints[i] = six;
+        }
+        slides.push(Guess { key, six });
+    }
+    slides
+}
+
 /// Whether via `via` can slide at all between `prev` and `next`: its neighbours' midpoint,
 /// rounded, is not where it is (else every fraction of the slide rounds back to it, as the via
-/// is at the written precision). Only chooses what is computed ahead, never a change.
+/// is at the written precision). Only chooses whether the legs are proven on all cores, never a
+/// change.
 fn can_slide(prev: &Waypoint, via: &Waypoint, next: &Waypoint) -> bool {
     let (p, v, n) = (prev.arm_deg(), via.arm_deg(), next.arm_deg());
     quantize_joints(std::array::from_fn(|x| 0.5 * (p[x] + n[x]))) != v
