@@ -2,8 +2,9 @@
 //! out one at a time as each thread asks for the next, so items of very different cost keep every
 //! core busy, and the results come back in the items' order, whoever computed them. Used where a
 //! stage does independent, deterministic work per item: the smallest clearance of each move in
-//! `plan::certify`, the zoned corners' proofs and clearances in `refine::zones`, and with a
-//! limit on threads ([`map_on`]) the legs of a route in `plan::route`.
+//! `plan::certify`, the zoned corners' proofs and clearances in `refine::zones`, each leg's
+//! proofs in `refine::shortcut`, and with a limit on threads ([`map_on`]) the legs of a route in
+//! `plan::route`.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;

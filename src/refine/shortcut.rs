@@ -19,9 +19,23 @@
 //! for a zone's corner (`collision::corner`); so where a fly-by zone is asked, the refine stage
 //! also runs this pass on a model asking a margin more clearance and keeps the faster result
 //! (`refine`).
-//! Deterministic: fixed order, no randomness.
+//!
+//! **On all cores, decided on one** (`crate::parallel::map_on`; beyond the paper, as the pass
+//! is). The proofs are almost all the cost; the decisions (the time of the whole plan, a float
+//! sum, against the best so far) stay one at a time in the order above, so the plan is the one
+//! a single core makes, bit for bit. At the start of each round every leg's proofs are made at
+//! once, a leg to a core, as if every proven change were kept (the usual case): its joins, then
+//! the chain of its slides, via after via, on the waypoints the joins keep, each slide with the
+//! three joints it started from. A leg's joins read only its own waypoints, which no other leg's
+//! change touches, so its kept waypoints are the ones the one-core pass proves at its turn. A
+//! slide reads only its via, the via's two neighbours and its leg's cell points (the wrist
+//! schedule; no change moves them), so the pass, deciding the slides in route order, takes the
+//! slide computed ahead where its via and neighbours hold the same joints, bit for bit, and
+//! computes it anew where they do not (after a change of its leg was turned down).
+//! Deterministic: fixed order of decisions, no randomness, whichever core proves what.
 
 use crate::collision::CollisionModel;
+use crate::parallel;
 use crate::plan::leg::WristSchedule;
 use crate::plan::{Plan, Waypoint, WaypointKind};
 use crate::precision::quantize_joints;
@@ -37,16 +51,35 @@ pub fn shortcut(mut plan: Plan, model: &CollisionModel, time_s: &dyn Fn(&Plan) -
     let mut best_s = time_s(&plan);
     for _ in 0..ROUNDS {
         let mut changed = false;
-        for l in 0..plan.legs.len() {
-            if let Some(c) = join_leg(&plan, l, model) {
+        // Every leg's proofs of the round at once (module doc), then the decisions in order.
+        let ahead = ahead_of_round(&plan, model);
+        // 1. Joins, in leg order. Leg `l`'s waypoints are those `ahead` started from: an
+        // earlier leg's change moves them in the route, never changes them.
+        for (l, a) in ahead.iter().enumerate() {
+            if let Some(kept) = &a.kept {
+                let c = with_leg(&plan, l, kept.clone());
                 let t = time_s(&c);
                 if t <= best_s {
                     (plan, best_s, changed) = (c, t, true);
                 }
             }
         }
+        // 2. Slides, in route order: a slide computed ahead where its key holds.
         for k in 1..plan.waypoints.len().saturating_sub(1) {
-            if let Some(c) = slide(&plan, k, model) {
+            let WaypointKind::Via { leg, .. } = plan.waypoints[k].kind else {
+                continue;
+            };
+            let w = &plan.waypoints;
+            let key = [w[k - 1].joints_deg, w[k].joints_deg, w[k + 1].joints_deg];
+            // `slides[i]` is the slide of the leg's waypoint `i + 1` (its first is a cell point).
+            let i = k.checked_sub(plan.legs[leg].waypoints.start + 1);
+            let six = match i.and_then(|i| ahead[leg].slides.get(i)) {
+                Some(g) if same_bits(&g.key, &key) => g.six,
+                _ => slide_six(&key, &schedule_of(&plan, leg), model),
+            };
+            if let Some(six) = six {
+                let mut c = plan.clone();
+                c.waypoints[k].joints_deg = six;
                 let t = time_s(&c);
                 if t <= best_s {
                     (plan, best_s, changed) = (c, t, true);
@@ -60,10 +93,103 @@ pub fn shortcut(mut plan: Plan, model: &CollisionModel, time_s: &dyn Fn(&Plan) -
     plan
 }
 
-/// Leg `l` with its greedy farthest joins (module doc), or `None` when it drops no via.
-fn join_leg(plan: &Plan, l: usize, model: &CollisionModel) -> Option<Plan> {
+/// A leg's proofs of a round, computed ahead: the waypoints its joins keep (`None`: no via
+/// dropped), and the slides of the leg's vias after them, in order.
+#[derive(Default)]
+struct Ahead {
+    kept: Option<Vec<Waypoint>>,
+    slides: Vec<Guess>,
+}
+
+/// A slide computed ahead: the joints of the via's previous waypoint, the via and its next
+/// waypoint it was computed from, and the via's new joints (`None`: no slide proven).
+struct Guess {
+    key: [[f64; 6]; 3],
+    six: Option<[f64; 6]>,
+}
+
+/// Every leg's [`Ahead`] for a round of `plan`, legs on all cores: its joins, then the chain of
+/// its slides on the waypoints the joins keep, as if every proven change were kept (the usual
+/// case). A slide reads only its via, the via's two neighbours and the leg's cell points (which
+/// no change moves), so where the pass meets a via with the same three joints, bit for bit, as
+/// a slide computed ahead, that slide is what it would compute there; where an earlier change of
+/// the leg was not kept, the joints differ and the pass computes the slide anew.
+fn ahead_of_round(plan: &Plan, model: &CollisionModel) -> Vec<Ahead> {
+    let w = &plan.waypoints;
+    let legs: Vec<usize> = (0..plan.legs.len())
+        .filter(|&l| plan.legs[l].waypoints.len() > 2)
+        .collect();
+    // A map costs about a proof's time, and a leg with one via that cannot slide asks one
+    // proof (its join): with one leg or none asking more, the legs are proven here, in turn.
+    let busy = legs.iter().filter(|&&l| {
+        let r = plan.legs[l].waypoints.clone();
+        r.len() > 3 || (r.start + 1..r.end - 1).any(|k| can_slide(&w[k - 1], &w[k], &w[k + 1]))
+    });
+    let threads = if busy.count() >= 2 { usize::MAX } else { 1 };
+    let per_leg = parallel::map_on(threads, &legs, |&l| {
+        let ws = &plan.waypoints[plan.legs[l].waypoints.clone()];
+        let kept = join_kept(ws, model);
+        let slides = slide_chain(kept.as_deref().unwrap_or(ws), l, model);
+        Ahead { kept, slides }
+    });
+    let mut all: Vec<Ahead> = plan.legs.iter().map(|_| Ahead::default()).collect();
+    for (&l, a) in legs.iter().zip(per_leg) {
+        all[l] = a;
+    }
+    all
+}
+
+/// The slides of leg `l`'s vias computed ahead along its waypoints `ws`, each via in order,
+/// every proven slide kept for the next; up to the first waypoint that is no via of leg `l` (the
+/// pass slides a via on the schedule of the leg it names).
+fn slide_chain(ws: &[Waypoint], l: usize, model: &CollisionModel) -> Vec<Guess> {
+    let m = ws.len();
+    let schedule = WristSchedule::new(&ws[0].joints_deg, &ws[m - 1].joints_deg);
+    let mut joints: Vec<[f64; 6]> = ws.iter().map(|w| w.joints_deg).collect();
+    let mut slides = Vec::with_capacity(m.saturating_sub(2));
+    for i in 1..m.saturating_sub(1) {
+        if !matches!(ws[i].kind, WaypointKind::Via { leg, .. } if leg == l) {
+            break;
+        }
+        let key = [joints[i - 1], joints[i], joints[i + 1]];
+        let six = slide_six(&key, &schedule, model);
+        if let Some(six) = six {
+            joints[i] = six;
+        }
+        slides.push(Guess { key, six });
+    }
+    slides
+}
+
+/// Whether via `via` can slide at all between `prev` and `next`: its neighbours' midpoint,
+/// rounded, is not where it is (else every fraction of the slide rounds back to it, as the via
+/// is at the written precision). Only chooses whether the legs are proven on all cores, never a
+/// change.
+fn can_slide(prev: &Waypoint, via: &Waypoint, next: &Waypoint) -> bool {
+    let (p, v, n) = (prev.arm_deg(), via.arm_deg(), next.arm_deg());
+    quantize_joints(std::array::from_fn(|x| 0.5 * (p[x] + n[x]))) != v
+}
+
+/// Whether two keys hold the same bits (a `-0.0` is not a `0.0` here).
+fn same_bits(a: &[[f64; 6]; 3], b: &[[f64; 6]; 3]) -> bool {
+    a.iter()
+        .flatten()
+        .zip(b.iter().flatten())
+        .all(|(x, y)| x.to_bits() == y.to_bits())
+}
+
+/// The wrist schedule of leg `l`, from its cell points.
+fn schedule_of(plan: &Plan, l: usize) -> WristSchedule {
     let range = plan.legs[l].waypoints.clone();
-    let ws = &plan.waypoints[range.clone()];
+    WristSchedule::new(
+        &plan.waypoints[range.start].joints_deg,
+        &plan.waypoints[range.end - 1].joints_deg,
+    )
+}
+
+/// The waypoints a leg `ws` keeps with its greedy farthest joins (module doc), or `None` when
+/// it drops no via.
+fn join_kept(ws: &[Waypoint], model: &CollisionModel) -> Option<Vec<Waypoint>> {
     let m = ws.len();
     if m <= 2 {
         return None;
@@ -78,52 +204,36 @@ fn join_leg(plan: &Plan, l: usize, model: &CollisionModel) -> Option<Plan> {
         kept.push(ws[j].clone());
         i = j;
     }
-    (kept.len() < m).then(|| with_leg(plan, l, kept))
+    (kept.len() < m).then_some(kept)
 }
 
-/// Via `k` slid towards the midpoint of its neighbours (module doc), or `None` when it is no
-/// via or no slide is proven.
-fn slide(plan: &Plan, k: usize, model: &CollisionModel) -> Option<Plan> {
-    let WaypointKind::Via { leg, .. } = plan.waypoints[k].kind else {
-        return None;
-    };
-    let range = plan.legs[leg].waypoints.clone();
-    let (first, last) = (
-        &plan.waypoints[range.start].joints_deg,
-        &plan.waypoints[range.end - 1].joints_deg,
-    );
-    let schedule = WristSchedule::new(first, last);
-    let (prev, via, next) = (
-        plan.waypoints[k - 1].arm_deg(),
-        plan.waypoints[k].arm_deg(),
-        plan.waypoints[k + 1].arm_deg(),
-    );
+/// The new joints of a via slid towards the midpoint of its neighbours (module doc), from
+/// `[previous, via, next]` joints and its leg's wrist schedule; `None` when no slide is proven.
+fn slide_six(
+    [prev6, via6, next6]: &[[f64; 6]; 3],
+    schedule: &WristSchedule,
+    model: &CollisionModel,
+) -> Option<[f64; 6]> {
+    let arm = |j: &[f64; 6]| [j[0], j[1], j[2]];
+    let (prev, via, next) = (arm(prev6), arm(via6), arm(next6));
     let goal: [f64; 3] = std::array::from_fn(|x| 0.5 * (prev[x] + next[x]));
-    let at = |f: f64| -> Option<Plan> {
+    let at = |f: f64| -> Option<[f64; 6]> {
         let arm = quantize_joints(std::array::from_fn(|x| via[x] + f * (goal[x] - via[x])));
         if arm == via {
             return None;
         }
         let six = schedule.six(&arm);
-        let w = &plan.waypoints;
-        if !(model.move_is_safe(&w[k - 1].joints_deg, &six)
-            && model.move_is_safe(&six, &w[k + 1].joints_deg))
-        {
-            return None;
-        }
-        let mut c = plan.clone();
-        c.waypoints[k].joints_deg = six;
-        Some(c)
+        (model.move_is_safe(prev6, &six) && model.move_is_safe(&six, next6)).then_some(six)
     };
-    if let Some(c) = at(1.0) {
-        return Some(c);
+    if let Some(six) = at(1.0) {
+        return Some(six);
     }
     let (mut lo, mut hi, mut best) = (0.0, 1.0, None);
     for _ in 0..SLIDE_STEPS {
         let f = 0.5 * (lo + hi);
         match at(f) {
-            Some(c) => {
-                (lo, best) = (f, Some(c));
+            Some(six) => {
+                (lo, best) = (f, Some(six));
             }
             None => hi = f,
         }
@@ -152,4 +262,172 @@ pub(super) fn with_leg(plan: &Plan, l: usize, leg: Vec<Waypoint>) -> Plan {
     out.estimate = None;
     out.zones = Vec::new();
     out
+}
+
+#[cfg(test)]
+mod tests {
+    //! The pass against the one-core pass it replaced (kept here as [`sequential`]: each leg's
+    //! joins and each via's slide proven at its turn), on real cells' routes: the same plan, bit
+    //! for bit, including where a proven change is not kept (its time grows).
+    use super::*;
+    use crate::pipeline;
+    use crate::timing;
+    use std::path::Path;
+
+    /// The pass as it ran on one core (the reference), and how many proven slides it did not
+    /// keep.
+    fn sequential(
+        mut plan: Plan,
+        model: &CollisionModel,
+        time_s: &dyn Fn(&Plan) -> f64,
+    ) -> (Plan, usize) {
+        let mut best_s = time_s(&plan);
+        let mut rejected = 0;
+        for _ in 0..ROUNDS {
+            let mut changed = false;
+            for l in 0..plan.legs.len() {
+                if let Some(c) = join_leg(&plan, l, model) {
+                    let t = time_s(&c);
+                    if t <= best_s {
+                        (plan, best_s, changed) = (c, t, true);
+                    }
+                }
+            }
+            for k in 1..plan.waypoints.len().saturating_sub(1) {
+                if let Some(c) = slide(&plan, k, model) {
+                    let t = time_s(&c);
+                    if t <= best_s {
+                        (plan, best_s, changed) = (c, t, true);
+                    } else {
+                        rejected += 1;
+                    }
+                }
+            }
+            if !changed {
+                break;
+            }
+        }
+        (plan, rejected)
+    }
+
+    /// The one-core pass's join of leg `l`.
+    fn join_leg(plan: &Plan, l: usize, model: &CollisionModel) -> Option<Plan> {
+        let range = plan.legs[l].waypoints.clone();
+        let ws = &plan.waypoints[range.clone()];
+        let m = ws.len();
+        if m <= 2 {
+            return None;
+        }
+        let mut kept = vec![ws[0].clone()];
+        let mut i = 0;
+        while i + 1 < m {
+            let j = (i + 2..m)
+                .rev()
+                .find(|&j| model.move_is_safe(&ws[i].joints_deg, &ws[j].joints_deg))
+                .unwrap_or(i + 1);
+            kept.push(ws[j].clone());
+            i = j;
+        }
+        (kept.len() < m).then(|| with_leg(plan, l, kept))
+    }
+
+    /// The one-core pass's slide of via `k`.
+    fn slide(plan: &Plan, k: usize, model: &CollisionModel) -> Option<Plan> {
+        let WaypointKind::Via { leg, .. } = plan.waypoints[k].kind else {
+            return None;
+        };
+        let range = plan.legs[leg].waypoints.clone();
+        let (first, last) = (
+            &plan.waypoints[range.start].joints_deg,
+            &plan.waypoints[range.end - 1].joints_deg,
+        );
+        let schedule = WristSchedule::new(first, last);
+        let (prev, via, next) = (
+            plan.waypoints[k - 1].arm_deg(),
+            plan.waypoints[k].arm_deg(),
+            plan.waypoints[k + 1].arm_deg(),
+        );
+        let goal: [f64; 3] = std::array::from_fn(|x| 0.5 * (prev[x] + next[x]));
+        let at = |f: f64| -> Option<Plan> {
+            let arm = quantize_joints(std::array::from_fn(|x| via[x] + f * (goal[x] - via[x])));
+            if arm == via {
+                return None;
+            }
+            let six = schedule.six(&arm);
+            let w = &plan.waypoints;
+            if !(model.move_is_safe(&w[k - 1].joints_deg, &six)
+                && model.move_is_safe(&six, &w[k + 1].joints_deg))
+            {
+                return None;
+            }
+            let mut c = plan.clone();
+            c.waypoints[k].joints_deg = six;
+            Some(c)
+        };
+        if let Some(c) = at(1.0) {
+            return Some(c);
+        }
+        let (mut lo, mut hi, mut best) = (0.0, 1.0, None);
+        for _ in 0..SLIDE_STEPS {
+            let f = 0.5 * (lo + hi);
+            match at(f) {
+                Some(c) => {
+                    (lo, best) = (f, Some(c));
+                }
+                None => hi = f,
+            }
+        }
+        best
+    }
+
+    /// The waypoints' joints as bits, and the legs' ranges: what must not differ.
+    fn bits(p: &Plan) -> (Vec<[u64; 6]>, Vec<String>, Vec<std::ops::Range<usize>>) {
+        (
+            p.waypoints
+                .iter()
+                .map(|w| w.joints_deg.map(f64::to_bits))
+                .collect(),
+            p.waypoints
+                .iter()
+                .map(|w| format!("{:?}", w.kind))
+                .collect(),
+            p.legs.iter().map(|l| l.waypoints.clone()).collect(),
+        )
+    }
+
+    #[test]
+    fn all_cores_give_the_one_core_plan_bit_for_bit() {
+        let mut rejected = 0;
+        let mut changed = 0;
+        for (cell, grids) in [
+            ("torch-trunk", &[2.0, 1.5][..]),
+            ("gripper-pick", &[2.0, 1.5][..]),
+            ("conveyor", &[2.0, 2.5][..]),
+            ("shelf", &[1.5][..]),
+        ] {
+            let path = format!("{}/cells/{cell}.yaml", env!("CARGO_MANIFEST_DIR"));
+            let job = pipeline::load(Path::new(&path)).expect("the example cell loads");
+            let placed = pipeline::place(&job).expect("the example cell is placed");
+            let time_model = timing::TimeModel::new(&job.robot, job.cell.tool.as_ref());
+            let time_s = |p: &Plan| timing::estimate(p, &placed.points, &time_model).total_s;
+            for &grid_deg in grids {
+                let inspected = pipeline::inspect(&job, &placed, grid_deg);
+                let route = pipeline::route(&job, &placed, &inspected, job.cell.planner.method)
+                    .expect("the example cell is planned");
+                // The cell's model and the margined one the refine stage also runs on.
+                let margined = inspected.model.with_margin(super::super::MARGIN_MM);
+                for model in [&inspected.model, &margined] {
+                    let (want, r) = sequential(route.clone(), model, &time_s);
+                    let got = shortcut(route.clone(), model, &time_s);
+                    assert_eq!(bits(&got), bits(&want), "{cell} at {grid_deg} deg");
+                    rejected += r;
+                    changed += usize::from(bits(&want) != bits(&route));
+                }
+            }
+        }
+        // The cases are worth something: the pass changes routes, and some proven slide is not
+        // kept (the slides computed ahead after it on its leg are then computed again).
+        assert!(changed > 0);
+        assert!(rejected > 0, "no proven slide was turned down");
+    }
 }
