@@ -389,7 +389,7 @@ fn spread_answers_are_exact(schedule: &WristSchedule) {
     }
     let (mut clear, mut spread, mut blocked) = (0, 0, 0);
     for (i, seen) in visited.iter().enumerate() {
-        match memo.answers[i].load(Ordering::Relaxed) {
+        match memo.answer(i) {
             TOOL_CLEAR => {
                 let six = graph.six(g.node(i));
                 assert!(
@@ -500,7 +500,7 @@ fn the_spread_marks_its_offsets_nodes_inside_and_at_the_faces() {
                 w
             };
             let got: Vec<usize> = (0..g.len())
-                .filter(|&i| memo.answers[i].load(Ordering::Relaxed) == TOOL_CLEAR)
+                .filter(|&i| memo.answer(i) == TOOL_CLEAR)
                 .collect();
             assert_eq!(got, want, "node {n:?}, margin {margin}");
             assert!(!want.is_empty(), "node {n:?}, margin {margin}");

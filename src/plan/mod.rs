@@ -566,16 +566,17 @@ const LEGS_EXTRA_MAX_BYTES: usize = 64 << 20;
 /// `u16`, for a node-by-node wave; the row wave's residues take 2 bits, and the two waves
 /// numbered together from both ends hold four sets of 2-bit residues while they gather the
 /// shortest paths' nodes), their bit sets (the decided nodes and the candidates, with the
-/// rows' words rounded up: up to 4 bits a node a wave) and its tool memo (1 byte with a tool,
-/// `leg::ToolMemo`): 6 bytes a node with a tool, 5 without. Over the IRB 1400's ranges at 1 deg (341 x 141 x 136 = 6.5 M nodes) that is 39 MB
-/// with a tool: two legs at once; at 0.5 deg (681 x 281 x 271 = 52 M nodes) 311 MB: leg by leg,
-/// as on any grid of more than 11.2 M nodes (13.4 M without a tool). A wave whose numbers
+/// rows' words rounded up: up to 4 bits a node a wave) and its tool memo (2 bits with a tool,
+/// `leg::ToolMemo`): 5.25 bytes a node with a tool, 5 without. Over the IRB 1400's ranges at 1
+/// deg (341 x 141 x 136 = 6.5 M nodes) that is 34 MB with a tool: two legs at once; at 0.5 deg
+/// (681 x 281 x 271 = 52 M nodes) 272 MB: leg by leg, as on any grid of more than 12.8 M nodes
+/// (13.4 M without a tool). A wave whose numbers
 /// outgrow `u16` takes `u32` labels, twice the bytes, but only at more than 65 533 steps from
 /// its start: on grids far past these.
 pub fn legs_at_once(cs: &CSpace, model: &CollisionModel) -> usize {
-    // Half bytes a node: two waves' labels and bit sets, and the tool memo.
-    let halves = 2 * (2 * std::mem::size_of::<u16>() + 1) + 2 * usize::from(model.has_tool());
-    let leg_bytes = cs.grid.len().saturating_mul(halves) / 2;
+    // Quarter bytes a node: two waves' labels and bit sets, and the tool memo.
+    let quarters = 2 * (4 * std::mem::size_of::<u16>() + 2) + usize::from(model.has_tool());
+    let leg_bytes = cs.grid.len().saturating_mul(quarters) / 4;
     if leg_bytes.saturating_mul(LEGS_AT_ONCE_MAX - 1) <= LEGS_EXTRA_MAX_BYTES {
         LEGS_AT_ONCE_MAX
     } else {
