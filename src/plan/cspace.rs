@@ -148,6 +148,13 @@ pub trait Inspector: Sync {
     fn column_bytes(&self) -> usize {
         0
     }
+    /// The code bits whose row bit set ([`CSpace::row_bits`]) the planner asks for on every
+    /// leg: that set is then made with the codes, slice by slice while they are in cache,
+    /// instead of in a pass of its own over the whole grid before the first wave (`None` by
+    /// default: every set made on its first ask).
+    fn row_bits_ahead(&self) -> Option<u8> {
+        None
+    }
     /// The codes of the column `[a1, a2, a3[k]]` into `code[k]`, and the column's own bytes
     /// into `column` ([`column_bytes`](Self::column_bytes) of them).
     fn inspect_column(
@@ -275,9 +282,22 @@ impl CSpace {
         // The slices go to the threads one at a time, as each asks for the next: slices cost
         // very different amounts (a side of axis 1 with the obstacles, one without), so fixed
         // shares would leave a core idle. Each slice's codes are the same whoever inspects it.
+        // The row bit set made with the codes, a slice's rows at a time (one word a slice,
+        // never read, where it is not).
+        let words = grid.dims[2].div_ceil(64);
+        let ahead = inspector
+            .row_bits_ahead()
+            .filter(|_| grid.dims[0] * grid.dims[1] * words * 8 <= ROW_BITS_MAX_BYTES);
+        let row_slice = if ahead.is_some() {
+            grid.dims[1] * words
+        } else {
+            1
+        };
+        let mut plain = vec![0u64; grid.dims[0] * row_slice.max(1)];
         let slices = Mutex::new(
             code.chunks_mut(slice)
                 .zip(columns.chunks_mut(col_slice))
+                .zip(plain.chunks_mut(row_slice.max(1)))
                 .enumerate(),
         );
         std::thread::scope(|s| {
@@ -286,7 +306,7 @@ impl CSpace {
                 s.spawn(move || loop {
                     // A poisoned lock only means another slice panicked; the scope re-raises it.
                     let next = slices.lock().map(|mut it| it.next()).ok().flatten();
-                    let Some((i, (slab, colslab))) = next else {
+                    let Some((i, ((slab, colslab), rowslab))) = next else {
                         break;
                     };
                     inspector.inspect_slice(
@@ -296,16 +316,27 @@ impl CSpace {
                         slab,
                         &mut colslab[..grid.dims[1] * width],
                     );
+                    if let Some(bits) = ahead {
+                        row_words(slab, grid.dims[2], bits, rowslab);
+                    }
                     progress.advance(1);
                 });
             }
         });
+        let rows = RowCache::default();
+        if let Some(bits) = ahead {
+            let made = Arc::new(RowBits { words, plain });
+            rows.0
+                .lock()
+                .unwrap_or_else(|p| p.into_inner())
+                .push((bits, made));
+        }
         CSpace {
             grid,
             code,
             column,
             column_bytes: width,
-            rows: RowCache::default(),
+            rows,
         }
     }
 
@@ -378,18 +409,12 @@ impl CSpace {
     }
 
     /// [`row_bits`](Self::row_bits)' set, made in [`ROW_BITS_CHUNKS`] chunks of rows on all
-    /// cores: the first wave of a route waits for it.
+    /// cores: the first wave of a route waits for it (unless the inspector made it with the
+    /// codes: [`Inspector::row_bits_ahead`]).
     fn make_row_bits(&self, bits: u8) -> RowBits {
         let d2 = self.grid.dims[2];
         let words = d2.div_ceil(64);
         let rows = self.grid.dims[0] * self.grid.dims[1];
-        const HIGH: u64 = 0x8080_8080_8080_8080;
-        const LOW7: u64 = 0x7f7f_7f7f_7f7f_7f7f;
-        // Each byte's high bit, gathered into the top byte (bit 7 of byte k to bit 56 + k).
-        const GATHER: u64 = 0x0102_0408_1020_4080;
-        const _: () = assert!(FREE == 0x80, "the free bit is each byte's high bit");
-        let spread = u64::from_ne_bytes([bits; 8]);
-        let top = |x: u64| ((x >> 7) & 0x0101_0101_0101_0101).wrapping_mul(GATHER) >> 56;
         if d2 == 0 || rows == 0 {
             return RowBits {
                 words,
@@ -401,26 +426,52 @@ impl CSpace {
         let chunk = rows.div_ceil(ROW_BITS_CHUNKS);
         let codes: Vec<&[u8]> = self.code.chunks(chunk * d2).collect();
         let parts = crate::parallel::map(&codes, |codes| {
-            let mut plain = Vec::with_capacity(codes.len() / d2 * words);
-            for row in codes.chunks_exact(d2) {
-                for sixty_four in row.chunks(64) {
-                    let mut p = 0u64;
-                    for (k, eight) in sixty_four.chunks(8).enumerate() {
-                        let mut b = [0u8; 8];
-                        b[..eight.len()].copy_from_slice(eight);
-                        let x = u64::from_le_bytes(b);
-                        let hit = x & spread;
-                        // The high bit of each byte of `hit` that is not zero.
-                        let any = ((hit & LOW7).wrapping_add(LOW7) | hit) & HIGH;
-                        p |= top(x & HIGH & !any) << (8 * k);
-                    }
-                    plain.push(p);
-                }
-            }
+            let mut plain = vec![0u64; codes.len() / d2 * words];
+            row_words(codes, d2, bits, &mut plain);
             plain
         });
         let plain = parts.concat();
         RowBits { words, plain }
+    }
+}
+
+/// The largest row bit set the row wave asks of the grid ([`CSpace::row_bits`]) and the
+/// inspection makes ahead ([`Inspector::row_bits_ahead`]), bytes: the set is kept for the rest
+/// of the run (52 MB at 0.25 deg over the IRB 1400's ranges); above it every candidate is
+/// looked at (the same numbers; `wave`). At 0.25 deg the set took the trunk from 11.2 to 9.4 s
+/// at a peak of 975 940 KiB, 0.9994e9 bytes (922 180 KiB without), when labels took 2 bytes a
+/// node; with residues, 2 bits a node, the peak fell well below (`benches/README.md`).
+pub const ROW_BITS_MAX_BYTES: usize = 64 << 20;
+
+/// The row words ([`RowBits`]) of whole rows of `d2` codes (`codes`) into `out`, `d2` bits
+/// rounded up to whole words a row: the free nodes whose code has none of `bits`, 8 codes at a
+/// time.
+fn row_words(codes: &[u8], d2: usize, bits: u8, out: &mut [u64]) {
+    const HIGH: u64 = 0x8080_8080_8080_8080;
+    const LOW7: u64 = 0x7f7f_7f7f_7f7f_7f7f;
+    // Each byte's high bit, gathered into the top byte (bit 7 of byte k to bit 56 + k).
+    const GATHER: u64 = 0x0102_0408_1020_4080;
+    const _: () = assert!(FREE == 0x80, "the free bit is each byte's high bit");
+    if d2 == 0 {
+        return;
+    }
+    let words = d2.div_ceil(64);
+    let spread = u64::from_ne_bytes([bits; 8]);
+    let top = |x: u64| ((x >> 7) & 0x0101_0101_0101_0101).wrapping_mul(GATHER) >> 56;
+    for (row, out) in codes.chunks_exact(d2).zip(out.chunks_mut(words)) {
+        for (sixty_four, o) in row.chunks(64).zip(out) {
+            let mut p = 0u64;
+            for (k, eight) in sixty_four.chunks(8).enumerate() {
+                let mut b = [0u8; 8];
+                b[..eight.len()].copy_from_slice(eight);
+                let x = u64::from_le_bytes(b);
+                let hit = x & spread;
+                // The high bit of each byte of `hit` that is not zero.
+                let any = ((hit & LOW7).wrapping_add(LOW7) | hit) & HIGH;
+                p |= top(x & HIGH & !any) << (8 * k);
+            }
+            *o = p;
+        }
     }
 }
 
@@ -482,6 +533,45 @@ mod tests {
         });
         assert_eq!(built.code, direct.code);
         assert!(built.free_count() < g.len());
+    }
+
+    /// Pseudo-random codes (free or not, any other bits) from the node's values.
+    struct Noise(Option<u8>);
+    impl Inspector for Noise {
+        fn row_bits_ahead(&self) -> Option<u8> {
+            self.0
+        }
+        fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], code: &mut [u8], _: &mut [u8]) {
+            for (f, &c) in code.iter_mut().zip(a3) {
+                let h = ((a1 * 7919.0 + a2 * 104_729.0 + c * 1_299_709.0) as i64)
+                    .wrapping_mul(0x2545_f491_4f6c_dd1d) as u64
+                    >> 40;
+                *f = if h & 3 == 0 {
+                    0
+                } else {
+                    FREE | (h >> 8) as u8 & 0x7f
+                };
+            }
+        }
+    }
+
+    /// The row bit set made with the codes, slice by slice, is the one made after them, on
+    /// rows of partly used, whole and several words; a set of other bits is still made on its
+    /// first ask.
+    #[test]
+    fn row_bits_made_ahead_are_the_ones_made_after() {
+        for last in [6.0, 63.0, 64.0, 69.0, 130.0] {
+            let g = Grid::over([[-4.0, 5.0], [-3.0, 3.0], [0.0, last]], 1.0);
+            let ahead = CSpace::build(g, &Noise(Some(0x40)));
+            let after = CSpace::build(g, &Noise(None));
+            assert_eq!(ahead.code, after.code);
+            assert!(ahead.code.iter().any(|&c| c & 0xc0 == 0xc0));
+            assert!(ahead.code.iter().any(|&c| c & 0xc0 == 0x80));
+            let kept = ahead.rows.0.lock().map(|r| r.len()).unwrap_or(0);
+            assert_eq!(kept, 1, "made with the codes");
+            assert_eq!(*ahead.row_bits(0x40), after.make_row_bits(0x40));
+            assert_eq!(*ahead.row_bits(0x08), after.make_row_bits(0x08));
+        }
     }
 
     /// The row bit set, made 8 codes at a time, against each node's code read alone: random

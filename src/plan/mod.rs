@@ -314,6 +314,10 @@ impl cspace::Inspector for GridCheck<'_> {
     fn column_bytes(&self) -> usize {
         GridCheck::column_bytes(self)
     }
+    /// Every leg's graph (`leg::LegGraph`) looks at the nodes with the tool-near bit.
+    fn row_bits_ahead(&self) -> Option<u8> {
+        Some(GridCheck::TOOL_NEAR_BITS)
+    }
     fn inspect_column(
         &self,
         a1_deg: f64,

@@ -42,7 +42,7 @@
 //! expanded, the step numbered the other), so every accepted step down from a node numbered `l`
 //! leads to `l - 1`.
 
-use crate::plan::cspace::{CSpace, Node, FREE};
+use crate::plan::cspace::{CSpace, Node, FREE, ROW_BITS_MAX_BYTES};
 
 /// Calls a row wave function with the row's word count as a constant where it is small (the
 /// loops over a row's words unrolled): 3 at 1 deg, 5 at 0.5 deg, 9 at 0.25 deg over the IRB
@@ -165,14 +165,6 @@ impl Word for u32 {
         (self + 1 < Self::CHECKED).then_some(self + 1)
     }
 }
-
-/// The largest row bit set the row wave asks of the grid ([`CSpace::row_bits`]), bytes: the
-/// set holds a bit a node for the rest of the run (52 MB at 0.25 deg over the IRB 1400's
-/// ranges); above it every candidate is looked at (the same numbers). At 0.25 deg the set took
-/// the trunk from 11.2 to 9.4 s at a peak of 975 940 KiB, 0.9994e9 bytes (922 180 KiB
-/// without), when labels took 2 bytes a node; with residues, 2 bits a node, the peak fell
-/// well below (`benches/README.md`).
-const ROW_BITS_MAX_BYTES: usize = 64 << 20;
 
 /// The rows of the row wave's candidates marked together (one bit a group; a group's scan also
 /// reads the row just below and just above it, so a front word marks one group a plane of rows).
