@@ -17,7 +17,8 @@
 //! arm-free nodes whose tool, at the leg's wrist there, is also free; the tool is looked at only
 //! where the node's code says it could reach a box (the wrist centre within the tool's radius
 //! plus the clearance of one), only when the wave gets there, and once per node for the whole
-//! leg ([`ToolMemo`], shared by its waves and walks). Where the tool shapes' balls keep a
+//! leg ([`ToolMemo`], shared by its waves and walks; again only where a racing write dropped
+//! the answer). Where the tool shapes' balls keep a
 //! margin from every box (`CollisionModel::tool_look`), that margin also answers the nodes
 //! around, up to two steps out, whose straight six-axis move from the node (the wrist as the
 //! schedule turns it, plus its rounding) moves the tool less than the margin: the same answers
@@ -131,7 +132,8 @@ impl WristSchedule {
 /// node and the leg, so a race only repeats the work. A word is read and written back whole
 /// (no atomic read-modify-write, which would cost more than it saves): a write racing another in
 /// the same word may drop the other's answer, never change one, so that node is looked at
-/// again; bits `11` (never written: a node's two answers agree) read as not looked at.
+/// again; bits `11` (never written: a node's two answers agree) are neither answer, and the node
+/// is looked at again.
 /// Beside it, made on the first spread ([`LegGraph::spread_clear`]), the neighbour offsets with
 /// the tool's motion over each, in increasing motion, and their grid index deltas: the same at
 /// every node of the leg.
@@ -265,7 +267,7 @@ impl LegGraph<'_> {
         }
     }
 
-    /// The tool's look at node `n`, its answer stored in `slot` (the memo's for `n`).
+    /// The tool's look at node `n`, its answer recorded in the memo at `slot` (`n`'s index).
     #[inline(never)]
     fn look(&self, n: Node, slot: usize) -> bool {
         let model = self.check.model();
@@ -561,6 +563,11 @@ mod tests {
         }
         // Word 0 holds node 0 in its lowest bits and node 31 in its highest.
         assert_eq!(memo.answers[0].load(Ordering::Relaxed), 2 | 1 << 62);
+        // A node answered both ways (never, as the answers agree) holds neither answer, so
+        // `tool_clear` looks at it again.
+        memo.record(40, TOOL_CLEAR);
+        memo.record(40, TOOL_BLOCKED);
+        assert_eq!(memo.answer(40), TOOL_CLEAR | TOOL_BLOCKED);
         // Past the grid: nothing kept, nothing read.
         memo.record(96, TOOL_CLEAR);
         assert_eq!(memo.answer(96), 0);

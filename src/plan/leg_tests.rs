@@ -388,6 +388,15 @@ fn spread_answers_are_exact(schedule: &WristSchedule) {
         let _ = graph.node_ok(g.node(i));
     }
     let (mut clear, mut spread, mut blocked) = (0, 0, 0);
+    // No node was answered both ways (its bits 11 would be neither answer, skipped below).
+    for w in &memo.answers {
+        let v = w.load(Ordering::Relaxed);
+        assert_eq!(
+            v & (v >> 1) & 0x5555_5555_5555_5555,
+            0,
+            "a node answered both ways"
+        );
+    }
     for (i, seen) in visited.iter().enumerate() {
         match memo.answer(i) {
             TOOL_CLEAR => {
