@@ -365,11 +365,36 @@ pub fn plan(
 /// The smallest clearance along every move and along the whole route (the least of the moves'),
 /// each certified within [`MIN_CLEARANCE_TOL_MM`] (`None` without obstacles), into the plan.
 /// The moves are certified on all cores (`crate::parallel`), each as alone.
-pub fn certify(mut plan: Plan, model: &CollisionModel) -> Plan {
+pub fn certify(plan: Plan, model: &CollisionModel) -> Plan {
     let moves: Vec<_> = plan.moves6().collect();
-    plan.move_clearances = crate::parallel::map(&moves, |(a, b)| {
+    let clearances = crate::parallel::map(&moves, |(a, b)| {
         model.min_clearance_along(a, b, MIN_CLEARANCE_TOL_MM)
     });
+    with_clearances(plan, clearances)
+}
+
+/// [`certify`], where every move of `plan` is proven safe again
+/// ([`CollisionModel::move_is_safe`]): each move proven, then certified, a move at a time on
+/// all cores; `None` when a move is not proven (its clearance is then not certified, nor the
+/// moves' after it on that core).
+pub fn certify_proven(plan: Plan, model: &CollisionModel) -> Option<Plan> {
+    let moves: Vec<_> = plan.moves6().collect();
+    let failed = std::sync::atomic::AtomicBool::new(false);
+    let clearances = crate::parallel::map(&moves, |(a, b)| {
+        if failed.load(std::sync::atomic::Ordering::Relaxed) || !model.move_is_safe(a, b) {
+            failed.store(true, std::sync::atomic::Ordering::Relaxed);
+            return None;
+        }
+        Some(model.min_clearance_along(a, b, MIN_CLEARANCE_TOL_MM))
+    });
+    let clearances: Option<Vec<_>> = clearances.into_iter().collect();
+    Some(with_clearances(plan, clearances?))
+}
+
+/// `plan` with the smallest clearance of each move (`clearances`, one a move) and the least of
+/// them.
+fn with_clearances(mut plan: Plan, clearances: Vec<Option<Clearance>>) -> Plan {
+    plan.move_clearances = clearances;
     plan.min_clearance = plan
         .move_clearances
         .iter()
@@ -869,6 +894,26 @@ mod tests {
                 other => panic!("{at_once} at once: {other:?}"),
             }
         }
+    }
+
+    #[test]
+    fn a_route_proven_again_is_certified_as_by_certify_and_one_through_a_wall_is_not() {
+        let (model, cs) = split_cell();
+        let a = point("A", [30.0, -6.0, -9.0], [0.0, 30.0, 0.0]);
+        let b = point("B", [39.0, 21.0, -21.0], [10.0, 35.0, 20.0]);
+        let c = point("C", [42.0, 21.0, 12.0], [0.0, 30.0, 0.0]);
+        let route = route_on(&cs, &model, &[a, b, c], Method::Extensile, 1).expect("planned");
+        let once = certify(route.clone(), &model);
+        let again = certify_proven(route.clone(), &model).expect("every move proven");
+        assert!(once.min_clearance.is_some());
+        assert_eq!(again.move_clearances, once.move_clearances);
+        assert_eq!(again.min_clearance, once.min_clearance);
+        // The last point moved to the other side of the walls (E of the test above): its move
+        // crosses them.
+        let mut through = route;
+        let last = through.waypoints.len() - 1;
+        through.waypoints[last].joints_deg = [-30.0, 9.0, 0.0, 0.0, 30.0, 0.0];
+        assert!(certify_proven(through, &model).is_none());
     }
 
     #[test]

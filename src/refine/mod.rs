@@ -75,21 +75,23 @@ pub fn refine(
     }
     let mut best: Option<(f64, usize, Refined)> = None;
     for c in all {
-        // Every move proven on the cell's model, or the paper's route stays.
-        let c = if c.moves6().all(|(a, b)| model.move_is_safe(&a, &b)) {
-            c
+        // Every move proven again on the cell's model (and then certified), or the paper's
+        // route stays (proven as it was planned).
+        let proven = if c.waypoints == paper.waypoints {
+            Err(c)
         } else {
-            paper.clone()
+            plan::certify_proven(c, model).ok_or_else(|| paper.clone())
         };
-        let c = if c.waypoints == paper.waypoints {
-            let p = paper_certified.get_or_insert_with(|| certified(paper.clone(), model));
-            Plan {
-                move_clearances: p.move_clearances.clone(),
-                min_clearance: p.min_clearance.clone(),
-                ..c
+        let c = match proven {
+            Ok(c) => c,
+            Err(c) => {
+                let p = paper_certified.get_or_insert_with(|| certified(paper.clone(), model));
+                Plan {
+                    move_clearances: p.move_clearances.clone(),
+                    min_clearance: p.min_clearance.clone(),
+                    ..c
+                }
             }
-        } else {
-            plan::certify(c, model)
         };
         let r = zoned(c, model, points, settings);
         let t = time_s(&r.plan);
