@@ -313,74 +313,24 @@ mod tests {
         (plan, rejected, rejected_joins)
     }
 
-    /// The one-core pass's join of leg `l`.
+    /// The one-core pass's join of leg `l`, proven at its turn (the joins' proofs are the
+    /// pure `join_kept`; what the test holds is when they are made and which are used).
     fn join_leg(plan: &Plan, l: usize, model: &CollisionModel) -> Option<Plan> {
-        let range = plan.legs[l].waypoints.clone();
-        let ws = &plan.waypoints[range.clone()];
-        let m = ws.len();
-        if m <= 2 {
-            return None;
-        }
-        let mut kept = vec![ws[0].clone()];
-        let mut i = 0;
-        while i + 1 < m {
-            let j = (i + 2..m)
-                .rev()
-                .find(|&j| model.move_is_safe(&ws[i].joints_deg, &ws[j].joints_deg))
-                .unwrap_or(i + 1);
-            kept.push(ws[j].clone());
-            i = j;
-        }
-        (kept.len() < m).then(|| with_leg(plan, l, kept))
+        let ws = &plan.waypoints[plan.legs[l].waypoints.clone()];
+        join_kept(ws, model).map(|kept| with_leg(plan, l, kept))
     }
 
-    /// The one-core pass's slide of via `k`.
+    /// The one-core pass's slide of via `k`, proven at its turn (`slide_six`, as the pass).
     fn slide(plan: &Plan, k: usize, model: &CollisionModel) -> Option<Plan> {
         let WaypointKind::Via { leg, .. } = plan.waypoints[k].kind else {
             return None;
         };
-        let range = plan.legs[leg].waypoints.clone();
-        let (first, last) = (
-            &plan.waypoints[range.start].joints_deg,
-            &plan.waypoints[range.end - 1].joints_deg,
-        );
-        let schedule = WristSchedule::new(first, last);
-        let (prev, via, next) = (
-            plan.waypoints[k - 1].arm_deg(),
-            plan.waypoints[k].arm_deg(),
-            plan.waypoints[k + 1].arm_deg(),
-        );
-        let goal: [f64; 3] = std::array::from_fn(|x| 0.5 * (prev[x] + next[x]));
-        let at = |f: f64| -> Option<Plan> {
-            let arm = quantize_joints(std::array::from_fn(|x| via[x] + f * (goal[x] - via[x])));
-            if arm == via {
-                return None;
-            }
-            let six = schedule.six(&arm);
-            let w = &plan.waypoints;
-            if !(model.move_is_safe(&w[k - 1].joints_deg, &six)
-                && model.move_is_safe(&six, &w[k + 1].joints_deg))
-            {
-                return None;
-            }
-            let mut c = plan.clone();
-            c.waypoints[k].joints_deg = six;
-            Some(c)
-        };
-        if let Some(c) = at(1.0) {
-            return Some(c);
-        }
-        let (mut lo, mut hi, mut best) = (0.0, 1.0, None);
-        for _ in 0..SLIDE_STEPS {
-            let f = 0.5 * (lo + hi);
-            match at(f) {
-                Some(c) => {
-                    (lo, best) = (f, Some(c));
-                }
-                None => hi = f,
-            }
-        }
-        best
+        let w = &plan.waypoints;
+        let key = [w[k - 1].joints_deg, w[k].joints_deg, w[k + 1].joints_deg];
+        let six = slide_six(&key, &schedule_of(plan, leg), model)?;
+        let mut c = plan.clone();
+        c.waypoints[k].joints_deg = six;
+        Some(c)
     }
 
     /// The waypoints' joints as bits, and the legs' ranges: what must not differ.
