@@ -283,7 +283,7 @@ impl CSpace {
         // very different amounts (a side of axis 1 with the obstacles, one without), so fixed
         // shares would leave a core idle. Each slice's codes are the same whoever inspects it.
         // The row bit set made with the codes, a slice's rows at a time (one word a slice,
-        // never read, where it is not).
+        // never read, where it is not; a slice has rows of at least one word here).
         let words = grid.dims[2].div_ceil(64);
         let ahead = inspector
             .row_bits_ahead()
@@ -293,11 +293,11 @@ impl CSpace {
         } else {
             1
         };
-        let mut plain = vec![0u64; grid.dims[0] * row_slice.max(1)];
+        let mut plain = vec![0u64; grid.dims[0] * row_slice];
         let slices = Mutex::new(
             code.chunks_mut(slice)
                 .zip(columns.chunks_mut(col_slice))
-                .zip(plain.chunks_mut(row_slice.max(1)))
+                .zip(plain.chunks_mut(row_slice))
                 .enumerate(),
         );
         std::thread::scope(|s| {
@@ -580,13 +580,7 @@ mod tests {
     /// set kept.
     #[test]
     fn row_bits_match_each_nodes_code() {
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut next = crate::plan::search::testing::xorshift(0x2545_f491_4f6c_dd1d);
         for d2 in [1usize, 7, 63, 64, 65, 70, 128, 130] {
             let g = Grid::over([[0.0, 2.0], [0.0, 3.0], [0.0, (d2 - 1) as f64]], 1.0);
             let mut cs = CSpace::from_fn(g, |_| false);

@@ -267,9 +267,9 @@ impl LegGraph<'_> {
         }
     }
 
-    /// The tool's look at node `n`, its answer recorded in the memo at `slot` (`n`'s index).
+    /// The tool's look at node `n` (grid index `index`), its answer recorded in the memo.
     #[inline(never)]
-    fn look(&self, n: Node, slot: usize) -> bool {
+    fn look(&self, n: Node, index: usize) -> bool {
         let model = self.check.model();
         let six = self.six(n);
         // Cheap bounds first; where they leave a margin, it proves the nodes around too.
@@ -278,7 +278,7 @@ impl LegGraph<'_> {
             None => model.tool_look(&six),
         };
         self.memo
-            .record(slot, if clear { TOOL_CLEAR } else { TOOL_BLOCKED });
+            .record(index, if clear { TOOL_CLEAR } else { TOOL_BLOCKED });
         if margin > 0.0 && margin.is_finite() {
             self.spread_clear(n, margin);
         }

@@ -49,7 +49,7 @@ use cspace::{CSpace, Node};
 use leg::LegFailure;
 use search::SearchFailure;
 use std::ops::Range;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 /// The collision model's node codes mark a free node with the bit the grid reads.
 const _: () = assert!(crate::collision::CODE_FREE == cspace::FREE);
@@ -375,14 +375,14 @@ pub fn certify(plan: Plan, model: &CollisionModel) -> Plan {
 
 /// [`certify`], where every move of `plan` is proven safe again
 /// ([`CollisionModel::move_is_safe`]): each move proven, then certified, a move at a time on
-/// all cores; `None` when a move is not proven (its clearance is then not certified, nor the
-/// moves' after it on that core).
+/// all cores; `None` when a move is not proven (then no move started after it is proven or
+/// certified).
 pub fn certify_proven(plan: Plan, model: &CollisionModel) -> Option<Plan> {
     let moves: Vec<_> = plan.moves6().collect();
-    let failed = std::sync::atomic::AtomicBool::new(false);
+    let failed = AtomicBool::new(false);
     let clearances = crate::parallel::map(&moves, |(a, b)| {
-        if failed.load(std::sync::atomic::Ordering::Relaxed) || !model.move_is_safe(a, b) {
-            failed.store(true, std::sync::atomic::Ordering::Relaxed);
+        if failed.load(Ordering::Relaxed) || !model.move_is_safe(a, b) {
+            failed.store(true, Ordering::Relaxed);
             return None;
         }
         Some(model.min_clearance_along(a, b, MIN_CLEARANCE_TOL_MM))

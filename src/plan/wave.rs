@@ -411,10 +411,7 @@ pub fn expand_both<G: Graph + ?Sized>(
             (here, there)
         });
     }
-    match corridor_waves(cs, graph, start, end, Connectivity::TwentySix) {
-        Some((here, there)) => (Some(here), Some(there)),
-        None => (None, None),
-    }
+    corridor_waves(cs, graph, start, end, Connectivity::TwentySix).unzip()
 }
 
 /// The wave from `start` to `end` over `connectivity` with the numbers [`expand`] gives it on
@@ -1463,15 +1460,10 @@ mod tests {
     /// node and any usable node.
     #[test]
     fn both_waves_hold_the_shortest_paths_and_walk_like_the_whole_waves() {
-        use crate::plan::search::testing::{hash, Refusing};
+        use crate::plan::search::testing::{hash, xorshift, Refusing};
         use crate::plan::search::{depth_first, descend, extensile, neighboring, Candidates};
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed as usize
-        };
+        let mut sequence = xorshift(0x9e37_79b9_7f4a_7c15);
+        let mut next = move || sequence() as usize;
         let shapes: [[usize; 3]; 20] = [
             [1, 1, 1],
             [1, 1, 2],

@@ -130,7 +130,8 @@ fn ahead_of_round(plan: &Plan, model: &CollisionModel) -> Vec<Ahead> {
     let per_leg = parallel::map_on(threads, &legs, |&l| {
         let ws = &plan.waypoints[plan.legs[l].waypoints.clone()];
         let kept = join_kept(ws, model);
-        let slides = slide_chain(kept.as_deref().unwrap_or(ws), l, model);
+        let schedule = schedule_of(plan, l);
+        let slides = slide_chain(kept.as_deref().unwrap_or(ws), l, &schedule, model);
         Ahead { kept, slides }
     });
     let mut all: Vec<Ahead> = plan.legs.iter().map(|_| Ahead::default()).collect();
@@ -141,11 +142,16 @@ fn ahead_of_round(plan: &Plan, model: &CollisionModel) -> Vec<Ahead> {
 }
 
 /// The slides of leg `l`'s vias computed ahead along its waypoints `ws`, each via in order,
-/// every proven slide kept for the next; up to the first waypoint that is no via of leg `l` (the
-/// pass slides a via on the schedule of the leg it names).
-fn slide_chain(ws: &[Waypoint], l: usize, model: &CollisionModel) -> Vec<Guess> {
+/// every proven slide kept for the next, on the leg's wrist `schedule` ([`schedule_of`], the one
+/// the pass slides them on); up to the first waypoint that is no via of leg `l` (the pass
+/// slides a via on the schedule of the leg it names).
+fn slide_chain(
+    ws: &[Waypoint],
+    l: usize,
+    schedule: &WristSchedule,
+    model: &CollisionModel,
+) -> Vec<Guess> {
     let m = ws.len();
-    let schedule = WristSchedule::new(&ws[0].joints_deg, &ws[m - 1].joints_deg);
     let mut joints: Vec<[f64; 6]> = ws.iter().map(|w| w.joints_deg).collect();
     let mut slides = Vec::with_capacity(m.saturating_sub(2));
     for i in 1..m.saturating_sub(1) {
@@ -153,7 +159,7 @@ fn slide_chain(ws: &[Waypoint], l: usize, model: &CollisionModel) -> Vec<Guess> 
             break;
         }
         let key = [joints[i - 1], joints[i], joints[i + 1]];
-        let six = slide_six(&key, &schedule, model);
+        let six = slide_six(&key, schedule, model);
         if let Some(six) = six {
             joints[i] = six;
         }

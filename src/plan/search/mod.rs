@@ -260,6 +260,16 @@ pub(crate) mod testing {
     use crate::plan::cspace::{CSpace, Grid, Node};
     use crate::plan::wave::Graph;
 
+    /// A fixed pseudo-random sequence (xorshift64) from a nonzero `seed`.
+    pub fn xorshift(mut seed: u64) -> impl FnMut() -> u64 {
+        move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        }
+    }
+
     /// A grid of `nx` x `ny` x `nz` nodes at 1 deg, free where `free` says.
     pub fn grid(nx: usize, ny: usize, nz: usize, free: impl Fn(Node) -> bool) -> CSpace {
         let g = Grid::over(
