@@ -75,7 +75,8 @@ pub use crate::cell::Obstacle;
 use crate::cell::{Cell, Tool};
 use crate::geometry::{
     clamp_to_box, closest_param_segment_aabb, distance_cylinder_aabb_exact, distance_point_aabb,
-    distance_segment_aabb, distance_sq_point_aabb, gap_sq_aabb_aabb, Aabb, Cylinder, Point, Solid,
+    distance_segment_aabb, distance_sq_point_aabb, gap_sq_aabb_aabb, obb_clear_of_aabb, Aabb,
+    Cylinder, Point, Solid,
 };
 use crate::place::{Placement, PoseCheck};
 use crate::robot::{MilliDegSinCos, Pose, RangeViolation, Robot, SinCosChain};
@@ -1197,6 +1198,7 @@ fn solid_clear_of_box(s: &Solid, b: &Aabb, clearance: f64) -> bool {
     }
     match s {
         Solid::Cylinder(c) => link_clear_of_box(c, b, clearance),
-        _ => s.distance_aabb(b) > clearance,
+        Solid::Box(o) => obb_clear_of_aabb(o, b, clearance),
+        Solid::Sphere(_) => s.distance_aabb(b) > clearance,
     }
 }

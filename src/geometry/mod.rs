@@ -27,7 +27,10 @@ use nalgebra::{Point3, Vector3};
 mod certify;
 mod solids;
 pub use certify::{bracket_by_projection, clamp_to_box, clear_by_projection, Bracket};
-pub use solids::{distance_obb_aabb, distance_sphere_aabb, gap_sq_aabb_aabb, Obb, Solid, Sphere};
+pub use solids::{
+    distance_obb_aabb, distance_sphere_aabb, gap_sq_aabb_aabb, obb_clear_of_aabb, Obb, Solid,
+    Sphere, OBB_AXIS_SLACK_MM,
+};
 
 /// A point of the cell frame, mm.
 pub type Point = Point3<f64>;
