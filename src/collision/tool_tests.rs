@@ -1009,3 +1009,98 @@ fn a_clearance_grown_past_the_masks_takes_the_whole_pass() {
     // Poses where the shared masks, had they been used, would have capped the least.
     assert!(differ_if_masked > 100, "{differ_if_masked}");
 }
+
+/// A gripper of oriented boxes (a housing, two fingers) and a ball, as cells/gripper-pick.yaml.
+fn gripper() -> Tool {
+    let b = |name: &str, min_mm: [f64; 3], max_mm: [f64; 3]| {
+        shape(name, ToolGeometry::Box { min_mm, max_mm })
+    };
+    Tool {
+        name: "tGripper".into(),
+        tframe: Frame::IDENTITY,
+        mass_kg: 3.2,
+        cog_mm: [0.0, 0.0, 80.0],
+        shapes: vec![
+            b("housing", [-60.0, -60.0, 0.0], [60.0, 60.0, 110.0]),
+            b("finger_a", [-50.0, -15.0, 110.0], [-35.0, 15.0, 165.0]),
+            b("finger_b", [35.0, -15.0, 110.0], [50.0, 15.0, 165.0]),
+            shape(
+                "sensor",
+                ToolGeometry::Sphere {
+                    centre_mm: [75.0, 0.0, 70.0],
+                    radius_mm: 20.0,
+                },
+            ),
+        ],
+        loc: Loc::default(),
+    }
+}
+
+/// The looks' exact test of an oriented tool box (`geometry::obb_clear_of_aabb`, by separating
+/// axes first) answers as the distance it replaced (`distance_obb_aabb > c`): at the nodes of
+/// the 5 deg grid of the look tests with both wrists, every box shape of a gripper, placed on
+/// the look's flange, against every box, at the model's clearance, at the distance to the bit
+/// and one ulp below it. And the look answers as the old exact test written out here
+/// (boxes by `distance_obb_aabb`, the ball by its distance), at the poses where no shape comes
+/// within 1e-6 mm of the clearance (at a pose nearer than that the cheap bounds before the
+/// exact test may differ from the distance by rounding, in the old code as in the new).
+/// Boxes near the clearance, and both answers of the look after the balls, must occur often.
+#[test]
+fn a_tool_box_is_tested_as_its_distance_at_the_looks() {
+    let tool = gripper();
+    let g = look_grid();
+    let (mut near, mut exact_clear, mut exact_blocked) = (0usize, 0usize, 0usize);
+    for clearance in [0.0, 10.0, 60.0] {
+        let m = CollisionModel::new(
+            &Robot::irb1400(),
+            TRUNK_PLACEMENT,
+            trunk(),
+            clearance,
+            Some(&tool),
+        );
+        let (shapes, c) = (&m.tool.as_ref().expect("a tool").shapes, m.clearance_mm());
+        for schedule in look_schedules() {
+            for i in 0..g.len() {
+                let (six, sc) = look_pose(&schedule, &g, i);
+                let flange = m.flange_sincos_for_test(&six, &sc, None).expect("a tool");
+                let mut old = true;
+                let mut boundary = false;
+                for s in shapes {
+                    let solid = s.local.placed(&flange);
+                    for o in m.obstacles() {
+                        let d = solid.distance_aabb(&o.aabb);
+                        old &= d > c;
+                        boundary |= (d - c).abs() <= 1e-6;
+                        let Solid::Box(ob) = &solid else {
+                            continue;
+                        };
+                        let below = if d > 0.0 { d.next_down() } else { d };
+                        for cc in [c, d, below] {
+                            assert_eq!(
+                                crate::geometry::obb_clear_of_aabb(ob, &o.aabb, cc),
+                                d > cc,
+                                "'{}' and '{}' at {cc} (distance {d}) at {six:?}",
+                                s.name,
+                                o.name
+                            );
+                        }
+                        near += usize::from((d - c).abs() < 20.0);
+                    }
+                }
+                let (look, margin) = m.tool_look_sincos(&six, &sc);
+                if !boundary {
+                    assert_eq!(look, old, "the look at {six:?}");
+                }
+                if margin == 0.0 {
+                    exact_clear += usize::from(look);
+                    exact_blocked += usize::from(!look);
+                }
+            }
+        }
+    }
+    assert!(
+        near > 1000 && exact_clear > 300 && exact_blocked > 300,
+        "{near} boxes near the clearance, {exact_clear} clear and {exact_blocked} blocked \
+         after the balls"
+    );
+}
