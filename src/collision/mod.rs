@@ -1190,7 +1190,8 @@ impl PoseCheck for CollisionModel {
 /// The node test for any solid: `true` when it keeps MORE than `clearance` from the box. First
 /// the distance of the solid's enclosing box (a few comparisons; most boxes are far from most
 /// parts); then link cylinders go through [`link_clear_of_box`] (fast bounds before parry's
-/// GJK), balls and oriented boxes are measured exactly.
+/// GJK), oriented boxes through `geometry::obb_clear_of_aabb` (separating axes before the exact
+/// distance, the exact distance's answer), balls are measured exactly.
 #[inline]
 fn solid_clear_of_box(s: &Solid, b: &Aabb, clearance: f64) -> bool {
     if s.coarse_lower_bound_aabb(b) > clearance {

@@ -14,6 +14,9 @@
 //!   distance ([`distance_segment_aabb`]). When the boxes meet, the least is 0: the meet is a
 //!   convex polytope, and any of its vertices lies on two facet planes of one box (an edge of
 //!   it) and inside the other. The tests hold it against parry3d's cuboid–cuboid distance.
+//! - **Oriented box–box, clear or not** ([`obb_clear_of_aabb`], beyond the paper): whether that
+//!   distance exceeds a clearance, the same answer for every input, by separating axes first
+//!   (with a slack above both's rounding) and the 24 distances only where they do not decide.
 
 use super::{
     distance_capsule_aabb, distance_cylinder_aabb, distance_inner_capsule_aabb,
@@ -123,8 +126,13 @@ pub const OBB_AXIS_SLACK_MM: f64 = 1e-6;
 /// them is a lower bound of the distance (projection onto a line shortens no distance). A gap
 /// beyond the clearance plus [`OBB_AXIS_SLACK_MM`] puts the true distance, and so
 /// [`distance_obb_aabb`]'s number (within its rounding of it), above the clearance: the same
-/// answer. (The axes of `b` are the enclosing box's gap, which callers test first.) Else the
-/// 24 segment distances of [`distance_obb_aabb`], the same numbers in the same order, with
+/// answer. (The axes of `b` are the enclosing box's gap, which callers test first.) Then the 9
+/// axes `n = u_k x e_i` across an edge of each box (`e_i` the cell's axes; each component of
+/// `n` is one of `u_k`'s, exact): the projections' radii are `sum_j half_j |u_j . n|` and
+/// `sum_i bh_i |n_i|`, a bound for any three axes, and the gap over `|n|` is again a lower
+/// bound; an axis with `|n|` below 1e-3 (an edge nearly along a cell axis, which the face axes
+/// cover) is passed over, so the gap's rounding over `|n|` stays far inside the slack. A gap
+/// that is not a number answers nothing. Else the 24 segment distances of [`distance_obb_aabb`], the same numbers in the same order, with
 /// their running least, stopping once it is within the clearance (the least of all is then
 /// within it too; `distance_obb_aabb`'s own stop at 0 answers the same: distances are not
 /// negative).
