@@ -18,6 +18,8 @@ pub mod precision;
 pub mod progress;
 /// RAPID's predefined speeddata and zonedata (docs/rapid.md).
 pub mod rapid_data;
+/// Large all-zero buffers paid for by the pages touched (the waves' planes and numbers).
+pub mod zeroed;
 
 // The stages, in pipeline order.
 

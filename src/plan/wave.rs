@@ -22,7 +22,9 @@
 //! numbered n), and in this wave every step between numbered nodes is a wave step, so a
 //! numbered neighbour's number is one less, the same or one more: the residue tells which
 //! ([`Wave::label_next_to`]). The node-by-node wave keeps the numbers (2 bytes a node, 4 for a
-//! path of over 65 533 steps).
+//! path of over 65 533 steps). The planes, the row wave's decided and candidate words and the
+//! node-by-node numbers span the whole grid but are [`ZeroBuf`]s (`crate::zeroed`): a wave
+//! pays for the pages it touches (the ball it numbers), not for zeroing the whole grid.
 //!
 //! Beyond the paper, for speed only: the searches walk back only to neighbours numbered one
 //! less (extensile and neighboring over 26 neighbours, depth-first over the 6 axis
@@ -43,6 +45,7 @@
 //! leads to `l - 1`.
 
 use crate::plan::cspace::{CSpace, Node, FREE, ROW_BITS_MAX_BYTES};
+use crate::zeroed::ZeroBuf;
 
 /// Calls a row wave function with the row's word count as a constant where it is small (the
 /// loops over a row's words unrolled): 3 at 1 deg, 5 at 0.5 deg, 9 at 0.25 deg over the IRB
@@ -129,7 +132,7 @@ impl<F: Fn(Node, Node) -> bool + Sync> Graph for F {
 /// not fit: when a node numbered 65 533 is expanded, i.e. the end's number would be 65 534 or
 /// more (or the end is unreachable from a component that deep, numbered again only to return
 /// `None`). The numbers are the same either way.
-trait Word: Copy + PartialEq + Default + Send + 'static {
+trait Word: bytemuck::Pod + PartialEq + Default + Send + 'static {
     /// The node was looked at and may not be used.
     const BLOCKED: Self;
     /// The node may be used but no accepted step has reached it yet.
@@ -175,15 +178,15 @@ const _: () = assert!(GROUP_ROWS >= 2, "the row wave's front stays ascending");
 #[derive(Clone, Debug)]
 enum Labels {
     /// Node by node, in the narrowest word that held them: the numbers.
-    Narrow(Vec<u16>),
-    Wide(Vec<u32>),
+    Narrow(ZeroBuf<u16>),
+    Wide(ZeroBuf<u32>),
     /// Row by row: each node's residue code, 0 when not numbered, else `(l - 1) mod 3 + 1` for
     /// number `l`, in two bit planes laid out like the row wave's row words (`words` words a
     /// row of the grid's axis-3 nodes): bit `b` of word `2 w` is the code's low bit of the node
     /// at bit `b` of row word `w`, word `2 w + 1` its high bit (the two planes of a word side by
     /// side).
     Residues {
-        planes: Vec<u64>,
+        planes: ZeroBuf<u64>,
         words: usize,
     },
 }
@@ -321,7 +324,7 @@ impl Wave {
     pub(crate) fn as_residues(&self) -> Wave {
         let [d0, d1, d2] = self.dims;
         let words = d2.div_ceil(64);
-        let mut planes = vec![0u64; 2 * d0 * d1 * words];
+        let mut planes = ZeroBuf::zeros(2 * d0 * d1 * words);
         for t in 0..d0 * d1 {
             for z in 0..d2 {
                 let m = [(t / d1) as i32, (t % d1) as i32, z as i32];
@@ -527,9 +530,9 @@ struct RowWave<'a, G: Graph + ?Sized, const K: usize> {
     end_bit: u64,
     upto_end: u64,
     /// The residue planes.
-    planes: Vec<u64>,
+    planes: ZeroBuf<u64>,
     /// Decided nodes: numbered, not free, or not usable.
-    decided: Vec<u64>,
+    decided: ZeroBuf<u64>,
     /// The front: its words that hold front nodes, as (row word index, the front's bits), by
     /// ascending index.
     front: Vec<(usize, u64)>,
@@ -549,8 +552,8 @@ impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
         let reach = Reach::<K>::new(g.dims, six);
         let words = reach.words;
         let rows = reach.rows;
-        let mut planes = vec![0u64; 2 * rows * words];
-        let mut decided = vec![0u64; rows * words];
+        let mut planes = ZeroBuf::zeros(2 * rows * words);
+        let mut decided = ZeroBuf::zeros(rows * words);
         let (r0, j0, b0) = (start / d2, (start % d2) / 64, (start % d2) % 64);
         // Number 1's code, 1: the low plane only.
         planes[2 * (r0 * words + j0)] |= 1 << b0;
@@ -695,7 +698,7 @@ struct Reach<const K: usize> {
     words: usize,
     rows: usize,
     /// The gathered words (`words` a row, every row).
-    cand: Vec<u64>,
+    cand: ZeroBuf<u64>,
     /// The groups of `GROUP_ROWS` rows whose words, or those of the rows just beside them, may
     /// hold some (a bit a group).
     groups: Vec<u64>,
@@ -718,7 +721,7 @@ impl<const K: usize> Reach<K> {
             d1,
             words,
             rows,
-            cand: vec![0u64; rows * words],
+            cand: ZeroBuf::zeros(rows * words),
             groups: vec![0u64; rows.div_ceil(GROUP_ROWS * 64)],
             around: std::array::from_fn(|k| ((k / 3) * d1 + k % 3) * words),
             six,
@@ -927,12 +930,12 @@ fn corridor_rows<G: Graph + ?Sized, const K: usize>(
     // the nodes met, a level at a time. A node numbered `k` by one wave is numbered `n + 1 - k`
     // by the other. The decided sets are not needed any more.
     for wave in [&mut from_start, &mut from_end] {
-        wave.decided = Vec::new();
+        wave.decided = ZeroBuf::zeros(0);
     }
     let words = from_start.reach.words;
     let (mut ls, mut le) = (
-        vec![0u64; from_start.planes.len()],
-        vec![0u64; from_start.planes.len()],
+        ZeroBuf::zeros(from_start.planes.len()),
+        ZeroBuf::zeros(from_start.planes.len()),
     );
     for (wave, forward) in [(&mut from_start, true), (&mut from_end, false)] {
         let (own, other) = if forward {
@@ -997,9 +1000,9 @@ fn number_scalar<W: Word, G: Graph + ?Sized>(
     start: Node,
     end: Node,
     connectivity: Connectivity,
-) -> Result<Option<Vec<W>>, TooLong> {
+) -> Result<Option<ZeroBuf<W>>, TooLong> {
     let g = &cs.grid;
-    let mut labels = vec![W::default(); g.len()];
+    let mut labels = ZeroBuf::<W>::zeros(g.len());
     let mut queue = std::collections::VecDeque::new();
     labels[g.index(start)] = W::ONE;
     queue.push_back(start);
