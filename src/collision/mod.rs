@@ -194,9 +194,11 @@ impl WristAngles<'_> {
     fn sincos(self, t: &MilliDegSinCos) -> [(f64, f64); 3] {
         match self {
             WristAngles::Lattice(a) => [t.get(a[3]), t.get(a[4]), t.get(a[5])],
-            WristAngles::Unrounded(w) => {
-                [t.get_rounded(w[0]), t.get_rounded(w[1]), t.get_rounded(w[2])]
-            }
+            WristAngles::Unrounded(w) => [
+                t.get_rounded(w[0]),
+                t.get_rounded(w[1]),
+                t.get_rounded(w[2]),
+            ],
         }
     }
 }

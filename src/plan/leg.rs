@@ -189,6 +189,16 @@ struct AxisValue {
     progress: f64,
 }
 
+/// What a look at a node reads of the memo's tables ([`ToolMemo`]).
+struct NodeTables<'a> {
+    /// The sines and cosines of the node's controller axes 1..3.
+    sincos: [(f64, f64); 3],
+    /// Link 1's pose at the node's axis 1.
+    link1: &'a Pose,
+    /// The three terms of the leg's progress at the node (`WristSchedule::progress_term`).
+    progress: [f64; 3],
+}
+
 impl ToolMemo {
     /// A memo for the leg of `schedule` on the grid of `cs`.
     pub fn new(cs: &CSpace, check: &GridCheck<'_>, schedule: &WristSchedule) -> ToolMemo {
@@ -249,13 +259,12 @@ impl ToolMemo {
     /// (`None` without a tool).
     #[cfg(test)]
     fn arm_at(&self, n: Node) -> Option<([(f64, f64); 3], &Pose)> {
-        self.look_at(n).map(|(sc, link1, _)| (sc, link1))
+        self.look_at(n).map(|at| (at.sincos, at.link1))
     }
 
-    /// [`arm_at`](Self::arm_at) and the three terms of the leg's progress at node `n`
-    /// (`WristSchedule::progress_term`).
+    /// What a look at node `n` reads of the tables (`None` without a tool).
     #[inline]
-    fn look_at(&self, n: Node) -> Option<([(f64, f64); 3], &Pose, [f64; 3])> {
+    fn look_at(&self, n: Node) -> Option<NodeTables<'_>> {
         let [a1, a2, a3] = &self.arm_sincos;
         let i = usize::try_from(n[0]).ok()?;
         let v = [
@@ -263,11 +272,11 @@ impl ToolMemo {
             *a2.get(usize::try_from(n[1]).ok()?)?,
             *a3.get(usize::try_from(n[2]).ok()?)?,
         ];
-        Some((
-            [v[0].sincos, v[1].sincos, v[2].sincos],
-            self.link1.get(i)?,
-            [v[0].progress, v[1].progress, v[2].progress],
-        ))
+        Some(NodeTables {
+            sincos: [v[0].sincos, v[1].sincos, v[2].sincos],
+            link1: self.link1.get(i)?,
+            progress: [v[0].progress, v[1].progress, v[2].progress],
+        })
     }
 }
 
@@ -326,9 +335,10 @@ impl LegGraph<'_> {
         let model = self.check.model();
         // Cheap bounds first; where they leave a margin, it proves the nodes around too.
         let (clear, margin) = match self.memo.look_at(n) {
-            Some((sc, link1, terms)) => {
-                let s = self.schedule.progress_of(terms);
-                model.tool_look_link1_rounding(&self.schedule.wrist_unrounded(s), &sc, link1)
+            Some(at) => {
+                let s = self.schedule.progress_of(at.progress);
+                let wrist = self.schedule.wrist_unrounded(s);
+                model.tool_look_link1_rounding(&wrist, &at.sincos, at.link1)
             }
             None => model.tool_look(&self.six(n)),
         };

@@ -380,7 +380,7 @@ fn spread_answers_are_exact(schedule: &WristSchedule) {
     let g = Grid::over([[-90.0, 90.0], [-60.0, 70.0], [-60.0, 70.0]], 3.0);
     let check = m.grid_check(g.step_deg);
     let cs = CSpace::build(g, &check);
-    let memo = ToolMemo::new(&cs, &check, &schedule);
+    let memo = ToolMemo::new(&cs, &check, schedule);
     let graph = graph_of(&cs, &check, schedule, &memo);
     let mut visited = vec![false; g.len()];
     for i in (0..g.len()).step_by(7).map(|i| (i * 7919) % g.len()) {
@@ -498,16 +498,16 @@ fn a_look_from_the_memo_tables_is_the_look_at_six_to_the_bit() {
         let memo = ToolMemo::new(&cs, &check, &schedule);
         for i in 0..g.len() {
             let n = g.node(i);
-            let (sc, link1, terms) = memo.look_at(n).expect("a memo with a tool has tables");
-            let s = schedule.progress_of(terms);
+            let at = memo.look_at(n).expect("a memo with a tool has tables");
+            let (sc, link1) = (at.sincos, at.link1);
+            let s = schedule.progress_of(at.progress);
             assert_eq!(
                 s.to_bits(),
                 schedule.progress(&g.axes_deg(n)).to_bits(),
                 "progress at {n:?}"
             );
             let six = schedule.six(&g.axes_deg(n));
-            let fast =
-                m.tool_look_link1_rounding(&schedule.wrist_unrounded(s), &sc, link1);
+            let fast = m.tool_look_link1_rounding(&schedule.wrist_unrounded(s), &sc, link1);
             let slow = m.tool_look_link1(&six, &sc, link1);
             assert_eq!(
                 (fast.0, fast.1.to_bits()),

@@ -488,7 +488,10 @@ mod tests {
     fn get_rounded_is_get_of_the_rounded_angle_bit_for_bit() {
         let t = MilliDegSinCos::new(-300.0, 300.0);
         let same = |deg: f64| {
-            let (a, b) = (t.get_rounded(deg), t.get(crate::precision::quantize_joints([deg])[0]));
+            let (a, b) = (
+                t.get_rounded(deg),
+                t.get(crate::precision::quantize_joints([deg])[0]),
+            );
             let bits = |x: f64| if x.is_nan() { u64::MAX } else { x.to_bits() };
             assert!(
                 bits(a.0) == bits(b.0) && bits(a.1) == bits(b.1),
@@ -515,9 +518,32 @@ mod tests {
             near(m / 1000.0);
         }
         for deg in [
-            0.0005, 0.0015, 0.0025, 0.4995, 1.0005, 179.9995, 299.9995, 300.0, 300.0005,
-            300.999, 300.9995, 301.0, 301.0005, 299.999, -300.0, -300.0005, -300.001,
-            -299.9995, 1e-300, 999_999.999, 999_999.9995, 1e6, 1e7, 1e12, 4.6e15, 1e300,
+            0.0005,
+            0.0015,
+            0.0025,
+            0.4995,
+            1.0005,
+            179.9995,
+            299.9995,
+            300.0,
+            300.0005,
+            300.999,
+            300.9995,
+            301.0,
+            301.0005,
+            299.999,
+            -300.0,
+            -300.0005,
+            -300.001,
+            -299.9995,
+            1e-300,
+            999_999.999,
+            999_999.999_5,
+            1e6,
+            1e7,
+            1e12,
+            4.6e15,
+            1e300,
         ] {
             near(deg);
         }
