@@ -30,7 +30,7 @@ fn waves(c: &mut Criterion) {
     let (a, b) = (node(0), node(1));
     let check = inspected.model.grid_check(cs.grid.step_deg);
     let schedule = WristSchedule::new(&placed.points[0].joints_deg, &placed.points[1].joints_deg);
-    let memo = ToolMemo::new(cs, &check);
+    let memo = ToolMemo::new(cs, &check, &schedule);
     let graph = LegGraph {
         cs,
         check: &check,

@@ -38,7 +38,7 @@ fn main() {
         let schedule =
             WristSchedule::new(&placed.points[0].joints_deg, &placed.points[1].joints_deg);
         for eager in [false, true] {
-            let memo = ToolMemo::new(cs, &check);
+            let memo = ToolMemo::new(cs, &check, &schedule);
             let graph = LegGraph {
                 cs,
                 check: &check,

@@ -179,6 +179,31 @@ struct CylData {
     exempt: Vec<bool>,
 }
 
+/// The wrist's angles of a tool look, deg.
+#[derive(Clone, Copy, Debug)]
+enum WristAngles<'a> {
+    /// Controller axes 4..6 of the six axes, on the written 0.001 deg.
+    Lattice(&'a [f64; 6]),
+    /// Controller axes 4..6 before their rounding to the written 0.001 deg.
+    Unrounded(&'a [f64; 3]),
+}
+
+impl WristAngles<'_> {
+    /// The angles' sines and cosines from the table (the unrounded ones rounded first:
+    /// `MilliDegSinCos::get_rounded`).
+    #[inline(always)]
+    fn sincos(self, t: &MilliDegSinCos) -> [(f64, f64); 3] {
+        match self {
+            WristAngles::Lattice(a) => [t.get(a[3]), t.get(a[4]), t.get(a[5])],
+            WristAngles::Unrounded(w) => [
+                t.get_rounded(w[0]),
+                t.get_rounded(w[1]),
+                t.get_rounded(w[2]),
+            ],
+        }
+    }
+}
+
 /// The robot in its cell, ready for node and move checks.
 #[derive(Clone, Debug)]
 pub struct CollisionModel {
@@ -634,6 +659,20 @@ impl CollisionModel {
         self.tool_look_from(axes, arm_sincos, Some(link1))
     }
 
+    /// [`tool_look_link1`](Self::tool_look_link1) of the wrist `wrist_deg` (controller axes
+    /// 4..6) before its rounding to the written 0.001 deg: the answer and margin of
+    /// `tool_look_link1` at the rounded wrist, to the bit (the wrist's sines and cosines by
+    /// `MilliDegSinCos::get_rounded`, the same table entries); axes 1..3 are given by their
+    /// sines and cosines alone. `plan::leg`'s looks, which need the rounded wrist only there.
+    pub fn tool_look_link1_rounding(
+        &self,
+        wrist_deg: &[f64; 3],
+        arm_sincos: &[(f64, f64); 3],
+        link1: &Pose,
+    ) -> (bool, f64) {
+        self.tool_look_with(WristAngles::Unrounded(wrist_deg), arm_sincos, Some(link1))
+    }
+
     /// [`tool_look_sincos`](Self::tool_look_sincos), link 1 placed unless given.
     #[inline]
     fn tool_look_from(
@@ -642,7 +681,18 @@ impl CollisionModel {
         arm_sincos: &[(f64, f64); 3],
         link1: Option<&Pose>,
     ) -> (bool, f64) {
-        let Some((tool, look, flange)) = self.look_parts(axes, arm_sincos, link1) else {
+        self.tool_look_with(WristAngles::Lattice(axes), arm_sincos, link1)
+    }
+
+    /// [`tool_look_from`](Self::tool_look_from) with the wrist's angles as `wrist` gives them.
+    #[inline]
+    fn tool_look_with(
+        &self,
+        wrist: WristAngles<'_>,
+        arm_sincos: &[(f64, f64); 3],
+        link1: Option<&Pose>,
+    ) -> (bool, f64) {
+        let Some((tool, look, flange)) = self.look_parts_with(wrist, arm_sincos, link1) else {
             return (true, f64::INFINITY);
         };
         let c = self.clearance_mm;
@@ -770,6 +820,7 @@ impl CollisionModel {
 
     /// What a look works with: the tool, its look tables and the flange placed from sines and
     /// cosines ([`flange_sincos`](Self::flange_sincos)); `None` without a tool.
+    #[cfg(test)]
     #[inline]
     fn look_parts(
         &self,
@@ -777,15 +828,27 @@ impl CollisionModel {
         arm_sincos: &[(f64, f64); 3],
         link1: Option<&Pose>,
     ) -> Option<(&ToolData, &ToolLook, Pose)> {
+        self.look_parts_with(WristAngles::Lattice(axes), arm_sincos, link1)
+    }
+
+    /// [`look_parts`](Self::look_parts) with the wrist's angles as `wrist` gives them.
+    #[inline]
+    fn look_parts_with(
+        &self,
+        wrist: WristAngles<'_>,
+        arm_sincos: &[(f64, f64); 3],
+        link1: Option<&Pose>,
+    ) -> Option<(&ToolData, &ToolLook, Pose)> {
         Some((
             self.tool.as_ref()?,
             self.look.as_ref()?,
-            self.flange_sincos(axes, arm_sincos, link1)?,
+            self.flange_with(wrist, arm_sincos, link1)?,
         ))
     }
 
     /// The flange's pose (link 6, cell frame) from the chain of sines and cosines, the arm's
     /// given, the wrist's from the table (`None` without a tool).
+    #[cfg(test)]
     #[inline]
     fn flange_sincos(
         &self,
@@ -793,12 +856,19 @@ impl CollisionModel {
         arm_sincos: &[(f64, f64); 3],
         link1: Option<&Pose>,
     ) -> Option<Pose> {
+        self.flange_with(WristAngles::Lattice(axes), arm_sincos, link1)
+    }
+
+    /// [`flange_sincos`](Self::flange_sincos) with the wrist's angles as `wrist` gives them.
+    #[inline]
+    fn flange_with(
+        &self,
+        wrist: WristAngles<'_>,
+        arm_sincos: &[(f64, f64); 3],
+        link1: Option<&Pose>,
+    ) -> Option<Pose> {
         let look = self.look.as_ref()?;
-        let wrist = [
-            look.wrist.get(axes[3]),
-            look.wrist.get(axes[4]),
-            look.wrist.get(axes[5]),
-        ];
+        let wrist = wrist.sincos(&look.wrist);
         let arm = self.robot.urdf_arm_sincos(arm_sincos);
         let p1 = match link1 {
             Some(p1) => *p1,

@@ -35,7 +35,11 @@
 //! look places the flange from sines and cosines: those of axes 1..3 from the memo's tables of
 //! the grid's values, and link 1's pose from the memo's table per value of axis 1
 //! (`CollisionModel::tool_look_link1`: the same steps after it, the same flange to the bit), so
-//! a look takes no `sin_cos` and places five joints, not six. A node already answered costs
+//! a look takes no `sin_cos` and places five joints, not six. Its wrist comes from the memo's
+//! tables too: the progress from each axis's term of its dot product per grid value, and the
+//! wrist, before its rounding, goes to the sines' table as whole thousandths
+//! (`CollisionModel::tool_look_link1_rounding`, `MilliDegSinCos::get_rounded`: the look of
+//! [`LegGraph::six`], to the bit, without its degrees). A node already answered costs
 //! the memo's load alone (inline; the look is out of line). The graph's steps are the neighbour
 //! steps whose
 //! six-axis move the step check accepts (`GridCheck::step_is_safe`: node depths first, the
@@ -90,16 +94,36 @@ impl WristSchedule {
         if self.len2 <= 0.0 {
             return 0.0;
         }
-        let dot: f64 = (0..3).map(|k| (q[k] - self.from[k]) * self.dir[k]).sum();
+        self.progress_of(std::array::from_fn(|k| self.progress_term(k, q[k])))
+    }
+
+    /// Axis `k`'s term of the dot product of `progress`, at controller value `q_deg` (a leg's
+    /// memo keeps them per grid value, [`ToolMemo`]).
+    #[inline]
+    fn progress_term(&self, k: usize, q_deg: f64) -> f64 {
+        (q_deg - self.from[k]) * self.dir[k]
+    }
+
+    /// `progress` from the three terms of its dot product ([`progress_term`](Self::progress_term)):
+    /// summed in axis order, divided by the squared length, clamped.
+    #[inline]
+    fn progress_of(&self, terms: [f64; 3]) -> f64 {
+        if self.len2 <= 0.0 {
+            return 0.0;
+        }
+        let dot: f64 = terms.into_iter().sum();
         (dot / self.len2).clamp(0.0, 1.0)
+    }
+
+    /// The wrist at progress `s`, before its rounding.
+    #[inline]
+    fn wrist_unrounded(&self, s: f64) -> [f64; 3] {
+        std::array::from_fn(|k| self.w_from[k] + s * (self.w_to[k] - self.w_from[k]))
     }
 
     /// The wrist at `q`, rounded to the written precision.
     pub fn wrist_at(&self, q: &[f64; 3]) -> [f64; 3] {
-        let s = self.progress(q);
-        quantize_joints(std::array::from_fn(|k| {
-            self.w_from[k] + s * (self.w_to[k] - self.w_from[k])
-        }))
+        quantize_joints(self.wrist_unrounded(self.progress(q)))
     }
 
     /// The most the progress `s` can change between two axes-1..3 positions `dq_deg` apart.
@@ -145,8 +169,9 @@ pub struct ToolMemo {
     /// offset's change of the grid's linear index.
     spread: OnceLock<Vec<(f64, [i32; 3], isize)>>,
     /// Per axis 1..3, per grid index along it: the sine and cosine of the controller value
-    /// (`CollisionModel::tool_look_sincos`); empty without a tool.
-    arm_sincos: [Vec<(f64, f64)>; 3],
+    /// (`CollisionModel::tool_look_sincos`) and the axis's term of the leg's progress there
+    /// (`WristSchedule::progress_term`); empty without a tool.
+    arm_sincos: [Vec<AxisValue>; 3],
     /// Per grid index along axis 1: link 1's pose (`CollisionModel::tool_link1`); empty
     /// without a tool.
     link1: Vec<Pose>,
@@ -155,25 +180,50 @@ pub struct ToolMemo {
 const TOOL_CLEAR: u8 = 1;
 const TOOL_BLOCKED: u8 = 2;
 
+/// What a look needs of one grid value of one of axes 1..3 ([`ToolMemo`]).
+#[derive(Clone, Copy, Debug)]
+struct AxisValue {
+    /// The value's sine and cosine.
+    sincos: (f64, f64),
+    /// The axis's term of the leg's progress at the value (`WristSchedule::progress_term`).
+    progress: f64,
+}
+
+/// What a look at a node reads of the memo's tables ([`ToolMemo`]).
+struct NodeTables<'a> {
+    /// The sines and cosines of the node's controller axes 1..3.
+    sincos: [(f64, f64); 3],
+    /// Link 1's pose at the node's axis 1.
+    link1: &'a Pose,
+    /// The three terms of the leg's progress at the node (`WristSchedule::progress_term`).
+    progress: [f64; 3],
+}
+
 impl ToolMemo {
-    /// A memo for one leg on the grid of `cs`.
-    pub fn new(cs: &CSpace, check: &GridCheck<'_>) -> ToolMemo {
+    /// A memo for the leg of `schedule` on the grid of `cs`.
+    pub fn new(cs: &CSpace, check: &GridCheck<'_>, schedule: &WristSchedule) -> ToolMemo {
         let n = if check.model().has_tool() {
             cs.grid.len()
         } else {
             0
         };
-        let arm_sincos: [Vec<(f64, f64)>; 3] = std::array::from_fn(|k| {
+        let arm_sincos: [Vec<AxisValue>; 3] = std::array::from_fn(|k| {
             let along = if n > 0 { cs.grid.dims[k] } else { 0 };
             (0..along)
-                .map(|i| cs.grid.value(k, i as i64).to_radians().sin_cos())
+                .map(|i| {
+                    let v = cs.grid.value(k, i as i64);
+                    AxisValue {
+                        sincos: v.to_radians().sin_cos(),
+                        progress: schedule.progress_term(k, v),
+                    }
+                })
                 .collect()
         });
         let model = check.model();
         // Every value's pose, or none at all (no tool): never a table shorter than axis 1's.
         let link1 = arm_sincos[0]
             .iter()
-            .map(|&sc| model.tool_link1(sc))
+            .map(|a| model.tool_link1(a.sincos))
             .collect::<Option<Vec<_>>>()
             .unwrap_or_default();
         ToolMemo {
@@ -207,18 +257,26 @@ impl ToolMemo {
 
     /// The sines and cosines of node `n`'s controller axes 1..3, and link 1's pose there
     /// (`None` without a tool).
-    #[inline]
+    #[cfg(test)]
     fn arm_at(&self, n: Node) -> Option<([(f64, f64); 3], &Pose)> {
+        self.look_at(n).map(|at| (at.sincos, at.link1))
+    }
+
+    /// What a look at node `n` reads of the tables (`None` without a tool).
+    #[inline]
+    fn look_at(&self, n: Node) -> Option<NodeTables<'_>> {
         let [a1, a2, a3] = &self.arm_sincos;
         let i = usize::try_from(n[0]).ok()?;
-        Some((
-            [
-                *a1.get(i)?,
-                *a2.get(usize::try_from(n[1]).ok()?)?,
-                *a3.get(usize::try_from(n[2]).ok()?)?,
-            ],
-            self.link1.get(i)?,
-        ))
+        let v = [
+            *a1.get(i)?,
+            *a2.get(usize::try_from(n[1]).ok()?)?,
+            *a3.get(usize::try_from(n[2]).ok()?)?,
+        ];
+        Some(NodeTables {
+            sincos: [v[0].sincos, v[1].sincos, v[2].sincos],
+            link1: self.link1.get(i)?,
+            progress: [v[0].progress, v[1].progress, v[2].progress],
+        })
     }
 }
 
@@ -267,15 +325,22 @@ impl LegGraph<'_> {
         }
     }
 
-    /// The tool's look at node `n` (grid index `index`), its answer recorded in the memo.
+    /// The tool's look at node `n` (grid index `index`), its answer recorded in the memo. The
+    /// wrist of [`six`](Self::six) from the memo's tables: the progress from the terms of its
+    /// dot product, the wrist before its rounding, which the look rounds as it reads the
+    /// wrist's sines and cosines (`CollisionModel::tool_look_link1_rounding`): the look of
+    /// `six`, to the bit, without placing axes 1..3 or rounding the wrist to degrees.
     #[inline(never)]
     fn look(&self, n: Node, index: usize) -> bool {
         let model = self.check.model();
-        let six = self.six(n);
         // Cheap bounds first; where they leave a margin, it proves the nodes around too.
-        let (clear, margin) = match self.memo.arm_at(n) {
-            Some((sc, link1)) => model.tool_look_link1(&six, &sc, link1),
-            None => model.tool_look(&six),
+        let (clear, margin) = match self.memo.look_at(n) {
+            Some(at) => {
+                let s = self.schedule.progress_of(at.progress);
+                let wrist = self.schedule.wrist_unrounded(s);
+                model.tool_look_link1_rounding(&wrist, &at.sincos, at.link1)
+            }
+            None => model.tool_look(&self.six(n)),
         };
         self.memo
             .record(index, if clear { TOOL_CLEAR } else { TOOL_BLOCKED });
@@ -426,7 +491,7 @@ pub fn plan_leg(
 ) -> Result<PlannedLeg, LegFailure> {
     let model = check.model();
     let schedule = WristSchedule::new(&from.joints_deg, &to.joints_deg);
-    let memo = ToolMemo::new(cs, check);
+    let memo = ToolMemo::new(cs, check, &schedule);
     let graph = LegGraph {
         cs,
         check,

@@ -90,7 +90,7 @@ fn per_leg_inspection_is_the_six_axis_node_test_at_every_node() {
         &[-40.0, 0.0, 10.0, 0.0, -80.0, 0.0],
         &[40.0, 30.0, 30.0, 90.0, 80.0, 180.0],
     );
-    let memo = ToolMemo::new(&cs, &check);
+    let memo = ToolMemo::new(&cs, &check, &schedule);
     let graph = LegGraph {
         cs: &cs,
         check: &check,
@@ -191,7 +191,7 @@ fn the_search_finds_a_path_exactly_where_the_accepted_steps_join_the_points() {
         }
         legs += 1;
         let schedule = WristSchedule::new(&from, &to);
-        let memo = ToolMemo::new(&cs, &check);
+        let memo = ToolMemo::new(&cs, &check, &schedule);
         let graph = graph_of(&cs, &check, &schedule, &memo);
         let (j26, j6) = (
             joined(&graph, s, e, Connectivity::TwentySix),
@@ -321,7 +321,7 @@ fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_acce
         [120.0, 30.0, 40.0, 0.0, 0.0, 0.0],
     );
     let schedule = WristSchedule::new(&from, &to);
-    let memo = ToolMemo::new(&cs, &check);
+    let memo = ToolMemo::new(&cs, &check, &schedule);
     let optimistic = graph_of(&cs, &check, &schedule, &memo);
     let eager = LegGraph {
         eager: true,
@@ -380,7 +380,7 @@ fn spread_answers_are_exact(schedule: &WristSchedule) {
     let g = Grid::over([[-90.0, 90.0], [-60.0, 70.0], [-60.0, 70.0]], 3.0);
     let check = m.grid_check(g.step_deg);
     let cs = CSpace::build(g, &check);
-    let memo = ToolMemo::new(&cs, &check);
+    let memo = ToolMemo::new(&cs, &check, schedule);
     let graph = graph_of(&cs, &check, schedule, &memo);
     let mut visited = vec![false; g.len()];
     for i in (0..g.len()).step_by(7).map(|i| (i * 7919) % g.len()) {
@@ -439,11 +439,11 @@ fn the_tool_looks_place_the_flange_where_link_poses_does_at_every_node() {
     let g = Grid::over([[-169.0, 160.0], [-67.0, 68.0], [-61.0, 69.0]], 7.0);
     let check = m.grid_check(g.step_deg);
     let cs = CSpace::build(g, &check);
-    let memo = ToolMemo::new(&cs, &check);
     let schedule = WristSchedule::new(
         &[-40.0, 0.0, 10.0, -170.0, -80.0, 33.3333],
         &[40.0, 30.0, 30.0, 90.0, 80.0, 280.0],
     );
+    let memo = ToolMemo::new(&cs, &check, &schedule);
     let probes = [[0.0, 0.0, 0.0], [300.0, 0.0, 0.0], [0.0, -200.0, 220.0]].map(Point::from);
     for i in 0..g.len() {
         let n = g.node(i);
@@ -457,6 +457,69 @@ fn the_tool_looks_place_the_flange_where_link_poses_does_at_every_node() {
             assert!((fast * p - slow * p).norm() < 1e-9, "node {n:?}, {six:?}");
         }
     }
+}
+
+/// A look reads the leg's progress from the memo's terms and rounds the wrist as it reads its
+/// sines and cosines (`LegGraph::look`): at every node of a grid off zero, for legs along a
+/// diagonal, along one axis, with a still wrist axis, with wrists far past a turn, and one
+/// that does not move axes 1..3, the progress is `WristSchedule::progress` to the bit, and the
+/// look's answer and margin are those of `tool_look_link1` at `six`, to the bit. Fails if the
+/// terms were summed in another order, a term were taken at another node, or the wrist were
+/// rounded otherwise (the margins move by a wrist's thousandth).
+#[test]
+fn a_look_from_the_memo_tables_is_the_look_at_six_to_the_bit() {
+    let m = model(true, false);
+    let g = Grid::over([[-61.0, 59.0], [-43.0, 61.0], [-37.0, 68.0]], 4.0);
+    let check = m.grid_check(g.step_deg);
+    let cs = CSpace::build(g, &check);
+    // Ends off the grid's values (3 decimals, as a cell writes them), so that the terms'
+    // products and sums round.
+    let legs = [
+        (
+            [-40.123, 0.017, 10.333, -170.0, -80.0, 33.333],
+            [40.457, 30.001, 29.999, 90.0, 80.0, 280.0],
+        ),
+        (
+            [-50.5, -30.25, 60.125, 0.0, -80.0, 0.0],
+            [50.001, 40.7, -30.3, 12.345, 80.0, -0.001],
+        ),
+        (
+            [-33.3, 7.1, 7.1, 1.0, 45.0, -300.0],
+            [31.9, 7.1, 7.1, -1.0, 45.0, 300.0],
+        ),
+        (
+            [3.0, 5.0, 7.0, 10.0, 20.0, 30.0],
+            [3.0, 5.0, 7.0, 90.0, -20.0, 130.0],
+        ),
+    ];
+    let mut margins = 0;
+    for (from, to) in legs {
+        let schedule = WristSchedule::new(&from, &to);
+        let memo = ToolMemo::new(&cs, &check, &schedule);
+        for i in 0..g.len() {
+            let n = g.node(i);
+            let at = memo.look_at(n).expect("a memo with a tool has tables");
+            let (sc, link1) = (at.sincos, at.link1);
+            let s = schedule.progress_of(at.progress);
+            assert_eq!(
+                s.to_bits(),
+                schedule.progress(&g.axes_deg(n)).to_bits(),
+                "progress at {n:?}"
+            );
+            let six = schedule.six(&g.axes_deg(n));
+            let fast = m.tool_look_link1_rounding(&schedule.wrist_unrounded(s), &sc, link1);
+            let slow = m.tool_look_link1(&six, &sc, link1);
+            assert_eq!(
+                (fast.0, fast.1.to_bits()),
+                (slow.0, slow.1.to_bits()),
+                "look at {six:?}"
+            );
+            if slow.1 > 0.0 && slow.1.is_finite() {
+                margins += 1;
+            }
+        }
+    }
+    assert!(margins > 1000, "{margins} looks with a margin");
 }
 
 /// The spread marks exactly the nodes of the offsets whose motion is below the margin that lie
@@ -485,7 +548,7 @@ fn the_spread_marks_its_offsets_nodes_inside_and_at_the_faces() {
     ];
     // Margins that take a few offsets, about half of them, and all, from the offsets' motions.
     let motions: Vec<f64> = {
-        let memo = ToolMemo::new(&cs, &check);
+        let memo = ToolMemo::new(&cs, &check, &schedule);
         let graph = graph_of(&cs, &check, &schedule, &memo);
         graph.spread_clear(nodes[0], 1.0);
         let offsets = memo.spread.get().expect("made on the first spread");
@@ -493,7 +556,7 @@ fn the_spread_marks_its_offsets_nodes_inside_and_at_the_faces() {
     };
     for n in nodes {
         for margin in [motions[5] + 1e-6, motions[60] + 1e-6, 1e9] {
-            let memo = ToolMemo::new(&cs, &check);
+            let memo = ToolMemo::new(&cs, &check, &schedule);
             let graph = graph_of(&cs, &check, &schedule, &memo);
             graph.spread_clear(n, margin);
             let offsets = memo.spread.get().expect("made on the first spread");

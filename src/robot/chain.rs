@@ -261,13 +261,60 @@ impl MilliDegSinCos {
             // `m` is an integer below 1e11 in magnitude: exact as an i64.
             if let Ok(u) = u64::try_from(m as i64 - self.lo_deg * 1000) {
                 let (d, f) = ((u / 1000) as usize, (u % 1000) as usize);
-                if let (Some(&(sa, ca)), Some(&(sb, cb))) = (self.whole.get(d), self.milli.get(f)) {
-                    return (sa * cb + ca * sb, ca * cb - sa * sb);
+                if let (Some(&a), Some(&b)) = (self.whole.get(d), self.milli.get(f)) {
+                    return angle_sum(a, b);
                 }
             }
         }
         deg.to_radians().sin_cos()
     }
+
+    /// [`get`](Self::get) of `deg` rounded to the written 0.001 deg (`quantize_joints`), to the
+    /// bit, from the rounded thousandths as an integer: no division by 1000, no
+    /// multiplication back and no second rounding (a leg's looks, whose wrists are rounded so,
+    /// `plan::leg`).
+    ///
+    /// Why the same bits: for `x = deg * 1000` below `1e9` in magnitude, `R`, its truncation
+    /// moved by one where the rest is a half or more away from zero, is
+    /// `round_half_away(x)` (`precision`; below `2^52` the rest `x - trunc(x)` is exact), the
+    /// integer `quantize_joints` divides by its scale `10^JOINT_DECIMALS = 1000` (exact),
+    /// giving `q = fl(R / 1000)` (`0.0` for `R = 0`, whose sign `get` does not see). `get(q)`
+    /// scales back to `fl(q * 1000) = R (1 + e1) (1 + e2)`, `|e1|, |e2| <= 2^-53`, within
+    /// `1e9 * 2^-52 < 3e-7` of `R`: below half a unit, so its nearest integer is `R` (no tie
+    /// arises), within its `1e-6` of the lattice and below its `1e11`; so `get(q)` counts
+    /// `R - lo * 1000` into the same two entries and returns their [`angle_sum`], as this does.
+    /// A larger `x`, a NaN or an `R` off the table takes `get(q)` itself: the same path.
+    #[inline(always)]
+    pub fn get_rounded(&self, deg: f64) -> (f64, f64) {
+        const _: () = assert!(crate::precision::JOINT_DECIMALS == 3);
+        let x = deg * 1000.0;
+        if x.abs() < 1e9 {
+            // Exact: |x| < 2^52, so the truncation is an integer of x's and `x - t` is exact.
+            let t = x as i64;
+            let rest = x - t as f64;
+            let r = t + i64::from(rest >= 0.5) - i64::from(rest <= -0.5);
+            if let Ok(u) = u64::try_from(r - self.lo_deg * 1000) {
+                let (d, f) = ((u / 1000) as usize, (u % 1000) as usize);
+                if let (Some(&a), Some(&b)) = (self.whole.get(d), self.milli.get(f)) {
+                    return angle_sum(a, b);
+                }
+            }
+        }
+        self.get_rounded_off_table(deg)
+    }
+
+    /// [`get_rounded`](Self::get_rounded) off the table: `get` of the rounded angle.
+    #[cold]
+    #[inline(never)]
+    fn get_rounded_off_table(&self, deg: f64) -> (f64, f64) {
+        self.get(crate::precision::quantize_joints([deg])[0])
+    }
+}
+
+/// `(sin, cos)` of `x + y` from those of `x` (`a`) and `y` (`b`).
+#[inline(always)]
+fn angle_sum((sa, ca): (f64, f64), (sb, cb): (f64, f64)) -> (f64, f64) {
+    (sa * cb + ca * sb, ca * cb - sa * sb)
 }
 
 impl Robot {
@@ -428,6 +475,80 @@ mod tests {
             let (s, c) = t.get(deg);
             let (s0, c0) = f64::to_radians(deg).sin_cos();
             assert!((s - s0).abs() < 1e-14 && (c - c0).abs() < 1e-14, "{deg}");
+        }
+    }
+
+    /// `get_rounded` is `get` of the angle `quantize_joints` rounds, to the bit: random angles
+    /// on and off the table, halves of the lattice step and their neighbours an ulp away
+    /// (positive and negative), the table's ends and just past them, zeros, angles too large
+    /// for the table or the integer path, and NaN and infinities. Fails if the halves went to
+    /// even or were truncated, if the table were counted from another degree, or if an angle
+    /// off the table took another path.
+    #[test]
+    fn get_rounded_is_get_of_the_rounded_angle_bit_for_bit() {
+        let t = MilliDegSinCos::new(-300.0, 300.0);
+        let same = |deg: f64| {
+            let (a, b) = (
+                t.get_rounded(deg),
+                t.get(crate::precision::quantize_joints([deg])[0]),
+            );
+            let bits = |x: f64| if x.is_nan() { u64::MAX } else { x.to_bits() };
+            assert!(
+                bits(a.0) == bits(b.0) && bits(a.1) == bits(b.1),
+                "{deg:e}: {a:?} vs {b:?}"
+            );
+        };
+        let near = |deg: f64| {
+            same(deg);
+            same(-deg);
+            for k in 1..4 {
+                same(f64::from_bits(deg.to_bits() + k));
+                same(f64::from_bits(deg.to_bits() - k));
+                same(-f64::from_bits(deg.to_bits() + k));
+                same(-f64::from_bits(deg.to_bits() - k));
+            }
+        };
+        let mut rng = Rng(11);
+        for _ in 0..100_000 {
+            same(rng.uniform(-320.0, 320.0));
+            same(rng.uniform(-2e6, 2e6));
+            // Halves of the 0.001 deg step (in thousandths), and their neighbours.
+            let m = (rng.uniform(-301_000.0, 301_000.0)).trunc();
+            near((m + 0.5) / 1000.0);
+            near(m / 1000.0);
+        }
+        for deg in [
+            0.0005,
+            0.0015,
+            0.0025,
+            0.4995,
+            1.0005,
+            179.9995,
+            299.9995,
+            300.0,
+            300.0005,
+            300.999,
+            300.9995,
+            301.0,
+            301.0005,
+            299.999,
+            -300.0,
+            -300.0005,
+            -300.001,
+            -299.9995,
+            1e-300,
+            999_999.999,
+            999_999.999_5,
+            1e6,
+            1e7,
+            1e12,
+            4.6e15,
+            1e300,
+        ] {
+            near(deg);
+        }
+        for deg in [0.0, -0.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            same(deg);
         }
     }
 
