@@ -733,6 +733,17 @@ fn tool_is_free_agrees_with_parry_at_random_poses() {
     );
 }
 
+/// The IRB 1400 at the trunk's placement with `tool`, at `clearance`.
+fn trunk_model(tool: &Tool, clearance: f64) -> CollisionModel {
+    CollisionModel::new(
+        &Robot::irb1400(),
+        TRUNK_PLACEMENT,
+        trunk(),
+        clearance,
+        Some(tool),
+    )
+}
+
 /// The grid of the look tests: 5 deg in front of the robot over the trunk.
 fn look_grid() -> crate::plan::cspace::Grid {
     crate::plan::cspace::Grid::over([[-90.0, 90.0], [-60.0, 70.0], [-60.0, 70.0]], 5.0)
@@ -901,13 +912,7 @@ fn a_tool_of_many_shapes_marks_only_far_shapes_and_answers_as_the_exact_test() {
     let mut called_far = [0usize; FAR_SHAPES];
     let mut by_exact = 0;
     for clearance in [0.0, 10.0, 60.0] {
-        let m = CollisionModel::new(
-            &Robot::irb1400(),
-            TRUNK_PLACEMENT,
-            trunk(),
-            clearance,
-            Some(&tool),
-        );
+        let m = trunk_model(&tool, clearance);
         let (shapes, c) = (&m.tool.as_ref().expect("a tool").shapes, m.clearance_mm());
         assert_eq!(shapes.len(), 10);
         for schedule in look_schedules() {
@@ -1051,13 +1056,7 @@ fn a_tool_box_is_tested_as_its_distance_at_the_looks() {
     let g = look_grid();
     let (mut near, mut exact_clear, mut exact_blocked) = (0usize, 0usize, 0usize);
     for clearance in [0.0, 10.0, 60.0] {
-        let m = CollisionModel::new(
-            &Robot::irb1400(),
-            TRUNK_PLACEMENT,
-            trunk(),
-            clearance,
-            Some(&tool),
-        );
+        let m = trunk_model(&tool, clearance);
         let (shapes, c) = (&m.tool.as_ref().expect("a tool").shapes, m.clearance_mm());
         for schedule in look_schedules() {
             for i in 0..g.len() {
