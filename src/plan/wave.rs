@@ -962,10 +962,10 @@ impl<const K: usize> Reach<K> {
 /// distances, the waves meet at the same `D` and the corridor gathered is the unbounded one
 /// (it is a set of nodes with their distances, whichever levels the waves met at). Waves that
 /// meet at `d > B` (`d >= D`) prove a path that long exists: they are numbered again bounded by
-/// it. A
-/// wave that runs out having left nothing out has numbered everything it reaches: the ends are
-/// not joined. One that runs out having left nodes out is numbered again with the bound grown
-/// by an eighth ([`BOUND_GROWTH`]); the first bound is the ends' grid distance. A leg's tool
+/// it. A wave that runs out having left nothing out has numbered everything it reaches: the
+/// ends are not joined. One that runs out having left nodes out is numbered again with the
+/// bound grown by an eighth ([`BOUND_GROWTH`]; doubled after [`BOUND_FINE_TRIES`] tries); the
+/// first bound is the ends' grid distance. A leg's tool
 /// memo keeps its looks across the tries (`plan::leg`): a try again costs the waves' word
 /// operations and the fresh pages they touch, not the looks. Over 6 neighbours the waves are
 /// not bounded: the grid distance estimates axis steps poorly (up to a third of them), and the
