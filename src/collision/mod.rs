@@ -644,7 +644,7 @@ impl CollisionModel {
     /// that flange, which passes the shapes the balls' pass found far from every box without
     /// looking at their boxes ([`ball_pass`](Self::ball_pass)).
     pub fn tool_look_sincos(&self, axes: &[f64; 6], arm_sincos: &[(f64, f64); 3]) -> (bool, f64) {
-        self.tool_look_from(axes, arm_sincos, None)
+        self.tool_look_from(WristAngles::Lattice(axes), arm_sincos, None)
     }
 
     /// [`tool_look_sincos`](Self::tool_look_sincos) with link 1's pose given (`link1`, from
@@ -656,7 +656,7 @@ impl CollisionModel {
         arm_sincos: &[(f64, f64); 3],
         link1: &Pose,
     ) -> (bool, f64) {
-        self.tool_look_from(axes, arm_sincos, Some(link1))
+        self.tool_look_from(WristAngles::Lattice(axes), arm_sincos, Some(link1))
     }
 
     /// [`tool_look_link1`](Self::tool_look_link1) of the wrist `wrist_deg` (controller axes
@@ -670,29 +670,19 @@ impl CollisionModel {
         arm_sincos: &[(f64, f64); 3],
         link1: &Pose,
     ) -> (bool, f64) {
-        self.tool_look_with(WristAngles::Unrounded(wrist_deg), arm_sincos, Some(link1))
+        self.tool_look_from(WristAngles::Unrounded(wrist_deg), arm_sincos, Some(link1))
     }
 
-    /// [`tool_look_sincos`](Self::tool_look_sincos), link 1 placed unless given.
+    /// [`tool_look_sincos`](Self::tool_look_sincos) with the wrist's angles as `wrist` gives
+    /// them, link 1 placed unless given.
     #[inline]
     fn tool_look_from(
-        &self,
-        axes: &[f64; 6],
-        arm_sincos: &[(f64, f64); 3],
-        link1: Option<&Pose>,
-    ) -> (bool, f64) {
-        self.tool_look_with(WristAngles::Lattice(axes), arm_sincos, link1)
-    }
-
-    /// [`tool_look_from`](Self::tool_look_from) with the wrist's angles as `wrist` gives them.
-    #[inline]
-    fn tool_look_with(
         &self,
         wrist: WristAngles<'_>,
         arm_sincos: &[(f64, f64); 3],
         link1: Option<&Pose>,
     ) -> (bool, f64) {
-        let Some((tool, look, flange)) = self.look_parts_with(wrist, arm_sincos, link1) else {
+        let Some((tool, look, flange)) = self.look_parts(wrist, arm_sincos, link1) else {
             return (true, f64::INFINITY);
         };
         let c = self.clearance_mm;
@@ -788,7 +778,7 @@ impl CollisionModel {
         axes: &[f64; 6],
         arm_sincos: &[(f64, f64); 3],
     ) -> [bool; FAR_SHAPES] {
-        match self.look_parts(axes, arm_sincos, None) {
+        match self.look_parts(WristAngles::Lattice(axes), arm_sincos, None) {
             Some((tool, look, flange)) => self.ball_pass(tool, look, &flange).2,
             None => [false; FAR_SHAPES],
         }
@@ -808,7 +798,7 @@ impl CollisionModel {
         (f64, bool, [bool; FAR_SHAPES]),
         f64,
     )> {
-        let (tool, look, flange) = self.look_parts(axes, arm_sincos, None)?;
+        let (tool, look, flange) = self.look_parts(WristAngles::Lattice(axes), arm_sincos, None)?;
         let masked = self.ball_pass(tool, look, &flange);
         let near = look.near.get()?.as_ref()?;
         Some((
@@ -820,20 +810,8 @@ impl CollisionModel {
 
     /// What a look works with: the tool, its look tables and the flange placed from sines and
     /// cosines ([`flange_sincos`](Self::flange_sincos)); `None` without a tool.
-    #[cfg(test)]
     #[inline]
     fn look_parts(
-        &self,
-        axes: &[f64; 6],
-        arm_sincos: &[(f64, f64); 3],
-        link1: Option<&Pose>,
-    ) -> Option<(&ToolData, &ToolLook, Pose)> {
-        self.look_parts_with(WristAngles::Lattice(axes), arm_sincos, link1)
-    }
-
-    /// [`look_parts`](Self::look_parts) with the wrist's angles as `wrist` gives them.
-    #[inline]
-    fn look_parts_with(
         &self,
         wrist: WristAngles<'_>,
         arm_sincos: &[(f64, f64); 3],
@@ -842,26 +820,14 @@ impl CollisionModel {
         Some((
             self.tool.as_ref()?,
             self.look.as_ref()?,
-            self.flange_with(wrist, arm_sincos, link1)?,
+            self.flange_sincos(wrist, arm_sincos, link1)?,
         ))
     }
 
     /// The flange's pose (link 6, cell frame) from the chain of sines and cosines, the arm's
-    /// given, the wrist's from the table (`None` without a tool).
-    #[cfg(test)]
+    /// given, the wrist's from the table as `wrist` gives it (`None` without a tool).
     #[inline]
     fn flange_sincos(
-        &self,
-        axes: &[f64; 6],
-        arm_sincos: &[(f64, f64); 3],
-        link1: Option<&Pose>,
-    ) -> Option<Pose> {
-        self.flange_with(WristAngles::Lattice(axes), arm_sincos, link1)
-    }
-
-    /// [`flange_sincos`](Self::flange_sincos) with the wrist's angles as `wrist` gives them.
-    #[inline]
-    fn flange_with(
         &self,
         wrist: WristAngles<'_>,
         arm_sincos: &[(f64, f64); 3],
@@ -897,7 +863,7 @@ impl CollisionModel {
         arm_sincos: &[(f64, f64); 3],
         link1: Option<&Pose>,
     ) -> Option<Isometry3<f64>> {
-        self.flange_sincos(axes, arm_sincos, link1)
+        self.flange_sincos(WristAngles::Lattice(axes), arm_sincos, link1)
             .map(|p| p.isometry())
     }
 

@@ -85,13 +85,22 @@ const EDGES: [(usize, usize); 12] = [
 /// Exact distance between an oriented box and an axis-aligned box, mm; 0 when they touch or
 /// overlap (module doc for why 24 segment–box distances are the answer).
 pub fn distance_obb_aabb(o: &Obb, b: &Aabb) -> f64 {
+    edge_distances(o, b, 0.0)
+}
+
+/// The least of [`distance_obb_aabb`]'s 24 segment distances (the oriented box's 12 edges to
+/// `b`, then `b`'s 12 edges to the oriented box in its frame), in that order, returned as soon
+/// as the least so far is at most `stop` (distances are not negative: with `stop` 0, once it is
+/// 0).
+#[inline]
+fn edge_distances(o: &Obb, b: &Aabb, stop: f64) -> f64 {
     let half = o.half.map(|h| h.max(0.0));
     let mut best = f64::INFINITY;
     let oc = corners(&o.centre, &o.axes, &half);
     for (i, j) in EDGES {
         best = best.min(distance_segment_aabb(&oc[i], &oc[j], b));
-        if best <= 0.0 {
-            return 0.0;
+        if best <= stop {
+            return best;
         }
     }
     // The axis-aligned box's edges in the oriented box's frame, where that box is [-half, half].
@@ -106,8 +115,8 @@ pub fn distance_obb_aabb(o: &Obb, b: &Aabb) -> f64 {
     let bcorners = corners(&centre, &inv, &bh);
     for (i, j) in EDGES {
         best = best.min(distance_segment_aabb(&bcorners[i], &bcorners[j], &local));
-        if best <= 0.0 {
-            return 0.0;
+        if best <= stop {
+            return best;
         }
     }
     best
@@ -174,28 +183,7 @@ pub fn obb_clear_of_aabb(o: &Obb, b: &Aabb, clearance: f64) -> bool {
     }
     // The running least of `distance_obb_aabb`, the same numbers in the same order; once it is
     // within the clearance, the least of all is too.
-    let mut best = f64::INFINITY;
-    let oc = corners(&o.centre, &o.axes, &half);
-    for (i, j) in EDGES {
-        best = best.min(distance_segment_aabb(&oc[i], &oc[j], b));
-        if best <= clearance {
-            return false;
-        }
-    }
-    let inv = o.axes.transpose();
-    let local = Aabb {
-        min: Point::from(-half),
-        max: Point::from(half),
-    };
-    let centre = Point::from(inv * (bc - o.centre));
-    let bcorners = corners(&centre, &inv, &bh);
-    for (i, j) in EDGES {
-        best = best.min(distance_segment_aabb(&bcorners[i], &bcorners[j], &local));
-        if best <= clearance {
-            return false;
-        }
-    }
-    best > clearance
+    edge_distances(o, b, clearance) > clearance
 }
 
 /// The squared distance between two axis-aligned boxes, mm²; 0 when they touch or overlap.

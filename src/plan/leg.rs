@@ -91,9 +91,6 @@ impl WristSchedule {
     /// `s` of the module doc for axes-1..3 position `q`: 0 for a leg that does not move axes
     /// 1..3.
     pub fn progress(&self, q: &[f64; 3]) -> f64 {
-        if self.len2 <= 0.0 {
-            return 0.0;
-        }
         self.progress_of(std::array::from_fn(|k| self.progress_term(k, q[k])))
     }
 
@@ -171,7 +168,7 @@ pub struct ToolMemo {
     /// Per axis 1..3, per grid index along it: the sine and cosine of the controller value
     /// (`CollisionModel::tool_look_sincos`) and the axis's term of the leg's progress there
     /// (`WristSchedule::progress_term`); empty without a tool.
-    arm_sincos: [Vec<AxisValue>; 3],
+    axis_values: [Vec<AxisValue>; 3],
     /// Per grid index along axis 1: link 1's pose (`CollisionModel::tool_link1`); empty
     /// without a tool.
     link1: Vec<Pose>,
@@ -207,7 +204,7 @@ impl ToolMemo {
         } else {
             0
         };
-        let arm_sincos: [Vec<AxisValue>; 3] = std::array::from_fn(|k| {
+        let axis_values: [Vec<AxisValue>; 3] = std::array::from_fn(|k| {
             let along = if n > 0 { cs.grid.dims[k] } else { 0 };
             (0..along)
                 .map(|i| {
@@ -221,7 +218,7 @@ impl ToolMemo {
         });
         let model = check.model();
         // Every value's pose, or none at all (no tool): never a table shorter than axis 1's.
-        let link1 = arm_sincos[0]
+        let link1 = axis_values[0]
             .iter()
             .map(|a| model.tool_link1(a.sincos))
             .collect::<Option<Vec<_>>>()
@@ -229,7 +226,7 @@ impl ToolMemo {
         ToolMemo {
             answers: (0..n.div_ceil(32)).map(|_| AtomicU64::new(0)).collect(),
             spread: OnceLock::new(),
-            arm_sincos,
+            axis_values,
             link1,
         }
     }
@@ -265,7 +262,7 @@ impl ToolMemo {
     /// What a look at node `n` reads of the tables (`None` without a tool).
     #[inline]
     fn look_at(&self, n: Node) -> Option<NodeTables<'_>> {
-        let [a1, a2, a3] = &self.arm_sincos;
+        let [a1, a2, a3] = &self.axis_values;
         let i = usize::try_from(n[0]).ok()?;
         let v = [
             *a1.get(i)?,
@@ -609,7 +606,7 @@ mod tests {
         let memo = ToolMemo {
             answers: (0..3).map(|_| AtomicU64::new(0)).collect(),
             spread: OnceLock::new(),
-            arm_sincos: Default::default(),
+            axis_values: Default::default(),
             link1: Vec::new(),
         };
         let put = [

@@ -259,14 +259,19 @@ impl MilliDegSinCos {
         let m = (scaled + NEAREST) - NEAREST;
         if (scaled - m).abs() <= 1e-6 && m.abs() < 1e11 {
             // `m` is an integer below 1e11 in magnitude: exact as an i64.
-            if let Ok(u) = u64::try_from(m as i64 - self.lo_deg * 1000) {
-                let (d, f) = ((u / 1000) as usize, (u % 1000) as usize);
-                if let (Some(&a), Some(&b)) = (self.whole.get(d), self.milli.get(f)) {
-                    return angle_sum(a, b);
-                }
+            if let Some(sc) = self.thousandths(m as i64) {
+                return sc;
             }
         }
         deg.to_radians().sin_cos()
+    }
+
+    /// `(sin, cos)` of `r` thousandths of a degree from the two tables, `None` off them.
+    #[inline(always)]
+    fn thousandths(&self, r: i64) -> Option<(f64, f64)> {
+        let u = u64::try_from(r - self.lo_deg * 1000).ok()?;
+        let (d, f) = ((u / 1000) as usize, (u % 1000) as usize);
+        Some(angle_sum(*self.whole.get(d)?, *self.milli.get(f)?))
     }
 
     /// [`get`](Self::get) of `deg` rounded to the written 0.001 deg (`quantize_joints`), to the
@@ -274,9 +279,8 @@ impl MilliDegSinCos {
     /// multiplication back and no second rounding (a leg's looks, whose wrists are rounded so,
     /// `plan::leg`).
     ///
-    /// Why the same bits: for `x = deg * 1000` below `1e9` in magnitude, `R`, its truncation
-    /// moved by one where the rest is a half or more away from zero, is
-    /// `round_half_away(x)` (`precision`; below `2^52` the rest `x - trunc(x)` is exact), the
+    /// Why the same bits: for `x = deg * 1000` below `1e9` in magnitude, `R =
+    /// round_half_away(x)` (`precision`, an integer below `2^52`, exact as an `i64`) is the
     /// integer `quantize_joints` divides by its scale `10^JOINT_DECIMALS = 1000` (exact),
     /// giving `q = fl(R / 1000)` (`0.0` for `R = 0`, whose sign `get` does not see). `get(q)`
     /// scales back to `fl(q * 1000) = R (1 + e1) (1 + e2)`, `|e1|, |e2| <= 2^-53`, within
@@ -289,15 +293,8 @@ impl MilliDegSinCos {
         const _: () = assert!(crate::precision::JOINT_DECIMALS == 3);
         let x = deg * 1000.0;
         if x.abs() < 1e9 {
-            // Exact: |x| < 2^52, so the truncation is an integer of x's and `x - t` is exact.
-            let t = x as i64;
-            let rest = x - t as f64;
-            let r = t + i64::from(rest >= 0.5) - i64::from(rest <= -0.5);
-            if let Ok(u) = u64::try_from(r - self.lo_deg * 1000) {
-                let (d, f) = ((u / 1000) as usize, (u % 1000) as usize);
-                if let (Some(&a), Some(&b)) = (self.whole.get(d), self.milli.get(f)) {
-                    return angle_sum(a, b);
-                }
+            if let Some(sc) = self.thousandths(crate::precision::round_half_away(x) as i64) {
+                return sc;
             }
         }
         self.get_rounded_off_table(deg)
