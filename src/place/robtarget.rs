@@ -7,11 +7,12 @@
 //! (tool0) pose the arm must reach is `TCP (robot base) * tframe^-1` (`tool.tframe`: the TCP in
 //! the flange frame; without a `tool:` block tool0, the identity).
 //!
-//! **Choice.** With confdata, the solution of that configuration; without, the one nearest the
+//! **Choice.** With confdata, the solution of that configuration (a value on a quadrant boundary
+//! admitted for both quadrants, [`SixAxisIk::conf_admits`]); without, the one nearest the
 //! previous point under the IK's documented metric (time of the joint move at the controller's
 //! axis speeds, then the joint distance; the zero pose for the first point). Among those, the
 //! first whose values, *rounded to the written 0.001 deg*, are in range (all six axes and the
-//! coupled axis-3 range), keep the confdata asked for, still reach the pose within
+//! coupled axis-3 range), are still admitted for the confdata asked for, still reach the pose within
 //! [`POSITION_TOL_MM`] and [`ANGLE_TOL_DEG`] by the robot's forward kinematics, and pass the
 //! place stage's [`PoseCheck`] (collisions). Every refusal is kept, so a failure says why each
 //! solution was refused, or that the pose is out of reach by how much, or that axis 5 would have
@@ -88,7 +89,7 @@ impl Tcp {
             if let Err(v) = robot.check_range6(&q) {
                 return Err(format!("rounded to 0.001 deg, {}", describe_violation(&v)));
             }
-            if let Some(w) = wanted.filter(|w| *w != self.ik.conf(&q)) {
+            if let Some(w) = wanted.filter(|w| !self.ik.conf_admits(&q, *w)) {
                 return Err(format!(
                     "rounded to 0.001 deg it is confdata {}, not {w}",
                     self.ik.conf(&q)
@@ -116,7 +117,9 @@ impl Tcp {
                 loc: p.loc,
             })?;
         let q = quantize_joints(solution.axes_deg);
-        Ok((q, self.ik.conf(&q)))
+        // The confdata asked for is written as asked (the joints are admitted for it, also on a
+        // quadrant boundary); without one, the joints' own as written.
+        Ok((q, wanted.unwrap_or_else(|| self.ik.conf(&q))))
     }
 }
 

@@ -313,3 +313,39 @@ fn base_auto_takes_a_robtargets_wrist_centre_from_its_pose_and_tool() {
     let off = (nalgebra::Point3::from(w) - expected).norm();
     assert!(off < 0.01, "{w:?} vs {expected:?}");
 }
+
+/// `cells/gripper-pick.yaml` with the confdata its own module writes for the points above and
+/// at the fixture (`[1, 0, 2, 0]`: axis 1 at 90, axis 4 at 0, axis 6 at 180, each solved a
+/// hair off the boundary) asked for: the same joints are chosen, and the confdata written is
+/// the one asked. Fails with the choice by exact confdata ("[1, 0, 2, 0] is not reachable").
+#[test]
+fn the_gripper_cell_s_own_confdata_on_quadrant_boundaries_is_reachable() {
+    let text = include_str!("../../cells/gripper-pick.yaml");
+    let robot = Robot::irb1400();
+    let parse = |text: &str| {
+        crate::cell::parse(Path::new("cells/gripper-pick.yaml"), text)
+            .unwrap_or_else(|e| panic!("{e}"))
+    };
+    let plain = place(&parse(text), &robot, |_| Open).expect("the cell places");
+    let mut asked = text.to_string();
+    for name in ["above_place", "place", "leave"] {
+        let from = format!("{{ name: {name}, robtarget: [[900, 700, ");
+        let at = asked.find(&from).expect("the point's line") + from.len();
+        let close = at + asked[at..].find("]]").expect("the pose's end");
+        asked.insert_str(close + 1, ", [1, 0, 2, 0]");
+    }
+    assert_eq!(asked.matches("[1, 0, 2, 0]").count(), 3, "{asked}");
+    let with = place(&parse(&asked), &robot, |_| Open).unwrap_or_else(|e| panic!("{e}"));
+    for (a, b) in plain.points.iter().zip(&with.points) {
+        assert_eq!(a.joints_deg, b.joints_deg, "{}", a.name);
+        if ["above_place", "place", "leave"].contains(&a.name.as_str()) {
+            let Origin::Robtarget { conf, .. } = &b.origin else {
+                panic!("{} is a robtarget", b.name)
+            };
+            assert_eq!(conf.to_array(), [1, 0, 2, 0], "{}", b.name);
+            assert_eq!(b.joints_deg[0], 90.0);
+            assert_eq!(b.joints_deg[3], 0.0);
+            assert_eq!(b.joints_deg[5], 180.0);
+        }
+    }
+}

@@ -134,8 +134,9 @@ impl SixAxisIk {
 
     /// Chooses one solution for a tool0 pose (robot base frame, mm).
     ///
-    /// With `wanted` confdata: the solutions of that configuration (one, except at singular
-    /// poses; several are ordered by the metric). Without: all solutions, ordered by the metric
+    /// With `wanted` confdata: the solutions of that configuration, a value on a quadrant
+    /// boundary admitted for both quadrants ([`SixAxisIk::conf_admits`]; one solution, except
+    /// at singular poses; several are ordered by the metric). Without: all solutions, ordered by the metric
     /// from `previous`. The first that `is_acceptable` accepts wins (the caller's collision
     /// check; its refusals are kept). `previous` also settles the singular choices.
     pub fn choose<R>(
@@ -155,7 +156,7 @@ impl SixAxisIk {
                 let pool: Vec<Solution> = analysis
                     .solutions
                     .iter()
-                    .filter(|s| s.conf == w)
+                    .filter(|s| self.conf_admits(&s.axes_deg, w))
                     .copied()
                     .collect();
                 if pool.is_empty() {
