@@ -382,6 +382,7 @@ impl CartesianPath {
 mod tests {
     use super::*;
     use nalgebra::{Quaternion, Unit};
+    use std::f64::consts::FRAC_1_SQRT_2;
 
     fn pose(p: [f64; 3], q: [f64; 4]) -> Isometry3<f64> {
         Isometry3::from_parts(
@@ -616,7 +617,10 @@ mod tests {
     /// A path seen from another frame is the frame times the path, pose by pose.
     #[test]
     fn a_transformed_path_is_the_frame_times_the_path() {
-        let frame = pose([-830.0, -380.0, 100.0], [0.7071068, 0.0, 0.0, 0.7071068]);
+        let frame = pose(
+            [-830.0, -380.0, 100.0],
+            [FRAC_1_SQRT_2, 0.0, 0.0, FRAC_1_SQRT_2],
+        );
         let a = pose([330.0, 280.0, 0.0], SEAM_Q);
         let b = Isometry3::from_parts(
             Translation3::new(480.0, 780.0, 30.0),
