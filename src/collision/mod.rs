@@ -27,6 +27,9 @@
 //! The whole-move proof (`proof.rs`) is the guarantee the paper lacks: every straight six-axis
 //! move written is proven to keep the clearance at every instant, links and tool, not only at
 //! grid nodes.
+//! `path.rs` extends it to process moves: along the path a `MoveL` or `MoveC` runs, followed
+//! by the continuing inverse kinematics, each chord between two samples proven with the
+//! clearance raised by how far the true joint path may stray from it.
 //!
 //! Frames: the robot base frame sits in the cell frame at [`Placement`] (translation, then yaw
 //! about z); obstacles are axis-aligned boxes of the cell frame; tool shapes are given in the
@@ -62,6 +65,9 @@ mod corner;
 mod grid;
 mod near;
 mod parts;
+mod path;
+#[cfg(test)]
+mod path_tests;
 mod proof;
 #[cfg(test)]
 mod tests;
@@ -69,6 +75,7 @@ mod tests;
 pub(crate) mod tool_tests;
 
 pub use grid::{Ends, GridCheck, CODE_FREE};
+pub use path::{PathBlocked, PathClearance, PATH_CLEARANCE_TOL_MM};
 pub use proof::{Clearance, DISTANCE_SLACK_REL, MOVE_FLOOR_MM};
 
 pub use crate::cell::Obstacle;
