@@ -40,6 +40,8 @@ pub mod plan;
 
 // time: manipulation time per move
 pub mod timing;
+// time of a process move (a followed MoveL line or MoveC arc)
+pub mod process_time;
 
 // refine: the shortcut pass and the certified zones at waypoints (issue 10)
 pub mod refine;

@@ -30,6 +30,14 @@ pub(crate) fn base(base_mm: [f64; 3], yaw_deg: f64) -> Isometry3<f64> {
     )
 }
 
+/// No tool (the TCP is the flange), the base at the cell's origin.
+pub(crate) fn bare_frames() -> TcpFrames {
+    TcpFrames {
+        cell_from_robot: Isometry3::identity(),
+        tframe: Isometry3::identity(),
+    }
+}
+
 /// torch-trunk: the base at (0, -850, 0) turned 90 deg, the bent torch.
 pub(crate) fn torch_frames() -> TcpFrames {
     TcpFrames {

@@ -215,10 +215,7 @@ fn a_joint_path_that_jumps_is_refused_where_it_jumps() {
 #[test]
 fn a_path_through_the_wrist_singularity_is_refused() {
     let (robot, ik) = irb();
-    let frames = TcpFrames {
-        cell_from_robot: Isometry3::identity(),
-        tframe: Isometry3::identity(),
-    };
+    let frames = bare_frames();
     let start = [10.0, 10.0, 20.0, 0.0, 20.0, 0.0];
     let end = tcp(&robot, &frames, &[10.0, 10.0, 20.0, 0.0, -20.0, 0.0]);
     let path = line_from(&robot, &frames, &start, &end);
@@ -243,10 +240,7 @@ fn a_path_through_the_wrist_singularity_is_refused() {
 #[test]
 fn a_path_that_needs_a_configuration_change_is_refused() {
     let (robot, ik) = irb();
-    let frames = TcpFrames {
-        cell_from_robot: Isometry3::identity(),
-        tframe: Isometry3::identity(),
-    };
+    let frames = bare_frames();
     let start = [0.0, 10.0, 20.0, 60.0, 40.0, 0.0];
     let end_joints = [5.0, 15.0, 25.0, 70.0, 45.0, 10.0];
     let end = tcp(&robot, &frames, &end_joints);
@@ -298,10 +292,7 @@ fn an_end_confdata_mismatch_is_refused() {
 #[test]
 fn a_range_exit_is_refused_where_it_happens() {
     let (robot, ik) = irb();
-    let frames = TcpFrames {
-        cell_from_robot: Isometry3::identity(),
-        tframe: Isometry3::identity(),
-    };
+    let frames = bare_frames();
     type Case = (Axes6, Axes6, fn(&RangeViolation) -> bool);
     let cases: [Case; 3] = [
         (
@@ -348,10 +339,7 @@ fn out_of_reach_and_a_wrong_start_are_refused() {
     let robot = crate::robot::urdf::robot_from_urdf(std::path::Path::new("x.urdf"), &text, None)
         .expect("a serial arm");
     let ik = SixAxisIk::from_robot(&robot).expect("a spherical wrist");
-    let frames = TcpFrames {
-        cell_from_robot: Isometry3::identity(),
-        tframe: Isometry3::identity(),
-    };
+    let frames = bare_frames();
     // The wrist centre 900 mm from axis 2 at 40 deg of elevation, moved 1000 mm straight away
     // from it: the arm stretches (within its ranges at that elevation) and runs out of reach
     // at 1320 mm. The flange points 30 deg below the horizon.
