@@ -109,9 +109,10 @@ impl CollisionModel {
 
     /// The geometry of [`move_is_safe`](Self::move_is_safe) at another clearance: `true` only if
     /// every configuration on the straight six-axis segment `from -> to` keeps every link
-    /// cylinder and tool shape at least `clearance_mm` from every box (the boxes stay clipped
-    /// for the model's own clearance, so ask at most that plus the reach of a bound on a move,
-    /// as the proof along a path does). The range is not checked.
+    /// cylinder and tool shape at least `clearance_mm` from every box. The boxes are clipped
+    /// [`CLIP_MARGIN_MM`](super::CLIP_MARGIN_MM) beyond the model's own clearance, so a
+    /// clearance up to that much larger is measured as on the whole boxes (the proof along a
+    /// path asks a fraction of a millimetre more). The range is not checked.
     pub fn move_keeps(&self, from: &[f64; 6], to: &[f64; 6], clearance_mm: f64) -> bool {
         self.parts_are_safe(from, to, 0..self.part_count(), clearance_mm)
     }
