@@ -72,8 +72,8 @@
 //! its two central nodes, inside the run), and `h` is the larger of its distances to the run's
 //! first and last values: every node of the run lies within `h` of it.
 
+use super::clear::{axis_nearest, link_clear_near};
 use super::grid::{GridCheck, ARM_BITS, DEPTH_LEVELS};
-use super::{axis_nearest, link_clear_near};
 use crate::cell::Obstacle;
 use crate::geometry::{closest_param_segment_aabb, distance_point_aabb, Aabb, Cylinder, Point};
 use nalgebra::Vector3;

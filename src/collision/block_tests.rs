@@ -8,6 +8,7 @@ use super::block::{blocked_bound, blocked_bound_at, rim_ball_bound, signed_dista
 use super::grid::{COLUMN_LEVELS, DEPTH_LEVELS};
 use super::tool_tests::torch;
 use super::*;
+use crate::geometry::distance_point_aabb;
 use crate::geometry::testing::Rng;
 use crate::plan::cspace::{CSpace, Grid};
 use crate::robot::LinkCylinder;
