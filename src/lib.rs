@@ -41,7 +41,7 @@ pub mod plan;
 // time: manipulation time per move
 pub mod timing;
 
-// refine: the shortcut pass and the certified zones at waypoints (issue 10)
+// refine: the shortcut pass and the certified zones at waypoints
 pub mod refine;
 
 // render: the RAPID module, pictures, reports

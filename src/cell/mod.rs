@@ -9,7 +9,7 @@
 //! three types of later stages: the IK [`Branch`] an `xyz` point may force, the [`ConfData`] a
 //! robtarget may ask for, and the search [`Method`].
 //!
-//! What the cell says about the tool and the TCP (issue 9): a `tool:` block ([`Tool`]: tooldata
+//! What the cell says about the tool and the TCP: a `tool:` block ([`Tool`]: tooldata
 //! name, TCP frame in the flange frame, load, collision shapes), a `wobj:` block ([`Wobj`]: the
 //! user frame robtargets are given in; without it wobj0, whose frame is the cell frame), points
 //! as robtargets ([`Target::Robtarget`]: the TCP pose in the work object, with or without
@@ -53,7 +53,7 @@ pub enum Base {
     Auto,
 }
 
-/// How far a quaternion's norm may be off 1 before it is refused (issue 9's contract).
+/// How far a quaternion's norm may be off 1 before it is refused.
 pub const QUATERNION_NORM_TOL: f64 = 1e-3;
 
 /// The largest magnitude of any number a cell gives (positions, box corners, shapes, frames,
@@ -216,8 +216,8 @@ pub struct Planner {
     pub method: Method,
     pub grid_deg: f64,
     pub clearance_mm: f64,
-    /// `planner.shortcut`: after the paper's method, the continuous shortcut pass (issue 10;
-    /// `refine`). `false` keeps the paper's method alone.
+    /// `planner.shortcut`: after the paper's method, the continuous shortcut pass (`refine`).
+    /// `false` keeps the paper's method alone.
     pub shortcut: bool,
 }
 

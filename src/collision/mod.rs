@@ -138,7 +138,7 @@ impl std::fmt::Display for Blocked {
                 distance_mm,
             } if *distance_mm <= 0.0 => write!(f, "{part} hits obstacle '{obstacle}'"),
             // Links keep the wording (and the 0.01 mm) of the messages users know; tool shapes
-            // read as the issue gives them ("tool shape 'neck' comes within 4.2 mm of ...").
+            // read "tool shape 'neck' comes within 4.2 mm of ..." (0.1 mm).
             Blocked::Contact {
                 part: part @ Part::Link(_),
                 obstacle,
