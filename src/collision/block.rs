@@ -72,6 +72,7 @@
 //! its two central nodes, inside the run), and `h` is the larger of its distances to the run's
 //! first and last values: every node of the run lies within `h` of it.
 
+use super::angles::Angles;
 use super::clear::{axis_nearest, link_clear_near};
 use super::grid::{GridCheck, ARM_BITS, DEPTH_LEVELS};
 use crate::cell::Obstacle;
@@ -129,40 +130,6 @@ impl Swept<'_> {
             a: turned(&self.ends[0], sn, co),
             b: turned(&self.ends[1], sn, co),
             radius: self.radius,
-        }
-    }
-}
-
-/// A slice's axis-3 values (deg, in the columns' order) with what the runs read of them: the
-/// values in radians and their sines and cosines, and per run `lo..hi` the middle value
-/// `mid_deg[lo + hi - 1]` (between `deg[(lo + hi - 1) / 2]` and `deg[(lo + hi) / 2]`, so inside
-/// the run where the values ascend) with its sine and cosine. Made once per slice (`column.rs`),
-/// so the columns take no `sin_cos` per node or run; the grid's are made once
-/// (`GridCheck::angles`).
-#[derive(Clone, Debug)]
-pub struct Angles {
-    pub deg: Vec<f64>,
-    rad: Vec<f64>,
-    sc: Vec<(f64, f64)>,
-    mid_deg: Vec<f64>,
-    mid_sc: Vec<(f64, f64)>,
-    /// Whether `deg` ascends (the runs need it).
-    pub ascending: bool,
-}
-
-impl Angles {
-    pub fn new(a3_deg: &[f64]) -> Angles {
-        let rad: Vec<f64> = a3_deg.iter().map(|v| v.to_radians()).collect();
-        let mid_deg: Vec<f64> = (0..(2 * a3_deg.len()).saturating_sub(1))
-            .map(|s| 0.5 * (a3_deg[s / 2] + a3_deg[s.div_ceil(2)]))
-            .collect();
-        Angles {
-            deg: a3_deg.to_vec(),
-            sc: rad.iter().map(|q| q.sin_cos()).collect(),
-            mid_sc: mid_deg.iter().map(|v| v.to_radians().sin_cos()).collect(),
-            rad,
-            mid_deg,
-            ascending: ascending(a3_deg),
         }
     }
 }
@@ -316,12 +283,6 @@ fn cap_depth(codes: &mut [u8], shift: u8, q: u8) {
 #[inline]
 pub(super) fn motion(reach: f64, h: f64) -> f64 {
     (reach * h) * (1.0 + 1e-9) + 1e-9
-}
-
-/// Whether `v` is in ascending order (the runs need it).
-#[inline]
-pub(super) fn ascending(v: &[f64]) -> bool {
-    v.windows(2).all(|w| w[0] <= w[1])
 }
 
 impl GridCheck<'_> {

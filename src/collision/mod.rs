@@ -56,6 +56,7 @@
 //! Boxes are clipped to the robot's workspace (plus a 10 m margin) when the model is built, so
 //! that every distance is computed on cell-sized shapes ([`CLIP_MARGIN_MM`]).
 
+mod angles;
 mod block;
 #[cfg(test)]
 mod block_tests;

@@ -1,8 +1,9 @@
 //! Value checks shared by the sections: numbers finite and no finer than the module states them,
 //! triples, poses with normalised quaternions, RAPID names. Each refusal points at the value.
 
-use super::super::{CellError, Frame, Loc, MAX_MAGNITUDE, QUATERNION_NORM_TOL};
+use super::super::{CellError, Frame, Loc, QUATERNION_NORM_TOL};
 use crate::excerpt;
+use crate::input::MAX_MAGNITUDE;
 use crate::names::{check_data_name, check_identifier};
 use crate::precision::{self, JOINT_DECIMALS, MASS_DECIMALS, POSITION_DECIMALS};
 use crate::robot::ik::six::ConfData;
