@@ -389,9 +389,19 @@ fn the_tree_reads_back_what_it_writes() {
             let mut c = c.clone();
             for p in &mut c.points {
                 p.loc = Default::default();
+                p.arrival_loc = Default::default();
+                p.approach_loc = Default::default();
+                p.retract_loc = Default::default();
+                for a in &mut p.actions {
+                    a.loc = Default::default();
+                }
                 if let Target::Xyz { branch_loc, .. } = &mut p.target {
                     *branch_loc = Default::default();
                 }
+            }
+            c.motion.cycle_loc = Default::default();
+            for l in &mut c.loads {
+                l.loc = Default::default();
             }
             if let Some(t) = &mut c.tool {
                 t.loc = Default::default();
@@ -399,10 +409,10 @@ fn the_tree_reads_back_what_it_writes() {
                     s.loc = Default::default();
                 }
             }
-            if let Some(w) = &mut c.wobj {
+            for w in &mut c.wobjs {
                 w.loc = Default::default();
             }
-            (c.points, c.motion, c.tool, c.wobj)
+            (c.points, c.motion, c.tool, c.wobjs, c.loads)
         };
         assert_eq!(unplaced(&a), unplaced(&b), "{name}");
     }
