@@ -99,9 +99,10 @@ pub struct RawBox {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawPoint {
-    #[serde(default)]
+    /// (A `name: ~` is a text missing, not a point without a name: [`present`].)
+    #[serde(default, deserialize_with = "present")]
     pub name: Option<Spanned<String>>,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "present")]
     pub revisit: Option<Spanned<String>>,
     #[serde(default)]
     pub joints: Option<Spanned<Vec<f64>>>,
@@ -132,6 +133,12 @@ pub struct RawPoint {
     /// The actions at the point, in order.
     #[serde(default, rename = "do")]
     pub actions: Option<Spanned<Vec<Spanned<RawAction>>>>,
+}
+
+/// A key that, when given, must hold a value: `key: ~` is refused by the value's own reader (as
+/// `name: ~` is for a required name), not read as the key left out.
+fn present<'de, D: Deserializer<'de>, T: Deserialize<'de>>(d: D) -> Result<Option<T>, D::Error> {
+    T::deserialize(d).map(Some)
 }
 
 /// One action of a point's `do:` list: a mapping of one of these keys.

@@ -3,7 +3,8 @@
 //! line edits; structured edits of the parsed tree: numbers to NaN, infinities, huge, negative,
 //! many decimals; keys dropped, duplicated, misspelled, added; lists lengthened, shortened,
 //! emptied; strings huge or taken from RAPID's reserved names; nodes swapped; sections grafted
-//! from another cell, e.g. a `tool:`, `wobj:` or robtarget points; nesting deep),
+//! from another cell, e.g. a `tool:`, `wobj:` or robtarget points; the keys of docs/cell.md
+//! among the keys added; nesting deep),
 //! each run through the library's load and validation, and where it validates with a few points,
 //! the place stage with the IRB 1400 (one placed cell in [`RUN_EVERY`] also through the rest of
 //! the run, on a coarse grid). Every case must end without a panic, in an `Ok` or in a
