@@ -269,7 +269,7 @@ pub enum ActionKind {
     /// `{ wait_di: [signal, 0|1] }`: `WaitDI signal, 0|1;` (`value` true is 1).
     WaitDi { signal: String, value: bool },
     /// `{ wait_time: s }`: `WaitTime s;` (0 .. 3600 s, at most 3 decimals).
-    WaitTime { s: f64 },
+    WaitTime { time_s: f64 },
     /// `{ grip_load: name }`: `GripLoad name;`. `None`: the predefined `load0` (nothing held);
     /// `Some(i)`: `Cell::loads[i]`.
     GripLoad { load: Option<usize> },

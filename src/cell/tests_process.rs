@@ -95,7 +95,7 @@ fn the_process_keys_are_read_as_given() {
                 signal: "doWeld".into(),
                 value: true
             },
-            &ActionKind::WaitTime { s: 0.3 }
+            &ActionKind::WaitTime { time_s: 0.3 }
         ]
     );
     assert!(s1

@@ -58,7 +58,7 @@ fn action(a: &Spanned<RawAction>, who: &str, loads: &[Load]) -> Result<Action, C
         ActionKind::WaitDi { signal, value }
     } else if let Some(t) = &r.wait_time {
         ActionKind::WaitTime {
-            s: in_range(
+            time_s: in_range(
                 t,
                 &format!("{who} wait_time"),
                 (0.0, defaults::MAX_WAIT_S),
