@@ -32,16 +32,31 @@ points:
     retract: 40
 ";
 
-fn parse_str(text: &str) -> Result<Cell, CellError> {
+pub(super) fn parse_str(text: &str) -> Result<Cell, CellError> {
     parse(Path::new("cells/x.yaml"), text)
 }
 
 /// The 1-based line of the first occurrence of `needle` in `text`.
-fn line_of(text: &str, needle: &str) -> u64 {
+pub(super) fn line_of(text: &str, needle: &str) -> u64 {
     let at = text
         .find(needle)
         .unwrap_or_else(|| panic!("'{needle}' not in the text"));
     text[..at].matches('\n').count() as u64 + 1
+}
+
+/// Each `(text, message, at)`: the text is refused with the message (a part of it), at the line
+/// of the first occurrence of `at`, with a help line.
+pub(super) fn refused_at(cases: Vec<(String, &str, &str)>) {
+    for (text, needle, at) in cases {
+        let err = parse_str(&text).expect_err(needle);
+        assert!(err.to_string().contains(needle), "'{err}' lacks '{needle}'");
+        assert_eq!(
+            err.loc().map(|l| l.line),
+            Some(line_of(&text, at)),
+            "{needle}: {err}"
+        );
+        assert!(err.help().is_some(), "{needle}");
+    }
 }
 
 /// `SEAM` with `from` replaced by `to` (which must be there).
@@ -331,16 +346,7 @@ fn every_process_refusal_points_at_its_line() {
         (seam_with("wait_di: [diReady, 1]", "wait_di: [DOWELD, 1]"), "point 'S3' wait_di signal 'DOWELD' is already the name of the set_do signal of point 'S1' (line 13)", "wait_di: [DOWELD, 1]"),
         (format!("{SEAM}motion:\n  speed: doDone\n"), "motion.speed 'doDone' is already the name of the pulse_do signal of point 'S3' (line 23)", "speed: doDone"),
     ];
-    for (text, needle, at) in cases {
-        let err = parse_str(&text).expect_err(needle);
-        assert!(err.to_string().contains(needle), "'{err}' lacks '{needle}'");
-        assert_eq!(
-            err.loc().map(|l| l.line),
-            Some(line_of(&text, at)),
-            "{needle}: {err}"
-        );
-        assert!(err.help().is_some(), "{needle}");
-    }
+    refused_at(cases);
 }
 
 #[test]

@@ -2,6 +2,7 @@
 //! (`wobjs`, a point's `wobj`), orientations as `{ zyx: [ez, ey, ex] }`, revisits, the closed
 //! cycle (`motion.cycle`) and `robot.frame`: what they give, and every refusal at its line.
 
+use super::tests_process::{parse_str, refused_at};
 use super::validate::orient_zyx;
 use super::*;
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
@@ -25,18 +26,6 @@ points:
 motion:
   cycle: true
 ";
-
-fn parse_str(text: &str) -> Result<Cell, CellError> {
-    parse(Path::new("cells/x.yaml"), text)
-}
-
-/// The 1-based line of the first occurrence of `needle` in `text`.
-fn line_of(text: &str, needle: &str) -> u64 {
-    let at = text
-        .find(needle)
-        .unwrap_or_else(|| panic!("'{needle}' not in the text"));
-    text[..at].matches('\n').count() as u64 + 1
-}
 
 fn pick_with(from: &str, to: &str) -> String {
     assert!(PICK.contains(from), "'{from}' not in PICK");
@@ -189,16 +178,7 @@ fn every_refusal_of_the_daily_keys_points_at_its_line() {
         (pick_with("frame: base", "frame: world"), "robot.frame 'world' is not cell or base", "frame: world"),
         (pick_with("cycle: true", "cycle: yes please"), "expected true or false, found `yes please`", "cycle: yes"),
     ];
-    for (text, needle, at) in cases {
-        let err = parse_str(&text).expect_err(needle);
-        assert!(err.to_string().contains(needle), "'{err}' lacks '{needle}'");
-        assert_eq!(
-            err.loc().map(|l| l.line),
-            Some(line_of(&text, at)),
-            "{needle}: {err}"
-        );
-        assert!(err.help().is_some(), "{needle}");
-    }
+    refused_at(cases);
     // The duplicate's help says how to reach a target again.
     let err = parse_str(&pick_with(
         "{ revisit: pick, move: linear",

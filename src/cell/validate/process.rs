@@ -9,6 +9,7 @@ use super::super::{defaults, Arrival, CellError, Point, Target};
 use super::values::{in_range, invalid_help, loc, position};
 use crate::excerpt;
 use crate::precision::POSITION_DECIMALS;
+use serde_saphyr::Spanned;
 
 /// The help line of `approach` and `retract` out of range.
 const OFFSET_HELP: &str = "approach and retract are lines along the TCP's own z axis, 1 .. 1000 mm (RelTool(p, 0, 0, -D))";
@@ -95,21 +96,10 @@ pub(super) fn reach(
             "via is a point of the arc of a circular move: add `move: circular`, or remove via",
         ));
     }
-    let range = (defaults::MIN_OFFSET_MM, defaults::MAX_OFFSET_MM);
     if let Some(a) = &raw.approach {
         let what = format!("{who} approach");
-        point.approach_mm = Some(in_range(
-            a,
-            &what,
-            range,
-            POSITION_DECIMALS,
-            "mm",
-            OFFSET_HELP,
-        )?);
+        point.approach_mm = Some(offset(a, &what, point, gives)?);
         point.approach_loc = loc(a);
-        if !robtarget {
-            return Err(needs_robtarget(point, &what, gives, loc(a)));
-        }
         if point.arrival.is_process() {
             return Err(invalid_help(
                 loc(a),
@@ -126,21 +116,28 @@ pub(super) fn reach(
         }
     }
     if let Some(r) = &raw.retract {
-        let what = format!("{who} retract");
-        point.retract_mm = Some(in_range(
-            r,
-            &what,
-            range,
-            POSITION_DECIMALS,
-            "mm",
-            OFFSET_HELP,
-        )?);
+        point.retract_mm = Some(offset(r, &format!("{who} retract"), point, gives)?);
         point.retract_loc = loc(r);
-        if !robtarget {
-            return Err(needs_robtarget(point, &what, gives, loc(r)));
-        }
     }
     Ok(())
+}
+
+/// `approach` or `retract` (`what`): mm within 1 .. 1000 at the module's precision, on a
+/// robtarget (the line runs along its TCP's z axis); `gives` says what the point gives instead.
+fn offset(v: &Spanned<f64>, what: &str, point: &Point, gives: &str) -> Result<f64, CellError> {
+    let range = (defaults::MIN_OFFSET_MM, defaults::MAX_OFFSET_MM);
+    let d = in_range(v, what, range, POSITION_DECIMALS, "mm", OFFSET_HELP)?;
+    if !matches!(point.target, Target::Robtarget { .. }) {
+        return Err(invalid_help(
+            loc(v),
+            format!(
+                "{what} needs a robtarget (a line along the TCP's z axis), but '{}' gives {gives}",
+                point.name
+            ),
+            "give the point as `robtarget: [[x, y, z], ORIENTATION]`, the TCP pose the line runs along",
+        ));
+    }
+    Ok(d)
 }
 
 /// The key `move:` takes for `a`.
@@ -150,18 +147,6 @@ fn arrival_key(a: &Arrival) -> &'static str {
         Arrival::Linear => "linear",
         Arrival::Circular { .. } => "circular",
     }
-}
-
-/// `approach` or `retract` on a point that is not a robtarget.
-fn needs_robtarget(point: &Point, what: &str, gives: &str, at: crate::cell::Loc) -> CellError {
-    invalid_help(
-        at,
-        format!(
-            "{what} needs a robtarget (a line along the TCP's z axis), but '{}' gives {gives}",
-            point.name
-        ),
-        "give the point as `robtarget: [[x, y, z], ORIENTATION]`, the TCP pose the line runs along",
-    )
 }
 
 /// A point that [`stops`](Point::stops) is reached `fine`: its own `zone`, if given, must be
