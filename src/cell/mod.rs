@@ -321,7 +321,7 @@ pub struct Point {
     /// [`stops`](Point::stops) is reached `fine` whatever `motion.zone` says; its own zone, if
     /// given, is `fine` (validation refuses another).
     pub zone: Option<String>,
-    /// Where the entry starts (its first key).
+    /// Where the entry is given (its `{` or, written as block lines, its first key).
     pub loc: Loc,
     /// How it is reached (`move:`); on the first entry always [`Arrival::Joint`].
     pub arrival: Arrival,
