@@ -118,16 +118,21 @@ fn cycles_are_found_between_siblings_but_not_with_their_module_file() {
 }
 
 #[test]
-fn long_files_must_say_why_in_their_first_doc_line() {
+fn long_files_must_say_why_and_short_ones_must_not_claim_to_be_long() {
     let body = "fn f() {}\n".repeat(799);
     let at_limit = Source::new("a.rs", &format!("//! A.\n{body}"));
     let over = Source::new("b.rs", &format!("//! B.\n{body}\n"));
     let said = Source::new("c.rs", &format!("//! C (long: one table).\n{body}\n"));
     let said_later = Source::new("d.rs", &format!("//! D.\n//! (long: one table).\n{body}\n"));
-    let found = long_files(&[at_limit, over, said, said_later], 800);
-    assert_eq!(found.len(), 2, "{found:?}");
+    let stale = Source::new("e.rs", &format!("//! E (long: one table).\n{body}"));
+    let found = long_files(&[at_limit, over, said, said_later, stale], 800);
+    assert_eq!(found.len(), 3, "{found:?}");
     assert!(found[0].starts_with("src/b.rs: 801 lines"), "{found:?}");
     assert!(found[1].starts_with("src/d.rs: 802 lines"), "{found:?}");
+    assert!(
+        found[2].starts_with("src/e.rs: 800 lines, within"),
+        "{found:?}"
+    );
 }
 
 #[test]
