@@ -1,6 +1,7 @@
-//! Manipulation time of a planned route (paper section 5, Fig. 9): the figure the paper uses,
-//! besides the number of moves, to compare its three search methods; extended (issue 10) by the
-//! speeddata of each move and the fly-by at zoned waypoints.
+//! Manipulation time of a planned route (paper section 5, Fig. 9; long: half of it is the tests
+//! against hand-computed moves): the figure the paper uses, besides the number of moves, to
+//! compare its three search methods; extended by the speeddata of each move and the fly-by at
+//! zoned waypoints.
 //!
 //! A move from rest to rest: within a move each axis k covers D_k = |delta_k| degrees under its
 //! maximum speed v_k and peak acceleration a_k (the controller file, `robot::controller`), and
@@ -101,6 +102,11 @@
 //! routes, not a cycle time: the real controller blends, limits torques and plans its own
 //! profiles (`docs/rapid.md`, "What the controller does that gen-rapid's time estimate does
 //! not").
+//!
+//! A process move (a `MoveL` line or `MoveC` arc the controller runs along its path) has its own
+//! time, [`process::process_move_time`], by the same three limits ([`limits`]).
+
+pub mod process;
 
 use crate::cell::Tool;
 use crate::place::PlacedPoint;

@@ -1,8 +1,8 @@
 //! The time of a process move: a `MoveL` line or a `MoveC` arc (seams, approach and retract
 //! lines) followed by the continuing inverse kinematics (`robot::ik::follow`). Beside the
-//! joint-move estimate of `timing` (a `MoveAbsJ`'s straight joint move), not a part of it: the
-//! time stage calls [`process_move_time`] for process moves and adds `WaitTime`'s seconds as
-//! they are written.
+//! joint-move estimate of `timing` (a `MoveAbsJ`'s straight joint move, `timing::move_time`),
+//! sharing its rule of three limits (`timing::limits`): the time stage calls
+//! [`process_move_time`] for process moves and adds `WaitTime`'s seconds as they are written.
 //!
 //! # The yardstick
 //! A process move's TCP runs along its path at the speeddata's `v_tcp`, no faster than its axes
@@ -38,7 +38,7 @@ use crate::plan::{Limit, Profile};
 use crate::rapid_data::SpeedData;
 use crate::robot::ik::follow::FollowedPath;
 use crate::robot::AxisSpec;
-use crate::timing::{limits, Course};
+use super::{limits, Course};
 
 /// A process move's time from rest to rest, and what set it.
 #[derive(Clone, Copy, Debug, PartialEq)]
