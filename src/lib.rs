@@ -4,7 +4,7 @@
 //! typed results (ARCHITECTURE.md has the code map and the invariants):
 //!
 //! ```text
-//! load (cell, robot) -> place -> inspect (collision) -> plan -> time -> render (output)
+//! load (cell, robot) -> place -> inspect (collision) -> plan -> refine (with time) -> render (output)
 //! ```
 
 // Leaves, used by any stage.
@@ -29,6 +29,9 @@ pub mod cell;
 // load, part 2: URDF, controller convention, kinematics, IK
 pub mod robot;
 
+// load, part 3: reads the cell file and its robot files (`Loaded`)
+pub mod load;
+
 // place: where the robot stands, every point on six axes
 pub mod place;
 
@@ -41,7 +44,7 @@ pub mod plan;
 // time: manipulation time per move
 pub mod timing;
 
-// refine: the shortcut pass and the certified zones at waypoints (issue 10)
+// refine: the shortcut pass, the certified zones at waypoints, the plan the module writes
 pub mod refine;
 
 // render: the RAPID module, pictures, reports

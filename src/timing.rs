@@ -1,6 +1,6 @@
 //! Manipulation time of a planned route (paper section 5, Fig. 9): the figure the paper uses,
-//! besides the number of moves, to compare its three search methods; extended (issue 10) by the
-//! speeddata of each move and the fly-by at zoned waypoints.
+//! besides the number of moves, to compare its three search methods; extended by the speeddata
+//! of each move and the fly-by at zoned waypoints.
 //!
 //! A move from rest to rest: within a move each axis k covers D_k = |delta_k| degrees under its
 //! maximum speed v_k and peak acceleration a_k (the controller file, `robot::controller`), and
@@ -39,14 +39,15 @@
 //! halving's change is about three times the error left, so L is within about 0.05 mm of the
 //! path. Deterministic: the samples depend only on the move.
 //!
-//! **Speed names.** The speeddata of the move into waypoint k is `Plan::motion_into(k, points)`'s
-//! (a cell point's own or `motion.speed`; a via's that of its leg's end point). A predefined name
+//! **Speed names.** The speeddata of the move into waypoint k is the one its motion names
+//! (`plan::motion`: a cell point's own or `motion.speed`; a via's that of its leg's end point).
+//! A predefined name
 //! (`v5` .. `v7000`, `vmax`, any case) has its values from [`crate::rapid_data`]; `vmax`'s
 //! `v_tcp` is the robot's maximum TCP speed where the robot files give one (none do yet), else
 //! the table's 5000 mm/s, which an IRB 1400 (about 2.1 m/s) never reaches: at `vmax` the axes
 //! lead. A name RAPID does not predefine (speeddata declared on the controller) is unknown here:
-//! those moves take the axes alone, and the load stage warns once per name
-//! (`pipeline::Loaded::warnings`).
+//! those moves take the axes alone, and the run warns once per name, right after loading
+//! ([`speed_warnings`]: what this stage cannot estimate).
 //!
 //! # Fly-by (beyond the paper)
 //!
@@ -102,10 +103,11 @@
 //! profiles (`docs/rapid.md`, "What the controller does that gen-rapid's time estimate does
 //! not").
 
-use crate::cell::Tool;
-use crate::place::PlacedPoint;
-use crate::plan::motion::is_stop_zone;
-use crate::plan::{Estimate, Limit, Plan, Profile};
+use crate::cell::{Cell, Tool};
+use crate::excerpt;
+use crate::place::MoveMotion;
+use crate::plan::motion::{is_stop_zone, Estimate, Limit, MoveEstimate, Profile};
+use crate::plan::Route;
 use crate::rapid_data::{self, SpeedData};
 use crate::robot::{AxisSpec, Robot};
 use nalgebra::Isometry3;
@@ -437,18 +439,20 @@ pub fn move_profile(from: &[f64; 6], to: &[f64; 6], axes: &[AxisSpec; 6]) -> Pro
     }
 }
 
-/// The time stage: every move's time and profile and their sum (s). Move `i` runs into waypoint
-/// `i + 1` with the speeddata of `plan.motion_into(i + 1, points)`; a waypoint between two moves
-/// whose move in has a fly-by zone is flown through (module doc, "Fly-by"); the first and the
-/// last waypoint are stop points. `points` are the placed points the plan was made from.
-pub fn estimate(plan: &Plan, points: &[PlacedPoint], model: &TimeModel) -> Estimate {
-    let n = plan.moves();
+/// The time stage: every move's time, profile and limit, and their sum (s). Move `i` runs into
+/// waypoint `i + 1` with the speeddata of `motions[i + 1]`; a waypoint between two moves whose
+/// move in has a fly-by zone is flown through (module doc, "Fly-by"); the first and the last
+/// waypoint are stop points. `motions` holds the speed and zone of the move into each waypoint
+/// of `route` (`plan::motion`).
+pub fn estimate(route: &Route, motions: &[MoveMotion], model: &TimeModel) -> Estimate {
+    let n = route.moves();
+    let motion = |k: usize| motions.get(k);
     let stops: Vec<MoveTime> = (0..n)
         .map(|i| {
-            let speed = model.speed(&plan.motion_into(i + 1, points).speed);
+            let speed = motion(i + 1).and_then(|m| model.speed(&m.speed));
             move_time(
-                &plan.waypoints[i].joints_deg,
-                &plan.waypoints[i + 1].joints_deg,
+                &route.waypoints[i].joints_deg,
+                &route.waypoints[i + 1].joints_deg,
                 model,
                 speed,
             )
@@ -457,31 +461,59 @@ pub fn estimate(plan: &Plan, points: &[PlacedPoint], model: &TimeModel) -> Estim
     // The time saved at each waypoint (0 at a stop point, the first and the last).
     let saved: Vec<f64> = (0..=n)
         .map(|k| {
-            if k == 0 || k >= n || is_stop_zone(&plan.motion_into(k, points).zone) {
+            if k == 0 || k >= n || motion(k).is_none_or(|m| is_stop_zone(&m.zone)) {
                 0.0
             } else {
                 stops[k - 1].end_saving_s.min(stops[k].end_saving_s)
             }
         })
         .collect();
-    let move_s: Vec<f64> = (0..n)
-        .map(|i| (stops[i].stop_s - saved[i] - saved[i + 1]).max(0.0))
-        .collect();
-    // A flown move keeps its profile's shape, compressed to its shorter time.
-    let move_profile = (0..n)
-        .map(|i| match stops[i].profile {
-            Profile::Cruise { ramp_s } if stops[i].stop_s > 0.0 => Profile::Cruise {
-                ramp_s: ramp_s * move_s[i] / stops[i].stop_s,
-            },
-            p => p,
+    let moves: Vec<MoveEstimate> = (0..n)
+        .map(|i| {
+            let stop = &stops[i];
+            let time_s = (stop.stop_s - saved[i] - saved[i + 1]).max(0.0);
+            // A flown move keeps its profile's shape, compressed to its shorter time.
+            let profile = match stop.profile {
+                Profile::Cruise { ramp_s } if stop.stop_s > 0.0 => Profile::Cruise {
+                    ramp_s: ramp_s * time_s / stop.stop_s,
+                },
+                p => p,
+            };
+            MoveEstimate {
+                time_s,
+                profile,
+                limit: stop.limit,
+            }
         })
         .collect();
     Estimate {
-        total_s: move_s.iter().sum(),
-        move_s,
-        move_profile,
-        move_limit: stops.iter().map(|m| m.limit).collect(),
+        total_s: moves.iter().map(|m| m.time_s).sum(),
+        moves,
     }
+}
+
+/// What this stage cannot estimate, as warnings for stderr: the speeddata names the cell's
+/// moves use (each point's own, else `motion.speed`) that RAPID does not predefine, each once
+/// (ignoring case, in the cell's order). Their values are declared on the controller, not known
+/// here, so the estimate takes those moves at full axis speed (module doc, "Speed names").
+pub fn speed_warnings(cell: &Cell) -> Vec<String> {
+    let mut seen: Vec<String> = Vec::new();
+    for p in &cell.points {
+        let name = p.speed.as_deref().unwrap_or(&cell.motion.speed);
+        let known = rapid_data::predefined_speed(name).is_some();
+        if !known && !seen.iter().any(|s| s.eq_ignore_ascii_case(name)) {
+            seen.push(name.to_string());
+        }
+    }
+    seen.iter()
+        .map(|name| {
+            excerpt::message(&format!(
+                "warning: speed '{}' is not a predefined speeddata: the estimated time takes the moves that use it at full axis speed (its v_tcp and v_ori are declared on the controller, not known here)",
+                excerpt::value(name)
+            ))
+            .into_owned()
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -619,14 +651,25 @@ mod tests {
     }
 
     use crate::cell::{Frame, Loc};
+    use crate::place::PlacedPoint;
     use crate::plan::{Method, Waypoint, WaypointKind};
 
     fn point(speed: &str, zone: &str) -> PlacedPoint {
         crate::plan::motion::point_with_motion("P", speed, zone)
     }
 
-    /// A plan through `joints`: the first and last cell points 0 and 1, vias of leg 0 between.
-    fn plan_of(joints: &[[f64; 6]]) -> Plan {
+    /// The estimate of `route` with the motions as planned from `points` (`motion::planned`).
+    fn planned(route: &Route, points: &[PlacedPoint], model: &TimeModel) -> Estimate {
+        estimate(route, &crate::plan::motion::planned(route, points), model)
+    }
+
+    /// The time of each move of an estimate, s.
+    fn move_s(e: &Estimate) -> Vec<f64> {
+        e.moves.iter().map(|m| m.time_s).collect()
+    }
+
+    /// A route through `joints`: the first and last cell points 0 and 1, vias of leg 0 between.
+    fn plan_of(joints: &[[f64; 6]]) -> Route {
         let last = joints.len() - 1;
         let waypoints = joints
             .iter()
@@ -640,16 +683,11 @@ mod tests {
                 joints_deg,
             })
             .collect();
-        Plan {
+        Route {
             method: Method::Extensile,
             grid_deg: 1.0,
             waypoints,
             legs: Vec::new(),
-            min_clearance: None,
-            move_clearances: Vec::new(),
-            estimate: None,
-            paper: None,
-            zones: Vec::new(),
         }
     }
 
@@ -683,11 +721,13 @@ mod tests {
         let points = [point("v300", "fine"), point("vmax", "fine")];
         // Move 1: axis 1, 10 deg: 0.334621 s. Move 2: axis 2 10 deg (0.334621 s) and axis 6
         // 100 deg (0.669643 s, above): 0.669643 s. Total 1.004264 s. The via is `fine`.
-        let e = estimate(&plan, &points, &model);
-        assert_eq!(e.move_s.len(), 2);
-        assert!(close(e.move_s[0], 0.334621, 1e-6) && close(e.move_s[1], 0.669643, 1e-6));
+        let e = planned(&plan, &points, &model);
+        let t = move_s(&e);
+        assert_eq!(t.len(), 2);
+        assert!(close(t[0], 0.334621, 1e-6) && close(t[1], 0.669643, 1e-6));
         assert!(close(e.total_s, 1.004264, 1e-6));
-        assert_eq!(e.move_limit, [Limit::Axis, Limit::Axis]);
+        let limits: Vec<Limit> = e.moves.iter().map(|m| m.limit).collect();
+        assert_eq!(limits, [Limit::Axis, Limit::Axis]);
     }
 
     #[test]
@@ -813,10 +853,10 @@ mod tests {
         ]);
         let timed = |zone: &str| {
             let points = [point("vmax", "fine"), point("vmax", zone)];
-            estimate(&plan, &points, &model)
+            planned(&plan, &points, &model)
         };
         let fine = timed("fine");
-        // The vias stop (`motion_into` gives them `fine`) and the last point always stops,
+        // The vias stop (as planned they are `fine`) and the last point always stops,
         // whatever its zone.
         assert_eq!(fine.total_s, timed("z50").total_s);
         let stops: Vec<MoveTime> = plan
@@ -838,7 +878,7 @@ mod tests {
             assert!(2.0 * m.end_saving_s < m.stop_s, "move {k}");
         }
         assert_eq!(
-            fine.move_s,
+            move_s(&fine),
             stops.iter().map(|m| m.stop_s).collect::<Vec<_>>()
         );
     }
@@ -863,7 +903,7 @@ mod tests {
                 point("vmax", zone),
                 point("vmax", "fine"),
             ];
-            estimate(&plan, &points, &model).total_s
+            planned(&plan, &points, &model).total_s
         };
         let by_hand_s = 2.0 * (60.0 / 110.0 + 0.4);
         assert!(close(total("fine"), by_hand_s, 1e-9), "{}", total("fine"));
@@ -887,13 +927,13 @@ mod tests {
             plan.waypoints[2].joints_deg = [80.0, 10.0, 10.0, 0.0, 30.0, 0.0];
             plan
         };
-        let total = |plan: &Plan, zone: &str| {
+        let total = |plan: &Route, zone: &str| {
             let points = [
                 point("v300", "fine"),
                 point("v300", zone),
                 point("v300", "fine"),
             ];
-            estimate(plan, &points, &model).total_s
+            planned(plan, &points, &model).total_s
         };
         let mut last = None;
         for i in 0..=400 {

@@ -1,5 +1,5 @@
 //! The plan stage: the route through the cell's points, leg by leg (paper section 4, applied to
-//! A -> B -> ... -> F), as the [`Plan`] the output stage prints.
+//! A -> B -> ... -> F), as a [`Route`]: waypoints on six axes and legs, every move proven.
 //!
 //! For each leg ([`leg`]): join both points to the grid (a point on a node is that node; a point
 //! off the grid joins the nearest usable node whose straight move to it is proven safe); search
@@ -9,16 +9,16 @@
 //! over every step between usable nodes first, else over those steps only: `leg`), so the
 //! search never runs out of steps (complete on its grid); for the extensile method shorten
 //! recursively ([`shorten`]); merge collinear moves ([`merge`]); round to the written precision
-//! (0.001 deg) and prove every move again. The route starts at the first point, visits every point in the
-//! cell's order, and each cell point is a waypoint exactly as given ([`route`]). Then the
-//! smallest clearance along every move, and so along the whole route, is certified
-//! ([`certify`]; [`plan`] does both, a run routes here and certifies in the refine stage the
-//! route it keeps).
+//! (0.001 deg) and prove every move again. The route starts at the first point, visits every
+//! point in the cell's order, and each cell point is a waypoint exactly as given ([`route`]).
+//! The smallest clearance along every move, and so along the whole route, is certified apart
+//! ([`certify`] into a [`Certified`] route): the refine stage certifies only the route it keeps,
+//! not the candidates it turns down.
 //!
 //! Beyond the paper, for speed only: the legs are independent (each a pure function of the grid,
 //! the model, its two points and the method), so [`route`] plans two at once where the memory
 //! of the second is small ([`legs_at_once`]), the longest first ([`longest_first`]), and puts
-//! them together in order: the same plan, and the same error (the first failing leg's), as leg
+//! them together in order: the same route, and the same error (the first failing leg's), as leg
 //! by leg.
 //!
 //! Axes 4..6: the grid is over axes 1..3 (the paper's lumped arm); a waypoint carries all six. A
@@ -28,7 +28,8 @@
 //!
 //! Files: [`cspace`] (the grid, paper section 3; knows no geometry), [`wave`] (wave expansion),
 //! [`search`] (the three methods, and [`Method`]), [`leg`] (one leg, the wrist schedule, the
-//! leg's graph), [`shorten`], [`merge`]; [`motion`] the speed and zone of each move.
+//! leg's graph), [`shorten`], [`merge`]; [`motion`] the motion of each move (its speed and
+//! zone, and the shape of its time estimate); `tests.rs` the paper's figures through this layer.
 
 pub mod cspace;
 pub mod leg;
@@ -41,8 +42,8 @@ pub mod wave;
 pub use search::Method;
 
 use crate::collision::{Blocked, CollisionModel, GridCheck};
-/// The smallest clearance along a move, as the plan holds it (certified by the collision model),
-/// and the part of the robot model it is about.
+/// The smallest clearance along a move, as a [`Certified`] route holds it (certified by the
+/// collision model), and the part of the robot model it is about.
 pub use crate::collision::{Clearance, Part};
 use crate::place::PlacedPoint;
 use cspace::{CSpace, Node};
@@ -89,129 +90,25 @@ pub struct Leg {
     pub to: usize,
     /// The grid path the search returned (before shortening and merging), for pictures.
     pub grid_path: Vec<Node>,
-    /// Its waypoints in [`Plan::waypoints`], both ends included (a leg shares its first
+    /// Its waypoints in [`Route::waypoints`], both ends included (a leg shares its first
     /// waypoint with the previous leg's last).
     pub waypoints: Range<usize>,
 }
 
-/// The manipulation time of a route (paper section 5, with the speeddata and the fly-by at
-/// zoned waypoints: `timing`), filled by the time stage.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Estimate {
-    /// Per move, s: from rest to rest, less what flying through a zoned waypoint at either end
-    /// saves.
-    pub move_s: Vec<f64>,
-    /// Per move, how its progress runs in time (for pictures of the motion).
-    pub move_profile: Vec<Profile>,
-    /// Per move, what set its stop-to-stop time: the axes, the TCP speed or the reorientation
-    /// speed of its speeddata (`timing`).
-    pub move_limit: Vec<Limit>,
-    /// The sum, s.
-    pub total_s: f64,
-}
-
-/// What set a move's time (`timing`): the longest of the three.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Limit {
-    /// The axes' own speeds and accelerations (the leading axis' profile).
-    Axis,
-    /// The TCP path length at the speeddata's `v_tcp`.
-    Tcp,
-    /// The tool's reorientation angle at the speeddata's `v_ori`.
-    Reorientation,
-}
-
-impl Limit {
-    /// The name the report writes: `axis`, `tcp` or `reorientation`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Limit::Axis => "axis",
-            Limit::Tcp => "tcp",
-            Limit::Reorientation => "reorientation",
-        }
-    }
-}
-
-/// The route of the paper's method alone (search, shortening, merge, every via a stop point) and
-/// its estimated time: the figure a later refinement of the route is measured against.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PaperFigure {
-    pub moves: usize,
-    pub time_s: f64,
-}
-
-/// How a move's progress runs in time: the profile of its leading axis (paper Fig. 9, chosen by
-/// the time stage). A picture moves all axes along it, together, on the straight joint move
-/// (`MoveAbsJ`); the time stage's other axes finish with the leading one.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Profile {
-    /// One rest-to-rest quintic `h(s) = 10 s^3 - 15 s^4 + 6 s^5` over the whole move (Fig. 9b);
-    /// also a move that does not move.
-    Quintic,
-    /// A quintic speed ramp of `ramp_s` up to a cruise and one down from it (Fig. 9a): the speed
-    /// follows `v h(t / ramp_s)` on the way up.
-    Cruise { ramp_s: f64 },
-}
-
-impl Profile {
-    /// The share of the move done (0 at the start, 1 at the end) at time `t_s` of a move taking
-    /// `total_s`; `t_s` is clamped into the move.
-    pub fn progress(&self, t_s: f64, total_s: f64) -> f64 {
-        if total_s <= 0.0 {
-            return 1.0;
-        }
-        let t = t_s.clamp(0.0, total_s);
-        // The rest-to-rest quintic and its integral (the distance covered on a ramp, in units of
-        // speed x ramp time: 1/2 at the ramp's end).
-        let h = |s: f64| s * s * s * (10.0 + s * (-15.0 + 6.0 * s));
-        let ramp = |s: f64| s.powi(4) * (2.5 + s * (-3.0 + s));
-        match *self {
-            Profile::Cruise { ramp_s } if ramp_s > 0.0 && 2.0 * ramp_s <= total_s => {
-                // Distance 1 at cruise speed v over total_s = 1 / v + ramp_s.
-                let v = 1.0 / (total_s - ramp_s);
-                let p = if t < ramp_s {
-                    v * ramp_s * ramp(t / ramp_s)
-                } else if t <= total_s - ramp_s {
-                    v * (0.5 * ramp_s + (t - ramp_s))
-                } else {
-                    1.0 - v * ramp_s * ramp((total_s - t) / ramp_s)
-                };
-                p.clamp(0.0, 1.0)
-            }
-            _ => h(t / total_s),
-        }
-    }
-}
-
-/// The route through all points: everything the output stage prints.
+/// The route through all points, the plan stage's result: every move proven to keep the
+/// clearance ([`route`]), nothing measured or timed yet. Move `i` runs from waypoint `i` to
+/// waypoint `i + 1`.
 #[derive(Clone, Debug)]
-pub struct Plan {
+pub struct Route {
     pub method: Method,
     /// The grid spacing it was planned on, deg.
     pub grid_deg: f64,
     /// Every waypoint in visiting order; the first is the first cell point, the last the last.
     pub waypoints: Vec<Waypoint>,
     pub legs: Vec<Leg>,
-    /// The certified smallest clearance along the whole route (within
-    /// [`MIN_CLEARANCE_TOL_MM`], [`certify`]); `None` without obstacles (or before [`certify`]).
-    pub min_clearance: Option<Clearance>,
-    /// The certified smallest clearance along each move, in move order (move `i` runs from
-    /// waypoint `i` to `i + 1`), with the part (link or tool shape) and obstacle where it occurs;
-    /// each `None` without obstacles. Empty before [`certify`] (`compare` does without).
-    pub move_clearances: Vec<Option<Clearance>>,
-    /// The manipulation time, once the time stage has run.
-    pub estimate: Option<Estimate>,
-    /// The paper's method alone on the same cell (moves and estimated time), kept by the pipeline
-    /// after the first time stage; `None` before.
-    pub paper: Option<PaperFigure>,
-    /// The zone of the move into each waypoint as the refine stage certified it (issue 10:
-    /// a via's `motion.via_zone` where its corner is proven, a cell point's own zone where its
-    /// corner is proven, else `fine`; the first and last waypoints `fine`). Empty before that
-    /// stage: then [`Plan::motion_into`] gives the paper's rule (every via `fine`).
-    pub zones: Vec<String>,
 }
 
-impl Plan {
+impl Route {
     /// Number of straight moves.
     pub fn moves(&self) -> usize {
         self.waypoints.len().saturating_sub(1)
@@ -237,6 +134,18 @@ impl Plan {
             .map(|(a, b)| (0..3).map(|k| (b[k] - a[k]).powi(2)).sum::<f64>().sqrt())
             .sum()
     }
+}
+
+/// A route with the smallest clearance along every move certified ([`certify`]).
+#[derive(Clone, Debug)]
+pub struct Certified {
+    pub route: Route,
+    /// Per move, in move order: the certified smallest clearance along it (within
+    /// [`MIN_CLEARANCE_TOL_MM`]), with the part (link or tool shape) and obstacle where it
+    /// occurs; `None` without obstacles.
+    pub clearances: Vec<Option<Clearance>>,
+    /// The least of the moves' clearances; `None` without obstacles.
+    pub least: Option<Clearance>,
 }
 
 /// Why a route could not be planned. Each variant names the point(s) concerned.
@@ -351,34 +260,23 @@ impl cspace::Inspector for GridCheck<'_> {
     }
 }
 
-/// Plans the route through `points` (at least two), in order, on the inspected grid `cs` of the
-/// collision model `model`, and certifies its smallest clearance: [`route`], then [`certify`].
-pub fn plan(
-    cs: &CSpace,
-    model: &CollisionModel,
-    points: &[PlacedPoint],
-    method: Method,
-) -> Result<Plan, PlanError> {
-    Ok(certify(route(cs, model, points, method)?, model))
-}
-
-/// The smallest clearance along every move and along the whole route (the least of the moves'),
-/// each certified within [`MIN_CLEARANCE_TOL_MM`] (`None` without obstacles), into the plan.
-/// The moves are certified on all cores (`crate::parallel`), each as alone.
-pub fn certify(plan: Plan, model: &CollisionModel) -> Plan {
-    let moves: Vec<_> = plan.moves6().collect();
+/// The smallest clearance along every move of `route` and along the whole route (the least of
+/// the moves'), each certified within [`MIN_CLEARANCE_TOL_MM`] (`None` without obstacles). The
+/// moves are certified on all cores (`crate::parallel`), each as alone.
+pub fn certify(route: Route, model: &CollisionModel) -> Certified {
+    let moves: Vec<_> = route.moves6().collect();
     let clearances = crate::parallel::map(&moves, |(a, b)| {
         model.min_clearance_along(a, b, MIN_CLEARANCE_TOL_MM)
     });
-    with_clearances(plan, clearances)
+    with_clearances(route, clearances)
 }
 
-/// [`certify`], where every move of `plan` is proven safe again
+/// [`certify`], where every move of `route` is proven safe again
 /// ([`CollisionModel::move_is_safe`]): each move proven, then certified, a move at a time on
 /// all cores; `None` when a move is not proven (then no move started after it is proven or
 /// certified).
-pub fn certify_proven(plan: Plan, model: &CollisionModel) -> Option<Plan> {
-    let moves: Vec<_> = plan.moves6().collect();
+pub fn certify_proven(route: Route, model: &CollisionModel) -> Option<Certified> {
+    let moves: Vec<_> = route.moves6().collect();
     let failed = AtomicBool::new(false);
     let clearances = crate::parallel::map(&moves, |(a, b)| {
         if failed.load(Ordering::Relaxed) || !model.move_is_safe(a, b) {
@@ -388,42 +286,46 @@ pub fn certify_proven(plan: Plan, model: &CollisionModel) -> Option<Plan> {
         Some(model.min_clearance_along(a, b, MIN_CLEARANCE_TOL_MM))
     });
     let clearances: Option<Vec<_>> = clearances.into_iter().collect();
-    Some(with_clearances(plan, clearances?))
+    Some(with_clearances(route, clearances?))
 }
 
-/// `plan` with the smallest clearance of each move (`clearances`, one a move) and the least of
-/// them.
-fn with_clearances(mut plan: Plan, clearances: Vec<Option<Clearance>>) -> Plan {
-    plan.move_clearances = clearances;
-    plan.min_clearance = plan
-        .move_clearances
-        .iter()
-        .flatten()
-        .cloned()
-        .reduce(|least, c| if c.mm < least.mm { c } else { least });
-    plan
+/// `route` with the smallest clearance of each move (`clearances`, one a move) and the least
+/// of them (the first of equals).
+fn with_clearances(route: Route, clearances: Vec<Option<Clearance>>) -> Certified {
+    let least =
+        clearances
+            .iter()
+            .flatten()
+            .cloned()
+            .reduce(|least, c| if c.mm < least.mm { c } else { least });
+    Certified {
+        route,
+        clearances,
+        least,
+    }
 }
 
-/// The route alone (every move proven safe; the smallest clearance not yet certified, which
-/// costs a branch and bound over every move: `compare` does without).
+/// The plan stage: the route through `points` (at least two), in order, on the inspected grid
+/// `cs` of the collision model `model`, every move proven safe. Its clearances are measured
+/// apart ([`certify`], a branch and bound over every move), only for a route that is written.
 pub fn route(
     cs: &CSpace,
     model: &CollisionModel,
     points: &[PlacedPoint],
     method: Method,
-) -> Result<Plan, PlanError> {
+) -> Result<Route, PlanError> {
     route_on(cs, model, points, method, legs_at_once(cs, model))
 }
 
 /// [`route`] planning up to `at_once` legs at once (1: leg by leg; for tests and benchmarks:
-/// the plan is the same whatever `at_once`).
+/// the route is the same whatever `at_once`).
 pub fn route_on(
     cs: &CSpace,
     model: &CollisionModel,
     points: &[PlacedPoint],
     method: Method,
     at_once: usize,
-) -> Result<Plan, PlanError> {
+) -> Result<Route, PlanError> {
     for (i, p) in points.iter().enumerate() {
         if let Some(reason) = model.why_blocked(&p.joints_deg) {
             return Err(PlanError::PointBlocked {
@@ -458,7 +360,7 @@ pub fn route_on(
     for (&i, leg) in legs.iter().zip(done) {
         planned[i] = leg;
     }
-    let mut made = Route::default();
+    let mut made = Joined::default();
     for (i, leg) in planned.into_iter().enumerate() {
         // A leg not started follows a failed one, whose error returned first: planned here
         // only if that ever did not hold.
@@ -468,16 +370,11 @@ pub fn route_on(
         };
         made.add_leg(i, grid_path, six);
     }
-    Ok(Plan {
+    Ok(Route {
         method,
         grid_deg: grid.step_deg,
         waypoints: made.waypoints,
         legs: made.legs,
-        min_clearance: None,
-        move_clearances: Vec::new(),
-        estimate: None,
-        paper: None,
-        zones: Vec::new(),
     })
 }
 
@@ -485,7 +382,7 @@ pub fn route_on(
 /// between the leg's two points (the number of levels its waves need, which the leg's time
 /// grows with), then by their summed turn, then in route order. Handed out in this order, the
 /// long legs start first, so no long leg starts last while the other core idles (the
-/// longest-processing-time rule of scheduling). The plan is the same in any order.
+/// longest-processing-time rule of scheduling). The route is the same in any order.
 fn longest_first(points: &[PlacedPoint]) -> Vec<usize> {
     let turn = |i: usize| {
         let (a, b) = (points[i].arm_deg(), points[i + 1].arm_deg());
@@ -580,18 +477,16 @@ fn route_leg(
 
 /// The most legs [`route`] plans at once: two keep two cores busy where one leg alone leaves
 /// one idle (its waves, numbered together from both ends, run on one thread, and so do its
-/// merge, shortening and proofs; only its two walks back run side by side). When the extensile
-/// search's two waves were numbered whole on two threads, on `torch-trunk` at 1 deg (2 cores)
-/// the route took 168 ms instead of 196 and the whole run 0.33 s instead of 0.35
-/// (`benches/README.md`).
+/// merge, shortening and proofs; only its two walks back run side by side). The measurements
+/// are in `benches/README.md`.
 pub const LEGS_AT_ONCE_MAX: usize = 2;
 
 /// The most memory the legs planned beside the first may hold, bytes ([`legs_at_once`]).
 const LEGS_EXTRA_MAX_BYTES: usize = 64 << 20;
 
 /// How many legs [`route`] plans at once: [`LEGS_AT_ONCE_MAX`] where the legs beside the first
-/// hold at most [`LEGS_EXTRA_MAX_BYTES`], else one (leg by leg, the memory of one leg as
-/// ever). A leg in hand holds, per grid node, at most: its two waves' labels (2 bytes each,
+/// hold at most [`LEGS_EXTRA_MAX_BYTES`], else one (leg by leg, one leg's memory at a
+/// time). A leg in hand holds, per grid node, at most: its two waves' labels (2 bytes each,
 /// `u16`, for a node-by-node wave; the row wave's residues take 2 bits, and the two waves
 /// numbered together from both ends hold four sets of 2-bit residues while they gather the
 /// shortest paths' nodes), their bit sets (the decided nodes and the candidates, with the
@@ -615,12 +510,12 @@ pub fn legs_at_once(cs: &CSpace, model: &CollisionModel) -> usize {
 
 /// The waypoints and legs as they are made.
 #[derive(Default)]
-struct Route {
+struct Joined {
     waypoints: Vec<Waypoint>,
     legs: Vec<Leg>,
 }
 
-impl Route {
+impl Joined {
     /// Adds leg `i` (point `i` to point `i + 1`) with its six-axis waypoints (both ends
     /// included, the ends the points as given).
     fn add_leg(&mut self, i: usize, grid_path: Vec<Node>, six: Vec<[f64; 6]>) {

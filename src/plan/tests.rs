@@ -29,7 +29,7 @@ fn point(name: &str, a: [f64; 3], wrist: [f64; 3]) -> PlacedPoint {
 }
 
 /// Axes 1..3 of a leg's waypoints.
-fn leg_arm(p: &Plan, leg: usize) -> Vec<[f64; 3]> {
+fn leg_arm(p: &Route, leg: usize) -> Vec<[f64; 3]> {
     p.waypoints[p.legs[leg].waypoints.clone()]
         .iter()
         .map(Waypoint::arm_deg)
@@ -47,7 +47,7 @@ fn fig8_depth_first_fails_with_the_leg_named_and_extensile_takes_the_diagonal() 
         point("P", [0.0, 0.0, 0.0], [0.0; 3]),
         point("Q", [2.0, 2.0, 0.0], [0.0; 3]),
     ];
-    match plan(&cs, &model, &pts, Method::DepthFirst) {
+    match route(&cs, &model, &pts, Method::DepthFirst) {
         Err(e @ PlanError::SearchFailed { from: 0, to: 1, .. }) => {
             let msg = e.to_string();
             assert!(
@@ -58,18 +58,19 @@ fn fig8_depth_first_fails_with_the_leg_named_and_extensile_takes_the_diagonal() 
         }
         other => panic!("expected SearchFailed, got {other:?}"),
     }
-    let p = plan(&cs, &model, &pts, Method::Extensile).expect("extensile plans");
+    let p = route(&cs, &model, &pts, Method::Extensile).expect("extensile plans");
     assert_eq!(p.moves(), 1);
     assert_eq!(leg_arm(&p, 0), vec![[0.0, 0.0, 0.0], [2.0, 2.0, 0.0]]);
     assert_eq!(p.legs[0].grid_path, vec![[0, 0, 0], [1, 1, 0], [2, 2, 0]]);
     // No obstacles: no clearance to certify, on any move.
-    assert_eq!(p.min_clearance, None);
-    assert_eq!(p.move_clearances, vec![None; p.moves()]);
+    let certified = certify(p.clone(), &model);
+    assert_eq!(certified.least, None);
+    assert_eq!(certified.clearances, vec![None; p.moves()]);
     // Not joined at all: no path, for every method (one wave tells).
     let cs = CSpace::from_fn(g, |n| n[0] != 1);
     for m in Method::ALL {
         assert!(
-            matches!(plan(&cs, &model, &pts, m), Err(PlanError::NoPath { .. })),
+            matches!(route(&cs, &model, &pts, m), Err(PlanError::NoPath { .. })),
             "{m}"
         );
     }
@@ -90,7 +91,7 @@ fn fig6_neighboring_saw_tooth_and_extensile_straightens_it() {
         point("P", [0.0, 0.0, 0.0], [0.0; 3]),
         point("Q", [10.0, 5.0, 0.0], [0.0; 3]),
     ];
-    let nb = plan(&cs, &model, &pts, Method::Neighboring).expect("neighboring plans");
+    let nb = route(&cs, &model, &pts, Method::Neighboring).expect("neighboring plans");
     assert_eq!(nb.moves(), 10, "{:?}", leg_arm(&nb, 0));
     assert_eq!(leg_arm(&nb, 0)[1], [1.0, 0.0, 0.0]);
     assert_eq!(leg_arm(&nb, 0)[2], [2.0, 1.0, 0.0]);
@@ -98,7 +99,7 @@ fn fig6_neighboring_saw_tooth_and_extensile_straightens_it() {
     // The straight line (0, 0) -> (10, 5) passes only band nodes (at x = i its axis-2 value
     // i / 2 rounds into the band), but the shortening cuts k -> k+2 greedily from the start,
     // so it ends with at most a few pieces and never more than the saw-tooth.
-    let ex = plan(&cs, &model, &pts, Method::Extensile).expect("extensile plans");
+    let ex = route(&cs, &model, &pts, Method::Extensile).expect("extensile plans");
     assert!(ex.moves() <= 2, "{:?}", leg_arm(&ex, 0));
     assert!(ex.path_length_deg() < nb.path_length_deg());
     for (a, b) in ex.segments() {
@@ -124,7 +125,7 @@ fn waypoints_carry_six_axes_and_the_wrist_turns_with_the_legs_progress() {
         point("Q", [10.0, 5.0, 0.0], [0.0, 30.0, 100.0]),
         point("R", [10.0, 5.0, 0.0], [5.0, 30.0, 100.0]),
     ];
-    let p = plan(&cs, &model, &pts, Method::Neighboring).expect("plans");
+    let p = route(&cs, &model, &pts, Method::Neighboring).expect("plans");
     assert_eq!(p.legs.len(), 2);
     assert_eq!(p.legs[0].waypoints, 0..11);
     assert_eq!(p.legs[1].waypoints, 10..12, "the same axes 1..3: one move");
@@ -250,9 +251,9 @@ fn a_route_proven_again_is_certified_as_by_certify_and_one_through_a_wall_is_not
     let route = route_on(&cs, &model, &[a, b, c], Method::Extensile, 1).expect("planned");
     let once = certify(route.clone(), &model);
     let again = certify_proven(route.clone(), &model).expect("every move proven");
-    assert!(once.min_clearance.is_some());
-    assert_eq!(again.move_clearances, once.move_clearances);
-    assert_eq!(again.min_clearance, once.min_clearance);
+    assert!(once.least.is_some());
+    assert_eq!(again.clearances, once.clearances);
+    assert_eq!(again.least, once.least);
     // The last point moved to the other side of the walls (E of the test above): its move
     // crosses them.
     let mut through = route;
@@ -304,7 +305,7 @@ fn a_wrist_turn_in_place_through_a_box_is_refused_naming_the_tool_shape() {
         point("Down", [0.0, 0.0, 0.0], [0.0, 60.0, 0.0]),
     ];
     assert!(pts.iter().all(|p| model.is_free(&p.joints_deg)));
-    match plan(&cs, &model, &pts, Method::Extensile) {
+    match route(&cs, &model, &pts, Method::Extensile) {
         Err(e @ PlanError::WristTurn { from: 0, to: 1, .. }) => {
             let msg = e.to_string();
             assert!(
@@ -322,6 +323,6 @@ fn a_wrist_turn_in_place_through_a_box_is_refused_naming_the_tool_shape() {
         point("Up", [0.0, 0.0, 0.0], [0.0, -60.0, 0.0]),
         point("Turned", [0.0, 0.0, 0.0], [0.0, -60.0, 90.0]),
     ];
-    let p = plan(&cs, &model, &pts, Method::Extensile).expect("the wrist turns up there");
+    let p = route(&cs, &model, &pts, Method::Extensile).expect("the wrist turns up there");
     assert_eq!(p.moves(), 1);
 }
