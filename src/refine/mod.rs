@@ -279,3 +279,88 @@ fn finish(
         warnings: zoning.warnings,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    //! The plan's records against the stages computed anew on the plan's own route: the time
+    //! stage on its motions, `plan::certify` on its moves, the zones on its corners.
+    use super::*;
+    use crate::pipeline;
+    use crate::plan::Method;
+    use crate::progress::Silent;
+    use crate::timing;
+    use std::cell::Cell;
+    use std::path::Path;
+
+    #[test]
+    fn the_plan_holds_the_winners_estimate_and_each_move_its_own_records() {
+        let path = format!("{}/cells/trunk.yaml", env!("CARGO_MANIFEST_DIR"));
+        let mut job = pipeline::load(Path::new(&path)).expect("the trunk cell loads");
+        // Fly-by vias where their corners are proven: zones differ from move to move.
+        job.cell.motion.via_zone = "z50".into();
+        let placed = pipeline::place(&job).expect("placed");
+        let inspected = pipeline::inspect(&job, &placed, 2.0, &Silent);
+        let route = pipeline::route(&job, &placed, &inspected, Method::Extensile).expect("route");
+        let time_model = timing::TimeModel::new(&job.robot, job.cell.tool.as_ref());
+        let calls = Cell::new(0);
+        let time = |r: &Route, m: &[MoveMotion]| {
+            calls.set(calls.get() + 1);
+            timing::estimate(r, m, &time_model)
+        };
+        for shortcut in [false, true] {
+            let settings = Settings {
+                shortcut,
+                via_zone: "z50",
+                explicit_zone: vec![false; placed.points.len()],
+            };
+            calls.set(0);
+            let plan = refine(
+                route.clone(),
+                &inspected.model,
+                &placed.points,
+                &settings,
+                &time,
+            )
+            .plan;
+            if !shortcut {
+                // The paper's figure and the one candidate: timed once each.
+                assert_eq!(calls.get(), 2);
+            }
+            let w = &plan.route.waypoints;
+            assert_eq!(plan.moves.len(), plan.route.moves());
+            // The motion into each waypoint: the first and last stop, a via flies by exactly
+            // where its corner is proven, a cell point keeps its own zone (`fine` on the trunk).
+            let motions: Vec<MoveMotion> = plan.motions().cloned().collect();
+            assert_eq!(motions.len(), w.len());
+            assert_eq!(motions[0].zone, "fine");
+            assert_eq!(motions[w.len() - 1].zone, "fine");
+            for k in 1..w.len() - 1 {
+                let fly_by = zones::is_fly_by(&motions[k].zone);
+                match w[k].kind {
+                    WaypointKind::Via { .. } => {
+                        let proven = zones::corner_is_proven(&plan.route, &inspected.model, k);
+                        assert_eq!(fly_by, proven, "via {k}");
+                    }
+                    WaypointKind::CellPoint(_) => assert!(!fly_by, "point {k}"),
+                }
+            }
+            let (zoned, vias) = plan.zoned_vias();
+            assert!(zoned > 0 && zoned <= vias, "{zoned} of {vias}");
+            // The time of those motions, computed anew, is the plan's, move by move.
+            let again = timing::estimate(&plan.route, &motions, &time_model);
+            assert_eq!(again.total_s.to_bits(), plan.total_s.to_bits());
+            let estimates: Vec<MoveEstimate> = plan.moves.iter().map(|m| m.estimate).collect();
+            assert_eq!(again.moves, estimates);
+            // Each move's clearance is the one `certify` finds on it; the least is at most
+            // theirs (the zoned corners may come closer).
+            let certified = plan::certify(plan.route.clone(), &inspected.model);
+            let clearances: Vec<_> = plan.moves.iter().map(|m| m.clearance.clone()).collect();
+            assert_eq!(clearances, certified.clearances);
+            let (least, moves_least) = (plan.least.expect("obstacles"), certified.least);
+            assert!(least.mm <= moves_least.expect("obstacles").mm);
+            // Flying by never takes longer than the paper's route with its vias stopping.
+            assert!(plan.total_s <= plan.paper.time_s, "{shortcut}");
+            assert_eq!(plan.paper.moves, route.moves());
+        }
+    }
+}
