@@ -125,45 +125,11 @@ pub fn refine(
     time: &TimeFn,
 ) -> Refined {
     let paper = paper_figure(&route, model, points, time);
-    if !settings.shortcut {
-        return finish(
-            plan::certify(route, model),
-            model,
-            points,
-            settings,
-            time,
-            paper,
-        );
-    }
-    // The shortcut pass times its routes with their motions as planned, the split pass with
-    // the zones it tries.
-    let planned_s = |r: &Route| time(r, &motion::planned(r, points)).total_s;
-    let zoned_s = |r: &Route, zones: &[String]| time(r, &motion::motions(r, points, zones)).total_s;
-    // A: the shortest route the proofs allow. B (a fly-by zone asked anywhere): the same pass
-    // keeping [`MARGIN_MM`] more clearance, which leaves room for the corners. With a fly-by
-    // `via_zone`, each also with its tight via corners split (`split`).
-    let mut candidates = vec![shortcut::shortcut(route.clone(), model, &planned_s)];
-    let fly_by = zones::is_fly_by(settings.via_zone)
-        || points.iter().any(|p| zones::is_fly_by(&p.motion.zone));
-    if fly_by {
-        let margined = model.with_margin(MARGIN_MM);
-        candidates.push(shortcut::shortcut(route.clone(), &margined, &planned_s));
-        // The paper's route too: on a tie in time, the most zoned corners win.
-        candidates.push(route.clone());
-    }
-    // Each candidate also with its unproven via corners split (`split`), where vias fly by.
-    let split_vias = zones::is_fly_by(settings.via_zone);
-    let mut all = Vec::new();
-    for c in candidates {
-        if split_vias {
-            let s = split::split_corners(c.clone(), model, points, settings.via_zone, &zoned_s);
-            if s.waypoints != c.waypoints {
-                all.push(s);
-            }
-        }
-        all.push(c);
-    }
-    // The paper's route certified once, and only if a candidate keeps it.
+    let all = match settings.shortcut {
+        true => candidates(&route, model, points, settings.via_zone, time),
+        false => vec![route.clone()],
+    };
+    // The plan stage's route certified once, and only if a candidate keeps it.
     let mut paper_certified: Option<Certified> = None;
     let mut as_paper = |r: Route| {
         let p = paper_certified.get_or_insert_with(|| plan::certify(route.clone(), model));
@@ -175,8 +141,8 @@ pub fn refine(
     };
     let mut best: Option<(usize, Refined)> = None;
     for c in all {
-        // Every move proven again on the cell's model (and then certified), or the paper's
-        // route stays (proven as it was planned).
+        // Every move proven again on the cell's model (and then certified), or the plan
+        // stage's route stays (proven as it was planned).
         let certified = if c.waypoints == route.waypoints {
             as_paper(c)
         } else {
@@ -186,10 +152,7 @@ pub fn refine(
             }
         };
         let r = finish(certified, model, points, settings, time, paper);
-        let z = r
-            .plan
-            .moves
-            .iter()
+        let z = (r.plan.moves.iter())
             .filter(|m| zones::is_fly_by(&m.motion.zone))
             .count();
         if best.as_ref().is_none_or(|(bz, b)| {
@@ -200,8 +163,9 @@ pub fn refine(
     }
     match best {
         Some((_, r)) => r,
+        // No candidate: never (there is one at least).
         None => finish(
-            plan::certify(route, model),
+            as_paper(route.clone()),
             model,
             points,
             settings,
@@ -209,6 +173,43 @@ pub fn refine(
             paper,
         ),
     }
+}
+
+/// The shortcut pass's candidates (module doc): A, the shortest route the proofs allow; B (a
+/// fly-by zone asked anywhere), the same pass keeping [`MARGIN_MM`] more clearance, which leaves
+/// room for the corners, and the plan stage's route (on a tie in time, the most zoned corners
+/// win); with a fly-by `via_zone`, each also with its tight via corners split (`split`).
+fn candidates(
+    route: &Route,
+    model: &CollisionModel,
+    points: &[PlacedPoint],
+    via_zone: &str,
+    time: &TimeFn,
+) -> Vec<Route> {
+    // The shortcut pass times its routes with their motions as planned, the split pass with
+    // the zones it tries.
+    let planned_s = |r: &Route| time(r, &motion::planned(r, points)).total_s;
+    let zoned_s = |r: &Route, zones: &[String]| time(r, &motion::motions(r, points, zones)).total_s;
+    let mut candidates = vec![shortcut::shortcut(route.clone(), model, &planned_s)];
+    let fly_by =
+        zones::is_fly_by(via_zone) || points.iter().any(|p| zones::is_fly_by(&p.motion.zone));
+    if fly_by {
+        let margined = model.with_margin(MARGIN_MM);
+        candidates.push(shortcut::shortcut(route.clone(), &margined, &planned_s));
+        candidates.push(route.clone());
+    }
+    let split_vias = zones::is_fly_by(via_zone);
+    let mut all = Vec::new();
+    for c in candidates {
+        if split_vias {
+            let s = split::split_corners(c.clone(), model, points, via_zone, &zoned_s);
+            if s.waypoints != c.waypoints {
+                all.push(s);
+            }
+        }
+        all.push(c);
+    }
+    all
 }
 
 /// The paper's method alone as the module would write it, timed: its route with every via a
