@@ -48,18 +48,14 @@ pub fn load_template(path: &Path) -> Result<ModuleTemplate, Failure> {
 
 /// Place: where the robot stands and every point on all six axes.
 pub fn place(job: &Loaded) -> Result<Placed, Error> {
-    let (cell, robot) = (&job.cell, &job.robot);
-    Ok(place::place(cell, robot, |p| {
-        CollisionModel::of_cell(cell, robot, p)
-    })?)
+    let model = |p| CollisionModel::of_cell(&job.cell, &job.robot, p);
+    Ok(place::place(&job.cell, &job.robot, model)?)
 }
 
 /// The place stage's survey of the feasible base region (`gen-rapid locate`).
 pub fn survey(job: &Loaded) -> Result<Survey, Error> {
-    let (cell, robot) = (&job.cell, &job.robot);
-    Ok(place::survey(cell, robot, |p| {
-        CollisionModel::of_cell(cell, robot, p)
-    })?)
+    let model = |p| CollisionModel::of_cell(&job.cell, &job.robot, p);
+    Ok(place::survey(&job.cell, &job.robot, model)?)
 }
 
 /// What the place stage can draw when [`survey`] finds no base position.

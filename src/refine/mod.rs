@@ -9,9 +9,11 @@
 //! The chain of types, each a stage's result and the next one's input:
 //!
 //! ```text
-//! Route (plan::route) -> Certified (plan::certify: each move's clearance, the least)
-//!       -> zones certified (zones::certify_zones, fold_corners) -> Estimate (the time function)
-//!       -> Plan: per move its motion, clearance and estimate; the least; the total; the paper's figure
+//! Route (plan::route)
+//!   -> Certified (plan::certify: each move's clearance, the least)
+//!   -> zones (zones::certify_zones: the zone into each waypoint; fold_corners: the least)
+//!   -> Estimate (the time function: each move's time, profile, limit; the total)
+//!   -> Plan (one Move a move: motion, clearance, estimate; the least; the total; the paper's)
 //! ```
 //!
 //! It knows no time model: the caller hands it the time estimate as a function of a route and
@@ -20,9 +22,8 @@
 //! that estimate does not grow. The paper's method alone is timed here too ([`paper_figure`]),
 //! the figure the plan is measured against.
 //!
-//! A candidate route is certified only when it is proven again on the cell's model; the paper's
-//! route (proven as it was planned) is certified once, only if a candidate keeps it, so no run
-//! certifies a route it does not write.
+//! A candidate route is certified only when it is proven again on the cell's model; the plan
+//! stage's route (proven as it was planned) is certified once, only if a candidate keeps it.
 
 pub mod shortcut;
 pub mod split;
