@@ -23,14 +23,11 @@ pub mod zeroed;
 
 // The stages, in pipeline order.
 
-// load, part 1: the cell file
-pub mod cell;
-
-// load, part 2: URDF, controller convention, kinematics, IK
+// load: URDF, controller convention, kinematics, IK
 pub mod robot;
 
-// load, part 3: reads the cell file and its robot files (`Loaded`)
-pub mod load;
+// load: the cell file
+pub mod cell;
 
 // place: where the robot stands, every point on six axes
 pub mod place;
@@ -53,4 +50,6 @@ pub mod output;
 // The order of the stages, the errors, the commands.
 pub mod cli;
 pub mod error;
+/// The load stage: reads the cell file and its robot files into `Loaded`.
+pub mod load;
 pub mod pipeline;
