@@ -34,11 +34,11 @@
 //! (`FollowedPath::speed_excess`): this estimate spreads the travel over the path and does not
 //! add that local slowing.
 
-use crate::plan::{Limit, Profile};
+use super::{limits, Course};
+use crate::plan::motion::{Limit, Profile};
 use crate::rapid_data::SpeedData;
 use crate::robot::ik::follow::FollowedPath;
 use crate::robot::AxisSpec;
-use super::{limits, Course};
 
 /// A process move's time from rest to rest, and what set it.
 #[derive(Clone, Copy, Debug, PartialEq)]
