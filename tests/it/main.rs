@@ -45,6 +45,7 @@ mod messages;
 mod pictures;
 mod preview_browser;
 mod random_cells;
+mod recheck;
 mod refine;
 mod report;
 mod safety;

@@ -15,6 +15,9 @@ use gen_rapid::progress::Silent;
 use gen_rapid::refine::{Plan, Refined};
 use std::path::Path;
 
+/// How the controller's axis 3 relates to the URDF's (the OPW check converts its solutions).
+pub use gen_rapid::robot::Coupling;
+
 /// The bundled IRB 1400.
 pub fn irb1400() -> Robot {
     let path = super::root().join("robots/irb1400.urdf");

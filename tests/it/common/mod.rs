@@ -6,6 +6,8 @@ pub mod dense;
 pub mod fixtures;
 pub mod library;
 pub mod module;
+pub mod opw;
+pub mod routine;
 pub mod svg;
 pub mod tcp;
 

@@ -1,8 +1,18 @@
 //! Reading a written module as text (not through the library's types): a program header
 //! (`%%%` ... `%%%`) before it, the header's facts, the `CONST jointtarget` and
-//! `CONST robtarget` declarations, the `PERS tooldata` and `PERS wobjdata` (any of them
-//! `LOCAL`), the routine's name, and the `MoveAbsJ` moves with their speed, zone, tool and work
-//! object.
+//! `CONST robtarget` declarations, the `PERS tooldata`, `PERS wobjdata` (any number) and
+//! `PERS loaddata` (any of them `LOCAL`), the routine's name, and its instructions in order
+//! (`routine.rs`: `ConfJ`, `ConfL`, `MoveAbsJ`, `MoveJ`, `MoveL`, `MoveC`, the actions), the
+//! `MoveAbsJ` moves also as a list of their own.
+//!
+//! The reading is strict: a line outside the routine that is not a comment, a declaration of
+//! those types, `MODULE`, `ENDMODULE`, `PROC` or `ENDPROC` is refused, and so is a line of the
+//! routine that is not in its grammar. Once read, every name an instruction uses is resolved: a
+//! `MoveAbsJ` target must be a declared jointtarget, a `MoveJ`, `MoveL` or `MoveC` target (or
+//! `RelTool`'s first argument) a declared robtarget (a `MoveL` to a jointtarget is refused), a
+//! `\WObj:=` a declared wobjdata or `wobj0`, a `GripLoad` a declared loaddata or `load0`.
+
+use super::routine::{self, Action, Instruction, MoveKind, Statement};
 
 /// What a module says.
 #[derive(Clone, Debug)]
@@ -42,6 +52,19 @@ pub struct Module {
     pub local: usize,
     /// The program header before `MODULE` (`%%%`, `VERSION:1`, ..., `%%%`), if any.
     pub program_header: Vec<String>,
+    /// `PERS loaddata NAME := [mass,[cx,cy,cz],[1,0,0,0],0,0,0]`.
+    pub loaddata: Vec<(String, LoadData)>,
+    /// The header's `! frames:` line.
+    pub frames: Option<String>,
+    /// The routine's instructions, in order.
+    pub body: Vec<Statement>,
+}
+
+/// A written loaddata: a point mass at its centre of gravity.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LoadData {
+    pub mass_kg: f64,
+    pub cog_mm: [f64; 3],
 }
 
 /// One `MoveAbsJ <target>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>];`.
@@ -89,19 +112,54 @@ impl Module {
         let mut proc_name = None;
         let mut local = 0;
         let mut program_header = Vec::new();
-        let mut lines = text.lines().map(str::trim).peekable();
+        let mut loaddata = Vec::new();
+        let mut frames = None;
+        let mut body = Vec::new();
+        // In the routine: between `PROC` and `ENDPROC`.
+        let mut in_routine = false;
+        let mut lines = text
+            .lines()
+            .enumerate()
+            .map(|(i, l)| (i + 1, l.trim()))
+            .peekable();
         // A program header: `%%%`, its lines, `%%%`, before the module.
-        if lines.peek() == Some(&"%%%") {
+        if lines.peek().map(|l| l.1) == Some("%%%") {
             lines.next();
             loop {
                 match lines.next() {
-                    Some("%%%") => break,
-                    Some(l) => program_header.push(l.to_string()),
+                    Some((_, "%%%")) => break,
+                    Some((_, l)) => program_header.push(l.to_string()),
                     None => return Err("a program header '%%%' without its end".into()),
                 }
             }
         }
-        for line in lines {
+        for (line_no, line) in lines {
+            if in_routine {
+                if line == "ENDPROC" {
+                    in_routine = false;
+                } else if let Some(ins) =
+                    routine::statement(line).map_err(|e| format!("line {line_no}: {e}"))?
+                {
+                    if let Instruction::Move(m) = &ins {
+                        if m.kind == MoveKind::AbsJ {
+                            moves.push(m.to.data().to_string());
+                            move_args.push(MoveArgs {
+                                target: m.to.data().to_string(),
+                                speed: m.speed.clone(),
+                                zone: m.zone.clone(),
+                                tool: m.tool.clone(),
+                                wobj: m.wobj.clone(),
+                            });
+                        }
+                    }
+                    body.push(Statement {
+                        line: line_no,
+                        text: line.to_string(),
+                        ins,
+                    });
+                }
+                continue;
+            }
             // `LOCAL` makes a declaration module-local; it is read as any other.
             let line = match line.strip_prefix("LOCAL ") {
                 Some(rest) => {
@@ -117,6 +175,7 @@ impl Module {
                 if proc_name.replace(name.to_string()).is_some() {
                     return Err("more than one PROC".into());
                 }
+                in_routine = true;
             } else if let Some(rest) = line.strip_prefix("MODULE ") {
                 name = Some(rest.to_string());
             } else if let Some(rest) = line.strip_prefix("! planner: ") {
@@ -154,21 +213,22 @@ impl Module {
                     return Err(format!("'{line}': external axes are not 9E9"));
                 }
                 targets.push((target.to_string(), axes));
-            } else if let Some(rest) = line.strip_prefix("MoveAbsJ ") {
-                let target = rest.split('\\').next().unwrap_or_default();
-                moves.push(target.to_string());
-                move_args.push(move_args_of(line)?);
             } else if let Some(rest) = line.strip_prefix("! urdf: ") {
                 urdf = Some(rest.to_string());
             } else if let Some(rest) = line.strip_prefix("! controller: ") {
                 controller = Some(rest.to_string());
             } else if let Some(rest) = line.strip_prefix("! coupling: ") {
                 coupling = Some(rest.to_string());
+            } else if let Some(rest) = line.strip_prefix("! frames: ") {
+                frames = Some(rest.to_string());
             } else if let Some(rest) = line.strip_prefix("CONST robtarget ") {
                 let (name, value) = declaration(line, rest)?;
                 let v = numbers(value)?;
                 if v.len() != 17 || v[11..] != [9e9; 6] {
                     return Err(format!("'{line}': not [[x,y,z],[q..],[cf..],[9E9 x 6]]"));
+                }
+                if v[7..11].iter().any(|c| c.fract() != 0.0) {
+                    return Err(format!("'{line}': confdata is not four integers"));
                 }
                 robtargets.push((
                     name,
@@ -205,11 +265,33 @@ impl Module {
                     return Err(format!("'{line}': oframe is not the identity"));
                 }
                 wobjdata.push((name, [v[0], v[1], v[2], v[3], v[4], v[5], v[6]]));
+            } else if let Some(rest) = line.strip_prefix("PERS loaddata ") {
+                let (name, value) = declaration(line, rest)?;
+                let v = numbers(value)?;
+                if v.len() != 11 || v[4..] != [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0] {
+                    return Err(format!(
+                        "'{line}': not a point-mass loaddata [mass,[cog],[1,0,0,0],0,0,0]"
+                    ));
+                }
+                loaddata.push((
+                    name,
+                    LoadData {
+                        mass_kg: v[0],
+                        cog_mm: [v[1], v[2], v[3]],
+                    },
+                ));
+            } else if !(line.is_empty() || line.starts_with('!') || line == "ENDMODULE") {
+                return Err(format!(
+                    "line {line_no}: '{line}' is neither a comment nor a declaration this check reads"
+                ));
             }
+        }
+        if in_routine {
+            return Err("the routine has no ENDPROC".into());
         }
         let missing = |what: &str| format!("the module has no {what}");
         let (base_mm, yaw_deg) = base.ok_or_else(|| missing("'! base:' line"))?;
-        Ok(Module {
+        Module {
             name: name.ok_or_else(|| missing("MODULE line"))?,
             planner: planner.ok_or_else(|| missing("'! planner:' line"))?,
             base_mm,
@@ -230,6 +312,78 @@ impl Module {
             proc_name: proc_name.ok_or_else(|| missing("PROC"))?,
             local,
             program_header,
+            loaddata,
+            frames,
+            body,
+        }
+        .resolved()
+    }
+
+    /// The module with every name its instructions use resolved (module doc), or why not.
+    fn resolved(self) -> Result<Module, String> {
+        let declared = |list: &[(String, RobTarget)], n: &str| list.iter().any(|(k, _)| k == n);
+        let jointtarget = |n: &str| self.targets.iter().any(|(k, _)| k == n);
+        for s in &self.body {
+            let bad = |why: String| Err(format!("{}: {why}", s.label()));
+            match &s.ins {
+                Instruction::Move(m) => {
+                    let points = m.circle.iter().chain(std::iter::once(&m.to));
+                    for p in points {
+                        let name = p.data();
+                        match (m.kind, p) {
+                            (MoveKind::AbsJ, _) if !jointtarget(name) => {
+                                return bad(format!(
+                                    "MoveAbsJ's target '{name}' is not a declared jointtarget"
+                                ))
+                            }
+                            (MoveKind::AbsJ, _) => {}
+                            (k, _) if !declared(&self.robtargets, name) => {
+                                let what = match jointtarget(name) {
+                                    true => "a jointtarget; its ToPoint is a robtarget",
+                                    false => "not a declared robtarget",
+                                };
+                                return bad(format!("{}'s target '{name}' is {what}", k.name()));
+                            }
+                            _ => {}
+                        }
+                    }
+                    if let Some(w) = &m.wobj {
+                        if w != "wobj0" && !self.wobjdata.iter().any(|(k, _)| k == w) {
+                            return bad(format!("\\WObj:={w} names no declared wobjdata"));
+                        }
+                    }
+                }
+                Instruction::Action(Action::GripLoad { load }) => {
+                    if load != "load0" && !self.loaddata.iter().any(|(k, _)| k == load) {
+                        return bad(format!("GripLoad {load}: no declared loaddata"));
+                    }
+                }
+                _ => {}
+            }
+        }
+        Ok(self)
+    }
+
+    /// The declared robtarget `name`.
+    pub fn robtarget(&self, name: &str) -> Option<&RobTarget> {
+        self.robtargets
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, r)| r)
+    }
+
+    /// The motion instructions, in order.
+    pub fn motions(&self) -> impl Iterator<Item = (&Statement, &routine::Motion)> {
+        self.body.iter().filter_map(|s| s.motion().map(|m| (s, m)))
+    }
+
+    /// The module moves only by `MoveAbsJ` and runs no action: the form of a module whose robtarget
+    /// points are reached by their jointtargets.
+    pub fn joint_moves_only(&self) -> bool {
+        self.body.iter().all(|s| match &s.ins {
+            Instruction::Move(m) => m.kind == MoveKind::AbsJ,
+            Instruction::Action(_) => false,
+            Instruction::ConfJ(_) | Instruction::ConfL(_) => true,
         })
     }
 
@@ -252,31 +406,6 @@ fn declaration<'a>(line: &str, rest: &'a str) -> Result<(String, &'a str), Strin
         .strip_suffix(';')
         .ok_or_else(|| format!("'{line}': no final ';'"))?;
     Ok((name.to_string(), value))
-}
-
-/// The arguments of a `MoveAbsJ` line.
-fn move_args_of(line: &str) -> Result<MoveArgs, String> {
-    let bad = || format!("'{line}': not MoveAbsJ T\\NoEOffs, speed, zone, tool[\\WObj:=w];");
-    let rest = line
-        .strip_prefix("MoveAbsJ ")
-        .and_then(|r| r.strip_suffix(';'))
-        .ok_or_else(bad)?;
-    let (target, rest) = rest.split_once("\\NoEOffs, ").ok_or_else(bad)?;
-    let parts: Vec<&str> = rest.split(", ").collect();
-    let [speed, zone, tool] = parts.as_slice() else {
-        return Err(bad());
-    };
-    let (tool, wobj) = match tool.split_once("\\WObj:=") {
-        Some((t, w)) => (t, Some(w.to_string())),
-        None => (*tool, None),
-    };
-    Ok(MoveArgs {
-        target: target.to_string(),
-        speed: speed.to_string(),
-        zone: zone.to_string(),
-        tool: tool.to_string(),
-        wobj,
-    })
 }
 
 fn number(s: &str) -> Result<f64, String> {

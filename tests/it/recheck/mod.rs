@@ -1,0 +1,5 @@
+//! The controller-like re-check's own tests (`common/opw.rs`, `common/routine.rs`,
+//! `common/controller.rs` and the files it uses): its inverse kinematics against the library's
+//! forward kinematics, and hand-written modules with process moves that it must pass or refuse.
+
+mod opw;
