@@ -142,6 +142,20 @@ impl Frame {
         quat_wxyz: [1.0, 0.0, 0.0, 0.0],
     };
 
+    /// The frame as the module writes it (positions to [`POSITION_DECIMALS`], quaternion
+    /// components to [`QUATERNION_DECIMALS`]): what the controller reads. Its
+    /// [`isometry`](Self::isometry) normalises the quaternion, as the controller does.
+    ///
+    /// [`POSITION_DECIMALS`]: crate::precision::POSITION_DECIMALS
+    /// [`QUATERNION_DECIMALS`]: crate::precision::QUATERNION_DECIMALS
+    pub fn written(&self) -> Frame {
+        use crate::precision::{round, POSITION_DECIMALS, QUATERNION_DECIMALS};
+        Frame {
+            pos_mm: self.pos_mm.map(|v| round(v, POSITION_DECIMALS)),
+            quat_wxyz: self.quat_wxyz.map(|v| round(v, QUATERNION_DECIMALS)),
+        }
+    }
+
     /// The frame as a rigid transform (mm).
     pub fn isometry(&self) -> nalgebra::Isometry3<f64> {
         let [w, x, y, z] = self.quat_wxyz;

@@ -82,7 +82,8 @@ pub struct MoveMotion {
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlacedPoint {
     pub name: String,
-    /// Controller values of axes 1..6, deg, at the written precision.
+    /// Controller values of axes 1..6, deg: at the written precision, except a robtarget
+    /// point's, the exact inverse of its robtarget as written (`robtarget.rs`).
     pub joints_deg: [f64; 6],
     /// Where the cell file gives the point.
     pub loc: Loc,

@@ -7,12 +7,19 @@
 //! (tool0) pose the arm must reach is `TCP (robot base) * tframe^-1` (`tool.tframe`: the TCP in
 //! the flange frame; without a `tool:` block tool0, the identity).
 //!
+//! **As written.** The module moves to a robtarget point by its `CONST robtarget` with ConfJ and
+//! ConfL on, so the controller's joints there are the inverse kinematics of the robtarget *as
+//! written* (positions to 0.001 mm, quaternions to 9 decimals, normalised; the tooldata and
+//! wobjdata likewise, [`Frame::written`]) on the written confdata. Those exact joints (not
+//! rounded to 0.001 deg: no jointtarget of them is written) are the point's placed joints, the
+//! ones the plan proves.
+//!
 //! **Choice.** With confdata, the solution of that configuration (a value on a quadrant boundary
 //! admitted for both quadrants, [`SixAxisIk::conf_admits`]); without, the one nearest the
 //! previous point under the IK's documented metric (time of the joint move at the controller's
 //! axis speeds, then the joint distance; the zero pose for the first point). Among those, the
-//! first whose values, *rounded to the written 0.001 deg*, are in range (all six axes and the
-//! coupled axis-3 range), are still admitted for the confdata asked for, still reach the pose within
+//! first whose values are in range (all six axes and the coupled axis-3 range), are admitted for
+//! the confdata written (the one asked for, else their own as rounded), reach the pose within
 //! [`POSITION_TOL_MM`] and [`ANGLE_TOL_DEG`] by the robot's forward kinematics, and pass the
 //! place stage's [`PoseCheck`] (collisions). Every refusal is kept, so a failure says why each
 //! solution was refused, or that the pose is out of reach by how much, or that axis 5 would have
@@ -24,7 +31,6 @@
 
 use super::{PlaceError, Placement, PoseCheck};
 use crate::cell::{Cell, Frame, Point};
-use crate::precision::quantize_joints;
 use crate::robot::ik::six::{describe_violation, ConfData, SixAxisIk};
 use crate::robot::{Axes6, Robot};
 use nalgebra::{Isometry3, Point3};
@@ -51,7 +57,8 @@ impl Tcp {
             source,
             loc: cell.robot.urdf_loc,
         })?;
-        let frame = |f: Option<Frame>| f.unwrap_or(Frame::IDENTITY).isometry();
+        // The frames as written (tooldata, wobjdata): what the controller computes with.
+        let frame = |f: Option<Frame>| f.unwrap_or(Frame::IDENTITY).written().isometry();
         Ok(Tcp {
             ik,
             tframe: frame(cell.tool.as_ref().map(|t| t.tframe)),
@@ -60,9 +67,9 @@ impl Tcp {
         })
     }
 
-    /// The TCP pose of a robtarget in the cell frame.
+    /// The TCP pose of a robtarget in the cell frame, as written (module docs, "Choice").
     fn tcp_in_cell(&self, pose: &Frame) -> Isometry3<f64> {
-        self.uframe * pose.isometry()
+        self.uframe * pose.written().isometry()
     }
 
     /// The wrist centre of a robtarget, cell frame, mm (module docs).
@@ -86,23 +93,20 @@ impl Tcp {
         let tcp = placement.cell_from_robot().inverse() * self.tcp_in_cell(pose);
         let robot = self.ik.robot();
         let accept = |axes: &Axes6| -> Result<(), String> {
-            let q = quantize_joints(*axes);
-            if let Err(v) = robot.check_range6(&q) {
-                return Err(format!("rounded to 0.001 deg, {}", describe_violation(&v)));
+            if let Err(v) = robot.check_range6(axes) {
+                return Err(describe_violation(&v));
             }
-            if let Some(w) = wanted.filter(|w| !self.ik.conf_admits(&q, *w)) {
-                return Err(format!(
-                    "rounded to 0.001 deg it is confdata {}, not {w}",
-                    self.ik.conf(&q)
-                ));
+            // The confdata written is the one asked for, else that of the values rounded as
+            // the module would round them; the solution must be admitted for it.
+            let conf = wanted.unwrap_or_else(|| self.ik.conf(axes));
+            if !self.ik.conf_admits(axes, conf) {
+                return Err(format!("it is confdata {}, not {conf}", self.ik.conf(axes)));
             }
-            let (mm, deg) = pose_error(&(robot.tool0(&q) * self.tframe), &tcp);
+            let (mm, deg) = pose_error(&(robot.tool0(axes) * self.tframe), &tcp);
             if mm > POSITION_TOL_MM || deg > ANGLE_TOL_DEG {
-                return Err(format!(
-                    "rounded to 0.001 deg it misses the pose by {mm:.3} mm and {deg:.4} deg"
-                ));
+                return Err(format!("it misses the pose by {mm:.3} mm and {deg:.4} deg"));
             }
-            match check.why_blocked(&q) {
+            match check.why_blocked(axes) {
                 None => Ok(()),
                 Some(why) => Err(why),
             }
@@ -117,7 +121,7 @@ impl Tcp {
                 source: Box::new(source),
                 loc: p.loc,
             })?;
-        let q = quantize_joints(solution.axes_deg);
+        let q = solution.axes_deg;
         // The confdata asked for is written as asked (the joints are admitted for it, also on a
         // quadrant boundary); without one, the joints' own as written.
         Ok((q, wanted.unwrap_or_else(|| self.ik.conf(&q))))

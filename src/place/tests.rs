@@ -141,16 +141,16 @@ fn robtargets_are_reached_within_0_1_mm_and_0_01_deg_through_tool_wobj_and_place
         else {
             panic!("origin")
         };
-        // The written values: in range, at 0.001 deg, reaching the robtarget.
+        // The joints: in range, the exact inverse of the robtarget as written (to the
+        // written quaternion's 1e-9), not rounded to 0.001 deg.
         assert!(robot.check_range6(&q).is_ok(), "{q:?}");
-        assert_eq!(q, crate::precision::quantize_joints(q));
         let target = iso(&c.wobjs.first().expect("wobj").uframe) * iso(given);
         let reached = PLACEMENT.cell_from_robot()
             * robot.tool0(&q)
             * iso(&c.tool.as_ref().expect("tool").tframe);
         let (mm, deg) = pose_error(&reached, &target);
         assert!(
-            mm <= POSITION_TOL_MM && deg <= ANGLE_TOL_DEG,
+            mm <= 1e-5 && deg <= 1e-6 && mm <= POSITION_TOL_MM && deg <= ANGLE_TOL_DEG,
             "{a:?} -> {q:?}: {mm} mm {deg} deg"
         );
         worst_mm = worst_mm.max(mm);
@@ -343,9 +343,10 @@ fn the_gripper_cell_s_own_confdata_on_quadrant_boundaries_is_reachable() {
                 panic!("{} is a robtarget", b.name)
             };
             assert_eq!(conf.to_array(), [1, 0, 2, 0], "{}", b.name);
-            assert_eq!(b.joints_deg[0], 90.0);
-            assert_eq!(b.joints_deg[3], 0.0);
-            assert_eq!(b.joints_deg[5], 180.0);
+            // On the quadrant boundaries, to the solver's rounding.
+            for (k, v) in [(0, 90.0), (3, 0.0), (5, 180.0)] {
+                assert!((b.joints_deg[k] - v).abs() < 1e-9, "{}", b.name);
+            }
         }
     }
 }

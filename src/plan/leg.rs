@@ -521,10 +521,13 @@ pub fn plan_leg(
             _ => schedule.six(a),
         })
         .collect();
-    let mut waypoints: Vec<[f64; 6]> = merge::collinear_proven(&six, &mut prove)
-        .into_iter()
-        .map(quantize6)
-        .collect();
+    // The vias rounded as written; the two points as placed (a robtarget point's are the exact
+    // joints the controller computes from its robtarget).
+    let mut waypoints: Vec<[f64; 6]> = merge::collinear_proven(&six, &mut prove);
+    let inner = 1..waypoints.len().saturating_sub(1);
+    for w in &mut waypoints[inner] {
+        *w = quantize6(*w);
+    }
     waypoints.dedup();
     if waypoints.len() == 1 {
         // The two points coincide: one (empty) move keeps both in the program.

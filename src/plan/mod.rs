@@ -8,8 +8,8 @@
 //! six-axis move is proven safe, and the walk back takes those steps only (on a wave numbered
 //! over every step between usable nodes first, else over those steps only: `leg`), so the
 //! search never runs out of steps (complete on its grid); for the extensile method shorten
-//! recursively ([`shorten`]); merge collinear moves ([`merge`]); round to the written precision
-//! (0.001 deg) and prove every move again. The route starts at the first point, visits every
+//! recursively ([`shorten`]); merge collinear moves ([`merge`]); round the vias to the written
+//! precision (0.001 deg; the cell points stay as placed) and prove every move again. The route starts at the first point, visits every
 //! point in the cell's order, and each cell point is a waypoint exactly as given ([`route`]).
 //! The smallest clearance along every move, and so along the whole route, is certified apart
 //! ([`certify`] into a [`Certified`] route): the refine stage certifies only the route it keeps,
@@ -72,7 +72,8 @@ pub enum WaypointKind {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Waypoint {
     pub kind: WaypointKind,
-    /// Controller values of axes 1..6, deg, at the written precision.
+    /// Controller values of axes 1..6, deg: a via's at the written precision, a cell point's as
+    /// placed (a robtarget point's exact, `PlacedPoint::joints_deg`).
     pub joints_deg: [f64; 6],
 }
 

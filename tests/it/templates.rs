@@ -52,10 +52,21 @@ fn every_example_template_renders_a_module_that_passes_the_rapid_checks() {
         assert_eq!(m.proc_name, "WeldTrunk", "{template}");
         assert_eq!(report.tcp.points, 4, "{template}: the seam robtargets");
         // The same targets as the default module, only the form differs.
-        let plain = crate::common::module::Module::parse(&default).expect("the default module");
+        let mut plain = crate::common::module::Module::parse(&default).expect("the default module");
+        // The declared jointtargets and robtargets, before the joint moves are resolved.
+        let declarations = plain.targets.len() + plain.robtargets.len();
+        let placed = nalgebra::Isometry3::from_parts(
+            nalgebra::Translation3::new(m.base_mm[0], m.base_mm[1], m.base_mm[2]),
+            nalgebra::UnitQuaternion::from_axis_angle(
+                &nalgebra::Vector3::z_axis(),
+                m.yaw_deg.to_radians(),
+            ),
+        );
+        plain
+            .resolve_joint_moves(&robot, &placed)
+            .expect("the default module's moves");
         assert_eq!(m.targets, plain.targets, "{template}");
         assert_eq!(m.move_args, plain.move_args, "{template}");
-        let declarations = m.targets.len() + m.robtargets.len();
         match template {
             "templates/module-prg-header.mod.j2" => {
                 assert_eq!(m.program_header, ["VERSION:1", "LANGUAGE:ENGLISH"]);

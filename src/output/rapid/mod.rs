@@ -38,12 +38,16 @@
 //!     PERS tooldata <tool> := [TRUE,[[x,y,z],[q1,q2,q3,q4]],[mass,[cx,cy,cz],[1,0,0,0],0,0,0]];
 //!     PERS wobjdata <wobj> := [FALSE,TRUE,"",[[x,y,z],[q1,q2,q3,q4]],[[0,0,0],[1,0,0,0]]];
 //!                                                     (each only when declared, then a blank line)
-//!     CONST jointtarget <name> := [[a1,a2,a3,a4,a5,a6],[9E9,9E9,9E9,9E9,9E9,9E9]];   (one per target)
+//!     CONST jointtarget <name> := [[a1,a2,a3,a4,a5,a6],[9E9,9E9,9E9,9E9,9E9,9E9]];
+//!                                                     (one per joint target and via)
 //!     CONST robtarget <name>_rt := [[x,y,z],[q1,q2,q3,q4],[cf1,cf4,cf6,cfx],[9E9,...]];
-//!                                                     (after a robtarget point's jointtarget)
+//!                                                     (one per robtarget point, in its place)
 //!
 //!     PROC <proc>()                                   (`main` unless the cell or --proc names it)
-//!         MoveAbsJ <name>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>];   (one per target)
+//!         ConfJ \On;                                  (both only when the module moves to a
+//!         ConfL \On;                                   robtarget)
+//!         MoveAbsJ <name>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>];   (a joint target, a via)
+//!         MoveJ <name>_rt, <speed>, <zone>, <tool>[\WObj:=<wobj>];           (a robtarget point)
 //!     ENDPROC
 //! ENDMODULE
 //! ```
@@ -74,8 +78,9 @@
 //!   All declared names are unique ignoring case and differ from the module
 //!   name, the routine's and every speed and zone name (see [`target_names`]); a via
 //!   whose name is taken by any of them steps aside (`via01_01_x1`, ...).
-//! - One `CONST jointtarget` per target and one `MoveAbsJ` per target, in the
-//!   same order, so each name is used by exactly one move.
+//! - One `CONST jointtarget` per joint target and via, one `CONST robtarget` per
+//!   robtarget point, and one move per target (`MoveAbsJ` to a jointtarget, `MoveJ`
+//!   to a robtarget), in the same order, so each name is used by exactly one move.
 //! - Free text in the header (`generator`, `cell_file`, paths, `planner`) is
 //!   made printable ASCII: each character outside `' '..='~'` becomes `?`,
 //!   surrounding spaces are trimmed, and empty text becomes `-`.
@@ -399,8 +404,11 @@ struct ModuleCtx {
     wobj_arg: String,
     /// One per `CONST jointtarget`, in visiting order.
     targets: Vec<TargetCtx>,
-    /// One per `MoveAbsJ`, in order (move `i` goes to target `i`).
+    /// One per move instruction, in order (move `i` goes to target `i`).
     moves: Vec<MoveCtx>,
+    /// Whether the routine starts with `ConfJ \On; ConfL \On;`: the module moves to a
+    /// robtarget, and the controller must reach it in its written confdata.
+    conf_on: bool,
 }
 
 #[derive(Serialize)]
@@ -421,7 +429,11 @@ struct DataCtx {
 
 #[derive(Serialize)]
 struct TargetCtx {
+    /// The target's name (a robtarget point's: the point's; its data is `robtarget.name`).
     name: String,
+    /// Whether the module declares it as a `CONST jointtarget` (joint targets and vias; a
+    /// robtarget point is moved to by its `CONST robtarget` alone).
+    jointtarget: bool,
     /// `cell` (a point of the cell) or `via` (the planner's).
     kind: &'static str,
     /// `a1,a2,a3,a4,a5,a6` (deg, 3 decimals).
@@ -437,7 +449,13 @@ struct TargetCtx {
 
 #[derive(Serialize)]
 struct MoveCtx {
-    /// The jointtarget it goes to.
+    /// `MoveAbsJ` (to a jointtarget) or `MoveJ` (to a robtarget).
+    instruction: &'static str,
+    /// How it moves: `joint` (an air move).
+    kind: &'static str,
+    /// The instructions done after it, in order, without their `;`.
+    actions: Vec<String>,
+    /// The data it goes to: the jointtarget, or the robtarget (`<point>_rt`).
     target: String,
     speed: String,
     zone: String,
@@ -446,7 +464,8 @@ struct MoveCtx {
     wobj: Option<String>,
     /// `\WObj:=<name>`, or empty.
     wobj_arg: String,
-    /// The whole argument list: `<target>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>]`.
+    /// The whole argument list: `<target>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>]`
+    /// (without `\NoEOffs` for a robtarget).
     args: String,
 }
 
@@ -544,12 +563,21 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             None => None,
         };
         let axes = axes.join(",");
+        // A robtarget point is moved to by its robtarget (the controller's tool, work object
+        // and touch-ups apply); a joint target and a via by their axis values.
+        let (instruction, to, offs) = match &robtarget {
+            Some(r) => ("MoveJ", r.name.clone(), ""),
+            None => ("MoveAbsJ", name.clone(), "\\NoEOffs"),
+        };
         moves.push(MoveCtx {
             args: format!(
-                "{name}\\NoEOffs, {}, {}, {}{wobj_arg}",
+                "{to}{offs}, {}, {}, {}{wobj_arg}",
                 target.speed, target.zone, program.tool
             ),
-            target: name.clone(),
+            instruction,
+            kind: "joint",
+            actions: Vec::new(),
+            target: to,
             speed: target.speed.clone(),
             zone: target.zone.clone(),
             tool: program.tool.clone(),
@@ -557,6 +585,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             wobj_arg: wobj_arg.clone(),
         });
         targets.push(TargetCtx {
+            jointtarget: robtarget.is_none(),
             value: format!("[[{axes}],{NO_EXTERNAL_AXES}]"),
             kind: match target.kind {
                 TargetKind::CellPoint { .. } => "cell",
@@ -571,6 +600,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
     }
 
     let ctx = ModuleCtx {
+        conf_on: program.targets.iter().any(|t| t.robtarget.is_some()),
         module: program.module.clone(),
         proc: program.proc_name.clone(),
         header,

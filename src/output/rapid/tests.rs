@@ -564,7 +564,8 @@ fn vias_take_no_name_of_the_work_object_or_a_points_speed_or_zone() {
 }
 
 /// Written by hand from docs/rapid.md's formats (tooldata, wobjdata, robtarget, MoveAbsJ with
-/// `\WObj`), not copied from the output.
+/// `\WObj`, a robtarget point moved to by `MoveJ` on its robtarget with ConfJ and ConfL on, and
+/// no jointtarget of it), not copied from the output.
 const TCP_EXPECTED: &str = r#"MODULE Weld
     ! generator: gen-rapid 0.1.0
     ! cell: trunk.yaml
@@ -588,17 +589,17 @@ const TCP_EXPECTED: &str = r#"MODULE Weld
     PERS wobjdata wobjTrunk := [FALSE,TRUE,"",[[400.000,0.000,500.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];
 
     CONST jointtarget home := [[0.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget W1 := [[10.000,20.000,30.000,0.000,40.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget W1_rt := [[600.000,-100.000,300.000],[0.000000000,0.000000000,1.000000000,0.000000000],[0,0,0,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via02_01 := [[-5.000,20.000,30.000,0.000,40.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget W2 := [[-10.500,20.000,30.000,-100.000,-40.000,-95.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget W2_rt := [[612.500,0.250,300.000],[0.923879533,0.000000000,0.382683432,0.000000000],[-1,-2,-2,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
 
     PROC main()
+        ConfJ \On;
+        ConfL \On;
         MoveAbsJ home\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
-        MoveAbsJ W1\NoEOffs, v100, z10, tTorch\WObj:=wobjTrunk;
+        MoveJ W1_rt, v100, z10, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via02_01\NoEOffs, v100, fine, tTorch\WObj:=wobjTrunk;
-        MoveAbsJ W2\NoEOffs, v100, fine, tTorch\WObj:=wobjTrunk;
+        MoveJ W2_rt, v100, fine, tTorch\WObj:=wobjTrunk;
     ENDPROC
 ENDMODULE
 "#;
@@ -613,7 +614,7 @@ fn render_tcp_program_matches_hand_written_text() {
 fn a_module_of_joint_moves_says_nothing_of_tools_and_frames() {
     let text = render(&small_program()).unwrap();
     assert!(
-        !text.contains("! tool:") && !text.contains("! frames:"),
+        !text.contains("! tool:") && !text.contains("! frames:") && !text.contains("Conf"),
         "{text}"
     );
     // A robtarget alone (tool0, wobj0) brings the tool, wobj and frames lines.
@@ -625,7 +626,9 @@ fn a_module_of_joint_moves_says_nothing_of_tools_and_frames() {
         "{text}"
     );
     assert!(
-        text.contains("MoveAbsJ pick\\NoEOffs, v300, fine, tool0;"),
+        text.contains("ConfL \\On;\n        MoveAbsJ ")
+            && text.contains("MoveJ pick_rt, v300, fine, tool0;")
+            && !text.contains("jointtarget pick "),
         "{text}"
     );
     assert!(text.contains("CONST robtarget pick_rt := "), "{text}");

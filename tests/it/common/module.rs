@@ -353,10 +353,10 @@ impl Module {
                         }
                     }
                 }
-                Instruction::Action(Action::GripLoad { load }) => {
-                    if load != "load0" && !self.loaddata.iter().any(|(k, _)| k == load) {
-                        return bad(format!("GripLoad {load}: no declared loaddata"));
-                    }
+                Instruction::Action(Action::GripLoad { load })
+                    if load != "load0" && !self.loaddata.iter().any(|(k, _)| k == load) =>
+                {
+                    return bad(format!("GripLoad {load}: no declared loaddata"));
                 }
                 _ => {}
             }
@@ -385,6 +385,96 @@ impl Module {
             Instruction::Action(_) => false,
             Instruction::ConfJ(_) | Instruction::ConfL(_) => true,
         })
+    }
+
+    /// The joint moves as the controller runs them: [`targets`](Self::targets),
+    /// [`moves`](Self::moves) and [`move_args`](Self::move_args) rebuilt in the routine's
+    /// order from every `MoveAbsJ` (its jointtarget as written) and every `MoveJ` to a robtarget
+    /// `<point>_rt` (named `<point>`, its joints the independent inverse kinematics of the
+    /// robtarget as written, through the tooldata and wobjdata it names, robot base at
+    /// `cell_from_robot`, of the written confdata: ConfJ on; of several such solutions, the one
+    /// nearest the joints before). An error when a robtarget has no such solution, or when the
+    /// routine has a `MoveL` or `MoveC` (not a joint move).
+    pub fn resolve_joint_moves(
+        &mut self,
+        robot: &super::library::Robot,
+        cell_from_robot: &nalgebra::Isometry3<f64>,
+    ) -> Result<(), String> {
+        use super::opw::{max_diff, Ik};
+        let ik = Ik::new(robot)?;
+        let iso = |v: &[f64]| {
+            nalgebra::Isometry3::from_parts(
+                nalgebra::Translation3::new(v[0], v[1], v[2]),
+                nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+                    v[3], v[4], v[5], v[6],
+                )),
+            )
+        };
+        let mut targets: Vec<(String, [f64; 6])> = Vec::new();
+        let mut moves = Vec::new();
+        let mut move_args = Vec::new();
+        let motions: Vec<(String, routine::Motion)> = self
+            .motions()
+            .map(|(s, m)| (s.label(), m.clone()))
+            .collect();
+        for (label, m) in motions {
+            let name = m.to.data().to_string();
+            let (point, axes) = match m.kind {
+                MoveKind::AbsJ => {
+                    let axes = self.target(&name);
+                    (name.clone(), axes)
+                }
+                MoveKind::J => {
+                    let r = self
+                        .robtarget(&name)
+                        .ok_or_else(|| format!("{label}: no robtarget {name}"))?;
+                    let tframe = match self.tooldata.iter().find(|(n, _)| *n == m.tool) {
+                        Some((_, t)) => iso(&t.tframe),
+                        None => nalgebra::Isometry3::identity(),
+                    };
+                    let uframe = match self
+                        .wobjdata
+                        .iter()
+                        .find(|(n, _)| Some(n) == m.wobj.as_ref())
+                    {
+                        Some((_, w)) => iso(w),
+                        None => nalgebra::Isometry3::identity(),
+                    };
+                    let pose = [r.pos_mm.as_slice(), r.quat_wxyz.as_slice()].concat();
+                    let tool0 = cell_from_robot.inverse() * uframe * iso(&pose) * tframe.inverse();
+                    let before = targets.last().map(|t| t.1);
+                    let axes = ik
+                        .with_conf(&tool0, &r.conf)
+                        .into_iter()
+                        .map(|s| s.axes)
+                        .min_by(|a, b| {
+                            let d = |x: &[f64; 6]| before.map_or(0.0, |p| max_diff(x, &p));
+                            d(a).total_cmp(&d(b))
+                        })
+                        .ok_or_else(|| {
+                            format!("{label}: {name} has no solution of confdata {:?}", r.conf)
+                        })?;
+                    let point = name.strip_suffix("_rt").unwrap_or(&name).to_string();
+                    (point, axes)
+                }
+                MoveKind::L | MoveKind::C => {
+                    return Err(format!("{label}: not a joint move"));
+                }
+            };
+            moves.push(point.clone());
+            move_args.push(MoveArgs {
+                target: point.clone(),
+                speed: m.speed.clone(),
+                zone: m.zone.clone(),
+                tool: m.tool.clone(),
+                wobj: m.wobj.clone(),
+            });
+            targets.push((point, axes));
+        }
+        self.targets = targets;
+        self.moves = moves;
+        self.move_args = move_args;
+        Ok(())
     }
 
     /// The axes of target `name`.

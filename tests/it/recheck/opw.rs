@@ -203,6 +203,7 @@ pub fn load_arm(dir: &Path, arm: &Arm) -> Robot {
     }
     urdf += "  <link name=\"tool0\"/>\n";
     let m = |v: f64| v / 1000.0;
+    #[allow(clippy::needless_range_loop)] // k names the joint and indexes three tables
     for k in 0..6 {
         let parent = match k {
             0 => "base_link".to_string(),

@@ -1,6 +1,6 @@
-//! Following a TCP path with the inverse kinematics that continues: the joints a controller
-//! runs along a `MoveL` line or a `MoveC` arc ([`CartesianPath`]), from the configuration the
-//! move starts in.
+//! Following a TCP path with the inverse kinematics that continues (long: the follower's
+//! contract, its refusals and its speeds are one idea): the joints a controller runs along a
+//! `MoveL` line or a `MoveC` arc ([`CartesianPath`]), from the configuration the move starts in.
 //!
 //! Stage: a path in the cell frame + the start joints -> [`FollowedPath`] (joint samples along
 //! the path, and per chord between two samples a bound on how far the true joint path strays
