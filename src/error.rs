@@ -14,6 +14,7 @@ use crate::output::report::ReportError;
 use crate::place::locate::LocateError;
 use crate::place::PlaceError;
 use crate::plan::PlanError;
+use crate::process::ProcessError;
 use crate::robot::ik::IkError;
 use crate::robot::RobotError;
 use std::path::PathBuf;
@@ -41,6 +42,12 @@ pub enum Error {
     Place(#[from] PlaceError),
     #[error("{source}")]
     Plan { source: PlanError, loc: Loc },
+    /// A process move (approach, retract, linear, circular) that cannot be followed or proven.
+    #[error(transparent)]
+    Process {
+        /// Boxed: it is large and errors travel in `Result`s.
+        source: Box<ProcessError>,
+    },
     #[error(transparent)]
     Rapid(#[from] RapidError),
     #[error("cannot write {path}: {source}")]
@@ -68,9 +75,10 @@ impl Error {
             Error::Cell(_) | Error::Robot { .. } | Error::Template(_) => exit::INPUT,
             Error::Rapid(RapidError::UserTemplate(_)) => exit::INPUT,
             Error::Place(e) if e.is_input() => exit::INPUT,
-            Error::Place(_) | Error::Plan { .. } | Error::NoMethodSucceeded { .. } => {
-                exit::PLANNING
-            }
+            Error::Place(_)
+            | Error::Plan { .. }
+            | Error::Process { .. }
+            | Error::NoMethodSucceeded { .. } => exit::PLANNING,
             Error::Rapid(_)
             | Error::Write { .. }
             | Error::Picture(_)
@@ -85,6 +93,7 @@ impl Error {
             Error::Cell(e) => e.loc(),
             Error::Place(e) => Some(e.loc()),
             Error::Robot { loc, .. } | Error::Plan { loc, .. } => Some(*loc),
+            Error::Process { source } => Some(source.loc()),
             Error::Rapid(_)
             | Error::Write { .. }
             | Error::Picture(_)
@@ -98,6 +107,7 @@ impl Error {
     pub(crate) fn help(&self) -> Option<String> {
         match self {
             Error::Cell(e) => e.help().map(str::to_string),
+            Error::Process { source } => Some(source.help().to_string()),
             Error::Plan {
                 source: PlanError::PointBlocked { .. },
                 ..

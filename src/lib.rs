@@ -44,6 +44,10 @@ pub mod timing;
 // refine: the shortcut pass, the certified zones at waypoints, the plan the module writes
 pub mod refine;
 
+// follow: the process moves followed and proven, the stops the air route runs between, the
+// plans spliced into one
+pub mod process;
+
 // render: the RAPID module, pictures, reports
 pub mod output;
 

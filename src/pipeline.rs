@@ -17,6 +17,7 @@ use crate::output::rapid::{self, ModuleTemplate, RapidError, TemplateError};
 use crate::place::{self, locate::Sketch, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
 use crate::plan::{self, Method, Route};
+use crate::process;
 use crate::progress::{Progress, Silent};
 use crate::refine::{self, Plan, Refined};
 use crate::timing;
@@ -117,6 +118,65 @@ pub fn refine(
     refine::refine(route, &got.model, &placed.points, &settings, &time)
 }
 
+/// Follow, plan and refine: the process moves followed and proven (`process::follow`), the air
+/// route planned (`plan::route`) and refined (`refine::refine`) over each run of stops joined
+/// through the air, and the whole spliced into one plan (`process::splice`). A cell without
+/// process keys is one run of its points: the plan as `route` and `refine` make it.
+pub fn plan_all(
+    job: &Loaded,
+    placed: &Placed,
+    got: &Inspected,
+    method: Method,
+    shortcut: bool,
+) -> Result<Refined, Error> {
+    let cell = &job.cell;
+    let followed =
+        process::follow(cell, &job.robot, placed, &got.model).map_err(|e| Error::Process {
+            source: Box::new(e),
+        })?;
+    let model = timing::TimeModel::new(&job.robot, cell.tool.as_ref());
+    let time = |r: &Route, m: &[place::MoveMotion]| timing::estimate(r, m, &model);
+    let mut warnings = followed.warnings.clone();
+    let mut plans = Vec::new();
+    for run in followed.air_runs() {
+        let points = followed.points_of(&run, placed);
+        let route = plan::route(&got.cspace, &got.model, &points, method).map_err(|source| {
+            let entry = followed.entry_of(&run, source.point());
+            let loc = cell.points.get(entry).map(|p| p.loc);
+            Error::Plan {
+                source,
+                loc: loc.unwrap_or_default(),
+            }
+        })?;
+        let settings = refine::Settings {
+            shortcut,
+            via_zone: &cell.motion.via_zone,
+            explicit_zone: followed.stops[run.clone()]
+                .iter()
+                .map(|s| match s.kind {
+                    process::StopKind::Entry(i) => {
+                        cell.points.get(i).is_some_and(|p| p.zone.is_some())
+                    }
+                    _ => false,
+                })
+                .collect(),
+        };
+        let refined = refine::refine(route, &got.model, &points, &settings, &time);
+        warnings.extend(refined.warnings);
+        plans.push((run, refined.plan));
+    }
+    let waits_s: f64 = (cell.points.iter())
+        .flat_map(|p| &p.actions)
+        .map(|a| match a.kind {
+            crate::cell::ActionKind::WaitTime { time_s } => time_s,
+            _ => 0.0,
+        })
+        .sum();
+    let grid_deg = got.cspace.grid.step_deg;
+    let plan = process::splice(&followed, plans, method, grid_deg, waits_s);
+    Ok(Refined { plan, warnings })
+}
+
 /// The render stage's result: the module's content, its text and its names of the waypoints.
 pub struct Rendered {
     pub program: rapid::Program,
@@ -213,19 +273,21 @@ pub fn run(job: &Loaded, opts: &Options) -> Result<Outcome, Halted> {
     let placed = place(job)?;
     let inspected = inspect(job, &placed, opts.grid_deg, progress);
     progress.stage("planning and proving the moves", 0);
-    let route = match route(job, &placed, &inspected, opts.method) {
-        Ok(route) => route,
+    let shortcut = job.cell.planner.shortcut;
+    let Refined { plan, warnings } = match plan_all(job, &placed, &inspected, opts.method, shortcut)
+    {
+        Ok(r) => r,
         Err(error) => {
-            let searched = Some(Box::new(Searched { placed, inspected }));
+            let searched = match error {
+                Error::Plan { .. } => Some(Box::new(Searched { placed, inspected })),
+                _ => None,
+            };
             return Err(Halted {
                 error: Box::new(error),
                 searched,
             });
         }
     };
-    progress.stage("shortening the route and proving the zones", 0);
-    let shortcut = job.cell.planner.shortcut;
-    let Refined { plan, warnings } = refine(job, &placed, &inspected, route, shortcut);
     progress.stage("writing the module", 0);
     let rendered = render(job, &placed, &plan, &opts.template)?;
     Ok(Outcome {

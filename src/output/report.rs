@@ -238,6 +238,8 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
             kind: match w.kind {
                 WaypointKind::CellPoint(_) => "cell",
                 WaypointKind::Via { .. } => "via",
+                WaypointKind::Approach(_) => "approach",
+                WaypointKind::Retract(_) => "retract",
             },
             joints_deg: fixed_n(|| what("an axis"), w.joints_deg, REPORT_JOINT_DECIMALS)?,
             tcp_mm: fixed_n(

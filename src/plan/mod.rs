@@ -66,6 +66,10 @@ pub enum WaypointKind {
     /// A via the planner inserted: the `index`-th (from 1) of leg `leg` (from 0; leg `i` runs
     /// from point `i` to point `i + 1`).
     Via { leg: usize, index: usize },
+    /// Point `i`'s approach pose (a stop of the follow stage, `process`).
+    Approach(usize),
+    /// Point `i`'s retract pose (a stop of the follow stage, `process`).
+    Retract(usize),
 }
 
 /// A waypoint of the route: where a move starts or ends.

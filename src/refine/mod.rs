@@ -29,10 +29,12 @@ pub mod shortcut;
 pub mod split;
 pub mod zones;
 
+use crate::cell::Frame;
 use crate::collision::CollisionModel;
 use crate::place::{MoveMotion, PlacedPoint};
 use crate::plan::motion::{self, Estimate, MoveEstimate, VIA_ZONE};
 use crate::plan::{self, Certified, Clearance, Route, WaypointKind};
+use crate::robot::ik::six::ConfData;
 
 /// What the refine stage needs besides the route.
 pub struct Settings<'a> {
@@ -48,10 +50,43 @@ pub struct Settings<'a> {
 /// into each waypoint (`timing::estimate` with the robot's time model).
 pub type TimeFn<'a> = dyn Fn(&Route, &[MoveMotion]) -> Estimate + 'a;
 
+/// How a move runs: a straight joint move (planned through the air), or a process move the
+/// follow stage (`process`) followed and proved along its TCP path.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MoveKind {
+    /// Joint interpolation (`MoveAbsJ`, `MoveJ`).
+    Joint,
+    /// A `move: linear` line (`MoveL`).
+    Linear,
+    /// A `move: circular` arc (`MoveC`) through its circle point: `via` (the work object's
+    /// frame: the cell's via position, the orientation at its arc fraction) in configuration
+    /// `via_conf`.
+    Circular { via: Frame, via_conf: ConfData },
+    /// The approach line into a point, from `dz_mm` back along its tool's z axis (`MoveL`).
+    Approach { dz_mm: f64 },
+    /// The retract line out of a point, `dz_mm` back along its tool's z axis (`MoveL`).
+    Retract { dz_mm: f64 },
+}
+
+impl MoveKind {
+    /// The name the report and templates use.
+    pub fn name(&self) -> &'static str {
+        match self {
+            MoveKind::Joint => "joint",
+            MoveKind::Linear => "linear",
+            MoveKind::Circular { .. } => "circular",
+            MoveKind::Approach { .. } => "approach",
+            MoveKind::Retract { .. } => "retract",
+        }
+    }
+}
+
 /// One move of the plan, from waypoint `i` to waypoint `i + 1` of its route: everything the
 /// module, the report and the pictures say of it.
 #[derive(Clone, Debug)]
 pub struct Move {
+    /// How it runs.
+    pub kind: MoveKind,
     /// Its speeddata and zonedata (the zone: the one certified at the waypoint it ends at).
     pub motion: MoveMotion,
     /// The certified smallest clearance along it (within [`plan::MIN_CLEARANCE_TOL_MM`]), with
@@ -264,6 +299,7 @@ fn finish(
         .zip(clearances)
         .zip(estimate.moves)
         .map(|((motion, clearance), estimate)| Move {
+            kind: MoveKind::Joint,
             motion,
             clearance,
             estimate,
@@ -343,7 +379,9 @@ mod tests {
                         let proven = zones::corner_is_proven(&plan.route, &inspected.model, k);
                         assert_eq!(fly_by, proven, "via {k}");
                     }
-                    WaypointKind::CellPoint(_) => assert!(!fly_by, "point {k}"),
+                    WaypointKind::CellPoint(_)
+                    | WaypointKind::Approach(_)
+                    | WaypointKind::Retract(_) => assert!(!fly_by, "point {k}"),
                 }
             }
             let (zoned, vias) = plan.zoned_vias();

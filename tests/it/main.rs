@@ -23,6 +23,8 @@
 //!   fixtures in `tests/err/`).
 //! - `random_cells`: generated cells (with and without a tool), every method, every module
 //!   through the dense re-check.
+//! - `process`: the example cells with process moves run as a controller runs them
+//!   (`common/process.rs`: MoveL and MoveC sampled along the TCP path by the tests' own IK).
 //! - `tool_cells`: the example cells with a tool, every method, and the tool's volume at work.
 //! - `tidy`: the house rules read from `src/` (dependency direction, no import cycles between
 //!   files, file length, no issue numbers, module docs), each checker held to a made-up
@@ -44,6 +46,7 @@ mod locate;
 mod messages;
 mod pictures;
 mod preview_browser;
+mod process;
 mod random_cells;
 mod recheck;
 mod refine;

@@ -120,7 +120,7 @@ fn report_facts_agree_with_the_module_and_independent_kinematics() {
         );
         // A MoveJ's joints: the independent inverse kinematics of its robtarget.
         module
-            .resolve_joint_moves(&robot, &placed)
+            .resolve_waypoints(&robot, &placed)
             .expect("joint moves");
         let label = |m: &str| format!("{cell_path}: {m}");
 
@@ -190,7 +190,12 @@ fn report_facts_agree_with_the_module_and_independent_kinematics() {
             let point = cell.points.iter().find(|p| p.name == *name);
             assert_eq!(
                 w["kind"],
-                if point.is_some() { "cell" } else { "via" },
+                match (point, name.ends_with("_app"), name.ends_with("_ret")) {
+                    (Some(_), _, _) => "cell",
+                    (None, true, _) => "approach",
+                    (None, _, true) => "retract",
+                    _ => "via",
+                },
                 "{}",
                 label(name)
             );

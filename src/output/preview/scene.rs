@@ -223,7 +223,9 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
             name: names.get(k).cloned().unwrap_or_default(),
             kind: match w.kind {
                 crate::plan::WaypointKind::CellPoint(_) => WaypointKind::Cell,
-                crate::plan::WaypointKind::Via { .. } => WaypointKind::Via,
+                crate::plan::WaypointKind::Via { .. }
+                | crate::plan::WaypointKind::Approach(_)
+                | crate::plan::WaypointKind::Retract(_) => WaypointKind::Via,
             },
             time_s: t0,
             tcp_mm: poser.tcp_mm(&w.joints_deg),

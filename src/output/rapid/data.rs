@@ -142,3 +142,21 @@ pub(super) fn wobjdata(w: &WobjData) -> Result<String, RapidError> {
     let uframe = pose(&format!("wobjdata `{}` uframe", w.name), &w.uframe)?;
     Ok(format!("[FALSE,TRUE,\"\",{uframe},[[0,0,0],[1,0,0,0]]]"))
 }
+
+/// A loaddata's value: `[mass,[cx,cy,cz],[1,0,0,0],0,0,0]` (a point mass at its centre of
+/// gravity, in the tool frame).
+pub(super) fn loaddata(l: &super::LoadData) -> Result<String, RapidError> {
+    let name = &l.name;
+    let mass = format_fixed(
+        finite(format!("loaddata `{name}` mass"), l.mass_kg)?,
+        MASS_DECIMALS,
+    );
+    let mut cog = Vec::with_capacity(3);
+    for (k, &v) in l.cog_mm.iter().enumerate() {
+        cog.push(format_fixed(
+            finite(format!("loaddata `{name}` cog {k}"), v)?,
+            POSITION_DECIMALS,
+        ));
+    }
+    Ok(format!("[{mass},[{}],[1,0,0,0],0,0,0]", cog.join(",")))
+}

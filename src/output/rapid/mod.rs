@@ -1,5 +1,6 @@
-//! RAPID output stage: turns an already planned joint path into the text of an
-//! ABB RAPID module (IRB 1400 on an IRC5 controller, loaded by RobotStudio).
+//! RAPID output stage (long: the module's shape, its guarantees and the one render that keeps
+//! them): turns an already planned path into the text of an ABB RAPID module (IRB 1400 on an
+//! IRC5 controller, loaded by RobotStudio).
 //!
 //! Everything the text needs is decided by earlier stages and handed over as a
 //! [`Program`]; this stage only validates names, formats numbers and fills the
@@ -96,7 +97,7 @@ pub use header::{Header, NO_CONTROLLER};
 pub use target_names::{target_names, target_names_avoiding};
 
 use crate::names::{check_data_name, check_identifier, robtarget_name, IdentifierError};
-use crate::precision::JOINT_DECIMALS;
+use crate::precision::{JOINT_DECIMALS, POSITION_DECIMALS, WAIT_TIME_DECIMALS};
 #[cfg(test)]
 use header::comment_text;
 
@@ -128,6 +129,8 @@ pub struct Program {
     pub ranges: AxisRanges,
     /// The name of the routine that makes the moves (`motion.proc`, `--proc`; default `main`).
     pub proc_name: String,
+    /// The loaddata the module declares (`loads:`), in the cell's order.
+    pub loads: Vec<LoadData>,
 }
 
 /// What a target is: a named cell point or an intermediate via point.
@@ -145,6 +148,52 @@ pub enum TargetKind {
         /// 1-based index of the via within its leg.
         index: usize,
     },
+    /// A robtarget point's approach pose, `RelTool(<point>_rt, 0, 0, -D)` (declares nothing).
+    Approach {
+        /// The point's name.
+        point: String,
+    },
+    /// A robtarget point's retract pose, `RelTool(<point>_rt, 0, 0, -D)` (declares nothing).
+    Retract {
+        /// The point's name.
+        point: String,
+    },
+}
+
+/// How the move into a target runs.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MoveHow {
+    /// Joint interpolation: `MoveAbsJ` to a jointtarget, `MoveJ` to a robtarget point's robtarget
+    /// or to an approach pose (`RelTool`).
+    Joint,
+    /// `MoveL` to the point's robtarget, or to a retract pose (`RelTool`).
+    Linear,
+    /// `MoveC <point>_via, <point>_rt`: the circle point written as its own robtarget.
+    Circular { via: RobTarget },
+}
+
+/// An action done after the move into a target, as RAPID writes it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Action {
+    /// `SetDO signal, 0|1;`
+    SetDo { signal: String, value: bool },
+    /// `PulseDO signal;`
+    PulseDo { signal: String },
+    /// `WaitDI signal, 0|1;`
+    WaitDi { signal: String, value: bool },
+    /// `WaitTime s;` (3 decimals)
+    WaitTime { time_s: f64 },
+    /// `GripLoad load;`
+    GripLoad { load: String },
+}
+
+/// A `PERS loaddata` the module declares.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadData {
+    pub name: String,
+    pub mass_kg: f64,
+    /// Centre of gravity in the tool frame, mm.
+    pub cog_mm: [f64; 3],
 }
 
 /// One `CONST jointtarget` of the module (a joint position to visit) and the move into it.
@@ -161,6 +210,12 @@ pub struct JointTarget {
     /// For a cell point given as a robtarget: the `CONST robtarget` written beside it (named
     /// by [`robtarget_name`]).
     pub robtarget: Option<RobTarget>,
+    /// How the move into it runs.
+    pub how: MoveHow,
+    /// For an approach or retract pose: how far back along the tool's z axis, mm.
+    pub offset_mm: Option<f64>,
+    /// The actions done after the move into it, in order.
+    pub actions: Vec<Action>,
 }
 
 /// Why a module could not be rendered.
@@ -409,6 +464,8 @@ struct ModuleCtx {
     /// Whether the routine starts with `ConfJ \On; ConfL \On;`: the module moves to a
     /// robtarget, and the controller must reach it in its written confdata.
     conf_on: bool,
+    /// The `PERS loaddata` the module declares.
+    loads: Vec<DataCtx>,
 }
 
 #[derive(Serialize)]
@@ -445,6 +502,8 @@ struct TargetCtx {
     zone: String,
     /// The `CONST robtarget` written beside a robtarget point, or none.
     robtarget: Option<DataCtx>,
+    /// A circular move's circle point, `CONST robtarget <point>_via`, or none.
+    via: Option<DataCtx>,
 }
 
 #[derive(Serialize)]
@@ -563,20 +622,68 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             None => None,
         };
         let axes = axes.join(",");
-        // A robtarget point is moved to by its robtarget (the controller's tool, work object
-        // and touch-ups apply); a joint target and a via by their axis values.
-        let (instruction, to, offs) = match &robtarget {
-            Some(r) => ("MoveJ", r.name.clone(), ""),
-            None => ("MoveAbsJ", name.clone(), "\\NoEOffs"),
+        let via = match &target.how {
+            MoveHow::Circular { via } => {
+                let vname = format!("{name}_via");
+                let value = data::robtarget(&vname, via)?;
+                Some(DataCtx { name: vname, value })
+            }
+            _ => None,
         };
+        // A robtarget point is moved to by its robtarget (the controller's tool, work object
+        // and touch-ups apply); a joint target and a via by their axis values; an approach or
+        // retract pose by RelTool on its point's robtarget.
+        let rel_tool = |point: &str| -> Result<String, RapidError> {
+            let d = finite(
+                format!("the offset of `{name}`"),
+                target.offset_mm.unwrap_or(0.0),
+            )?;
+            Ok(format!(
+                "RelTool({},0,0,{})",
+                robtarget_name(point),
+                format_fixed(-d, POSITION_DECIMALS)
+            ))
+        };
+        let (instruction, to, offs) = match (&target.kind, &target.how, &robtarget, &via) {
+            (TargetKind::Approach { point }, _, _, _) => ("MoveJ", rel_tool(point)?, ""),
+            (TargetKind::Retract { point }, _, _, _) => ("MoveL", rel_tool(point)?, ""),
+            (_, MoveHow::Circular { .. }, Some(r), Some(v)) => {
+                ("MoveC", format!("{}, {}", v.name, r.name), "")
+            }
+            (_, MoveHow::Linear, Some(r), _) => ("MoveL", r.name.clone(), ""),
+            (_, _, Some(r), _) => ("MoveJ", r.name.clone(), ""),
+            (_, _, None, _) => ("MoveAbsJ", name.clone(), "\\NoEOffs"),
+        };
+        let mut actions = Vec::with_capacity(target.actions.len());
+        for a in &target.actions {
+            actions.push(match a {
+                Action::SetDo { signal, value } => format!("SetDO {signal}, {}", u8::from(*value)),
+                Action::PulseDo { signal } => format!("PulseDO {signal}"),
+                Action::WaitDi { signal, value } => {
+                    format!("WaitDI {signal}, {}", u8::from(*value))
+                }
+                Action::WaitTime { time_s } => format!(
+                    "WaitTime {}",
+                    format_fixed(finite("a wait time", *time_s)?, WAIT_TIME_DECIMALS)
+                ),
+                Action::GripLoad { load } => format!("GripLoad {load}"),
+            });
+        }
         moves.push(MoveCtx {
             args: format!(
                 "{to}{offs}, {}, {}, {}{wobj_arg}",
                 target.speed, target.zone, program.tool
             ),
             instruction,
-            kind: "joint",
-            actions: Vec::new(),
+            kind: match (&target.kind, &target.how) {
+                (TargetKind::Approach { .. }, _) => "joint",
+                (TargetKind::Retract { .. }, _) => "retract",
+                (_, MoveHow::Circular { .. }) => "circular",
+                (_, MoveHow::Linear) if target.offset_mm.is_some() => "approach",
+                (_, MoveHow::Linear) => "linear",
+                (_, MoveHow::Joint) => "joint",
+            },
+            actions,
             target: to,
             speed: target.speed.clone(),
             zone: target.zone.clone(),
@@ -585,21 +692,36 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             wobj_arg: wobj_arg.clone(),
         });
         targets.push(TargetCtx {
-            jointtarget: robtarget.is_none(),
+            jointtarget: robtarget.is_none()
+                && matches!(
+                    target.kind,
+                    TargetKind::CellPoint { .. } | TargetKind::Via { .. }
+                ),
             value: format!("[[{axes}],{NO_EXTERNAL_AXES}]"),
             kind: match target.kind {
                 TargetKind::CellPoint { .. } => "cell",
                 TargetKind::Via { .. } => "via",
+                TargetKind::Approach { .. } => "approach",
+                TargetKind::Retract { .. } => "retract",
             },
             name,
             axes,
             speed: target.speed.clone(),
             zone: target.zone.clone(),
             robtarget,
+            via,
+        });
+    }
+    let mut loads = Vec::with_capacity(program.loads.len());
+    for l in &program.loads {
+        loads.push(DataCtx {
+            name: l.name.clone(),
+            value: data::loaddata(l)?,
         });
     }
 
     let ctx = ModuleCtx {
+        loads,
         conf_on: program.targets.iter().any(|t| t.robtarget.is_some()),
         module: program.module.clone(),
         proc: program.proc_name.clone(),
@@ -698,10 +820,22 @@ fn check_name_space(program: &Program, target_names: &[String]) -> Result<(), Ra
             }
         }
     }
-    for name in target_names {
-        declared.push((name.clone(), format!("the target `{name}`")));
+    for (t, name) in program.targets.iter().zip(target_names) {
+        if matches!(
+            t.kind,
+            TargetKind::CellPoint { .. } | TargetKind::Via { .. }
+        ) {
+            declared.push((name.clone(), format!("the target `{name}`")));
+        }
+    }
+    for l in &program.loads {
+        declared.push((l.name.clone(), format!("the load data `{}`", l.name)));
     }
     for (t, name) in program.targets.iter().zip(target_names) {
+        if let MoveHow::Circular { .. } = t.how {
+            let v = format!("{name}_via");
+            declared.push((v.clone(), format!("the circle point `{v}`")));
+        }
         if t.robtarget.is_some() {
             let r = robtarget_name(name);
             check_identifier(&r).map_err(|source| RapidError::InvalidGeneratedName {

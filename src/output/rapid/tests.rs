@@ -12,6 +12,9 @@ fn point(name: &str, axes_deg: [f64; 6]) -> JointTarget {
         speed: "v300".into(),
         zone: "fine".into(),
         robtarget: None,
+        how: MoveHow::Joint,
+        offset_mm: None,
+        actions: Vec::new(),
     }
 }
 fn via(leg: usize, index: usize, axes_deg: [f64; 6]) -> JointTarget {
@@ -21,6 +24,9 @@ fn via(leg: usize, index: usize, axes_deg: [f64; 6]) -> JointTarget {
         speed: "v300".into(),
         zone: "fine".into(),
         robtarget: None,
+        how: MoveHow::Joint,
+        offset_mm: None,
+        actions: Vec::new(),
     }
 }
 
@@ -73,6 +79,7 @@ fn small_program() -> Program {
         wobj: None,
         ranges: IRB1400,
         proc_name: "main".into(),
+        loads: Vec::new(),
     }
 }
 
@@ -161,6 +168,7 @@ fn awkward_program() -> Program {
         wobj: None,
         ranges: AxisRanges::UNBOUNDED,
         proc_name: "main".into(),
+        loads: Vec::new(),
     }
 }
 
@@ -534,6 +542,7 @@ fn tcp_program() -> Program {
         }),
         ranges: IRB1400,
         proc_name: "main".into(),
+        loads: Vec::new(),
     }
 }
 

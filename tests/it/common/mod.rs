@@ -7,6 +7,7 @@ pub mod fixtures;
 pub mod library;
 pub mod module;
 pub mod opw;
+pub mod process;
 pub mod routine;
 pub mod svg;
 pub mod tcp;

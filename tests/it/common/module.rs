@@ -12,7 +12,7 @@
 //! `RelTool`'s first argument) a declared robtarget (a `MoveL` to a jointtarget is refused), a
 //! `\WObj:=` a declared wobjdata or `wobj0`, a `GripLoad` a declared loaddata or `load0`.
 
-use super::routine::{self, Action, Instruction, MoveKind, Statement};
+use super::routine::{self, Action, Instruction, MoveKind, Statement, ToPoint};
 
 /// What a module says.
 #[derive(Clone, Debug)]
@@ -400,6 +400,28 @@ impl Module {
         robot: &super::library::Robot,
         cell_from_robot: &nalgebra::Isometry3<f64>,
     ) -> Result<(), String> {
+        self.resolve_moves(robot, cell_from_robot, false)
+    }
+
+    /// [`resolve_joint_moves`](Self::resolve_joint_moves), where a `MoveL` or `MoveC` and a
+    /// `RelTool` target are taken too, by where they end (the robtarget, moved by `RelTool`, in
+    /// its confdata; named `<point>`, `<point>_app` for a MoveJ to a RelTool pose and
+    /// `<point>_ret` for a MoveL to one, as the report names them): the waypoints of a module
+    /// with process moves, not the paths between them (`process.rs` runs those).
+    pub fn resolve_waypoints(
+        &mut self,
+        robot: &super::library::Robot,
+        cell_from_robot: &nalgebra::Isometry3<f64>,
+    ) -> Result<(), String> {
+        self.resolve_moves(robot, cell_from_robot, true)
+    }
+
+    fn resolve_moves(
+        &mut self,
+        robot: &super::library::Robot,
+        cell_from_robot: &nalgebra::Isometry3<f64>,
+        process: bool,
+    ) -> Result<(), String> {
         use super::opw::{max_diff, Ik};
         let ik = Ik::new(robot)?;
         let iso = |v: &[f64]| {
@@ -424,7 +446,9 @@ impl Module {
                     let axes = self.target(&name);
                     (name.clone(), axes)
                 }
-                MoveKind::J => {
+                MoveKind::J | MoveKind::L | MoveKind::C
+                    if process || (m.kind == MoveKind::J && matches!(m.to, ToPoint::Name(_))) =>
+                {
                     let r = self
                         .robtarget(&name)
                         .ok_or_else(|| format!("{label}: no robtarget {name}"))?;
@@ -441,7 +465,14 @@ impl Module {
                         None => nalgebra::Isometry3::identity(),
                     };
                     let pose = [r.pos_mm.as_slice(), r.quat_wxyz.as_slice()].concat();
-                    let tool0 = cell_from_robot.inverse() * uframe * iso(&pose) * tframe.inverse();
+                    let offset = match &m.to {
+                        ToPoint::RelTool { offset_mm: d, .. } => {
+                            nalgebra::Translation3::new(d[0], d[1], d[2])
+                        }
+                        ToPoint::Name(_) => nalgebra::Translation3::identity(),
+                    };
+                    let tool0 =
+                        cell_from_robot.inverse() * uframe * iso(&pose) * offset * tframe.inverse();
                     let before = targets.last().map(|t| t.1);
                     let axes = ik
                         .with_conf(&tool0, &r.conf)
@@ -454,11 +485,16 @@ impl Module {
                         .ok_or_else(|| {
                             format!("{label}: {name} has no solution of confdata {:?}", r.conf)
                         })?;
-                    let point = name.strip_suffix("_rt").unwrap_or(&name).to_string();
+                    let point = name.strip_suffix("_rt").unwrap_or(&name);
+                    let point = match (&m.to, m.kind) {
+                        (ToPoint::RelTool { .. }, MoveKind::J) => format!("{point}_app"),
+                        (ToPoint::RelTool { .. }, _) => format!("{point}_ret"),
+                        _ => point.to_string(),
+                    };
                     (point, axes)
                 }
-                MoveKind::L | MoveKind::C => {
-                    return Err(format!("{label}: not a joint move"));
+                _ => {
+                    return Err(format!("{label}: not a joint move to a name"));
                 }
             };
             moves.push(point.clone());

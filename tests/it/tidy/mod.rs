@@ -22,6 +22,7 @@ const ORDER: &[&str] = &[
     "plan",
     "timing",
     "refine",
+    "process",
     "output",
     "error",
     "load",
