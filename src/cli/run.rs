@@ -93,9 +93,7 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     if opts.output.is_none() {
         emit(out.rendered.text.as_bytes()).map_err(|e| job.fail(e))?;
     }
-    for w in &out.warnings {
-        eprintln!("{w}");
-    }
+    super::warn_lines(&out.warnings);
     let clearance = match &out.plan.min_clearance {
         Some(c) => format!("smallest clearance {:.1} mm", c.mm),
         None => "no obstacles".to_string(),
