@@ -57,6 +57,12 @@ pub enum Error {
     Preview(#[from] PreviewError),
     #[error(transparent)]
     Report(#[from] ReportError),
+    /// A budget of the run is passed (`budget`): an input error, before any work.
+    #[error("{source}")]
+    Budget {
+        source: crate::budget::Exceeded,
+        loc: Loc,
+    },
     /// `compare`: every method failed (each reason is in the table).
     #[error("no method found a route through the cell ({})", .failures.join("; "))]
     NoMethodSucceeded { failures: Vec<String> },
@@ -65,7 +71,9 @@ pub enum Error {
 impl Error {
     pub fn exit_code(&self) -> u8 {
         match self {
-            Error::Cell(_) | Error::Robot { .. } | Error::Template(_) => exit::INPUT,
+            Error::Cell(_) | Error::Robot { .. } | Error::Template(_) | Error::Budget { .. } => {
+                exit::INPUT
+            }
             Error::Rapid(RapidError::UserTemplate(_)) => exit::INPUT,
             Error::Place(e) if e.is_input() => exit::INPUT,
             Error::Place(_) | Error::Plan { .. } | Error::NoMethodSucceeded { .. } => {
@@ -84,7 +92,9 @@ impl Error {
         match self {
             Error::Cell(e) => e.loc(),
             Error::Place(e) => Some(e.loc()),
-            Error::Robot { loc, .. } | Error::Plan { loc, .. } => Some(*loc),
+            Error::Robot { loc, .. } | Error::Plan { loc, .. } | Error::Budget { loc, .. } => {
+                Some(*loc)
+            }
             Error::Rapid(_)
             | Error::Write { .. }
             | Error::Picture(_)
@@ -98,6 +108,7 @@ impl Error {
     pub(crate) fn help(&self) -> Option<String> {
         match self {
             Error::Cell(e) => e.help().map(str::to_string),
+            Error::Budget { .. } => Some("every input that drives memory or time has a budget, checked before the work: docs/limits.md lists them, what each bounds and how to stay within it".into()),
             Error::Plan {
                 source: PlanError::PointBlocked { .. },
                 ..

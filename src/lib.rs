@@ -8,6 +8,8 @@
 //! ```
 
 // Leaves, used by any stage.
+/// The budgets of a run (memory and time), checked before the work.
+pub mod budget;
 pub mod excerpt;
 pub mod geometry;
 pub mod input;

@@ -219,6 +219,8 @@ pub struct Planner {
     /// `planner.shortcut`: after the paper's method, the continuous shortcut pass (issue 10;
     /// `refine`). `false` keeps the paper's method alone.
     pub shortcut: bool,
+    /// Where `planner.grid` is given (`None`: the default), for a budget the grid passes.
+    pub grid_loc: Option<Loc>,
 }
 
 /// The cell's `motion:` defaults.

@@ -21,6 +21,7 @@ fn defaults_fill_what_a_cell_leaves_out() {
             grid_deg: 1.0,
             clearance_mm: 10.0,
             shortcut: true,
+            grid_loc: None,
         }
     );
     assert_eq!(

@@ -35,6 +35,8 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
     let job = pipeline::load(&opts.cell)?;
     super::warn(&job);
     let grid_deg = opts.grid_deg.unwrap_or(job.cell.planner.grid_deg);
+    // Three searches and the shortcut row on every leg.
+    pipeline::check_budgets(&job, grid_deg, 4).map_err(|e| job.fail(e))?;
     let placed = pipeline::place(&job).map_err(|e| {
         let mut failure = job.fail(e);
         if let Some(path) = &opts.svg {

@@ -27,8 +27,9 @@ pub struct Grid {
     pub dims: [usize; 3],
 }
 
-/// Largest grid accepted (nodes); 0.25 deg over the IRB 1400's ranges is ~420 M.
-pub const MAX_NODES: usize = 500_000_000;
+/// Largest grid a run makes (nodes; `budget::MAX_GRID_NODES`, checked before the grid is
+/// made); 0.25 deg over the IRB 1400's ranges is 413 M.
+pub const MAX_NODES: usize = crate::budget::MAX_GRID_NODES as usize;
 
 impl Grid {
     /// The nodes k*step inside `[lo, hi]` of each axis (deg).

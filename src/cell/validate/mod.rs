@@ -196,6 +196,7 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
         grid_deg: defaults::GRID_DEG,
         clearance_mm: defaults::CLEARANCE_MM,
         shortcut: defaults::SHORTCUT,
+        grid_loc: None,
     };
     let Some(p) = p else {
         return Ok(planner);
@@ -216,6 +217,7 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
         planner.grid_deg = check_grid(g.value).map_err(|m| {
             invalid_help(loc(g), m, "planner.grid is the grid spacing d in degrees (default 1; finer is slower and needs more memory: 0.25 deg holds 413 M nodes)")
         })?;
+        planner.grid_loc = Some(loc(g));
     }
     if let Some(c) = &p.clearance {
         bounded(c, "planner.clearance", "a number >= 0 (mm)")?;
