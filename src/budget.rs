@@ -315,7 +315,7 @@ mod tests {
         for g in [0.25, 0.5, 1.0, 10.0] {
             assert_eq!(check(&demand(IRB1400, g)), Ok(()), "{g}");
         }
-        // -720 .. 720 on axes 1..3: 2 881^3 = 23.9 G nodes at 0.5 deg.
+        // -720 .. 720 on axes 1..3: 2 881^3 = 23.9 G nodes at 0.5 deg (said as 24 G).
         let e = check(&demand(WIDE, 0.5)).expect_err("too many nodes");
         let Exceeded::GridNodes {
             nodes, finest_deg, ..
@@ -329,7 +329,10 @@ mod tests {
         assert!(grid_nodes(WIDE, finest) <= MAX_GRID_NODES, "{finest}");
         assert!(grid_nodes(WIDE, finest - 0.01) > MAX_GRID_NODES, "{finest}");
         assert!((1.75..1.9).contains(&finest), "{finest}");
-        assert!(e.to_string().contains("23.9 G nodes"), "{e}");
+        assert!(
+            e.to_string().contains("24 G nodes (2881 x 2881 x 2881)"),
+            "{e}"
+        );
     }
 
     #[test]
