@@ -17,6 +17,7 @@
 //! `[w, x, y, z]` (RAPID's `[q1, q2, q3, q4]`), normalised when read; a norm off by more than
 //! [`QUATERNION_NORM_TOL`] is refused as a typo.
 
+mod present;
 mod raw;
 mod syntax;
 mod validate;
@@ -364,8 +365,11 @@ pub fn parse(path: &Path, text: &str) -> Result<Cell, CellError> {
     budget.enforce_alias_anchor_ratio = false;
     let mut options = serde_saphyr::Options::default();
     options.budget = Some(budget);
-    let raw: raw::RawCell = serde_saphyr::from_str_with_options(text, options)
+    let raw: raw::RawCell = serde_saphyr::from_str_with_options(text, options.clone())
         .map_err(|e| syntax::refusal(text, &e))?;
+    if let Some(e) = present::first_key_without_value(text, options) {
+        return Err(e);
+    }
     validate::cell(path, raw)
 }
 

@@ -22,7 +22,7 @@ use super::{
 };
 use crate::excerpt;
 use crate::geometry::Aabb;
-use crate::names::{check_identifier, robtarget_name, ROBTARGET_SUFFIX};
+use crate::names::{check_identifier, robtarget_name, DataType, ROBTARGET_SUFFIX};
 use crate::precision::{LENGTH_DECIMALS, YAW_DECIMALS};
 use nalgebra::Point3;
 use serde_saphyr::Spanned;
@@ -34,7 +34,7 @@ use values::{
 
 /// Validates every section of a parsed cell file (module docs).
 pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
-    let module = identifier(&raw.module, "module")?;
+    let module = values::module_name(&raw.module)?;
     let robot = robot(path, &raw.robot)?;
     let obstacles = obstacles(&raw.obstacles)?;
     let points = points::points(&raw.points)?;
@@ -241,8 +241,8 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
         Some(p) => (identifier(p, "motion.proc")?, ProcFrom::Cell(loc(p))),
         None => (defaults::PROC.to_string(), ProcFrom::Default),
     };
-    let name = |s: Option<&Spanned<String>>, default: &str, what: &str| match s {
-        Some(s) => data_name(s, what),
+    let name = |s: Option<&Spanned<String>>, default: &str, what: &str, ty| match s {
+        Some(s) => data_name(s, what, ty),
         None => Ok(default.to_string()),
     };
     Ok(Motion {
@@ -250,16 +250,19 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
             m.and_then(|m| m.speed.as_ref()),
             defaults::SPEED,
             "motion.speed",
+            DataType::Speed,
         )?,
         zone: name(
             m.and_then(|m| m.zone.as_ref()),
             defaults::ZONE,
             "motion.zone",
+            DataType::Zone,
         )?,
         tool: name(
             m.and_then(|m| m.tool.as_ref()),
             defaults::TOOL,
             "motion.tool",
+            DataType::Tool,
         )?,
         proc,
         proc_from,
@@ -275,7 +278,7 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
 /// point must be told from a fly-by point, which only the predefined data say here. Written as
 /// the table spells it (`Z50` is `z50`).
 fn via_zone(z: &Spanned<String>) -> Result<String, CellError> {
-    data_name(z, "motion.via_zone")?;
+    data_name(z, "motion.via_zone", DataType::Zone)?;
     match crate::rapid_data::PREDEFINED_ZONES
         .iter()
         .find(|(name, _)| name.eq_ignore_ascii_case(&z.value))
@@ -507,7 +510,7 @@ fn one_name_space(
 
 /// One speeddata, zonedata or tooldata name the moves use, for [`distinct_data`].
 struct Datum {
-    /// 0 speed, 1 zone, 2 tool: the data type.
+    /// 0 speed, 1 zone, 2 tool: the data type; 3 the module's default routine.
     kind: usize,
     /// How a message introduces it ("motion.zone", "point 'P2' zone") and names it as the
     /// datum clashed with ("motion.zone", "the zone of point 'P2'").
@@ -543,6 +546,16 @@ fn distinct_data(
             loc: at.map(loc),
         })
     };
+    // The routine the module declares by default (`PROC main`): a datum of that name would
+    // be the routine, not data (one name space); refused at the datum's line.
+    if motion.proc_from == ProcFrom::Default {
+        given(
+            3,
+            format!("the module's routine PROC {}", motion.proc),
+            &motion.proc,
+            None,
+        );
+    }
     given(
         0,
         "motion.speed".into(),
@@ -587,7 +600,7 @@ fn distinct_data(
     }
     // In file order, defaults first; by name (ignoring case), the first datum of each type.
     data.sort_by_key(|d| d.loc.map(|l| (l.line, l.column)));
-    let mut first: BTreeMap<String, [Option<usize>; 3]> = BTreeMap::new();
+    let mut first: BTreeMap<String, [Option<usize>; 4]> = BTreeMap::new();
     for (i, d) in data.iter().enumerate() {
         let kinds = first.entry(d.name.to_ascii_lowercase()).or_default();
         if kinds[d.kind].is_some() {
@@ -601,13 +614,18 @@ fn distinct_data(
                 } else {
                     " (its default)"
                 };
+                let help = if other.kind == 3 {
+                    "RAPID names share one name space in a module: data named like the routine cannot be reached; name the data otherwise, or the routine with motion.proc"
+                } else {
+                    "the speed, zone and tool are three RAPID data of three types (speeddata, zonedata, tooldata); give each its own name"
+                };
                 return Err(invalid_help(
                     at,
                     format!(
                         "{} '{}' is already the name of {}{default}",
                         d.what, d.name, other.of
                     ),
-                    "the speed, zone and tool are three RAPID data of three types (speeddata, zonedata, tooldata); give each its own name",
+                    help,
                 ));
             }
             // Two defaults (never the same name).

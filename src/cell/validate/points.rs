@@ -6,6 +6,7 @@ use super::super::{CellError, Point, Target};
 use super::values::{
     data_name, finite, identifier, invalid, invalid_help, joint_value, loc, pose, triple,
 };
+use crate::names::DataType;
 use crate::robot::ik::Branch;
 use serde_saphyr::Spanned;
 use std::collections::HashMap;
@@ -38,11 +39,19 @@ pub(super) fn points(raw: &Spanned<Vec<Spanned<RawPoint>>>) -> Result<Vec<Point>
             ));
         }
         let speed = match &p.value.speed {
-            Some(s) => Some(data_name(s, &format!("point '{name}' speed"))?),
+            Some(s) => Some(data_name(
+                s,
+                &format!("point '{name}' speed"),
+                DataType::Speed,
+            )?),
             None => None,
         };
         let zone = match &p.value.zone {
-            Some(z) => Some(data_name(z, &format!("point '{name}' zone"))?),
+            Some(z) => Some(data_name(
+                z,
+                &format!("point '{name}' zone"),
+                DataType::Zone,
+            )?),
             None => None,
         };
         first_line.insert(name.to_ascii_lowercase(), loc(p).line);
