@@ -171,27 +171,57 @@ impl Error {
         }
     }
 
+    /// The place of a fault in a file other than the cell (the user's template, the controller
+    /// file): its path, 1-based line and column when known, and that line.
+    fn elsewhere(&self) -> Option<(&std::path::Path, Option<u64>, Option<u64>, Option<&str>)> {
+        match self {
+            Error::Template(TemplateError::Invalid {
+                path,
+                line,
+                column,
+                line_text,
+                ..
+            })
+            | Error::Rapid(RapidError::UserTemplate(TemplateError::Invalid {
+                path,
+                line,
+                column,
+                line_text,
+                ..
+            })) => Some((
+                path,
+                line.map(|l| l as u64),
+                column.map(|c| c as u64),
+                line_text.as_deref(),
+            )),
+            Error::Robot {
+                source:
+                    RobotError::Controller {
+                        path,
+                        line,
+                        column,
+                        line_text,
+                        ..
+                    },
+                ..
+            } if *line > 0 => Some((
+                path,
+                Some(*line),
+                (*column > 0).then_some(*column),
+                line_text.as_deref(),
+            )),
+            _ => None,
+        }
+    }
+
     /// The message for stderr: `error: ...`, then the place in the cell, then help. Bounded
     /// whatever the input ([`crate::excerpt`]): a long source line is shown as a window around
     /// the column, a long message is cut.
     pub fn render(&self, file: &str, text: Option<&str>) -> String {
         let mut out = format!("error: {}\n", excerpt::message(&self.to_string()));
-        if let Error::Template(TemplateError::Invalid {
-            path,
-            line,
-            column,
-            line_text,
-            ..
-        })
-        | Error::Rapid(RapidError::UserTemplate(TemplateError::Invalid {
-            path,
-            line,
-            column,
-            line_text,
-            ..
-        })) = self
-        {
-            // The template's place, not the cell's (bounded like a cell's line).
+        if let Some((path, line, column, line_text)) = self.elsewhere() {
+            // The place in the file at fault (the template, the controller file), not the
+            // cell's (bounded like a cell's line).
             out += &match line {
                 Some(l) => format!(
                     "  --> {}:{l}{}\n",
@@ -201,7 +231,7 @@ impl Error {
                 None => format!("  --> {}\n", path.display()),
             };
             if let (Some(l), Some(t)) = (line, line_text) {
-                let window = excerpt::line_window(t, column.unwrap_or(1) as u64);
+                let window = excerpt::line_window(t, column.unwrap_or(1));
                 let num = l.to_string();
                 let pad = " ".repeat(num.len());
                 out += &format!("{pad} |\n{num} | {}\n", window.text);
