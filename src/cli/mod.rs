@@ -44,13 +44,14 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
 }
 
 /// The file a path will be once written, as an absolute path with no link and no `.` or `..`
-/// left: the longest part of it that exists resolved by the file system (links followed, as
-/// opening it would), the rest, which does not exist yet, taken as written (`d/../a.svg` and
-/// `./a.svg` are one file when `d` is a directory). `None` when the path cannot be resolved
+/// left: a link followed as the writer follows it ([`outputs::target_of`], also a link to a
+/// file not yet written), the longest part of it that exists resolved by the file system, the
+/// rest, which does not exist yet, taken as written (`d/../a.svg` and `./a.svg` are one file
+/// when `d` is a directory). `None` when the path cannot be resolved
 /// (a `..` after a part that does not exist: such a path cannot be written at all).
 pub fn destination(path: &Path) -> Option<PathBuf> {
     use std::path::Component;
-    let absolute = std::path::absolute(path).ok()?;
+    let absolute = std::path::absolute(outputs::target_of(path)).ok()?;
     let mut resolved = PathBuf::new();
     let mut missing = false;
     for part in absolute.components() {

@@ -76,15 +76,30 @@ fn write_error(path: &Path) -> impl Fn(std::io::Error) -> Error + '_ {
     }
 }
 
-/// The file a path writes: a link to a file is followed (its target is replaced, not the link),
-/// anything else is the path itself.
+/// The file a path writes: a link is followed (its target is replaced, not the link), also a
+/// link to a file not yet written; anything else is the path itself.
 pub fn target_of(named: &Path) -> PathBuf {
-    let link = std::fs::symlink_metadata(named).is_ok_and(|m| m.file_type().is_symlink());
-    if link {
-        std::fs::canonicalize(named).unwrap_or_else(|_| named.to_path_buf())
-    } else {
-        named.to_path_buf()
+    let mut path = named.to_path_buf();
+    // As the system follows links: at most 40 of them.
+    for _ in 0..40 {
+        let link = std::fs::symlink_metadata(&path).is_ok_and(|m| m.file_type().is_symlink());
+        if !link {
+            return path;
+        }
+        if let Ok(real) = std::fs::canonicalize(&path) {
+            return real;
+        }
+        match std::fs::read_link(&path) {
+            Ok(to) => {
+                path = match path.parent() {
+                    Some(dir) if to.is_relative() => dir.join(to),
+                    _ => to,
+                }
+            }
+            Err(_) => return path,
+        }
     }
+    path
 }
 
 /// Whether the path names a device, a pipe or a socket (written in place, never renamed over).
