@@ -16,6 +16,7 @@ mod chain;
 pub mod controller;
 pub mod ik;
 pub mod urdf;
+mod xml_depth;
 
 use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
 use std::path::{Path, PathBuf};

@@ -56,6 +56,15 @@ pub fn robot_from_urdf(
         path: path.to_path_buf(),
         message,
     };
+    if let Some(line) = super::xml_depth::too_deep(text) {
+        return Err(RobotError::ParseUrdf {
+            path: path.to_path_buf(),
+            message: format!(
+                "its elements nest more than {} deep (line {line}); a URDF nests a few levels",
+                super::xml_depth::MAX_DEPTH
+            ),
+        });
+    }
     let urdf = urdf_rs::read_from_string(text).map_err(|e| RobotError::ParseUrdf {
         path: path.to_path_buf(),
         message: e.to_string(),

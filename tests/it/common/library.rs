@@ -219,3 +219,59 @@ pub fn paper_and_refined(cell: &Cell, grid_deg: f64) -> Result<PaperAndRefined, 
         refined_module: text(&refined)?,
     })
 }
+
+/// A robot read from URDF text and controller-file text (as if from `urdf` and `controller`):
+/// `Err` is the refusal rendered as the user sees it (a cell pointing at the robot files), with
+/// its exit status.
+pub fn robot_from_texts(
+    urdf: &Path,
+    urdf_text: &str,
+    controller: &Path,
+    controller_text: Option<&str>,
+) -> Result<Robot, Refusal> {
+    gen_rapid::robot::urdf::robot_from_urdf(
+        urdf,
+        urdf_text,
+        controller_text.map(|t| (controller, t)),
+    )
+    .map_err(|source| {
+        refusal(
+            Error::Robot {
+                source,
+                loc: Default::default(),
+            },
+            "cell.yaml",
+            None,
+        )
+    })
+}
+
+/// Renders the trunk cell's plan (10 deg grid) through each template text given: the module
+/// text, or the refusal (a template error is exit 1, located in the template).
+pub struct TemplateBench {
+    job: pipeline::Loaded,
+    placed: Placed,
+    plan: Plan,
+}
+
+impl TemplateBench {
+    pub fn new() -> TemplateBench {
+        let path = super::root().join("cells/trunk.yaml");
+        let job = pipeline::load(&path).unwrap_or_else(|f| panic!("{}", f.render()));
+        let placed = pipeline::place(&job).unwrap_or_else(|e| panic!("{e}"));
+        let inspected = pipeline::inspect(&job, &placed, 10.0);
+        let plan = pipeline::plan(&job, &placed, &inspected, Method::Extensile)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let plan = pipeline::time(&job, &placed, plan);
+        TemplateBench { job, placed, plan }
+    }
+
+    /// The template `source` (as if read from `path`): compiled, then rendered.
+    pub fn render(&self, path: &Path, source: &str) -> Result<String, Refusal> {
+        let template = gen_rapid::output::rapid::ModuleTemplate::user(path, source.to_string())
+            .map_err(|e| refusal(Error::Template(e), "cell.yaml", None))?;
+        pipeline::render_with(&self.job, &self.placed, &self.plan, &template)
+            .map(|r| r.text)
+            .map_err(|e| refusal(e, "cell.yaml", None))
+    }
+}
