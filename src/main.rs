@@ -210,6 +210,16 @@ fn check_outputs(
         let _ = e.print();
         ExitCode::from(gen_rapid::error::exit::USAGE)
     };
+    // An input read from the pipe or file the run writes to (`--template /dev/stdout`) would
+    // wait on itself for ever, or read what it writes.
+    for (flag, path) in &inputs {
+        if gen_rapid::cli::is_stdout(path) || gen_rapid::cli::is_stderr(path) {
+            return Err(usage(format!(
+                "{flag} {} names the file stdout or stderr goes to, which the run writes; give it a file to read",
+                path.display()
+            )));
+        }
+    }
     for (i, (flag, path)) in outputs.iter().enumerate() {
         let clash = outputs[..i]
             .iter()

@@ -91,6 +91,24 @@ pub fn stdout_identity() -> Option<(u64, u64)> {
     Some((m.dev(), m.ino()))
 }
 
+/// Whether the path names the file stderr writes (`/dev/stderr`, or the file stderr goes to);
+/// `/dev/null` never counts.
+pub fn is_stderr(path: &Path) -> bool {
+    use std::os::fd::AsFd;
+    use std::os::unix::fs::MetadataExt;
+    let err = std::io::stderr()
+        .as_fd()
+        .try_clone_to_owned()
+        .ok()
+        .and_then(|fd| std::fs::File::from(fd).metadata().ok())
+        .map(|m| (m.dev(), m.ino()));
+    let null = identity(Path::new("/dev/null"));
+    match (identity(path), err) {
+        (Some(x), Some(y)) => x == y && Some(x) != null,
+        _ => false,
+    }
+}
+
 /// Whether the path names the file stdout writes (`/dev/stdout`, `/proc/self/fd/1`, or the
 /// file stdout is redirected to); `/dev/null` never counts (discarding twice loses nothing).
 pub fn is_stdout(path: &Path) -> bool {

@@ -343,7 +343,7 @@ impl ModuleTemplate {
             path: Some(path.to_path_buf()),
             source,
         };
-        t.environment()
+        on_template_stack(|| t.environment().map(drop))
             .map_err(|e| TemplateError::of(path, &t.source, &e))?;
         Ok(t)
     }
@@ -406,24 +406,25 @@ impl ModuleTemplate {
             bytes: Vec::new(),
             written: Arc::clone(&written),
         };
-        let rendered = self
-            .environment_counting(Arc::clone(&written))
-            .and_then(|env| {
-                env.get_template(&name)?
-                    .render_captured_to(Serde(ctx), &mut out)
-                    .map(drop)
-            })
-            .and_then(|()| {
-                // Raw text past the cap with no expression after it: the cap, at no line.
-                if written.load(Ordering::Relaxed) > MAX_MODULE_BYTES {
-                    Err(minijinja::Error::new(
-                        minijinja::ErrorKind::InvalidOperation,
-                        over_cap_message(),
-                    ))
-                } else {
-                    Ok(())
-                }
-            });
+        let rendered = on_template_stack(|| {
+            self.environment_counting(Arc::clone(&written))
+                .and_then(|env| {
+                    env.get_template(&name)?
+                        .render_captured_to(Serde(ctx), &mut out)
+                        .map(drop)
+                })
+        })
+        .and_then(|()| {
+            // Raw text past the cap with no expression after it: the cap, at no line.
+            if written.load(Ordering::Relaxed) > MAX_MODULE_BYTES {
+                Err(minijinja::Error::new(
+                    minijinja::ErrorKind::InvalidOperation,
+                    over_cap_message(),
+                ))
+            } else {
+                Ok(())
+            }
+        });
         let over_cap = written.load(Ordering::Relaxed) > MAX_MODULE_BYTES;
         match (rendered, &self.path) {
             (Ok(()), _) => String::from_utf8(out.bytes).map_err(|e| {
@@ -442,6 +443,32 @@ impl ModuleTemplate {
             (Err(e), None) => Err(RapidError::Template(e)),
         }
     }
+}
+
+/// The stack minijinja parses, compiles and renders a template on: it descends an expression
+/// by recursion, and the tags' length (`tags::MAX_TAG_CHARS`) bounds the depth to what this
+/// holds, whatever thread calls (a test's thread has 2 MiB).
+const TEMPLATE_STACK_BYTES: usize = 32 << 20;
+
+/// Runs `f` on a thread with [`TEMPLATE_STACK_BYTES`] of stack (an error if no thread can be
+/// made).
+fn on_template_stack<T: Send>(
+    f: impl FnOnce() -> Result<T, minijinja::Error> + Send,
+) -> Result<T, minijinja::Error> {
+    let failed = |what: &str| {
+        minijinja::Error::new(
+            minijinja::ErrorKind::InvalidOperation,
+            format!("the template's thread {what}"),
+        )
+    };
+    std::thread::scope(|scope| {
+        std::thread::Builder::new()
+            .stack_size(TEMPLATE_STACK_BYTES)
+            .spawn_scoped(scope, f)
+            .map_err(|_| failed("could not be made"))?
+            .join()
+            .map_err(|_| failed("stopped"))?
+    })
 }
 
 /// The most bytes a module may hold, through any template: far more than a module of the

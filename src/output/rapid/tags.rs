@@ -3,10 +3,11 @@
 //! expression nested a million deep, which minijinja compiles, runs and drops by recursion
 //! until the stack overflows (an abort, not an error). Nesting by brackets and blocks is bounded
 //! by minijinja's parser; a chain is not, so the tags' length is: [`MAX_TAG_CHARS`] characters
-//! hold at most a few thousand operators, well within the stack (20 000 fit in 8 MiB).
+//! hold at most 8 192 operators (a chain of unary minus), well within the template's own
+//! stack (`TEMPLATE_STACK_BYTES`: 16 000 fit in 8 MiB).
 
 /// The most characters between a tag's delimiters.
-pub const MAX_TAG_CHARS: usize = 16_384;
+pub const MAX_TAG_CHARS: usize = 8_192;
 
 /// A tag longer than [`MAX_TAG_CHARS`]: its line and column (1-based, in characters) and length.
 #[derive(Debug, PartialEq)]

@@ -19,6 +19,7 @@
 //! Files: `tree.rs` (the structured edits), `edits.rs` (token soup, byte and line edits).
 
 mod edits;
+mod inputs;
 mod tree;
 
 use crate::common::library::{
