@@ -173,7 +173,7 @@ impl Error {
 
     /// The place of a fault in a file other than the cell (the user's template, the controller
     /// file): its path, 1-based line and column when known, and that line.
-    fn elsewhere(&self) -> Option<(&std::path::Path, Option<u64>, Option<u64>, Option<&str>)> {
+    fn elsewhere(&self) -> Option<Elsewhere<'_>> {
         match self {
             Error::Template(TemplateError::Invalid {
                 path,
@@ -262,6 +262,15 @@ impl Error {
         out
     }
 }
+
+/// A place in a file other than the cell: its path, the 1-based line and column when known,
+/// and that line's text.
+type Elsewhere<'a> = (
+    &'a std::path::Path,
+    Option<u64>,
+    Option<u64>,
+    Option<&'a str>,
+);
 
 /// A failure with the cell file's name and text, ready to print (the text, when it could be
 /// read, lets the message show the offending line), and notes on what was done about it (a

@@ -199,7 +199,7 @@ fn refusals_name_the_key_and_its_place() {
         // Data named like the default routine: refused at the datum's line.
         (
             format!("{MINIMAL}motion:\n  speed: MAIN\n"),
-            "motion.speed 'MAIN' is already the name of the module's routine PROC main",
+            "motion.speed 'MAIN' is already the name of the module's PROC main",
             9,
         ),
         // `base: auto` needs positions, not joint values.
