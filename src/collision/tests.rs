@@ -701,39 +701,6 @@ fn a_base_cylinder_below_its_mounting_plane_is_not_exempt() {
     );
 }
 
-#[test]
-fn the_tool_looks_least_distance_is_distance_sq_point_aabb_to_the_bit() {
-    // The branch-free pass over the bounds against the per-box function, on points inside,
-    // beside and far from the boxes, flat boxes included; and no boxes at all.
-    let mut rng = Rng(11);
-    for _ in 0..200 {
-        let boxes: Vec<Obstacle> = (0..rng.below(12))
-            .map(|k| {
-                let a = rng.point(-1000.0, 1000.0);
-                let mut b = rng.point(-1000.0, 1000.0);
-                if k % 4 == 0 {
-                    b.z = a.z; // flat
-                }
-                let (lo, hi) = (a.inf(&b), a.sup(&b));
-                Obstacle::new(format!("b{k}"), Aabb::new(lo, hi))
-            })
-            .collect();
-        let bounds = bounds_by_coordinate(&boxes);
-        for _ in 0..50 {
-            // Three points in one pass, each its own least.
-            let ps: [Point; 3] = std::array::from_fn(|_| rng.point(-1500.0, 1500.0));
-            let got = least_sq_distances(&ps, &bounds);
-            for (p, got) in ps.iter().zip(got) {
-                let want = boxes
-                    .iter()
-                    .map(|o| distance_sq_point_aabb(p, &o.aabb))
-                    .fold(f64::INFINITY, f64::min);
-                assert_eq!(got.to_bits(), want.to_bits());
-            }
-        }
-    }
-}
-
 /// The proof's interval bound grows with both ends (for any reach): a pair passed on lower
 /// bounds of the ends' distances (the mount box's enclosing-box gap in `parts_are_safe`) would
 /// be passed on the distances themselves.
