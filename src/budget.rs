@@ -2,7 +2,7 @@
 //! work starts, so that no input the README allows makes a run abort for memory (4 GB of
 //! address space) or last for minutes. It counts and allocates nothing (it knows the accepted
 //! grid steps, `cell::defaults`, and nothing else of the stages); the caller
-//! (`pipeline::check_budgets`) says where in the input the budget was passed.
+//! (`load::check_budgets`) says where in the input the budget was passed.
 //!
 //! What drives what, measured on the 2-core machine of `benches/README.md` (figures for
 //! choosing the budgets, not promises):

@@ -18,7 +18,7 @@ use std::path::{Path, PathBuf};
 /// kind ([`warnings::grouped`]), right after loading: before the summary line on success,
 /// before the error on failure. Never on stdout.
 pub fn warn(job: &Loaded) {
-    warn_lines(&job.warnings());
+    warn_lines(&crate::pipeline::warnings(job));
 }
 
 /// Prints warnings to stderr, grouped by kind ([`warnings::grouped`]).
