@@ -18,8 +18,8 @@
 //!   is nodes x parts x ([`CULL_OBSTACLES`] + obstacles): 1 000 small boxes around the arm at
 //!   1 deg (6.5 M nodes, 3 parts) took 2.5 s, 2 000 identical cylinders on link 1 21 s. At
 //!   most [`MAX_INSPECTION_WORK`].
-//! - **The legs**: each leg's waves and proofs cost up to the whole grid: 3 000 points at 1 deg
-//!   took 55 s (18 ms a leg on a trivial leg). Legs x nodes x searches (three in `compare`, and
+//! - **The legs**: each leg's waves and proofs cost up to the whole grid (a trivial leg about
+//!   3 ns a node). Legs x nodes x searches (three in `compare`, and
 //!   its shortcut row) at most [`MAX_LEG_WORK`].
 //! - **Fly-by zones**: certifying corners and splitting vias costs seconds a leg (the shelf
 //!   cell with `via_zone: z50`: 2.4 s a leg at 1 deg, 3.4 s at 0.5 deg), more on a finer grid
@@ -40,10 +40,12 @@ pub const MAX_GRID_NODES: u64 = 500_000_000;
 pub const CULL_OBSTACLES: u64 = 12;
 /// The most inspection work: nodes x parts x (CULL_OBSTACLES + obstacles) (about 25 s).
 pub const MAX_INSPECTION_WORK: u64 = 200_000_000_000;
-/// The most leg work: legs x nodes x searches (about 15 s of trivial legs; hard legs cost more).
-pub const MAX_LEG_WORK: u64 = 3_000_000_000;
-/// The most legs x max(1, 1 deg / grid) when a move asks a fly-by zone.
-pub const MAX_ZONED_LEGS: f64 = 12.0;
+/// The most leg work: legs x nodes x searches (minutes of legs that each search the whole grid;
+/// a cell of the most points at 1 deg fits, and the paper's cell at 0.25 deg with 145 legs).
+pub const MAX_LEG_WORK: u64 = 60_000_000_000;
+/// The most legs x max(1, 1 deg / grid) when a move asks a fly-by zone (minutes at the worst:
+/// a daily cell of a few dozen zoned points at 0.25 deg fits).
+pub const MAX_ZONED_LEGS: f64 = 240.0;
 /// The most points of a cell.
 pub const MAX_POINTS: usize = 2_000;
 /// The most obstacles of a cell.
@@ -349,18 +351,26 @@ mod tests {
             matches!(e, Exceeded::Inspection { at: Some(k), .. } if k as u64 == first),
             "{e}"
         );
-        let mut d = demand(IRB1400, 1.0);
+        let mut d = demand(IRB1400, 0.25);
         d.points = 1_000;
         let e = check(&d).expect_err("legs");
-        // 6.5 M nodes a leg: 3e9 / 6 539 436 = 458.7, so the 460th leg (point 460) passes.
-        assert!(matches!(e, Exceeded::Legs { at: Some(459), .. }), "{e}");
+        // 413 M nodes a leg at 0.25 deg: the first leg count past 6e10 leg-nodes passes.
+        let nodes = grid_nodes(IRB1400, 0.25);
+        let first = (1..1_000u64)
+            .find(|k| k * nodes > MAX_LEG_WORK)
+            .expect("passes");
+        assert!((140..150).contains(&first), "{first}");
+        assert!(
+            matches!(e, Exceeded::Legs { at: Some(k), .. } if k as u64 == first),
+            "{e}"
+        );
         let mut d = demand(IRB1400, 0.5);
         d.fly_by = true;
-        d.points = 8;
-        // 7 legs x 2 > 12: at most 6 legs.
+        d.points = 200;
+        // 199 legs x 2 > 240: at most 120 legs.
         assert!(matches!(
             check(&d),
-            Err(Exceeded::ZonedLegs { allowed: 6, .. })
+            Err(Exceeded::ZonedLegs { allowed: 120, .. })
         ));
         d.grid_deg = 1.0;
         assert_eq!(check(&d), Ok(()));

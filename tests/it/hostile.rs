@@ -218,14 +218,14 @@ fn budgets_are_refused_at_the_item_that_passes_them() {
         "{err}"
     );
     assert!(err.contains("many.yaml:2006:5"), "{err}");
-    // The legs' budget: 600 points at 1 deg (6.5 M nodes a leg, 459 legs at most).
+    // The legs' budget: 600 points at 0.25 deg (413 M nodes a leg, 145 legs at most).
     let six_hundred: String = text
         .lines()
         .take(5 + 600)
         .map(|l| format!("{l}\n"))
         .collect();
     let path = crate::common::temp_cell(dir.path(), "six.yaml", &six_hundred);
-    let o = gen_rapid(&[arg(&path)]);
+    let o = gen_rapid(&[arg(&path), "--grid", "0.25"]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     assert!(
         stderr(&o).contains("passes the planning budget"),
