@@ -43,7 +43,17 @@ impl Loaded {
                 .unwrap_or_default()
         };
         let c = &self.robot.controller;
+        // A shipped model by its name and ABB's name of the variant.
+        let model =
+            self.robot
+                .model
+                .as_deref()
+                .map(|name| match crate::robot::models::find(name) {
+                    Some(m) => format!("{name} ({}, built into gen-rapid)", m.title),
+                    None => format!("{name} (built into gen-rapid)"),
+                });
         RobotFacts {
+            model,
             urdf: shown(&self.robot.urdf_path),
             controller: c.source.as_deref().map(shown),
             parallelogram: c.coupling == Coupling::Parallelogram,
@@ -142,7 +152,7 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
         Ok(c) => c,
         Err(e) => return Err(fail(e.into(), Some(text))),
     };
-    match Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref()) {
+    match robot_of(&cell) {
         Ok(robot) => Ok(Loaded { cell, text, robot }),
         Err(source) => {
             let loc = match source {
@@ -155,6 +165,15 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
             };
             Err(fail(Error::Robot { source, loc }, Some(text)))
         }
+    }
+}
+
+/// Load, the cell's robot: the shipped model `robot.model` names (read from the text built into
+/// the binary), or the URDF `robot.urdf` names with its controller file (read from files).
+pub fn robot_of(cell: &Cell) -> Result<Robot, RobotError> {
+    match &cell.robot.model {
+        Some(name) => Robot::shipped(name),
+        None => Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref()),
     }
 }
 

@@ -400,7 +400,7 @@ impl CollisionModel {
         clearance_mm: f64,
         tool: Option<&Tool>,
     ) -> CollisionModel {
-        let tool = tool.and_then(|t| ToolData::new(robot, t));
+        let tool = ToolData::new(robot, tool);
         let obstacles = clip_to_workspace(
             robot,
             tool.as_ref(),
@@ -948,12 +948,11 @@ impl CollisionModel {
     fn part(&self, p: usize) -> Part {
         match p.checked_sub(self.cyl.len()) {
             None => Part::Link(self.robot.cylinders[p].link.clone()),
-            Some(s) => Part::ToolShape(
-                self.tool
-                    .as_ref()
-                    .map(|t| t.shapes[s].name.clone())
-                    .unwrap_or_default(),
-            ),
+            Some(s) => self
+                .tool
+                .as_ref()
+                .map(|t| t.shapes[s].part.clone())
+                .unwrap_or_else(|| Part::ToolShape(String::new())),
         }
     }
 

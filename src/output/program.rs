@@ -19,6 +19,8 @@ use crate::plan::{Plan, WaypointKind};
 /// pipeline fills it, so the output stage reads no robot model).
 #[derive(Clone, Debug, PartialEq)]
 pub struct RobotFacts {
+    /// The shipped robot the cell names, as the header states it (`None`: a URDF file).
+    pub model: Option<String>,
     /// The URDF's file name.
     pub urdf: String,
     /// The controller file's name, `None` when there is none (serial arm, URDF limits).
@@ -83,6 +85,7 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
         header: Header {
             generator: format!("gen-rapid {}", env!("CARGO_PKG_VERSION")),
             cell_file,
+            model: robot.model.clone(),
             urdf: robot.urdf.clone(),
             controller: robot.controller.clone(),
             parallelogram: robot.parallelogram,

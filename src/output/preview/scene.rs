@@ -29,7 +29,7 @@ use crate::cell::{Cell, Target, ToolGeometry};
 use crate::output::poses::Poser;
 use crate::place::{Placed, PlacedPoint, Placement};
 use crate::plan::{Plan, Profile};
-use crate::robot::Robot;
+use crate::robot::{LinkFrame, Robot};
 use nalgebra::{Isometry3, Point3, Vector3};
 
 /// Keyframes at least this often along a move, s.
@@ -43,17 +43,21 @@ const UNTIMED_MOVE_S: f64 = 1.0;
 
 /// One shape of the robot model and the frame it hangs on.
 enum Carrier {
+    /// The robot's base (base_link).
+    Base,
     /// Link `k` (0-based: the child of joint `k + 1`).
     Link(usize),
     /// The flange (tool0), which carries the tool's shapes.
     Flange,
 }
 
-/// The robot's link cylinders, then the tool's shapes, each with the frame it hangs on.
+/// The robot's link cylinders as the URDF gives them (every link's, on its own link: what the
+/// checks' enclosures hold, `robot/lumped.rs`), then the tool's shapes, each with the frame it
+/// hangs on.
 fn shapes(robot: &Robot, cell: &Cell) -> (Vec<ShapeDef>, Vec<Carrier>) {
     let mut defs = Vec::new();
     let mut carriers = Vec::new();
-    for c in &robot.cylinders {
+    for c in &robot.collision {
         defs.push(ShapeDef {
             name: c.link.clone(),
             kind: ShapeKind::Link,
@@ -63,7 +67,10 @@ fn shapes(robot: &Robot, cell: &Cell) -> (Vec<ShapeDef>, Vec<Carrier>) {
                 to_mm: c.b.coords.into(),
             },
         });
-        carriers.push(Carrier::Link(c.joint_index));
+        carriers.push(match c.frame {
+            LinkFrame::Base => Carrier::Base,
+            LinkFrame::Child(k) => Carrier::Link(k),
+        });
     }
     for s in cell.tool.iter().flat_map(|t| &t.shapes) {
         let geometry = match s.geometry {
@@ -124,6 +131,7 @@ fn keyframe(poser: &Poser, carriers: &[Carrier], time_s: f64, axes: &[f64; 6]) -
         poses: carriers
             .iter()
             .map(|c| match c {
+                Carrier::Base => scene_pose(&poser.base()),
                 Carrier::Link(k) => scene_pose(&links[*k]),
                 Carrier::Flange => scene_pose(&flange),
             })
@@ -300,6 +308,7 @@ fn clearance(
         let t = duration * u;
         let axes = lerp6(from, to, profile.progress(t, duration));
         let frame = match carriers[s] {
+            Carrier::Base => poser.base(),
             Carrier::Link(k) => poser.links(&axes)[k],
             Carrier::Flange => poser.tool0(&axes),
         };

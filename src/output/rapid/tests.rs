@@ -41,6 +41,7 @@ fn header(moves: usize) -> Header {
     Header {
         generator: "gen-rapid 0.1.0".to_string(),
         cell_file: "trunk.yaml".to_string(),
+        model: None,
         urdf: "irb1400.urdf".to_string(),
         controller: Some("irb1400.controller.yaml".to_string()),
         parallelogram: true,
@@ -133,6 +134,7 @@ fn awkward_program() -> Program {
         header: Header {
             generator: "gen-rapid 0.1.0".to_string(),
             cell_file: "c\u{e9}ll\tfile.yaml ".to_string(),
+            model: None,
             urdf: "robot.urdf".to_string(),
             controller: None,
             parallelogram: false,
