@@ -193,8 +193,8 @@ mod tests {
 
     /// For every shipped robot, at random poses, every point of every URDF cylinder lies in
     /// what the checks carry for it: its own cylinder (links 1..3, link 6), the enclosure about
-    /// axis 1 or 4 on link 1 or 3, or the ball on the flange. Fails with an enclosure one
-    /// millimetre thinner, or placed on the wrong link.
+    /// axis 1 or 4 on link 1 or 3, or the ball on the flange. Fails with the ball a millimetre
+    /// thinner, or the base's enclosure left out.
     #[test]
     fn the_carried_volumes_hold_every_urdf_cylinder_in_every_pose() {
         let mut rng = Rng(30);

@@ -116,7 +116,7 @@ fn robot(path: &Path, r: &Spanned<RawRobot>) -> Result<RobotSpec, CellError> {
         (None, None) => {
             return Err(invalid_help(
                 whole,
-                "robot names no robot: it needs robot.model or robot.urdf",
+                "the robot section names no robot: give robot.model or robot.urdf",
                 MODEL_HELP,
             ))
         }

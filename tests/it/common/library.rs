@@ -3,7 +3,7 @@
 
 pub use gen_rapid::cell::{Base, Cell, Target, Tool, ToolGeometry};
 pub use gen_rapid::place::Survey;
-pub use gen_rapid::robot::Robot;
+pub use gen_rapid::robot::{LinkFrame, Robot};
 
 use gen_rapid::cell;
 use gen_rapid::error::Error;
