@@ -633,6 +633,71 @@ planner: { grid: 5 }
         );
     }
 
+    /// A shipped robot with cylinders on every link: the page draws each where its own link is
+    /// (base_link at the base, links 4..6 by the six-axis kinematics), the URDF's cylinders, not
+    /// the enclosures the checks carry them by. Fails with links 4..6 left out or drawn on link 3.
+    #[test]
+    fn every_link_of_a_shipped_robot_is_drawn_on_its_own_link() {
+        let text = CELL.replace(
+            "robot: { urdf: irb1400.urdf,",
+            "robot: { model: irb2600_12_165,",
+        );
+        assert_ne!(text, CELL);
+        let cell = crate::cell::parse(Path::new("demo.yaml"), &text).expect("the cell");
+        let job = Loaded {
+            cell,
+            text,
+            robot: Robot::shipped("irb2600_12_165").expect("shipped"),
+        };
+        let out = pipeline::run(&job, Method::Extensile, 5.0).expect("plans");
+        let s = scene(
+            &job.cell,
+            &job.robot,
+            &out.placed,
+            &out.plan,
+            &out.rendered.names,
+        );
+        let names: Vec<&str> = s
+            .shapes
+            .iter()
+            .filter(|d| d.kind == ShapeKind::Link)
+            .map(|d| d.name.as_str())
+            .collect();
+        assert_eq!(
+            names,
+            [
+                "base_link",
+                "link_1",
+                "link_2",
+                "link_3",
+                "link_4",
+                "link_5",
+                "link_6"
+            ]
+        );
+        let poser = Poser::new(&job.robot, out.placed.placement, job.cell.tool.as_ref());
+        let at = &out.plan.waypoints[1].joints_deg;
+        let frame = s
+            .keyframes
+            .iter()
+            .find(|k| (k.time_s - s.waypoints[1].time_s).abs() < 1e-9)
+            .expect("a keyframe at the second waypoint");
+        let links = poser.links(at);
+        for (i, own) in job.robot.collision.iter().enumerate() {
+            let want = match own.frame {
+                crate::robot::LinkFrame::Base => poser.base(),
+                crate::robot::LinkFrame::Child(k) => links[k],
+            };
+            let got = frame.poses[i].position_mm;
+            let t = want.translation.vector;
+            assert!(
+                close(got, [t.x, t.y, t.z], 1e-6),
+                "{}: {got:?} vs {t:?}",
+                own.link
+            );
+        }
+    }
+
     #[test]
     fn the_smallest_clearance_is_marked_where_it_occurs() {
         let job = job();

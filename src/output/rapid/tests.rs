@@ -244,6 +244,22 @@ fn render_small_program_matches_hand_written_text() {
     assert_eq!(text, SMALL_EXPECTED);
 }
 
+/// A shipped robot (`robot.model`): its own header line between the cell and the URDF, the
+/// rest as for a URDF file; without one, no such line.
+#[test]
+fn a_shipped_robot_is_named_on_its_own_header_line() {
+    let mut program = small_program();
+    program.header.model = Some("irb1400 (ABB IRB 1400, built into gen-rapid)".into());
+    let text = render(&program).unwrap();
+    let want = SMALL_EXPECTED.replace(
+        "    ! cell: trunk.yaml\n",
+        "    ! cell: trunk.yaml\n    ! model: irb1400 (ABB IRB 1400, built into gen-rapid)\n",
+    );
+    assert_ne!(want, SMALL_EXPECTED);
+    assert_eq!(text, want);
+    assert!(!SMALL_EXPECTED.contains("! model:"));
+}
+
 #[test]
 fn render_small_program_has_properties() {
     assert_properties(&render(&small_program()).unwrap());
