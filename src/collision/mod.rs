@@ -5,8 +5,10 @@
 //! -> [`CollisionModel`], queried by the place stage (are a point's IK solutions usable?
 //! [`PoseCheck`]), by the configuration-space grid (node codes, `grid.rs`, `column.rs`) and by
 //! the planner (whole moves, `proof.rs`). The parts of the model ([`Part`]): the link
-//! cylinders of links 1..3 (the paper's lumped arm) and the tool's shapes (cylinder, box in the
-//! flange frame, ball; `parts.rs`), carried by axes 4..6 on the flange (the robot's `tool0`).
+//! cylinders on links 1..3 (the paper's lumped arm, with the cylinders that hold base_link's and
+//! link 4's: `Robot::cylinders`) and the flange's shapes, carried by axes 4..6 on the flange
+//! (the robot's `tool0`): the robot's own of links 5 and 6 (`Robot::flange_parts`) and the
+//! tool's (cylinder, box in the flange frame, ball), `parts.rs`.
 //! Every query takes all six axes, except the grid's node test of the arm. Tests in `tests.rs`
 //! (links, against parry3d and dense sampling) and `tool_tests.rs` (the tool, the grid codes).
 //!
@@ -96,7 +98,8 @@ pub const CLIP_MARGIN_MM: f64 = 10_000.0;
 /// A part of the robot model, by name: a link cylinder or a tool shape.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Part {
-    /// The collision cylinder of a link (links 1..3), by link name.
+    /// A collision volume of a link (a cylinder of the lumped arm, or a link-5 or link-6 part
+    /// on the flange), by the name of the link whose geometry it holds.
     Link(String),
     /// A shape of the cell's tool, by its name in the `tool:` block.
     ToolShape(String),
@@ -522,13 +525,14 @@ impl CollisionModel {
         self.placement
     }
 
-    /// Whether the model carries tool shapes (then axes 4..6 matter to every check).
+    /// Whether the model carries flange shapes, the tool's or the robot's own links 5 and 6
+    /// (then axes 4..6 matter to every check).
     pub fn has_tool(&self) -> bool {
         self.tool.is_some()
     }
 
-    /// The radius about the wrist centre of the ball that holds every tool shape for any wrist
-    /// angles, mm (`parts.rs`); `None` without a tool.
+    /// The radius about the wrist centre of the ball that holds every flange shape for any wrist
+    /// angles, mm (`parts.rs`); `None` without one.
     pub fn tool_radius_mm(&self) -> Option<f64> {
         self.tool.as_ref().map(|t| t.radius_mm)
     }
