@@ -134,7 +134,7 @@ impl Error {
                 ..
             } => {
                 use crate::robot::controller::MAX_AXIS_DEG as R;
-                Some(format!("the fault is in the URDF named above: gen-rapid reads one serial chain of six revolute joints up to tool0, finite numbers, lengths within {} km, ranges within -{R} .. {R} deg, cylinders on the links of joints 1..3 (README, \"The cell file\")", crate::cell::MAX_MAGNITUDE / 1e6))
+                Some(format!("the fault is in the URDF named above: gen-rapid reads one serial chain of six revolute joints up to tool0, finite numbers, lengths within {} km, ranges within -{R} .. {R} deg, cylinders on the links of joints 1..3 (README, \"The cell file\")", crate::input::MAX_MAGNITUDE / 1e6))
             }
             Error::Robot {
                 source: RobotError::UnknownModel { .. },

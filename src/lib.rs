@@ -23,11 +23,11 @@ pub mod zeroed;
 
 // The stages, in pipeline order.
 
-// load, part 1: the cell file
-pub mod cell;
-
-// load, part 2: URDF, controller convention, kinematics, IK
+// load: URDF, controller convention, kinematics, IK
 pub mod robot;
+
+// load: the cell file
+pub mod cell;
 
 // place: where the robot stands, every point on six axes
 pub mod place;
@@ -41,7 +41,7 @@ pub mod plan;
 // time: manipulation time per move
 pub mod timing;
 
-// refine: the shortcut pass and the certified zones at waypoints (issue 10)
+// refine: the shortcut pass and the certified zones at waypoints
 pub mod refine;
 
 // render: the RAPID module, pictures, reports

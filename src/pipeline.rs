@@ -64,9 +64,9 @@ impl Loaded {
         }
     }
 
-    /// Warnings for stderr: the robot convention is never silent (issue 8); a speeddata the
-    /// moves use that RAPID does not predefine, once per name (issue 10: the estimate cannot
-    /// know its values and takes those moves at full axis speed).
+    /// Warnings for stderr: the robot convention is never silent; a speeddata the moves use
+    /// that RAPID does not predefine, once per name (the estimate cannot know its values and
+    /// takes those moves at full axis speed).
     pub fn warnings(&self) -> Vec<String> {
         let mut warnings = self.controller_warning();
         warnings.extend(self.speed_warnings());
@@ -96,7 +96,7 @@ impl Loaded {
             .collect()
     }
 
-    /// The robot convention is never silent (issue 8).
+    /// The robot convention is never silent.
     fn controller_warning(&self) -> Vec<String> {
         match &self.robot.controller.source {
             Some(_) => Vec::new(),
@@ -306,7 +306,7 @@ pub fn keep_paper_figure(
     plan
 }
 
-/// Refine (issue 10): the shortcut pass (`planner.shortcut`) and the certified zones
+/// Refine: the shortcut pass (`planner.shortcut`) and the certified zones
 /// (`motion.via_zone`, the points' zones), each change kept only when the time estimate does not
 /// grow; then the time again. The warnings are for stderr (a point's zone written `fine`).
 pub fn refine(job: &Loaded, placed: &Placed, inspected: &Inspected, plan: Plan) -> Refined {
@@ -471,7 +471,7 @@ pub fn compare(job: &Loaded, placed: &Placed, inspected: &Inspected) -> Vec<Atte
         .collect()
 }
 
-/// The row beyond the paper in a comparison (issue 10): the extensile attempt's route through the
+/// The row beyond the paper in a comparison: the extensile attempt's route through the
 /// refine stage with the shortcut pass (whatever `planner.shortcut` says), timed; with the
 /// wall-clock time of planning it (the extensile search's and the pass's). `None` when the
 /// extensile search failed.

@@ -1,6 +1,7 @@
-//! Manipulation time of a planned route (paper section 5, Fig. 9): the figure the paper uses,
-//! besides the number of moves, to compare its three search methods; extended (issue 10) by the
-//! speeddata of each move and the fly-by at zoned waypoints.
+//! Manipulation time of a planned route (paper section 5, Fig. 9; long: half of it is the tests
+//! against hand-computed moves): the figure the paper uses, besides the number of moves, to
+//! compare its three search methods; extended by the speeddata of each move and the fly-by at
+//! zoned waypoints.
 //!
 //! A move from rest to rest: within a move each axis k covers D_k = |delta_k| degrees under its
 //! maximum speed v_k and peak acceleration a_k (the controller file, `robot::controller`), and

@@ -54,7 +54,7 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
             Row::of(a.method, result, a.planning_time_ms)
         })
         .collect();
-    // Beyond the paper: the extensile route with the shortcut pass (issue 10).
+    // Beyond the paper: the extensile route with the shortcut pass.
     let shortcut = pipeline::compare_shortcut(&job, &placed, &inspected, &attempts);
     rows.push(match &shortcut {
         Some((plan, ms)) => Row::of(Method::Extensile, Ok(plan), *ms),

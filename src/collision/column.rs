@@ -26,10 +26,12 @@
 //! measurement would have dropped it too (clear, depth `K`), so every code and column byte is
 //! the column's alone (`block_tests.rs`), whatever order the columns come in.
 
-use super::block::{motion, Angles, Centre, Split, Swept, MARGIN_MM, SET, TOP_RUN_NODES};
+use super::angles::Angles;
+use super::block::{motion, Centre, Split, Swept, MARGIN_MM, SET, TOP_RUN_NODES};
+use super::clear::link_clear_of_box;
 use super::grid::{GridCheck, ARM_BITS, COLUMN_LEVELS, DEPTH_LEVELS};
 use super::proof::tight_lower_bound;
-use super::{link_clear_of_box, CylData};
+use super::CylData;
 use crate::geometry::{distance_capsule_aabb, distance_point_aabb, Aabb, Cylinder, Point, Solid};
 use crate::robot::{Pose, RangeViolation};
 use nalgebra::Vector3;

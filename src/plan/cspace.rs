@@ -216,7 +216,7 @@ pub struct CSpace {
     rows: RowCache,
 }
 
-/// A per-row bit set of some of the grid's free nodes, for the wave (`wave::number_rows`). A
+/// A per-row bit set of some of the grid's free nodes, for the row wave (`wave::rows`). A
 /// row holds the nodes of fixed axes 1 and 2, `words` words each, rows in index order; axis-3
 /// index `64 j + b` is bit `b` of the row's word `j`, and the bits past the row's last node are
 /// clear.
@@ -438,9 +438,8 @@ impl CSpace {
 /// The largest row bit set the row wave asks of the grid ([`CSpace::row_bits`]) and the
 /// inspection makes ahead ([`Inspector::row_bits_ahead`]), bytes: the set is kept for the rest
 /// of the run (52 MB at 0.25 deg over the IRB 1400's ranges); above it every candidate is
-/// looked at (the same numbers; `wave`). At 0.25 deg the set took the trunk from 11.2 to 9.4 s
-/// at a peak of 975 940 KiB, 0.9994e9 bytes (922 180 KiB without), when labels took 2 bytes a
-/// node; with residues, 2 bits a node, the peak fell well below (`benches/README.md`).
+/// looked at (the same numbers; `wave`). At 0.25 deg the set makes the trunk faster for a
+/// little more memory (`benches/README.md`).
 pub const ROW_BITS_MAX_BYTES: usize = 64 << 20;
 
 /// The row words ([`RowBits`]) of whole rows of `d2` codes (`codes`) into `out`, `d2` bits

@@ -1,5 +1,6 @@
-//! The plan stage: the route through the cell's points, leg by leg (paper section 4, applied to
-//! A -> B -> ... -> F), as the [`Plan`] the output stage prints.
+//! The plan stage (long: a third of it is the stage's tests): the route through the cell's
+//! points, leg by leg (paper section 4, applied to A -> B -> ... -> F), as the [`Plan`] the
+//! output stage prints.
 //!
 //! For each leg ([`leg`]): join both points to the grid (a point on a node is that node; a point
 //! off the grid joins the nearest usable node whose straight move to it is proven safe); search
@@ -204,9 +205,9 @@ pub struct Plan {
     /// The paper's method alone on the same cell (moves and estimated time), kept by the pipeline
     /// after the first time stage; `None` before.
     pub paper: Option<PaperFigure>,
-    /// The zone of the move into each waypoint as the refine stage certified it (issue 10:
-    /// a via's `motion.via_zone` where its corner is proven, a cell point's own zone where its
-    /// corner is proven, else `fine`; the first and last waypoints `fine`). Empty before that
+    /// The zone of the move into each waypoint as the refine stage certified it (a via's
+    /// `motion.via_zone` where its corner is proven, a cell point's own zone where its corner is
+    /// proven, else `fine`; the first and last waypoints `fine`). Empty before that
     /// stage: then [`Plan::motion_into`] gives the paper's rule (every via `fine`).
     pub zones: Vec<String>,
 }

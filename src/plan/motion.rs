@@ -1,11 +1,11 @@
 //! The motion of each move: which speeddata and zonedata the move into a waypoint uses, for the
 //! module and for the time estimate (both read it here, neither imports the other).
 //!
-//! The rule (issue 9): the move into a cell point uses the point's own `speed`/`zone`, else the
+//! The rule: the move into a cell point uses the point's own `speed`/`zone`, else the
 //! cell's `motion.speed`/`motion.zone` (the place stage resolves that into
 //! [`PlacedPoint::motion`]); the moves into a leg's vias use the speed of the leg's end point
 //! (the leg is one job: reaching that point) and [`VIA_ZONE`], a stop point, since a fly-by
-//! corner at a via is not proven to keep the clearance. Issue 10: once the refine stage has
+//! corner at a via is not proven to keep the clearance. Once the refine stage has
 //! certified the corners ([`Plan::zones`], `refine::zones`), its zone of each waypoint is the
 //! zone of the move into it: a via's `motion.via_zone` where its corner triangle is proven, a
 //! cell point's own zone where its corner is proven (else `fine`), the first and last `fine`.

@@ -1,4 +1,4 @@
-//! The refine stage (issue 10; beyond the paper): after the paper's route is planned and timed,
+//! The refine stage (beyond the paper): after the paper's route is planned and timed,
 //! a continuous shortcut pass ([`shortcut`], `planner.shortcut`, on by default) and the
 //! certified zones at the waypoints ([`zones`], `motion.via_zone` and the cell points' own
 //! zones), with the vias whose corner comes too close split for room ([`split`]). Every move it writes is proven on the written (rounded) values; every zone it

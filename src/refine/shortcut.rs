@@ -1,4 +1,4 @@
-//! The shortcut pass (issue 10, item 3; beyond the paper): routes shorter than the grid allows.
+//! The shortcut pass (beyond the paper): routes shorter than the grid allows.
 //!
 //! The paper's route keeps the grid's corners: its shortening joins grid nodes `k -> k+2` and its
 //! merge joins collinear moves. This pass works on the route as planned, leg by leg, off the

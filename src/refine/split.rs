@@ -1,5 +1,5 @@
-//! Split corners (issue 10, item 2; beyond the paper): room for a fly-by zone at a via whose
-//! corner triangle comes too close to an obstacle.
+//! Split corners (beyond the paper): room for a fly-by zone at a via whose corner triangle
+//! comes too close to an obstacle.
 //!
 //! The corner triangle of via `V` between the moves `A -> V` and `V -> B` reaches to the
 //! midpoints of both moves (`collision::corner`); where it cuts into the clearance (a via that

@@ -1,4 +1,4 @@
-//! Certified zones (issue 10, item 2): which waypoints the robot may fly by.
+//! Certified zones: which waypoints the robot may fly by.
 //!
 //! A waypoint asks for a fly-by zone when it is a via and `motion.via_zone` is not a stop point,
 //! or when it is a cell point whose zone (its own `zone`, else `motion.zone`) is not a stop point

@@ -637,11 +637,7 @@ planner: { grid: 5 }
     /// the enclosures the checks carry them by. Fails with links 4..6 left out or drawn on link 3.
     #[test]
     fn every_link_of_a_shipped_robot_is_drawn_on_its_own_link() {
-        let text = CELL.replace(
-            "robot: { urdf: irb1400.urdf,",
-            "robot: { model: irb2600_12_165,",
-        );
-        assert_ne!(text, CELL);
+        let text = CELL.replace("urdf: irb1400.urdf,", "model: irb2600_12_165,");
         let cell = crate::cell::parse(Path::new("demo.yaml"), &text).expect("the cell");
         let job = Loaded {
             cell,
@@ -656,24 +652,11 @@ planner: { grid: 5 }
             &out.plan,
             &out.rendered.names,
         );
-        let names: Vec<&str> = s
-            .shapes
-            .iter()
-            .filter(|d| d.kind == ShapeKind::Link)
-            .map(|d| d.name.as_str())
-            .collect();
-        assert_eq!(
-            names,
-            [
-                "base_link",
-                "link_1",
-                "link_2",
-                "link_3",
-                "link_4",
-                "link_5",
-                "link_6"
-            ]
-        );
+        let links: Vec<String> = s.shapes.iter().take(7).map(|d| d.name.clone()).collect();
+        let want: Vec<String> = (0..7).map(|k| format!("link_{k}")).collect();
+        assert_eq!(links[1..], want[1..]);
+        assert_eq!(links[0], "base_link");
+        assert!(s.shapes[..7].iter().all(|d| d.kind == ShapeKind::Link));
         let poser = Poser::new(&job.robot, out.placed.placement, job.cell.tool.as_ref());
         let at = &out.plan.waypoints[1].joints_deg;
         let frame = s
