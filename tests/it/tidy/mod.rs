@@ -24,6 +24,7 @@ const ORDER: &[&str] = &[
     "refine",
     "output",
     "error",
+    "load",
     "pipeline",
     "cli",
 ];
