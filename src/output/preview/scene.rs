@@ -636,7 +636,7 @@ planner: { grid: 5 }
             text,
             robot: Robot::shipped("irb2600_12_165").expect("shipped"),
         };
-        let out = pipeline::run(&job, Method::Extensile, 5.0).expect("plans");
+        let out = pipeline::run(&job, &Options::new(Method::Extensile, 5.0)).expect("plans");
         let s = scene(
             &job.cell,
             &job.robot,
@@ -650,7 +650,7 @@ planner: { grid: 5 }
         assert_eq!(links[0], "base_link");
         assert!(s.shapes[..7].iter().all(|d| d.kind == ShapeKind::Link));
         let poser = Poser::new(&job.robot, out.placed.placement, job.cell.tool.as_ref());
-        let at = &out.plan.waypoints[1].joints_deg;
+        let at = &out.plan.route.waypoints[1].joints_deg;
         let frame = s
             .keyframes
             .iter()
