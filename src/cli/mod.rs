@@ -7,6 +7,7 @@ pub mod compare;
 pub mod locate;
 pub mod outputs;
 pub mod progress;
+pub mod robots;
 pub mod run;
 pub mod warnings;
 
@@ -153,9 +154,13 @@ fn target_of_exists(path: &Path) -> bool {
 /// `compare`'s pictures).
 pub fn write_for(job: &crate::pipeline::Loaded, files: &[(&Path, &[u8])]) -> Result<(), Error> {
     let robot = &job.robot;
-    let read: Vec<&Path> = std::iter::once(robot.urdf_path.as_path())
-        .chain(robot.controller.source.as_deref())
-        .collect();
+    // A shipped model's files are built in: the run reads none.
+    let read: Vec<&Path> = match robot.model {
+        Some(_) => Vec::new(),
+        None => std::iter::once(robot.urdf_path.as_path())
+            .chain(robot.controller.source.as_deref())
+            .collect(),
+    };
     refuse_inputs(files, &read)?;
     outputs::stage(files)
 }
