@@ -1,4 +1,5 @@
-//! The RAPID identifier rule, one for the whole program: what a module, point, speed, zone,
+//! The RAPID identifier rule, one for the whole program (long: RAPID's tables of reserved words
+//! and predefined names are half of it): what a module, point, speed, zone,
 //! tool, work-object, load or signal name may be, and the one name the module derives from a cell name (the
 //! `CONST robtarget` of a robtarget point, [`robtarget_name`]). The cell validation applies it to
 //! the names a cell gives (an input error at their line) and the renderer applies it again, as a
@@ -6,8 +7,7 @@
 //! ([`predefined_kind`]): a move's speed must be speeddata, its zone zonedata, its tool tooldata
 //! ([`check_data_type`]: `speed: z50` or `zone: tool0` is refused, as the controller would
 //! refuse the module at load), and the system modules every task holds ([`SYSTEM_MODULES`]),
-//! which a module may not be named like. A leaf (it reads `rapid_data`'s tables): it knows
-//! nothing of cells or modules.
+//! which a module may not be named like. A leaf: it knows nothing of cells or modules.
 
 /// Longest identifier RAPID accepts, in characters.
 pub const MAX_IDENTIFIER_LEN: usize = 32;
@@ -320,16 +320,17 @@ impl DataType {
 /// `"a data type"`, `"an instruction or function"`; `None` for a name RAPID does not predefine.
 pub fn predefined_kind(name: &str) -> Option<&'static str> {
     let is = |list: &[&str]| list.iter().any(|n| n.eq_ignore_ascii_case(name));
-    if crate::rapid_data::predefined_speed(name).is_some()
+    // Every predefined speeddata is `vmax` or `v<digits>` (rapid_data's table), every
+    // predefined zonedata `fine` or `z<digits>`: the shapes alone decide, so this leaf reads
+    // no other module.
+    if name.eq_ignore_ascii_case("vmax")
         || ["vrot", "vlin", "v"]
             .iter()
             .any(|p| name.is_ascii() && is_prefix_digits(name, p))
     {
         return Some("a speeddata");
     }
-    if crate::rapid_data::predefined_zone(name).is_some()
-        || (name.is_ascii() && is_prefix_digits(name, "z"))
-    {
+    if name.eq_ignore_ascii_case("fine") || (name.is_ascii() && is_prefix_digits(name, "z")) {
         return Some("a zonedata");
     }
     let kinds: [(&[&str], &'static str); 9] = [

@@ -585,12 +585,6 @@ pub fn parse(path: &Path, text: &str) -> Result<Cell, CellError> {
     validate::cell(path, raw)
 }
 
-/// The refusal of the first key of a YAML text given no value (`tool:` with its body commented
-/// out), for the cell and the controller file alike (`present`).
-pub fn first_key_without_value(text: &str, options: serde_saphyr::Options) -> Option<CellError> {
-    present::first_key_without_value(text, options)
-}
-
 /// Names the routine `name` (`--proc NAME`, overriding `motion.proc`): the RAPID identifier
 /// rule and the module's one name space, as for `motion.proc`. The error has no place in the
 /// cell unless a name of the cell clashes with it (then it points at that name).

@@ -98,4 +98,3 @@ fn fly_by(cell: &Cell) -> bool {
             .iter()
             .any(|p| p.zone.as_deref().is_some_and(|z| !fine(z)))
 }
-

@@ -173,12 +173,11 @@ pub fn parse(text: &str) -> Result<Controller, ControllerFault> {
         }
     })?;
     // A key given no value (`acceleration:` alone) is refused, never taken as left out.
-    if let Some(e) = crate::cell::first_key_without_value(text, serde_saphyr::Options::default()) {
-        let loc = e.loc().unwrap_or_default();
+    if let Some(b) = crate::blank_key::first_blank_key(text, serde_saphyr::Options::default()) {
         return Err(ControllerFault {
-            message: e.to_string(),
-            line: loc.line,
-            column: loc.column,
+            message: crate::blank_key::BlankKey::message(&crate::excerpt::value(&b.key)),
+            line: b.line,
+            column: b.column,
         });
     }
     if raw.axes.value.len() != 6 {

@@ -1,4 +1,5 @@
-//! RAPID output stage: turns an already planned joint path into the text of an
+//! RAPID output stage (long: the render pass, its template context and the module's guards):
+//! turns an already planned joint path into the text of an
 //! ABB RAPID module (IRB 1400 on an IRC5 controller, loaded by RobotStudio).
 //!
 //! Everything the text needs is decided by earlier stages and handed over as a

@@ -1,4 +1,5 @@
-//! Tests of [`render`](super::render) (format and names have their own).
+//! Tests of [`render`](super::render) (long: one test a rule of the module text; format and
+//! names have their own).
 
 use super::*;
 use crate::names::check_identifier;

@@ -253,11 +253,9 @@ impl TemplateBench {
     pub fn new() -> TemplateBench {
         let path = super::root().join("cells/trunk.yaml");
         let job = pipeline::load(&path).unwrap_or_else(|f| panic!("{}", f.render()));
-        let placed = pipeline::place(&job).unwrap_or_else(|e| panic!("{e}"));
-        let inspected = pipeline::inspect(&job, &placed, 10.0);
-        let plan = pipeline::plan(&job, &placed, &inspected, Method::Extensile)
-            .unwrap_or_else(|e| panic!("{e}"));
-        let plan = pipeline::time(&job, &placed, plan);
+        let out = pipeline::run(&job, &Options::new(Method::Extensile, 10.0))
+            .unwrap_or_else(|h| panic!("{}", h.error));
+        let (placed, plan) = (out.placed, out.plan);
         TemplateBench { job, placed, plan }
     }
 
@@ -265,7 +263,7 @@ impl TemplateBench {
     pub fn render(&self, path: &Path, source: &str) -> Result<String, Refusal> {
         let template = gen_rapid::output::rapid::ModuleTemplate::user(path, source.to_string())
             .map_err(|e| refusal(Error::Template(e), "cell.yaml", None))?;
-        pipeline::render_with(&self.job, &self.placed, &self.plan, &template)
+        pipeline::render(&self.job, &self.placed, &self.plan, &template)
             .map(|r| r.text)
             .map_err(|e| refusal(e, "cell.yaml", None))
     }
