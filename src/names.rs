@@ -1,5 +1,5 @@
 //! The RAPID identifier rule, one for the whole program: what a module, point, speed, zone,
-//! tool or work-object name may be, and the one name the module derives from a cell name (the
+//! tool, work-object, load or signal name may be, and the one name the module derives from a cell name (the
 //! `CONST robtarget` of a robtarget point, [`robtarget_name`]). The cell validation applies it to
 //! the names a cell gives (an input error at their line) and the renderer applies it again, as a
 //! last guard, to every name it writes. A leaf: it knows nothing of cells or modules.
@@ -73,7 +73,8 @@ pub const RESERVED_WORDS: &[&str] = &[
 ];
 
 /// Predefined RAPID names a user data object must not shadow (compared
-/// case-insensitively): data types, predefined data and motion instructions.
+/// case-insensitively): data types, predefined data, motion instructions and the instructions
+/// and functions the module writes beside them.
 ///
 /// Besides this list, [`check_identifier`] rejects every name of the form
 /// `v<digits>`, `z<digits>`, `vrot<digits>` and `vlin<digits>` (the predefined
@@ -101,6 +102,8 @@ pub const PREDEFINED_NAMES: &[&str] = &[
     "extjoint",
     "robjoint",
     "loaddata",
+    "signaldi",
+    "signaldo",
     // predefined data
     "tool0",
     "wobj0",
@@ -122,6 +125,18 @@ pub const PREDEFINED_NAMES: &[&str] = &[
     "MoveL",
     "MoveC",
     "MoveExtJ",
+    // the instructions and functions of a point's actions, approach and retract lines and
+    // configuration control (docs/cell.md)
+    "SetDO",
+    "PulseDO",
+    "WaitDI",
+    "WaitTime",
+    "GripLoad",
+    "RelTool",
+    "Offs",
+    "OrientZYX",
+    "ConfJ",
+    "ConfL",
 ];
 
 /// What the module appends to a robtarget point's name for its `CONST robtarget` (the point's
@@ -412,6 +427,12 @@ mod tests {
             ("extjoint", "extjoint"),
             ("robjoint", "robjoint"),
             ("loaddata", "loaddata"),
+            ("SignalDO", "signaldo"),
+            ("setdo", "SetDO"),
+            ("WAITTIME", "WaitTime"),
+            ("GripLoad", "GripLoad"),
+            ("reltool", "RelTool"),
+            ("confl", "ConfL"),
             ("PI", "pi"),
             ("errno", "ERRNO"),
             ("Eof_Bin", "EOF_BIN"),

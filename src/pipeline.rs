@@ -138,7 +138,7 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
         notes: Vec::new(),
     };
     let text = cell::read(path).map_err(|e| fail(e.into(), None))?;
-    let cell = match cell::parse(path, &text) {
+    let cell = match cell::parse(path, &text).and_then(|c| cell::unsupported(&c).map(|()| c)) {
         Ok(c) => c,
         Err(e) => return Err(fail(e.into(), Some(text))),
     };

@@ -24,8 +24,11 @@ pub const POSITION_DECIMALS: usize = 3;
 /// normalised when read (any number of decimals); the module writes the normalised values to
 /// this many decimals, as RobotStudio does, so their norm is 1 within 2e-9.
 pub const QUATERNION_DECIMALS: usize = 9;
-/// The tool's mass in `PERS tooldata` (kg); also the cell's `tool.mass`.
+/// The tool's mass in `PERS tooldata` and a load's in `PERS loaddata` (kg); also the cell's
+/// `tool.mass` and `loads` masses.
 pub const MASS_DECIMALS: usize = 3;
+/// The seconds of `WaitTime` (s); also the cell's `wait_time` actions.
+pub const WAIT_TIME_DECIMALS: usize = 3;
 
 // ---- the JSON report (`--report`): the module's decimals, so that both state the same numbers ----
 

@@ -16,10 +16,23 @@
 //! confdata), and per-point `speed`/`zone` (the move into the point). Quaternions are
 //! `[w, x, y, z]` (RAPID's `[q1, q2, q3, q4]`), normalised when read; a norm off by more than
 //! [`QUATERNION_NORM_TOL`] is refused as a typo.
+//!
+//! What the cell says about the process (docs/cell.md): how each point is reached
+//! ([`Arrival`]: the planned joint route, or a `linear` / `circular` process move), an
+//! approach and a retract line along the TCP's z axis, the [`Action`]s at the point, the
+//! loaddata the module declares ([`Load`], for `grip_load`); several work objects (each robtarget
+//! point names its own, [`Point::wobj`]), orientations as RAPID's `OrientZYX` angles (read into
+//! the same normalised quaternions), revisits of a point's target ([`Point::revisit_of`]), the
+//! closed cycle ([`Motion::cycle`]) and the frame uframes are written in ([`RobotFrame`]). The
+//! later stages do not use all of these yet: [`unsupported`] says which, and the pipeline
+//! refuses a cell that uses them.
 
 mod raw;
 mod syntax;
+mod unsupported;
 mod validate;
+
+pub use unsupported::unsupported;
 
 use crate::geometry::Aabb;
 use crate::plan::search::Method;
@@ -80,6 +93,21 @@ pub struct RobotSpec {
     pub wrist_deg: [f64; 3],
     /// Where `robot.wrist` is given (`None`: the default).
     pub wrist_loc: Option<Loc>,
+    /// `robot.frame`: the frame the module writes uframes and wobj0 robtargets in.
+    pub frame: RobotFrame,
+    /// Where `robot.frame` is given (the default: `Loc::default()`).
+    pub frame_loc: Loc,
+}
+
+/// `robot.frame`: the frame the module writes work objects' uframes (and robtargets in wobj0)
+/// in. The cell itself always gives them in the cell frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum RobotFrame {
+    /// The cell frame (the controller's world frame set to the cell's, the default).
+    #[default]
+    Cell,
+    /// The robot's base frame (an IRC5 whose world frame is its base frame).
+    Base,
 }
 
 /// A box obstacle of the cell: THE obstacle type (the collision model and the location stage
@@ -171,14 +199,92 @@ pub struct Tool {
     pub loc: Loc,
 }
 
-/// The cell's `wobj:` block: the work object robtarget points are given in.
+/// A work object of the cell (`wobj:`, or an entry of `wobjs:`): a frame robtarget points are
+/// given in.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Wobj {
     /// wobjdata name (a RAPID identifier, not `wobj0`).
     pub name: String,
     /// The user frame in the cell frame.
     pub uframe: Frame,
+    /// Where its name is given.
     pub loc: Loc,
+}
+
+/// An entry of `loads:`: loaddata the module declares, for a `grip_load` action.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Load {
+    /// loaddata name (a RAPID identifier in the module's name space, not `load0`).
+    pub name: String,
+    /// kg, > 0, at most 3 decimals (the module's).
+    pub mass_kg: f64,
+    /// Centre of gravity in the tool frame, mm (default `[0, 0, 0]`).
+    pub cog_mm: [f64; 3],
+    /// Where its name is given.
+    pub loc: Loc,
+}
+
+/// How the TCP reaches a point from where the previous entry left it (`move:`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Arrival {
+    /// `joint` (the default): the planned, proven joint route.
+    Joint,
+    /// `linear`: the straight line from the previous TCP pose, the orientation turning evenly
+    /// (MoveL). The point's target is a robtarget, the previous entry has no retract.
+    Linear,
+    /// `circular`: the arc through the previous TCP pose, `via_mm` and the point (MoveC). As for
+    /// `Linear`; whether the three points make an arc is the place stage's to check.
+    Circular {
+        /// A point of the arc, mm in the point's work object frame (at most 3 decimals).
+        via_mm: [f64; 3],
+        /// Where `via` is given.
+        via_loc: Loc,
+    },
+}
+
+impl Arrival {
+    /// A process move (`linear` or `circular`), not the planned route.
+    pub fn is_process(&self) -> bool {
+        !matches!(self, Arrival::Joint)
+    }
+}
+
+/// One action of a point's `do:` list, done in order after the move into the point has ended
+/// (the point is reached `fine`) and before its retract.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Action {
+    pub kind: ActionKind,
+    /// Where the action is given.
+    pub loc: Loc,
+}
+
+/// What an action does, with its arguments as RAPID takes them. Signal names are RAPID
+/// identifiers of signals declared on the controller (the module does not declare them).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ActionKind {
+    /// `{ set_do: [signal, 0|1] }`: `SetDO signal, 0|1;` (`value` true is 1).
+    SetDo { signal: String, value: bool },
+    /// `{ pulse_do: signal }`: `PulseDO signal;`.
+    PulseDo { signal: String },
+    /// `{ wait_di: [signal, 0|1] }`: `WaitDI signal, 0|1;` (`value` true is 1).
+    WaitDi { signal: String, value: bool },
+    /// `{ wait_time: s }`: `WaitTime s;` (0 .. 3600 s, at most 3 decimals).
+    WaitTime { time_s: f64 },
+    /// `{ grip_load: name }`: `GripLoad name;`. `None`: the predefined `load0` (nothing held);
+    /// `Some(i)`: `Cell::loads[i]`.
+    GripLoad { load: Option<usize> },
+}
+
+impl ActionKind {
+    /// The signal an I/O action names.
+    pub fn signal(&self) -> Option<&str> {
+        match self {
+            ActionKind::SetDo { signal, .. }
+            | ActionKind::PulseDo { signal }
+            | ActionKind::WaitDi { signal, .. } => Some(signal),
+            ActionKind::WaitTime { .. } | ActionKind::GripLoad { .. } => None,
+        }
+    }
 }
 
 /// What a point gives.
@@ -200,15 +306,63 @@ pub enum Target {
     Robtarget { pose: Frame, conf: Option<ConfData> },
 }
 
+/// One entry of `points:`, in the order visited: a point, or a revisit of one (`{ revisit:
+/// NAME }`), which takes the named point's target (and work object) and nothing else.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Point {
+    /// The point's name; a revisit's is the name of the point it revisits (it declares none).
     pub name: String,
+    /// What the point gives; a revisit's is a copy of the revisited point's.
     pub target: Target,
-    /// The speeddata of the move into this point (`None`: `motion.speed`).
+    /// The speeddata of the move into this point, its approach line and its retract line
+    /// (`None`: `motion.speed`).
     pub speed: Option<String>,
-    /// The zonedata of the move into this point (`None`: `motion.zone`).
+    /// The zonedata of the move into this point (`None`: `motion.zone`). A point that
+    /// [`stops`](Point::stops) is reached `fine` whatever `motion.zone` says; its own zone, if
+    /// given, is `fine` (validation refuses another).
     pub zone: Option<String>,
+    /// Where the entry is given (its `{` or, written as block lines, its first key).
     pub loc: Loc,
+    /// How it is reached (`move:`); on the first entry always [`Arrival::Joint`].
+    pub arrival: Arrival,
+    /// Where `move:` is given (the entry's `loc` when it is not).
+    pub arrival_loc: Loc,
+    /// `approach`: the route ends this far (mm, 1 .. 1000, at most 3 decimals) back along the
+    /// target's TCP z axis (`RelTool(p, 0, 0, -D)`), and a linear move enters the point. Only on
+    /// robtarget targets reached by [`Arrival::Joint`], never on the first entry.
+    pub approach_mm: Option<f64>,
+    /// Where `approach` is given.
+    pub approach_loc: Loc,
+    /// `retract`: after the actions, a linear move this far (mm, as `approach_mm`) back along the
+    /// TCP z axis; the next move starts there (and is not `linear` or `circular`). Robtarget
+    /// targets only; allowed on the last entry.
+    pub retract_mm: Option<f64>,
+    /// Where `retract` is given.
+    pub retract_loc: Loc,
+    /// `do`: the actions at the point, in order.
+    pub actions: Vec<Action>,
+    /// The work object a robtarget target is given in: an index into [`Cell::wobjs`]; `None`:
+    /// wobj0 (the cell declares none) or not a robtarget.
+    pub wobj: Option<usize>,
+    /// A revisit: the index in [`Cell::points`] of the point whose target (and work object) it
+    /// reaches again, never itself a revisit. The module declares that point's data once.
+    pub revisit_of: Option<usize>,
+}
+
+impl Point {
+    /// The point is reached `fine`: it has actions, an approach line into it or a retract line
+    /// out of it.
+    pub fn stops(&self) -> bool {
+        !self.actions.is_empty() || self.approach_mm.is_some() || self.retract_mm.is_some()
+    }
+
+    /// How messages name the entry: `point 'P2'`, or `the revisit of 'home' (line 12)`.
+    pub fn label(&self) -> String {
+        match self.revisit_of {
+            None => format!("point '{}'", self.name),
+            Some(_) => format!("the revisit of '{}' (line {})", self.name, self.loc.line),
+        }
+    }
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -239,6 +393,12 @@ pub struct Motion {
     /// `motion.via_zone`: the predefined zonedata a via gets where its corner is proven
     /// (`refine::zones`); `fine` (the default) keeps every via a stop point.
     pub via_zone: String,
+    /// `motion.cycle`: the routine ends where it starts, by a leg from the last entry back to the
+    /// first (at `motion.speed`, without the first entry's zone or actions), unless the last
+    /// entry already reaches the first one's target ([`Cell::closing_leg`]).
+    pub cycle: bool,
+    /// Where `motion.cycle` is given (the default: `Loc::default()`).
+    pub cycle_loc: Loc,
 }
 
 /// Where the routine's name comes from.
@@ -265,8 +425,27 @@ pub struct Cell {
     pub motion: Motion,
     /// The `tool:` block; without it the TCP is tool0 (the flange) and there is no tool volume.
     pub tool: Option<Tool>,
-    /// The `wobj:` block; without it robtargets are in wobj0, whose frame is the cell frame.
-    pub wobj: Option<Wobj>,
+    /// The work objects (`wobj:` gives one, `wobjs:` any number), in the cell's order; each
+    /// robtarget point names its own ([`Point::wobj`]). None: robtargets are in wobj0, whose
+    /// frame is the cell frame.
+    pub wobjs: Vec<Wobj>,
+    /// `loads:`: the loaddata the module declares, in the cell's order.
+    pub loads: Vec<Load>,
+}
+
+impl Cell {
+    /// The work object point `p` is given in (`None`: wobj0).
+    pub fn wobj_of(&self, p: &Point) -> Option<&Wobj> {
+        p.wobj.and_then(|i| self.wobjs.get(i))
+    }
+
+    /// With `motion.cycle`, the routine needs a leg from the last entry back to the first: the
+    /// last entry does not already reach the first one's target (a revisit of it, or the point a
+    /// first revisit names).
+    pub fn closing_leg(&self) -> bool {
+        let origin = |i: usize| self.points.get(i).and_then(|p| p.revisit_of).unwrap_or(i);
+        self.motion.cycle && self.points.len() > 1 && origin(0) != origin(self.points.len() - 1)
+    }
 }
 
 /// Defaults for keys a cell may leave out.
@@ -283,6 +462,11 @@ pub mod defaults {
     pub const PROC: &str = "main";
     /// The load of a `tool:` block that states no `mass`, kg.
     pub const TOOL_MASS_KG: f64 = 1.0;
+    /// The range of `approach` and `retract`, mm.
+    pub const MIN_OFFSET_MM: f64 = 1.0;
+    pub const MAX_OFFSET_MM: f64 = 1000.0;
+    /// The longest `wait_time`, s.
+    pub const MAX_WAIT_S: f64 = 3600.0;
     /// Finest grid accepted (deg): 0.25 deg over the IRB 1400's ranges is ~400 M nodes.
     pub const MIN_GRID_DEG: f64 = 0.25;
     pub const MAX_GRID_DEG: f64 = 10.0;
@@ -393,3 +577,9 @@ mod tests;
 
 #[cfg(test)]
 mod tests_tcp;
+
+#[cfg(test)]
+mod tests_process;
+
+#[cfg(test)]
+mod tests_program;

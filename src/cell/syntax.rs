@@ -274,7 +274,7 @@ fn describe(e: &Error, text: &Text) -> Said {
 const FORM_HELP: &str =
     "README.md, \"The cell file\" and \"For robot programmers\", shows the form of every key";
 
-const KEYS_HELP: &str = "a cell gives `module: Name`, `robot:` (with `urdf:` and `base:`) and `points:` (at least two), and may give `obstacles:`, `planner:`, `motion:`, `tool:` and `wobj:` (README.md, \"The cell file\")";
+const KEYS_HELP: &str = "a cell gives `module: Name`, `robot:` (with `urdf:` and `base:`) and `points:` (at least two), and may give `obstacles:`, `planner:`, `motion:`, `tool:`, `wobj:` or `wobjs:`, and `loads:` (README.md, \"The cell file\"; docs/cell.md)";
 
 /// The parser's refusals (module docs).
 fn scan(kind: &ErrorKind, loc: Loc, text: &Text, reader: String) -> Said {

@@ -70,7 +70,9 @@ fn the_tool_the_work_object_and_robtargets_are_read_as_given() {
         }
     );
     assert_eq!(t.shapes[1].loc.line, 13);
-    let w = c.wobj.expect("wobj");
+    let [w] = c.wobjs.as_slice() else {
+        panic!("one wobj, {} found", c.wobjs.len())
+    };
     assert_eq!(
         (w.name.as_str(), w.uframe.pos_mm),
         ("wobjDoor", [400.0, 0.0, 500.0])
@@ -128,7 +130,7 @@ fn a_tool_block_has_defaults_and_a_cell_may_go_without_one() {
     let start = text.find("tool:").expect("tool");
     let end = text.find("points:").expect("points");
     let c = parse_str(&format!("{}{}", &text[..start], &text[end..])).expect("no blocks");
-    assert!(c.tool.is_none() && c.wobj.is_none());
+    assert!(c.tool.is_none() && c.wobjs.is_empty());
     assert_eq!(
         c.robot.controller_path.as_deref().map(|p| p.is_relative()),
         Some(true)

@@ -103,7 +103,8 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
         // The tool block's name when there is one (the cell validation sees to it).
         tool: cell.motion.tool.clone(),
         tooldata,
-        wobj: cell.wobj.as_ref().map(|w| WobjData {
+        // One work object at most (`cell::unsupported` refuses several).
+        wobj: cell.wobjs.first().map(|w| WobjData {
             name: w.name.clone(),
             uframe: pose(&w.uframe),
         }),

@@ -54,7 +54,8 @@ impl Tcp {
         Ok(Tcp {
             ik,
             tframe: frame(cell.tool.as_ref().map(|t| t.tframe)),
-            uframe: frame(cell.wobj.as_ref().map(|w| w.uframe)),
+            // One work object at most (`cell::unsupported` refuses several): every robtarget's.
+            uframe: frame(cell.wobjs.first().map(|w| w.uframe)),
         })
     }
 

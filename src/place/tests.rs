@@ -78,7 +78,7 @@ fn robtarget_line(name: &str, pose: &Frame, conf: Option<[i32; 4]>) -> String {
 /// The TCP pose of `axes` in the work object of `c`, as a robtarget would give it.
 fn pose_of(c: &Cell, robot: &Robot, axes: &Axes6) -> Frame {
     let tframe = c.tool.as_ref().map_or(Frame::IDENTITY, |t| t.tframe);
-    let uframe = c.wobj.as_ref().map_or(Frame::IDENTITY, |w| w.uframe);
+    let uframe = c.wobjs.first().map_or(Frame::IDENTITY, |w| w.uframe);
     frame(
         &(iso(&uframe).inverse() * PLACEMENT.cell_from_robot() * robot.tool0(axes) * iso(&tframe)),
     )
@@ -144,7 +144,7 @@ fn robtargets_are_reached_within_0_1_mm_and_0_01_deg_through_tool_wobj_and_place
         // The written values: in range, at 0.001 deg, reaching the robtarget.
         assert!(robot.check_range6(&q).is_ok(), "{q:?}");
         assert_eq!(q, crate::precision::quantize_joints(q));
-        let target = iso(&c.wobj.as_ref().expect("wobj").uframe) * iso(given);
+        let target = iso(&c.wobjs.first().expect("wobj").uframe) * iso(given);
         let reached = PLACEMENT.cell_from_robot()
             * robot.tool0(&q)
             * iso(&c.tool.as_ref().expect("tool").tframe);

@@ -1,7 +1,9 @@
 //! The cell file as written ([`RawCell`]) -> a [`Cell`]: one function per YAML section
-//! (`points.rs` the points, `tool.rs` the tool and the work object, `values.rs` the value checks
-//! they share), then the checks that need several sections (the module's one name space, the
-//! speeds, zones and tool named apart, the tool and `motion.tool`, `base: auto` with its points).
+//! (`points.rs` the points and revisits, `process.rs` how each is reached and left, `actions.rs`
+//! what is done there, `tool.rs` the tool, the work objects and the loads, `values.rs` the value
+//! checks they share), then the checks that need several sections (the module's one name space,
+//! the speeds, zones, tool and signals named apart, the tool and `motion.tool`, `base: auto` with
+//! its points).
 //! Every refusal points at the value at fault; a value quoted in a message that is not already
 //! a RAPID name (at most 32 characters) goes through [`crate::excerpt`].
 //!
@@ -11,14 +13,19 @@
 //! it is refused, so every value of the cell appears in the module exactly as given
 //! (quaternions are normalised, and written to 9 decimals).
 
+mod actions;
 mod points;
+mod process;
 mod tool;
 mod values;
 
+#[cfg(test)]
+pub(super) use values::orient_zyx;
+
 use super::raw::{RawBase, RawCell, RawMotion, RawObstacle, RawPlanner, RawPoint, RawRobot};
 use super::{
-    check_grid, defaults, Base, Cell, CellError, Loc, Method, Motion, Obstacle, Planner, Point,
-    ProcFrom, RobotSpec, Target, Tool, Wobj,
+    check_grid, defaults, ActionKind, Base, Cell, CellError, Load, Loc, Method, Motion, Obstacle,
+    Planner, Point, ProcFrom, RobotFrame, RobotSpec, Target, Tool, Wobj,
 };
 use crate::excerpt;
 use crate::geometry::Aabb;
@@ -37,25 +44,33 @@ pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
     let module = identifier(&raw.module, "module")?;
     let robot = robot(path, &raw.robot)?;
     let obstacles = obstacles(&raw.obstacles)?;
-    let points = points::points(&raw.points)?;
+    // The work objects and loads first: points name them.
+    let wobjs = tool::wobjs(raw.wobj.as_ref(), raw.wobjs.as_ref())?;
+    let loads = tool::loads(raw.loads.as_ref())?;
+    let points = points::points(&raw.points, &wobjs, &loads)?;
     let planner = planner(raw.planner.as_ref().map(|p| &p.value))?;
     let raw_motion = raw.motion.as_ref().map(|m| &m.value);
     let mut motion = motion(raw_motion)?;
     let tool = raw.tool.as_ref().map(tool::tool).transpose()?;
-    let wobj = raw.wobj.as_ref().map(tool::wobj).transpose()?;
     tool_and_motion(tool.as_ref(), raw_motion, &points)?;
     if let Some(t) = &tool {
         motion.tool = t.name.clone();
     }
-    one_name_space(
-        &module,
-        loc(&raw.module),
-        &points,
+    let declared = Declared {
+        module: &module,
+        module_loc: loc(&raw.module),
+        tool: tool.as_ref(),
+        wobjs: &wobjs,
+        loads: &loads,
+    };
+    one_name_space(&declared, &points, &motion)?;
+    distinct_data(
         &motion,
-        tool.as_ref(),
-        wobj.as_ref(),
+        raw_motion,
+        tool.is_some(),
+        &raw.points.value,
+        &points,
     )?;
-    distinct_data(&motion, raw_motion, tool.is_some(), &raw.points.value)?;
     if robot.base == Base::Auto {
         every_point_positioned(&points)?;
     }
@@ -68,7 +83,8 @@ pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
         planner,
         motion,
         tool,
-        wobj,
+        wobjs,
+        loads,
     })
 }
 
@@ -126,6 +142,20 @@ fn robot(path: &Path, r: &Spanned<RawRobot>) -> Result<RobotSpec, CellError> {
         Some(c) => Some(dir.join(&c.value)),
         None => None,
     };
+    let frame = match &r.frame {
+        None => RobotFrame::Cell,
+        Some(f) => match f.value.as_str() {
+            "cell" => RobotFrame::Cell,
+            "base" => RobotFrame::Base,
+            other => {
+                return Err(invalid_help(
+                    loc(f),
+                    format!("robot.frame '{}' is not cell or base", excerpt::value(other)),
+                    "the frame the module writes uframes (and wobj0 robtargets) in: cell (the default: the controller's world frame is the cell's) or base (the robot's base frame, an IRC5's world frame unless configured)",
+                ))
+            }
+        },
+    };
     Ok(RobotSpec {
         urdf_path,
         urdf_loc: loc(&r.urdf),
@@ -136,6 +166,8 @@ fn robot(path: &Path, r: &Spanned<RawRobot>) -> Result<RobotSpec, CellError> {
         yaw_deg,
         wrist_deg,
         wrist_loc: r.wrist.as_ref().map(loc),
+        frame,
+        frame_loc: r.frame.as_ref().map(loc).unwrap_or_default(),
     })
 }
 
@@ -265,6 +297,11 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
             Some(z) => via_zone(z)?,
             None => defaults::VIA_ZONE.to_string(),
         },
+        cycle: m.and_then(|m| m.cycle.as_ref()).is_some_and(|c| c.value),
+        cycle_loc: m
+            .and_then(|m| m.cycle.as_ref())
+            .map(loc)
+            .unwrap_or_default(),
     })
 }
 
@@ -304,14 +341,14 @@ pub(super) fn override_proc(cell: &mut Cell, name: &str) -> Result<(), CellError
     })?;
     cell.motion.proc = name.to_string();
     cell.motion.proc_from = ProcFrom::CommandLine;
-    one_name_space(
-        &cell.module,
-        Loc::default(),
-        &cell.points,
-        &cell.motion,
-        cell.tool.as_ref(),
-        cell.wobj.as_ref(),
-    )
+    let declared = Declared {
+        module: &cell.module,
+        module_loc: Loc::default(),
+        tool: cell.tool.as_ref(),
+        wobjs: &cell.wobjs,
+        loads: &cell.loads,
+    };
+    one_name_space(&declared, &cell.points, &cell.motion)
 }
 
 // ---- across sections ----
@@ -365,21 +402,25 @@ struct Named<'a> {
     loc: Loc,
 }
 
-/// RAPID names are case-insensitive and share one name space in a module: the names the module
-/// declares (the module, the tool, the work object, the points and their `CONST robtarget`s,
-/// the routine when `motion.proc` or `--proc` names it, last) must differ from each other and
-/// from the names it uses (`PROC main` by default, every speed and zone,
-/// the tool when it is not declared). A clash of two declared names is refused at the later
-/// one's line; a declared name that a used one takes, at the declared name's line (the module
-/// can rename what it declares, not the data it uses). Exit status 1, like every input error.
-fn one_name_space(
-    module: &str,
+/// The names the module declares outside its points and routine, for [`one_name_space`].
+struct Declared<'a> {
+    module: &'a str,
     module_loc: Loc,
-    points: &[Point],
-    motion: &Motion,
-    tool: Option<&Tool>,
-    wobj: Option<&Wobj>,
-) -> Result<(), CellError> {
+    tool: Option<&'a Tool>,
+    wobjs: &'a [Wobj],
+    loads: &'a [Load],
+}
+
+/// RAPID names are case-insensitive and share one name space in a module: the names the module
+/// declares (the module, the tool, the work objects, the loads, the points and their `CONST
+/// robtarget`s, the routine when `motion.proc` or `--proc` names it, last; a revisit declares
+/// none) must differ from each other and from the names it uses (`PROC main` by default, every
+/// speed and zone, the tool when it is not declared, every signal of an action). A clash of two
+/// declared names is refused at the later one's line; a declared name that a used one takes, at
+/// the declared name's line (the module can rename what it declares, not the data it uses).
+/// Exit status 1, like every input error.
+fn one_name_space(d: &Declared, points: &[Point], motion: &Motion) -> Result<(), CellError> {
+    let (module, module_loc, tool) = (d.module, d.module_loc, d.tool);
     let mut used: Vec<(String, String)> = vec![
         (motion.speed.clone(), "motion.speed".into()),
         (motion.zone.clone(), "motion.zone".into()),
@@ -398,10 +439,18 @@ fn one_name_space(
     }
     for p in points {
         if let Some(s) = &p.speed {
-            used.push((s.clone(), format!("the speed of point '{}'", p.name)));
+            used.push((s.clone(), format!("the speed of {}", p.label())));
         }
         if let Some(z) = &p.zone {
-            used.push((z.clone(), format!("the zone of point '{}'", p.name)));
+            used.push((z.clone(), format!("the zone of {}", p.label())));
+        }
+        for a in &p.actions {
+            if let Some(signal) = a.kind.signal() {
+                used.push((
+                    signal.to_string(),
+                    format!("the signal {signal} (line {})", a.loc.line),
+                ));
+            }
         }
     }
     let mut declared = vec![Named {
@@ -419,7 +468,7 @@ fn one_name_space(
             loc: t.loc,
         });
     }
-    if let Some(w) = wobj {
+    for w in d.wobjs {
         declared.push(Named {
             name: w.name.clone(),
             kind: "work object name",
@@ -427,7 +476,15 @@ fn one_name_space(
             loc: w.loc,
         });
     }
-    for p in points {
+    for l in d.loads {
+        declared.push(Named {
+            name: l.name.clone(),
+            kind: "load name",
+            what: format!("the load (line {})", l.loc.line),
+            loc: l.loc,
+        });
+    }
+    for p in points.iter().filter(|p| p.revisit_of.is_none()) {
         declared.push(Named {
             name: p.name.clone(),
             kind: "point name",
@@ -503,9 +560,9 @@ fn one_name_space(
     Ok(())
 }
 
-/// One speeddata, zonedata or tooldata name the moves use, for [`distinct_data`].
+/// One speeddata, zonedata, tooldata or signal name the module uses, for [`distinct_data`].
 struct Datum {
-    /// 0 speed, 1 zone, 2 tool: the data type.
+    /// The data type: [`SPEED`], [`ZONE`], [`TOOL`], [`OUTPUT`], [`INPUT`], [`ROUTINE`].
     kind: usize,
     /// How a message introduces it ("motion.zone", "point 'P2' zone") and names it as the
     /// datum clashed with ("motion.zone", "the zone of point 'P2'").
@@ -516,76 +573,106 @@ struct Datum {
     loc: Option<Loc>,
 }
 
-/// The speeds, the zones and the tool the moves use (not declared by the module) are RAPID data
-/// of three types: one name cannot be two of them (a clash with a default counts: `zone: v300`
-/// beside the default speed `v300`). The same name twice in one type is one datum, used twice.
-/// Refused at the later of the two in the file (a default has no place). The tool of a `tool:`
-/// block is declared by the module: [`one_name_space`] has checked it.
+/// The kinds of [`Datum`]: RAPID data types (a digital output and a digital input signal are
+/// `signaldo` and `signaldi`) and the default routine, a name the module uses too.
+const SPEED: usize = 0;
+const ZONE: usize = 1;
+const TOOL: usize = 2;
+const OUTPUT: usize = 3;
+const INPUT: usize = 4;
+const ROUTINE: usize = 5;
+
+/// The speeds, the zones, the tool and the signals the module uses (not declared by it) are
+/// RAPID data of five types (speeddata, zonedata, tooldata, signaldo, signaldi), and the default
+/// routine `main` is a name it uses too: one name cannot be two of them (a clash with a default
+/// counts: `zone: v300` beside the default speed `v300`). The same name twice in one type is one
+/// datum, used twice. Refused at the later of the two in the file (a default has no place). The
+/// tool of a `tool:` block is declared by the module: [`one_name_space`] has checked it.
 fn distinct_data(
     motion: &Motion,
     raw: Option<&RawMotion>,
     tool_block: bool,
-    points: &[Spanned<RawPoint>],
+    raw_points: &[Spanned<RawPoint>],
+    points: &[Point],
 ) -> Result<(), CellError> {
     let mut data: Vec<Datum> = Vec::new();
-    let mut given = |kind: usize, what: String, name: &str, at: Option<&Spanned<String>>| {
-        let of = match what.strip_prefix("point ").and_then(|w| w.rsplit_once(' ')) {
-            Some((point, key)) => format!("the {key} of point {point}"),
-            None => what.clone(),
-        };
+    let mut given = |kind: usize, what: String, of: String, name: &str, at: Option<Loc>| {
         data.push(Datum {
             kind,
             what,
             of,
             name: name.to_string(),
-            loc: at.map(loc),
+            loc: at,
         })
     };
+    let key = |what: &str| (what.to_string(), what.to_string());
+    let at = |s: Option<&Spanned<String>>| s.map(loc);
+    let (what, of) = key("motion.speed");
     given(
-        0,
-        "motion.speed".into(),
+        SPEED,
+        what,
+        of,
         &motion.speed,
-        raw.and_then(|m| m.speed.as_ref()),
+        at(raw.and_then(|m| m.speed.as_ref())),
     );
+    let (what, of) = key("motion.zone");
     given(
-        1,
-        "motion.zone".into(),
+        ZONE,
+        what,
+        of,
         &motion.zone,
-        raw.and_then(|m| m.zone.as_ref()),
+        at(raw.and_then(|m| m.zone.as_ref())),
     );
     if let Some(z) = raw.and_then(|m| m.via_zone.as_ref()) {
-        given(1, "motion.via_zone".into(), &motion.via_zone, Some(z));
+        let (what, of) = key("motion.via_zone");
+        given(ZONE, what, of, &motion.via_zone, Some(loc(z)));
     }
     if !tool_block {
+        let (what, of) = key("motion.tool");
         given(
-            2,
-            "motion.tool".into(),
+            TOOL,
+            what,
+            of,
             &motion.tool,
-            raw.and_then(|m| m.tool.as_ref()),
+            at(raw.and_then(|m| m.tool.as_ref())),
         );
     }
-    for p in points {
+    if motion.proc_from == ProcFrom::Default {
+        let of = format!("the module's PROC {}", motion.proc);
+        given(ROUTINE, of.clone(), of, &motion.proc, None);
+    }
+    for (p, point) in raw_points.iter().zip(points) {
         let p = &p.value;
+        // "point 'P2'", or "the revisit of 'home'".
+        let who = match point.revisit_of {
+            None => format!("point '{}'", point.name),
+            Some(_) => format!("the revisit of '{}'", point.name),
+        };
         if let Some(s) = &p.speed {
-            given(
-                0,
-                format!("point '{}' speed", p.name.value),
-                &s.value,
-                Some(s),
-            );
+            let (what, of) = (format!("{who} speed"), format!("the speed of {who}"));
+            given(SPEED, what, of, &s.value, Some(loc(s)));
         }
         if let Some(z) = &p.zone {
-            given(
-                1,
-                format!("point '{}' zone", p.name.value),
-                &z.value,
-                Some(z),
-            );
+            let (what, of) = (format!("{who} zone"), format!("the zone of {who}"));
+            given(ZONE, what, of, &z.value, Some(loc(z)));
+        }
+        for a in &point.actions {
+            let (kind, key) = match &a.kind {
+                ActionKind::SetDo { .. } => (OUTPUT, "set_do"),
+                ActionKind::PulseDo { .. } => (OUTPUT, "pulse_do"),
+                ActionKind::WaitDi { .. } => (INPUT, "wait_di"),
+                ActionKind::WaitTime { .. } | ActionKind::GripLoad { .. } => continue,
+            };
+            if let Some(signal) = a.kind.signal() {
+                let what = format!("{who} {key} signal");
+                let of = format!("the {key} signal of {who} (line {})", a.loc.line);
+                given(kind, what, of, signal, Some(a.loc));
+            }
         }
     }
     // In file order, defaults first; by name (ignoring case), the first datum of each type.
     data.sort_by_key(|d| d.loc.map(|l| (l.line, l.column)));
-    let mut first: BTreeMap<String, [Option<usize>; 3]> = BTreeMap::new();
+    let mut first: BTreeMap<String, [Option<usize>; 6]> = BTreeMap::new();
     for (i, d) in data.iter().enumerate() {
         let kinds = first.entry(d.name.to_ascii_lowercase()).or_default();
         if kinds[d.kind].is_some() {
@@ -599,13 +686,20 @@ fn distinct_data(
                 } else {
                     " (its default)"
                 };
+                let help = if d.kind <= TOOL && other.kind <= TOOL {
+                    "the speed, zone and tool are three RAPID data of three types (speeddata, zonedata, tooldata); give each its own name"
+                } else if d.kind == ROUTINE || other.kind == ROUTINE {
+                    "the routine shares the module's one name space with the data the moves use; name the routine another way (motion.proc) or the data"
+                } else {
+                    "a signal is RAPID data of its own type (signaldo, signaldi), in the module's one name space with the routine, the speeds, zones and the tool; one name cannot be two of them"
+                };
                 return Err(invalid_help(
                     at,
                     format!(
                         "{} '{}' is already the name of {}{default}",
                         d.what, d.name, other.of
                     ),
-                    "the speed, zone and tool are three RAPID data of three types (speeddata, zonedata, tooldata); give each its own name",
+                    help,
                 ));
             }
             // Two defaults (never the same name).

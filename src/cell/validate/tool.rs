@@ -1,8 +1,10 @@
-//! `tool:` and `wobj:`: the tooldata the module declares (name, TCP frame in the flange frame,
-//! load) with the tool's collision shapes, and the work object robtargets are given in.
+//! The data the module declares beside its targets: `tool:` (the tooldata: name, TCP frame in
+//! the flange frame, load, with the tool's collision shapes), `wobj:` or `wobjs:` (the work
+//! objects robtargets are given in) and `loads:` (loaddata for `grip_load`). Their names join
+//! the module's one name space (`mod.rs`).
 
-use super::super::raw::{RawShape, RawTool, RawWobj};
-use super::super::{defaults, CellError, Frame, Tool, ToolGeometry, ToolShape, Wobj};
+use super::super::raw::{RawLoad, RawShape, RawTool, RawWobj};
+use super::super::{defaults, CellError, Frame, Load, Tool, ToolGeometry, ToolShape, Wobj};
 use super::values::{
     bounded, identifier, invalid, invalid_help, loc, mass, pose, position, triple,
 };
@@ -15,7 +17,11 @@ pub(super) fn tool(t: &Spanned<RawTool>) -> Result<Tool, CellError> {
     let name = identifier(&r.name, "tool name").map_err(|e| with_help(e, "the tool block declares tooldata: name it (e.g. tTorch); tool0 is the flange itself, predefined, and is what the moves use without a tool block"))?;
     let (tframe, _) = pose(&r.tframe, "tool.tframe", false)?;
     let mass_kg = match &r.mass {
-        Some(m) => mass(m)?,
+        Some(m) => mass(
+            m,
+            "tool.mass",
+            "the tool's load as tooldata declares it; leave it out for 1 kg",
+        )?,
         None => defaults::TOOL_MASS_KG,
     };
     let cog_mm = match &r.cog {
@@ -137,14 +143,77 @@ fn shape(s: &Spanned<RawShape>) -> Result<ToolShape, CellError> {
     })
 }
 
-/// `wobj:`.
-pub(super) fn wobj(w: &Spanned<RawWobj>) -> Result<Wobj, CellError> {
+/// `wobj:` (one work object) or `wobjs:` (a list), not both.
+pub(super) fn wobjs(
+    one: Option<&Spanned<RawWobj>>,
+    many: Option<&Spanned<Vec<Spanned<RawWobj>>>>,
+) -> Result<Vec<Wobj>, CellError> {
+    match (one, many) {
+        (Some(w), None) => Ok(vec![wobj(w, "wobj")?]),
+        (None, Some(list)) => list.value.iter().map(|w| wobj(w, "wobjs")).collect(),
+        (None, None) => Ok(Vec::new()),
+        (Some(w), Some(list)) => {
+            let (at, this) = if (loc(w).line, loc(w).column) > (loc(list).line, loc(list).column) {
+                (loc(w), "this `wobj:` is the second")
+            } else {
+                (loc(list), "this `wobjs:` list is the second")
+            };
+            Err(invalid_help(
+                at,
+                format!("`wobj:` and `wobjs:` are both given; {this}"),
+                "give one work object as `wobj: { name, uframe }` or several as `wobjs:` (a list of them), not both",
+            ))
+        }
+    }
+}
+
+/// One work object (`key` is `wobj` or `wobjs`, for messages).
+fn wobj(w: &Spanned<RawWobj>, key: &str) -> Result<Wobj, CellError> {
     let r = &w.value;
     let name = identifier(&r.name, "work object name").map_err(|e| with_help(e, "the wobj block declares wobjdata: name it (e.g. wobjTrunk); wobj0 is predefined (the world frame) and is what robtargets use without a wobj block"))?;
-    let (uframe, _): (Frame, _) = pose(&r.uframe, "wobj.uframe", false)?;
+    let what = match key {
+        "wobj" => "wobj.uframe".to_string(),
+        _ => format!("work object '{name}' uframe"),
+    };
+    let (uframe, _): (Frame, _) = pose(&r.uframe, &what, false)?;
     Ok(Wobj {
         name,
         uframe,
+        loc: loc(&r.name),
+    })
+}
+
+/// `loads:`: each a name, a mass (required) and a centre of gravity in the tool frame.
+pub(super) fn loads(raw: Option<&Spanned<Vec<Spanned<RawLoad>>>>) -> Result<Vec<Load>, CellError> {
+    let Some(raw) = raw else {
+        return Ok(Vec::new());
+    };
+    raw.value.iter().map(load).collect()
+}
+
+fn load(l: &Spanned<RawLoad>) -> Result<Load, CellError> {
+    let r = &l.value;
+    let name = identifier(&r.name, "load name").map_err(|e| with_help(e, "a load declares loaddata for grip_load: name it (e.g. loadPart); load0 is predefined (nothing held) and needs no declaration"))?;
+    let Some(m) = &r.mass else {
+        return Err(invalid_help(
+            loc(l),
+            format!("load '{name}' gives no mass"),
+            "a load is { name, mass, cog }: its mass in kg (> 0) is what GripLoad tells the controller the tool holds; cog defaults to [0, 0, 0]",
+        ));
+    };
+    let mass_kg = mass(
+        m,
+        &format!("load '{name}' mass"),
+        "a load is what the tool holds, in kg; for nothing held, grip_load names load0",
+    )?;
+    let cog_mm = match &r.cog {
+        Some(c) => position(c, &format!("load '{name}' cog"))?,
+        None => [0.0; 3],
+    };
+    Ok(Load {
+        name,
+        mass_kg,
+        cog_mm,
         loc: loc(&r.name),
     })
 }

@@ -1,6 +1,8 @@
 //! Value checks shared by the sections: numbers finite and no finer than the module states them,
-//! triples, poses with normalised quaternions, RAPID names. Each refusal points at the value.
+//! triples, poses with normalised quaternions (given as quaternions or as RAPID's `OrientZYX`
+//! angles), RAPID names. Each refusal points at the value.
 
+use super::super::raw::{RawPart, RawPose};
 use super::super::{CellError, Frame, Loc, MAX_MAGNITUDE, QUATERNION_NORM_TOL};
 use crate::excerpt;
 use crate::names::{check_data_name, check_identifier};
@@ -129,20 +131,53 @@ pub(super) fn position(v: &Spanned<Vec<f64>>, what: &str) -> Result<[f64; 3], Ce
     Ok(p)
 }
 
-/// The tool's mass (kg): finite, > 0, at most [`MASS_DECIMALS`] decimals.
-pub(super) fn mass(v: &Spanned<f64>) -> Result<f64, CellError> {
-    bounded(v, "tool.mass", "a number > 0 (kg)")?;
+/// A mass the module writes (the tool's, a load's; kg): finite, > 0 also when rounded to
+/// [`MASS_DECIMALS`] decimals, and no finer. `help` says what a mass of 0 would mean.
+pub(super) fn mass(v: &Spanned<f64>, what: &str, help: &str) -> Result<f64, CellError> {
+    bounded(v, what, "a number > 0 (kg)")?;
     if v.value <= 0.0 {
         return Err(invalid_help(
             loc(v),
             format!(
-                "tool.mass = {} must be a number > 0 (kg)",
+                "{what} = {} must be a number > 0 (kg)",
                 excerpt::number(v.value)
             ),
-            "the tool's load as tooldata declares it; leave it out for 1 kg",
+            help,
         ));
     }
-    finer_than(v.value, MASS_DECIMALS, loc(v), "tool.mass", format!("the module writes the mass to {MASS_DECIMALS} decimals (kg); give no more, so it states what was used"))
+    if precision::round(v.value, MASS_DECIMALS) <= 0.0 {
+        return Err(invalid_help(
+            loc(v),
+            format!(
+                "{what} = {} kg is 0 at the module's {MASS_DECIMALS} decimals",
+                excerpt::number(v.value)
+            ),
+            format!("the module writes the mass to {MASS_DECIMALS} decimals (kg) and the controller refuses a mass of 0: give at least 0.001 kg"),
+        ));
+    }
+    finer_than(v.value, MASS_DECIMALS, loc(v), what, format!("the module writes the mass to {MASS_DECIMALS} decimals (kg); give no more, so it states what was used"))
+}
+
+/// A number within `min ..= max` (`unit` names its unit) with at most `n` decimals, the
+/// precision the module writes it with: `approach`, `retract` (mm), `wait_time` (s).
+pub(super) fn in_range(
+    v: &Spanned<f64>,
+    what: &str,
+    (min, max): (f64, f64),
+    n: usize,
+    unit: &str,
+    help: &str,
+) -> Result<f64, CellError> {
+    let rule = format!("a number within {min} .. {max} ({unit})");
+    bounded(v, what, &rule)?;
+    if !(min..=max).contains(&v.value) {
+        return Err(invalid_help(
+            loc(v),
+            format!("{what} = {} must be {rule}", excerpt::number(v.value)),
+            help,
+        ));
+    }
+    finer_than(v.value, n, loc(v), what, format!("the module writes {what} to {n} decimals ({unit}); give no more, so it states what was used"))
 }
 
 /// Checks that a joint value has at most [`JOINT_DECIMALS`] decimals; returns it rounded to them.
@@ -188,10 +223,14 @@ pub(super) fn quaternion(v: &Spanned<Vec<f64>>, what: &str) -> Result<[f64; 4], 
     Ok(q.map(|x| x / norm))
 }
 
-/// `[[x, y, z], [q1, q2, q3, q4]]`, and with `conf_allowed` optionally a third list
-/// `[cf1, cf4, cf6, cfx]`.
+/// The help line of a pose's shape.
+const POSE_HELP: &str = "positions in mm in the frame the key names; orientations as quaternions [w, x, y, z] or { zyx: [ez, ey, ex] } (deg, RAPID's OrientZYX)";
+
+/// `[[x, y, z], ORIENTATION]`, and with `conf_allowed` optionally a third list
+/// `[cf1, cf4, cf6, cfx]`; the orientation a quaternion `[q1, q2, q3, q4]` or `{ zyx: [ez, ey,
+/// ex] }` ([`orient_zyx`]).
 pub(super) fn pose(
-    v: &Spanned<Vec<Spanned<Vec<f64>>>>,
+    v: &RawPose,
     what: &str,
     conf_allowed: bool,
 ) -> Result<(Frame, Option<ConfData>), CellError> {
@@ -208,19 +247,105 @@ pub(super) fn pose(
             return Err(invalid_help(
                 loc(v),
                 format!("{what} must be {shape}, found {} lists", parts.len()),
-                "positions in mm in the frame the key names; quaternions [w, x, y, z]",
+                POSE_HELP,
             ))
         }
     };
-    let frame = Frame {
-        pos_mm: position(p, &format!("{what} position"))?,
-        quat_wxyz: quaternion(q, &format!("{what} quaternion"))?,
+    let pos_mm = position(&numbers(p, what)?, &format!("{what} position"))?;
+    let quat_wxyz = match &q.value {
+        RawPart::Zyx(angles) => zyx(angles, &format!("{what} zyx"))?,
+        RawPart::Numbers(_) => quaternion(&numbers(q, what)?, &format!("{what} quaternion"))?,
     };
+    let frame = Frame { pos_mm, quat_wxyz };
     let conf = match c {
-        Some(c) => Some(confdata(c, &format!("{what} confdata"))?),
+        Some(c) => Some(confdata(&numbers(c, what)?, &format!("{what} confdata"))?),
         None => None,
     };
     Ok((frame, conf))
+}
+
+/// A part of a pose that must be a list of numbers (a position, a quaternion, confdata).
+fn numbers(part: &Spanned<RawPart>, what: &str) -> Result<Spanned<Vec<f64>>, CellError> {
+    match &part.value {
+        RawPart::Numbers(v) => Ok(Spanned {
+            value: v.clone(),
+            referenced: part.referenced,
+            defined: part.defined,
+        }),
+        RawPart::Zyx(_) => Err(invalid_help(
+            loc(part),
+            format!("{what}: `zyx` gives an orientation, which stands second in a pose"),
+            POSE_HELP,
+        )),
+    }
+}
+
+/// `{ zyx: [ez, ey, ex] }` (deg): RAPID's `OrientZYX(ez, ey, ex)`, as a normalised quaternion.
+fn zyx(v: &Spanned<Vec<f64>>, what: &str) -> Result<[f64; 4], CellError> {
+    finite(v, what)?;
+    match v.value.as_slice() {
+        [ez, ey, ex] => Ok(orient_zyx(*ez, *ey, *ex)),
+        other => Err(invalid_help(
+            loc(v),
+            format!("{what} must have 3 numbers [ez, ey, ex], found {}", other.len()),
+            "{ zyx: [ez, ey, ex] } is RAPID's OrientZYX(ez, ey, ex): the rotation about z by ez, then about the new y by ey, then about the new x by ex, in degrees",
+        )),
+    }
+}
+
+/// RAPID's `OrientZYX(ez, ey, ex)` (deg): the rotation `Rz(ez) Ry(ey) Rx(ex)` as a unit
+/// quaternion `[w, x, y, z]`. Of its two signs, the one with `w > 0` (with `w = 0`, the first
+/// component that is not 0 positive), so a cell states one quaternion per rotation. The sines
+/// and cosines of whole multiples of 45 deg are exact ([`sin_cos_deg`]), so `[0, 180, 0]` is
+/// `[0, 0, 1, 0]`, not a quaternion with a 6e-17 residue.
+pub(in crate::cell) fn orient_zyx(ez: f64, ey: f64, ex: f64) -> [f64; 4] {
+    let half = |a: f64| sin_cos_deg(a / 2.0);
+    let (sz, cz) = half(ez);
+    let (sy, cy) = half(ey);
+    let (sx, cx) = half(ex);
+    // qz * qy * qx, each [cos, sin * axis], multiplied out.
+    let q = [
+        cz * cy * cx + sz * sy * sx,
+        cz * cy * sx - sz * sy * cx,
+        cz * sy * cx + sz * cy * sx,
+        sz * cy * cx - cz * sy * sx,
+    ];
+    // A product of unit quaternions: normalised where rounding left it more than a few ulps off
+    // (else exact values such as sqrt(1/2) would lose their last bit to the division).
+    let norm = q.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let q = if (norm - 1.0).abs() > 4.0 * f64::EPSILON {
+        q.map(|x| x / norm)
+    } else {
+        q
+    };
+    let first = q.iter().copied().find(|x| *x != 0.0).unwrap_or(1.0);
+    let q = if first < 0.0 { q.map(|x| -x) } else { q };
+    // No -0.0 (the module writes no `-0`).
+    q.map(|x| if x == 0.0 { 0.0 } else { x })
+}
+
+/// `(sin, cos)` of `deg` degrees, exact at whole multiples of 45 deg (0, +-1, +-sqrt(1/2)).
+fn sin_cos_deg(deg: f64) -> (f64, f64) {
+    let eighths = deg / 45.0;
+    if eighths.fract() != 0.0 || eighths.abs() > 1e15 {
+        return deg.to_radians().sin_cos();
+    }
+    let r = std::f64::consts::FRAC_1_SQRT_2;
+    // (sin, cos) at k * 45 deg, k = 0..7.
+    const TABLE: [(f64, f64); 8] = [
+        (0.0, 1.0),
+        (1.0, 1.0),
+        (1.0, 0.0),
+        (1.0, -1.0),
+        (0.0, -1.0),
+        (-1.0, -1.0),
+        (-1.0, 0.0),
+        (-1.0, 1.0),
+    ];
+    let (s, c) = TABLE[eighths.rem_euclid(8.0) as usize];
+    let scale = |x: f64, odd: bool| if odd { x * r } else { x };
+    let odd = eighths.rem_euclid(2.0) == 1.0;
+    (scale(s, odd), scale(c, odd))
 }
 
 /// `[cf1, cf4, cf6, cfx]`: integers, cfx 0..7.

@@ -438,8 +438,7 @@ pub fn failure_scene(
             } => Some(*wrist_centre_mm),
             Target::Robtarget { pose, .. } => {
                 let uframe = cell
-                    .wobj
-                    .as_ref()
+                    .wobj_of(cell.points.get(i)?)
                     .map_or(Isometry3::identity(), |w| w.uframe.isometry());
                 let p = uframe * Point3::from(pose.pos_mm);
                 Some([p.x, p.y, p.z])

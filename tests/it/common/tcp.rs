@@ -108,7 +108,7 @@ pub fn check_tcp(
             Isometry3::identity()
         }
     };
-    let uframe = match (&cell.wobj, module.wobjdata.as_slice()) {
+    let uframe = match (cell.wobjs.first(), module.wobjdata.as_slice()) {
         (Some(w), [(name, d)]) => {
             if *name != w.name {
                 fail(format!(
@@ -139,7 +139,7 @@ pub fn check_tcp(
 
     // The moves: the tool and work object, the speed and zone of the move into each target.
     let tool = tool_name.unwrap_or_else(|| cell.motion.tool.clone());
-    let wobj = cell.wobj.as_ref().map(|w| w.name.clone());
+    let wobj = cell.wobjs.first().map(|w| w.name.clone());
     let mut next_point = 0;
     for m in &module.move_args {
         if m.tool != tool || m.wobj != wobj {

@@ -3,7 +3,8 @@
 //! line edits; structured edits of the parsed tree: numbers to NaN, infinities, huge, negative,
 //! many decimals; keys dropped, duplicated, misspelled, added; lists lengthened, shortened,
 //! emptied; strings huge or taken from RAPID's reserved names; nodes swapped; sections grafted
-//! from another cell, e.g. a `tool:`, `wobj:` or robtarget points; nesting deep),
+//! from another cell, e.g. a `tool:`, `wobj:` or robtarget points; the keys of docs/cell.md
+//! among the keys added; nesting deep),
 //! each run through the library's load and validation, and where it validates with a few points,
 //! the place stage with the IRB 1400 (one placed cell in [`RUN_EVERY`] also through the rest of
 //! the run, on a coarse grid). Every case must end without a panic, in an `Ok` or in a
@@ -389,9 +390,19 @@ fn the_tree_reads_back_what_it_writes() {
             let mut c = c.clone();
             for p in &mut c.points {
                 p.loc = Default::default();
+                p.arrival_loc = Default::default();
+                p.approach_loc = Default::default();
+                p.retract_loc = Default::default();
+                for a in &mut p.actions {
+                    a.loc = Default::default();
+                }
                 if let Target::Xyz { branch_loc, .. } = &mut p.target {
                     *branch_loc = Default::default();
                 }
+            }
+            c.motion.cycle_loc = Default::default();
+            for l in &mut c.loads {
+                l.loc = Default::default();
             }
             if let Some(t) = &mut c.tool {
                 t.loc = Default::default();
@@ -399,10 +410,10 @@ fn the_tree_reads_back_what_it_writes() {
                     s.loc = Default::default();
                 }
             }
-            if let Some(w) = &mut c.wobj {
+            for w in &mut c.wobjs {
                 w.loc = Default::default();
             }
-            (c.points, c.motion, c.tool, c.wobj)
+            (c.points, c.motion, c.tool, c.wobjs, c.loads)
         };
         assert_eq!(unplaced(&a), unplaced(&b), "{name}");
     }
