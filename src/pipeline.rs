@@ -10,7 +10,7 @@
 //! wrapped in [`Error`] with the place in the cell file they point at.
 
 use crate::cell::{self, Cell};
-use crate::collision::CollisionModel;
+use crate::collision::{CollisionModel, GridCheck};
 use crate::error::{Error, Failure};
 use crate::excerpt;
 use crate::output::program::{self, RobotFacts};
@@ -24,6 +24,7 @@ use crate::refine::{self, Refined};
 use crate::robot::{Coupling, Robot, RobotError};
 use crate::timing;
 use std::path::Path;
+use std::sync::Arc;
 use std::time::Instant;
 
 /// The load stage's result: the cell, its text (for pointing at lines) and its robot.
@@ -115,9 +116,10 @@ impl Loaded {
 }
 
 /// The inspect stage's result: the collision model of the placed robot and the grid over axes
-/// 1..3 with every node inspected (paper section 3).
+/// 1..3 (paper section 3), its nodes inspected as the plan stage's waves reach them
+/// (`plan::cspace`: the same codes as inspecting every node first).
 pub struct Inspected {
-    pub model: CollisionModel,
+    pub model: Arc<CollisionModel>,
     pub cspace: CSpace,
 }
 
@@ -199,24 +201,19 @@ pub fn sketch(job: &Loaded) -> Result<Sketch, Error> {
 }
 
 /// Inspect: the collision model at the placement and the grid at spacing `grid_deg` over the
-/// robot's ranges of axes 1..3, every node inspected.
+/// robot's ranges of axes 1..3, each node inspected when a wave first reads it (nothing
+/// inspected yet: `CSpace::inspect_all` inspects the whole grid).
 pub fn inspect(job: &Loaded, placed: &Placed, grid_deg: f64) -> Inspected {
-    inspect_observed(job, placed, grid_deg, &Silent)
-}
-
-/// [`inspect`], reporting the grid fill to `progress` (one unit per axis-1 slice).
-pub fn inspect_observed(
-    job: &Loaded,
-    placed: &Placed,
-    grid_deg: f64,
-    progress: &dyn Progress,
-) -> Inspected {
-    let model = CollisionModel::of_cell(&job.cell, &job.robot, placed.placement);
+    let model = Arc::new(CollisionModel::of_cell(
+        &job.cell,
+        &job.robot,
+        placed.placement,
+    ));
     let a = &job.robot.controller.axes;
     let ranges = [0, 1, 2].map(|k| [a[k].min_deg, a[k].max_deg]);
     let grid = Grid::over(ranges, grid_deg);
-    progress.stage("inspecting the grid", grid.dims[0] as u64);
-    let cspace = CSpace::build_observed(grid, &model.grid_check(grid_deg), progress);
+    let check = GridCheck::new(Arc::clone(&model), grid_deg);
+    let cspace = CSpace::lazy(grid, Arc::new(check));
     Inspected { model, cspace }
 }
 
@@ -400,7 +397,7 @@ pub fn run_observed(
 ) -> Result<Outcome, Halted> {
     progress.stage("placing the robot", 0);
     let placed = place(job)?;
-    let inspected = inspect_observed(job, &placed, grid_deg, progress);
+    let inspected = inspect(job, &placed, grid_deg);
     progress.stage("planning and proving the moves", 0);
     let paper = match route(job, &placed, &inspected, method) {
         // The paper's method alone: search, shorten, merge, every via a stop point, timed.
@@ -433,8 +430,10 @@ pub struct Attempt {
     pub planning_time_ms: f64,
 }
 
-/// The three methods of the paper on one inspected grid.
+/// The three methods of the paper on one inspected grid: the whole grid inspected first, as the
+/// paper does (so no method's planning time holds the inspection).
 pub fn compare(job: &Loaded, placed: &Placed, inspected: &Inspected) -> Vec<Attempt> {
+    inspected.cspace.inspect_all(&Silent);
     Method::ALL
         .into_iter()
         .map(|method| {

@@ -324,7 +324,7 @@ pub(super) fn ascending(v: &[f64]) -> bool {
     v.windows(2).all(|w| w[0] <= w[1])
 }
 
-impl GridCheck<'_> {
+impl GridCheck {
     /// The codes of nodes `lo..hi` of a column for cylinder `s` against the boxes `set` (indices
     /// into `s.boxes`): the run's proofs (module doc), else its halves, else node by node.
     /// `a.deg` must be ascending.

@@ -310,7 +310,7 @@ impl PlanError {
 }
 
 /// The grid asks the collision model, on its spacing, which nodes are free and how deep.
-impl cspace::Inspector for GridCheck<'_> {
+impl cspace::Inspector for GridCheck {
     fn column_bytes(&self) -> usize {
         GridCheck::column_bytes(self)
     }
@@ -505,7 +505,7 @@ fn longest_first(points: &[PlacedPoint]) -> Vec<usize> {
 fn route_leg(
     cs: &CSpace,
     model: &CollisionModel,
-    check: &GridCheck<'_>,
+    check: &GridCheck,
     points: &[PlacedPoint],
     i: usize,
     method: Method,
