@@ -216,11 +216,12 @@ pub fn each_column(
     }
 }
 
-/// The columns of a block along axes 1 and 2 (the last blocks of an axis may hold fewer). A
-/// block of the trunk's grid at 1 deg holds 16 columns of 136 nodes: about one look of the
-/// row wave's front across it; blocks of 2 x 8 and 8 x 8 columns took more instructions
+/// The columns of a block along axes 1 and 2 (the last blocks of an axis may hold fewer): at
+/// 1 deg over the IRB 1400's axis 3, 8 columns of 136 nodes. Smaller blocks inspect less past
+/// what the waves read, larger ones share more of a slice's work; whole runs at 1 deg took the
+/// fewest instructions from 1 x 4 to 2 x 4 columns, 3 % more at 4 x 4, 15 % more at 8 x 8
 /// (`benches/README.md`).
-pub const BLOCK_COLUMNS: [usize; 2] = [4, 4];
+pub const BLOCK_COLUMNS: [usize; 2] = [2, 4];
 
 /// Blocks inspected one after another on the asking thread below this many at once; from it on
 /// all cores (`crate::parallel`: handing work to threads costs about as much as inspecting a
