@@ -1,10 +1,11 @@
 //! The whole pipeline on `cells/trunk.yaml` after the load stage (loaded once, outside the
-//! timing: place, inspection, planning, timing, rendering), at 2 and 1 degree, plus the grid
+//! timing: place, inspection, planning, refining and timing, rendering), at 2 and 1 degree, plus the grid
 //! inspection alone.
 //! Run: `cargo bench --bench pipeline`. Figures are recorded in benches/README.md.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use gen_rapid::pipeline;
+use gen_rapid::pipeline::{self, Options};
+use gen_rapid::progress::Silent;
 use std::hint::black_box;
 use std::path::Path;
 use std::time::Duration;
@@ -23,13 +24,16 @@ fn whole(c: &mut Criterion) {
     for grid in [2.0, 1.0] {
         g.bench_function(format!("pipeline_{grid}deg"), |b| {
             b.iter(|| {
-                let out = pipeline::run(&job, method, grid).expect("plan");
+                let out = pipeline::run(&job, &Options::new(method, grid)).expect("plan");
                 black_box(out.rendered.text.len())
             })
         });
         let placed = pipeline::place(&job).expect("place");
         g.bench_function(format!("grid_inspection_{grid}deg"), |b| {
-            b.iter(|| black_box(pipeline::inspect(&job, &placed, grid).cspace.free_count()))
+            b.iter(|| {
+                let inspected = pipeline::inspect(&job, &placed, grid);
+                black_box(inspected.cspace.free_count())
+            })
         });
     }
     g.finish();

@@ -1,4 +1,5 @@
 //! Whole-pipeline timing by stage, for benches/README.md: `cargo run --release --example profile -- CELL GRID`.
+use gen_rapid::output::rapid::ModuleTemplate;
 use gen_rapid::pipeline;
 use gen_rapid::plan::leg::{LegGraph, ToolMemo, WristSchedule};
 use gen_rapid::plan::{wave, Method};
@@ -56,18 +57,21 @@ fn main() {
             );
         }
     }
+    let template = ModuleTemplate::embedded();
     for m in Method::ALL {
         let t = Instant::now();
-        match pipeline::plan(&job, &placed, &inspected, m) {
-            Ok(plan) => {
+        match pipeline::route(&job, &placed, &inspected, m) {
+            Ok(route) => {
                 let planned = t.elapsed();
-                let plan = pipeline::time(&job, &placed, plan);
-                let text = pipeline::render(&job, &placed, &plan).map(|r| r.text.len());
+                let shortcut = job.cell.planner.shortcut;
+                let plan = pipeline::refine(&job, &placed, &inspected, route, shortcut).plan;
+                let refined = t.elapsed();
+                let text = pipeline::render(&job, &placed, &plan, &template).map(|r| r.text.len());
                 eprintln!(
-                    "{m}: plan {planned:?}, with time and render {:?}, {} moves, {:.1} deg, {} bytes",
+                    "{m}: plan {planned:?}, with refine {refined:?}, with render {:?}, {} moves, {:.1} deg, {} bytes",
                     t.elapsed(),
-                    plan.moves(),
-                    plan.path_length_deg(),
+                    plan.route.moves(),
+                    plan.route.path_length_deg(),
                     text.unwrap_or(0)
                 );
             }

@@ -134,7 +134,7 @@ impl Error {
                 ..
             } => {
                 use crate::robot::controller::MAX_AXIS_DEG as R;
-                Some(format!("the fault is in the URDF named above: gen-rapid reads one serial chain of six revolute joints up to tool0, finite numbers, lengths within {} km, ranges within -{R} .. {R} deg, cylinders on the links of joints 1..3 (README, \"The cell file\")", crate::cell::MAX_MAGNITUDE / 1e6))
+                Some(format!("the fault is in the URDF named above: gen-rapid reads one serial chain of six revolute joints up to tool0, finite numbers, lengths within {} km, ranges within -{R} .. {R} deg, cylinders on the links of joints 1..3 (README, \"The cell file\")", crate::input::MAX_MAGNITUDE / 1e6))
             }
             Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
             Error::Place(PlaceError::Range { .. }) => Some("joint values are controller values (what a jointtarget holds) and must lie in the robot's ranges, all six axes; a point without axes 4..6 takes robot.wrist".into()),

@@ -1,12 +1,21 @@
 //! Leaf: reads an input file (the cell, the URDF, the controller file, a `--template`) whole,
 //! but at most [`MAX_INPUT_BYTES`]: a path naming `/dev/zero`, a device or a runaway file ends
-//! in an error, not in the memory running out (a cell is a few KB, a URDF a few hundred).
+//! in an error, not in the memory running out (a cell is a few KB, a URDF a few hundred). And
+//! [`MAX_MAGNITUDE`], the bound of every number the cell and the URDF give.
 
 use std::io::Read;
 use std::path::Path;
 
 /// The largest input file read (64 MiB).
 pub const MAX_INPUT_BYTES: u64 = 64 * 1024 * 1024;
+
+/// The largest magnitude of any number a cell gives (positions, box corners, shapes, frames,
+/// the cog and base in mm, the clearance, the mass in kg, the yaw and joint values in deg):
+/// 1 km in mm; a URDF's lengths are held to the same 1 km. Far beyond any work cell, and small
+/// enough that every value the module writes (tooldata, wobjdata, robtargets) is a RAPID `num`
+/// literal of a few digits and the geometry keeps its precision; 1e300 in a `cog` would
+/// otherwise be written as 301 digits, which no controller loads.
+pub const MAX_MAGNITUDE: f64 = 1e6;
 
 /// The bytes of the file at `path`, or an error if it cannot be read or holds more than
 /// [`MAX_INPUT_BYTES`].

@@ -4,7 +4,7 @@
 //! typed results (ARCHITECTURE.md has the code map and the invariants):
 //!
 //! ```text
-//! load (cell, robot) -> place -> inspect (collision) -> plan -> time -> render (output)
+//! load (cell, robot) -> place -> inspect (collision) -> plan -> refine (with time) -> render (output)
 //! ```
 
 // Leaves, used by any stage.
@@ -23,11 +23,11 @@ pub mod zeroed;
 
 // The stages, in pipeline order.
 
-// load, part 1: the cell file
-pub mod cell;
-
-// load, part 2: URDF, controller convention, kinematics, IK
+// load: URDF, controller convention, kinematics, IK
 pub mod robot;
+
+// load: the cell file
+pub mod cell;
 
 // place: where the robot stands, every point on six axes
 pub mod place;
@@ -41,7 +41,7 @@ pub mod plan;
 // time: manipulation time per move
 pub mod timing;
 
-// refine: the shortcut pass and the certified zones at waypoints (issue 10)
+// refine: the shortcut pass, the certified zones at waypoints, the plan the module writes
 pub mod refine;
 
 // render: the RAPID module, pictures, reports
@@ -50,4 +50,6 @@ pub mod output;
 // The order of the stages, the errors, the commands.
 pub mod cli;
 pub mod error;
+/// The load stage: reads the cell file and its robot files into `Loaded`.
+pub mod load;
 pub mod pipeline;

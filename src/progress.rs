@@ -1,4 +1,4 @@
-//! Progress of a long run, as the stages report it (issue 11): a leaf trait the pipeline calls
+//! Progress of a long run, as the stages report it: a leaf trait the pipeline calls
 //! and the command line implements (`cli::progress`, an `indicatif` bar on a terminal).
 //!
 //! Reporting progress changes nothing a stage computes: [`Silent`] is what every stage gets

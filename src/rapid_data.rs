@@ -2,7 +2,7 @@
 //! (`fine`, `z0` .. `z200`) a cell may name, as typed tables.
 //!
 //! A leaf: it reads no files and depends on nothing in the crate. The cell loader uses it to
-//! know a speed or zone name, the time estimate to read `v_tcp` / `v_ori` (issue 10), the zone
+//! know a speed or zone name, the time estimate to read `v_tcp` / `v_ori`, the zone
 //! certification to know whether a zone is a stop point.
 //!
 //! Source: ABB, *Technical reference manual - RAPID Instructions, Functions and Data types*,

@@ -1,5 +1,5 @@
 //! Large buffers that start all zero and cost only the pages a computation touches (beyond the
-//! paper, for speed only: issue 11).
+//! paper, for speed only).
 //!
 //! A leg's waves keep bit planes and numbers over the whole grid (`plan::wave`: 1.2 MB a plane
 //! at 1 deg, several a wave, two waves a search), yet a wave numbers the ball between its two

@@ -5,11 +5,12 @@
 //! unique in the module's one name space, boxes well formed, values no finer than the module
 //! can state them). Every error carries a [`Loc`] (line:column in the cell file) so the user
 //! sees where the input is at fault. Lengths are millimetres and angles degrees, as in RAPID;
-//! paths are relative to the cell file. This module knows nothing of URDF or planning; it names
-//! three types of later stages: the IK [`Branch`] an `xyz` point may force, the [`ConfData`] a
-//! robtarget may ask for, and the search [`Method`].
+//! paths are relative to the cell file. This module reads no URDF and plans nothing: it says
+//! what a point may ask of the robot in the robot's own terms (the IK [`Branch`] an `xyz` point
+//! may force, the [`ConfData`] a robtarget may ask for), and names the search [`Method`] the
+//! planner runs.
 //!
-//! What the cell says about the tool and the TCP (issue 9): a `tool:` block ([`Tool`]: tooldata
+//! What the cell says about the tool and the TCP: a `tool:` block ([`Tool`]: tooldata
 //! name, TCP frame in the flange frame, load, collision shapes), a `wobj:` block ([`Wobj`]: the
 //! user frame robtargets are given in; without it wobj0, whose frame is the cell frame), points
 //! as robtargets ([`Target::Robtarget`]: the TCP pose in the work object, with or without
@@ -35,7 +36,6 @@ mod validate;
 pub use unsupported::unsupported;
 
 use crate::geometry::Aabb;
-use crate::plan::search::Method;
 use crate::robot::ik::six::ConfData;
 use crate::robot::ik::Branch;
 use serde_saphyr::Location;
@@ -66,16 +66,8 @@ pub enum Base {
     Auto,
 }
 
-/// How far a quaternion's norm may be off 1 before it is refused (issue 9's contract).
+/// How far a quaternion's norm may be off 1 before it is refused.
 pub const QUATERNION_NORM_TOL: f64 = 1e-3;
-
-/// The largest magnitude of any number a cell gives (positions, box corners, shapes, frames,
-/// the cog and base in mm, the clearance, the mass in kg, the yaw and joint values in deg):
-/// 1 km in mm. Far beyond any work cell, and small enough that every value the module writes
-/// (tooldata, wobjdata, robtargets) is a RAPID `num` literal of a few digits and the geometry
-/// keeps its precision; 1e300 in a `cog` would otherwise be written as 301 digits, which no
-/// controller loads.
-pub const MAX_MAGNITUDE: f64 = 1e6;
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct RobotSpec {
@@ -365,13 +357,45 @@ impl Point {
     }
 }
 
+/// The three path searches of the paper (section 4), as `planner.method` names them (the
+/// searches themselves are `plan::search`'s).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Method {
+    Neighboring,
+    DepthFirst,
+    Extensile,
+}
+
+impl Method {
+    pub const ALL: [Method; 3] = [Method::Neighboring, Method::DepthFirst, Method::Extensile];
+
+    /// The name the cell file and the command line use.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Neighboring => "neighboring",
+            Method::DepthFirst => "depth-first",
+            Method::Extensile => "extensile",
+        }
+    }
+
+    pub fn parse(s: &str) -> Option<Method> {
+        Method::ALL.into_iter().find(|m| m.name() == s)
+    }
+}
+
+impl std::fmt::Display for Method {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct Planner {
     pub method: Method,
     pub grid_deg: f64,
     pub clearance_mm: f64,
-    /// `planner.shortcut`: after the paper's method, the continuous shortcut pass (issue 10;
-    /// `refine`). `false` keeps the paper's method alone.
+    /// `planner.shortcut`: after the paper's method, the continuous shortcut pass (`refine`).
+    /// `false` keeps the paper's method alone.
     pub shortcut: bool,
 }
 

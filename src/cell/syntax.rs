@@ -1,7 +1,7 @@
-//! The YAML reader's refusals, said for a cell file: where the fault is, one line on what is
-//! wrong, and a help line for the common slips (wrong indentation, a tab, an unclosed `[` or
-//! `{`, a key given twice, a missing `:` or the space after it, a misspelled key, a word where a
-//! number belongs).
+//! The YAML reader's refusals, said for a cell file (long: each common slip is read from the
+//! text in its own way): where the fault is, one line on what is wrong, and a help line for the
+//! common slips (wrong indentation, a tab, an unclosed `[` or `{`, a key given twice, a missing
+//! `:` or the space after it, a misspelled key, a word where a number belongs).
 //!
 //! The reader (serde-saphyr over the granit parser) reports a structured error with a location;
 //! where that location is not where the fault is, this module moves it there from the text:

@@ -135,7 +135,7 @@ fn refusals_name_the_key_and_its_place() {
             "clearance",
             9,
         ),
-        // The identifier rule of the renderer, applied at the line (was exit 4 at render time).
+        // The identifier rule of the renderer, applied at the line (not exit 4 at render time).
         (
             format!("{MINIMAL}motion:\n  speed: If\n"),
             "motion.speed 'If' is not a valid RAPID name: \"IF\" is a RAPID reserved word",

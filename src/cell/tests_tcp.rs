@@ -1,5 +1,5 @@
-//! Tests of the cell stage's tool, work object, robtarget and per-point motion keys (issue 9)
-//! and `robot.controller` (issue 8): what they give, and every refusal at its line.
+//! Tests of the cell stage's tool, work object, robtarget and per-point motion keys and
+//! `robot.controller`: what they give, and every refusal at its line.
 
 use super::*;
 

@@ -17,7 +17,7 @@ use std::path::Path;
 /// right after loading: before the summary line on success, before the error on failure.
 /// Never on stdout.
 pub fn warn(job: &Loaded) {
-    for w in job.warnings() {
+    for w in crate::pipeline::warnings(job) {
         eprintln!("{w}");
     }
 }

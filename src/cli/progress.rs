@@ -1,4 +1,4 @@
-//! The progress bar of a long run (issue 11): an `indicatif` bar on stderr, drawn only when
+//! The progress bar of a long run: an `indicatif` bar on stderr, drawn only when
 //! stderr is a terminal and only once the run has lasted [`SHOW_AFTER`] (a short run never
 //! flickers a bar), cleared before the summary line or the error is printed. When stderr is
 //! not a terminal (a pipe, a file, CI) nothing is drawn at all.

@@ -72,7 +72,13 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
         Some(bar) => bar,
         None => &Silent,
     };
-    let planned = pipeline::run_observed(&job, method, grid_deg, &template, progress);
+    let options = pipeline::Options {
+        method,
+        grid_deg,
+        template,
+        progress,
+    };
+    let planned = pipeline::run(&job, &options);
     // The bar is cleared before anything else reaches stderr.
     drop(bar);
     let out = match planned {
@@ -96,29 +102,24 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     for w in &out.warnings {
         eprintln!("{w}");
     }
-    let clearance = match &out.plan.min_clearance {
+    let clearance = match &out.plan.least {
         Some(c) => format!("smallest clearance {:.1} mm", c.mm),
         None => "no obstacles".to_string(),
     };
-    let time = match &out.plan.estimate {
-        Some(e) => format!(", about {:.2} s of motion", e.total_s),
-        None => String::new(),
-    };
-    let (zoned, vias) = out.plan.zoned_vias(&out.placed.points);
+    let time = format!(", about {:.2} s of motion", out.plan.total_s);
+    let (zoned, vias) = out.plan.zoned_vias();
     let zoned = format!(
         ", zoned vias: {zoned} of {vias} (via zone {})",
         out.rendered.program.header.via_zone
     );
-    let paper = match out.plan.paper {
-        Some(p) => format!(
-            ", the paper's method alone: {} move{}, {:.2} s",
-            p.moves,
-            if p.moves == 1 { "" } else { "s" },
-            p.time_s
-        ),
-        None => String::new(),
-    };
-    let moves = out.plan.moves();
+    let p = out.plan.paper;
+    let paper = format!(
+        ", the paper's method alone: {} move{}, {:.2} s",
+        p.moves,
+        if p.moves == 1 { "" } else { "s" },
+        p.time_s
+    );
+    let moves = out.plan.route.moves();
     Ok(format!(
         "gen-rapid: {}: {} move{}{time}{zoned}{paper}, {}, {} on a {} deg grid, {:.2} s",
         opts.cell.display(),
@@ -152,7 +153,7 @@ fn files(
             &out.inspected.cspace,
             &in_range,
             &out.placed.points,
-            &[&out.plan],
+            &[&out.plan.route],
             &title,
         )?;
         files.push((path.clone(), text));

@@ -21,9 +21,9 @@
 //! all. So the free bit stays the node test's (a dropped pair's exact test would answer free,
 //! above the clearance by more than the margin), and every depth stays a lower bound. The
 //! depths only decide which steps the codes prove before the whole-move proof is asked
-//! (`grid.rs`), so shallower ones cost the planner time, never a different answer; runs that
-//! stop at the clearance instead of at `deep_mm` took about 13 % off the trunk's 1 deg
-//! build (`benches/README.md`).
+//! (`grid.rs`), so shallower ones cost the planner time, never a different answer; runs stop
+//! at the clearance rather than at `deep_mm`, which makes the grid build cheaper
+//! (`benches/README.md`).
 //!
 //! *Blocked.* A ball of radius `rho = min(r, L/2)` about a point of the cylinder's axis at
 //! least `rho` from both ends lies in the cylinder (the inner capsule of `geometry`). With `s`
@@ -47,7 +47,7 @@
 //! the middle must touch the box), and the rim ball proves the
 //! cap's rim near a box, which the inner capsule (held `rho` back from the caps) cannot. A
 //! blocked proof changes no code: its nodes are 0, what their node tests would find; it only
-//! spares those tests (on the trunk's 1 deg build about 28 % of the leaves). Runs of up to
+//! spares those tests (a good part of the leaves: `benches/README.md`). Runs of up to
 //! `2 LEAF_NODES` nodes try the rim ball too where the inner capsule's bound fails; longer
 //! runs do not (their `m` needs a deep penetration, which the inner capsule mostly shows
 //! already: there the ball cost more than it spared).
@@ -72,6 +72,7 @@
 //! its two central nodes, inside the run), and `h` is the larger of its distances to the run's
 //! first and last values: every node of the run lies within `h` of it.
 
+use super::angles::Angles;
 use super::clear::{axis_nearest, link_clear_near};
 use super::grid::{GridCheck, ARM_BITS, DEPTH_LEVELS};
 use crate::cell::Obstacle;
@@ -80,8 +81,8 @@ use nalgebra::Vector3;
 
 /// A column is cut into runs of this many nodes before any halving. Longer runs almost never
 /// prove anything (the column's culling has already dropped the boxes its whole sweep keeps
-/// clear of), and halving the whole column cost calls at levels that rarely dropped a box: on
-/// the trunk's 1 deg build, 32 took about 6.6 % off the instructions (64: 4 %, 16: 6.3 %).
+/// clear of), and halving the whole column costs calls at levels that rarely drop a box; 32
+/// costs the trunk's grid build fewest instructions of 16, 32 and 64 (`benches/README.md`).
 pub(super) const TOP_RUN_NODES: usize = 32;
 
 /// Runs of at most this many nodes are inspected node by node.
@@ -129,40 +130,6 @@ impl Swept<'_> {
             a: turned(&self.ends[0], sn, co),
             b: turned(&self.ends[1], sn, co),
             radius: self.radius,
-        }
-    }
-}
-
-/// A slice's axis-3 values (deg, in the columns' order) with what the runs read of them: the
-/// values in radians and their sines and cosines, and per run `lo..hi` the middle value
-/// `mid_deg[lo + hi - 1]` (between `deg[(lo + hi - 1) / 2]` and `deg[(lo + hi) / 2]`, so inside
-/// the run where the values ascend) with its sine and cosine. Made once per slice (`column.rs`),
-/// so the columns take no `sin_cos` per node or run; the grid's are made once
-/// (`GridCheck::angles`).
-#[derive(Clone, Debug)]
-pub struct Angles {
-    pub deg: Vec<f64>,
-    rad: Vec<f64>,
-    sc: Vec<(f64, f64)>,
-    mid_deg: Vec<f64>,
-    mid_sc: Vec<(f64, f64)>,
-    /// Whether `deg` ascends (the runs need it).
-    pub ascending: bool,
-}
-
-impl Angles {
-    pub fn new(a3_deg: &[f64]) -> Angles {
-        let rad: Vec<f64> = a3_deg.iter().map(|v| v.to_radians()).collect();
-        let mid_deg: Vec<f64> = (0..(2 * a3_deg.len()).saturating_sub(1))
-            .map(|s| 0.5 * (a3_deg[s / 2] + a3_deg[s.div_ceil(2)]))
-            .collect();
-        Angles {
-            deg: a3_deg.to_vec(),
-            sc: rad.iter().map(|q| q.sin_cos()).collect(),
-            mid_sc: mid_deg.iter().map(|v| v.to_radians().sin_cos()).collect(),
-            rad,
-            mid_deg,
-            ascending: ascending(a3_deg),
         }
     }
 }
@@ -262,8 +229,8 @@ pub(super) fn rim_ball_bound(c: &Cylinder, b: &Aabb, m: f64, t: f64) -> f64 {
 
 /// Link 3's cylinder at the middle of nodes `lo..hi` of a column, its axis, and the most any
 /// node of the run lies from it (`motion`: joint 3 moves by the same angle as axis 3 within a
-/// column). This and the two below are forced inline: left to the compiler they stayed calls,
-/// 25 M more instructions in the trunk's 1 deg grid build (callgrind).
+/// column). This and the two below are forced inline: left to the compiler they stay calls,
+/// which cost the grid build more instructions (`benches/README.md`).
 #[inline(always)]
 fn run_middle(s: &Swept<'_>, a: &Angles, lo: usize, hi: usize) -> (Cylinder, Vector3<f64>, f64) {
     let mid = lo + hi - 1;
@@ -316,12 +283,6 @@ fn cap_depth(codes: &mut [u8], shift: u8, q: u8) {
 #[inline]
 pub(super) fn motion(reach: f64, h: f64) -> f64 {
     (reach * h) * (1.0 + 1e-9) + 1e-9
-}
-
-/// Whether `v` is in ascending order (the runs need it).
-#[inline]
-pub(super) fn ascending(v: &[f64]) -> bool {
-    v.windows(2).all(|w| w[0] <= w[1])
 }
 
 impl GridCheck {

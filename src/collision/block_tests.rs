@@ -391,7 +391,7 @@ fn off_axis_link_1() -> Robot {
 
 /// The same with link 1's cylinder after [`MAX_FIXED`](super::column::MAX_FIXED) others of
 /// link 1 (tiny, at the base, clear of every post): its slice answer is not kept, so each
-/// column places it itself, on link 1 (it was placed on link 2: free bits wrong).
+/// column places it itself, on link 1 (placed on link 2, its free bits come out wrong).
 #[test]
 fn a_link_1_cylinder_past_the_slices_answers_is_placed_on_link_1() {
     let mut robot = off_axis_link_1();

@@ -26,7 +26,8 @@
 //! measurement would have dropped it too (clear, depth `K`), so every code and column byte is
 //! the column's alone (`block_tests.rs`), whatever order the columns come in.
 
-use super::block::{motion, Angles, Centre, Split, Swept, MARGIN_MM, SET, TOP_RUN_NODES};
+use super::angles::Angles;
+use super::block::{motion, Centre, Split, Swept, MARGIN_MM, SET, TOP_RUN_NODES};
 use super::clear::link_clear_of_box;
 use super::grid::{GridCheck, ARM_BITS, COLUMN_LEVELS, DEPTH_LEVELS};
 use super::proof::tight_lower_bound;

@@ -1,5 +1,5 @@
-//! Corners: the proof behind a fly-by zone at a waypoint (issue 10; beyond the paper, whose
-//! moves all stop).
+//! Corners: the proof behind a fly-by zone at a waypoint (beyond the paper, whose moves all
+//! stop).
 //!
 //! With a zone at waypoint `V` between the moves `P -> V` and `V -> N`, the controller leaves the
 //! first move before `V` and joins the second after it, never cutting more than half of either

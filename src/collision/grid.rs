@@ -46,7 +46,7 @@
 //! wrist: bit 6 is clear and the tool needs no look at that node. Where bit 6 is set, the leg's
 //! wrist at the node decides ([`CollisionModel::tool_is_free`]).
 
-use super::block::Angles;
+use super::angles::Angles;
 use super::proof::lowered;
 use super::CollisionModel;
 use crate::robot::SinCosChain;

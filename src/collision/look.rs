@@ -115,8 +115,8 @@ pub(super) fn bounds_by_coordinate(obstacles: &[Obstacle]) -> [Vec<f64>; 6] {
 /// loop runs without branches.
 ///
 /// Its own excess (the larger of the two gaps, clamped at 0) rather than `geometry`'s signed
-/// one: about 5 % fewer instructions in the tool looks on torch-trunk. All points in one pass
-/// over the boxes (each box's bounds loaded once): about 4 % fewer than one pass per point.
+/// one, and all points in one pass over the boxes (each box's bounds loaded once): both cost
+/// the tool looks fewer instructions (`benches/README.md`).
 #[inline]
 pub(super) fn least_sq_distances<const N: usize>(
     ps: &[Point; N],
@@ -208,8 +208,8 @@ impl Balls {
 /// box farther is left out of its balls' pass (`near.rs`), and the look's margin is at most
 /// about this. A larger margin would spread a look only over the farthest of a leg's 124
 /// offsets (at 1 deg on torch-trunk, up to about 240 mm of motion), and a larger reach keeps
-/// more boxes a ball: whole runs of torch-trunk at 1 deg took 4123 / 4073 / 4073 / 4080 M
-/// instructions at 80 / 120 / 150 / 180 mm (30 mm cubes).
+/// more boxes a ball; torch-trunk's whole runs cost about the same from 120 to 180 mm, more at
+/// 80 mm (`benches/README.md`).
 const LOOK_REACH_MM: f64 = 150.0;
 
 /// How many tool shapes a look tells its exact test are far from every box

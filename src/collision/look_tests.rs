@@ -317,13 +317,13 @@ fn gripper() -> Tool {
 }
 
 /// The looks' exact test of an oriented tool box (`geometry::obb_clear_of_aabb`, by separating
-/// axes first) answers as the distance it replaced (`distance_obb_aabb > c`): at the nodes of
+/// axes first) answers as the distance does (`distance_obb_aabb > c`): at the nodes of
 /// the 5 deg grid of the look tests with both wrists, every box shape of a gripper, placed on
 /// the look's flange, against every box, at the model's clearance, at the distance to the bit
-/// and one ulp below it. And the look answers as the old exact test written out here
-/// (boxes by `distance_obb_aabb`, the ball by its distance), at the poses where no shape comes
-/// within 1e-6 mm of the clearance (at a pose nearer than that the cheap bounds before the
-/// exact test may differ from the distance by rounding, in the old code as in the new).
+/// and one ulp below it. And the look answers as a plain exact test written out here (boxes
+/// by `distance_obb_aabb`, the ball by its distance), at the poses where no shape comes within
+/// 1e-6 mm of the clearance (at a pose nearer than that the cheap bounds before the exact test
+/// may differ from the distance by rounding, in either test).
 /// Boxes near the clearance, and both answers of the look after the balls, must occur often.
 #[test]
 fn a_tool_box_is_tested_as_its_distance_at_the_looks() {

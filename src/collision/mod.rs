@@ -56,6 +56,7 @@
 //! Boxes are clipped to the robot's workspace (plus a 10 m margin) when the model is built, so
 //! that every distance is computed on cell-sized shapes ([`CLIP_MARGIN_MM`]).
 
+mod angles;
 mod block;
 #[cfg(test)]
 mod block_tests;
@@ -138,7 +139,7 @@ impl std::fmt::Display for Blocked {
                 distance_mm,
             } if *distance_mm <= 0.0 => write!(f, "{part} hits obstacle '{obstacle}'"),
             // Links keep the wording (and the 0.01 mm) of the messages users know; tool shapes
-            // read as the issue gives them ("tool shape 'neck' comes within 4.2 mm of ...").
+            // read "tool shape 'neck' comes within 4.2 mm of ..." (0.1 mm).
             Blocked::Contact {
                 part: part @ Part::Link(_),
                 obstacle,

@@ -13,9 +13,9 @@
 //! when `L - r` exceeds the clearance and the margin it can use (module doc of `plan::leg`).
 //!
 //! Made on the first look of a model with at most [`MAX_BOXES`] boxes, once (the masks depend
-//! only on the boxes and `L`); on torch-trunk about 370 k cubes of 30 mm (0.7 MB), made with
-//! about 3 M instructions. 30 mm cubes took about 5 M fewer instructions a run than 50 mm ones
-//! there (`benches/README.md`).
+//! only on the boxes and `L`); on torch-trunk a few hundred thousand cubes of 30 mm, under a
+//! megabyte, made in a small part of a run. 30 mm cubes cost a run fewer instructions than
+//! 50 mm ones there (`benches/README.md`).
 
 use crate::cell::Obstacle;
 use crate::geometry::Point;

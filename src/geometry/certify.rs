@@ -2,8 +2,8 @@
 //! avoided: alternating projections between the two solids, each step giving an upper bound (a
 //! pair of points, one on each solid) and a lower bound (a separating direction: the gap between
 //! the two solids' support planes along it). Beyond the paper, which only says the links are
-//! cylinders; this is the hot path's answer to issue 11 (speed), where parry's GJK in the band
-//! was about a third of a whole run.
+//! cylinders; for speed only: parry's GJK in the band would be a large part of a whole run
+//! (`benches/README.md`).
 //!
 //! *Upper bound.* `y` on the cylinder and `x` on the box: `|x - y| >= dist`. Projections onto
 //! both solids are closed forms: the box's is a clamp; the solid cylinder is an interval along

@@ -242,10 +242,10 @@ fn bounds(c: &Cylinder, bx: &Aabb) -> (f64, f64) {
 /// pair of points on the two shapes, so it errs from above, and its rounding grows with the
 /// shapes' size: measured against closed forms, below 1e-8 mm for cell-sized boxes (up to about
 /// 10 m), but 2e-6 mm for a 200 m box and 2e-3 mm for a 20 km one. `collision` therefore clips
-/// every box to the robot's workspace before asking. The query is made in a frame centred on the box, run in both
-/// argument orders (with the f32 build a single run was seen to stall at 70.8 mm for a true
-/// 2.88 mm), and the result is clamped into the exact capsule bounds, so it always lies in
-/// `[distance_capsule_aabb, distance_inner_capsule_aabb]`.
+/// every box to the robot's workspace before asking. The query is made in a frame centred on
+/// the box, run in both argument orders (a single run can stall far above the true distance;
+/// `benches/README.md` has a case), and the result is clamped into the exact capsule bounds, so
+/// it always lies in `[distance_capsule_aabb, distance_inner_capsule_aabb]`.
 ///
 /// Degenerate inputs: radius 0 gives the segment distance; an axis of zero
 /// length has no orientation, and is answered conservatively with the ball of

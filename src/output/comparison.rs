@@ -2,7 +2,7 @@
 //! steps and manipulation time of the neighboring, depth-first and extensile searches): one row
 //! per method, as a table for the terminal or as JSON (`--json`).
 
-use crate::plan::{Method, Plan};
+use crate::plan::{Method, Route};
 use serde::Serialize;
 
 /// One method's result.
@@ -20,15 +20,15 @@ pub struct Row {
 }
 
 impl Row {
-    /// The row of one method: its (timed) plan, or why it failed.
-    pub fn of(method: Method, result: Result<&Plan, String>, planning_time_ms: f64) -> Row {
-        let plan = result.as_ref().ok();
+    /// The row of one method: its route and its estimated time (s), or why it failed.
+    pub fn of(method: Method, result: Result<(&Route, f64), String>, planning_time_ms: f64) -> Row {
+        let timed = result.as_ref().ok();
         Row {
             method: method.name().to_string(),
-            ok: plan.is_some(),
-            moves: plan.map(|p| p.moves()),
-            path_length_deg: plan.map(|p| p.path_length_deg()),
-            manipulation_time_s: plan.and_then(|p| p.estimate.as_ref().map(|e| e.total_s)),
+            ok: timed.is_some(),
+            moves: timed.map(|(r, _)| r.moves()),
+            path_length_deg: timed.map(|(r, _)| r.path_length_deg()),
+            manipulation_time_s: timed.map(|&(_, t)| t),
             planning_time_ms,
             error: result.err(),
         }

@@ -21,7 +21,7 @@
 
 use crate::place::PlacedPoint;
 use crate::plan::cspace::{CSpace, FREE};
-use crate::plan::{Method, Plan};
+use crate::plan::{Method, Route};
 use plotters::prelude::*;
 
 /// Why a picture could not be drawn.
@@ -92,7 +92,7 @@ pub fn render_svg(
     cs: &CSpace,
     in_range: &dyn Fn(&[f64; 3]) -> bool,
     points: &[PlacedPoint],
-    routes: &[&Plan],
+    routes: &[&Route],
     title: &str,
 ) -> Result<String, PictureError> {
     draw(cs, in_range, points, routes, None, title)
@@ -122,7 +122,7 @@ fn draw(
     cs: &CSpace,
     in_range: &dyn Fn(&[f64; 3]) -> bool,
     points: &[PlacedPoint],
-    routes: &[&Plan],
+    routes: &[&Route],
     marked: Option<&Marked>,
     title: &str,
 ) -> Result<String, PictureError> {
@@ -237,9 +237,9 @@ fn draw(
                 }
             }
             chart.draw_series(rects).map_err(|e| err(&e))?;
-            for plan in routes {
-                let c = colour(plan.method);
-                let line: Vec<(f64, f64)> = plan
+            for route in routes {
+                let c = colour(route.method);
+                let line: Vec<(f64, f64)> = route
                     .waypoints
                     .iter()
                     .map(|w| (w.joints_deg[u], w.joints_deg[v]))
@@ -247,7 +247,7 @@ fn draw(
                 chart
                     .draw_series(LineSeries::new(line.iter().copied(), c.stroke_width(2)))
                     .map_err(|e| err(&e))?
-                    .label(format!("{} ({} moves)", plan.method, plan.moves()))
+                    .label(format!("{} ({} moves)", route.method, route.moves()))
                     .legend(move |(x, y)| {
                         PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(3))
                     });
@@ -336,7 +336,7 @@ mod tests {
             [6.0, 3.0, 0.0],
             [9.0, 0.0, 0.0],
         ];
-        let plan = Plan {
+        let route = Route {
             method: Method::Extensile,
             grid_deg: 1.0,
             waypoints: arm
@@ -357,13 +357,8 @@ mod tests {
                 grid_path: Vec::new(),
                 waypoints: 0..4,
             }],
-            min_clearance: None,
-            move_clearances: Vec::new(),
-            estimate: None,
-            paper: None,
-            zones: Vec::new(),
         };
-        let svg = render_svg(&cs, &|_| true, &points, &[&plan], "test").expect("svg");
+        let svg = render_svg(&cs, &|_| true, &points, &[&route], "test").expect("svg");
         assert!(svg.starts_with("<svg"));
         assert!(svg.contains("P1\n</text>") && svg.contains("P2\n</text>"));
         assert!(svg.contains("extensile (3 moves)"));
@@ -374,7 +369,7 @@ mod tests {
         // Same input, same bytes.
         assert_eq!(
             svg,
-            render_svg(&cs, &|_| true, &points, &[&plan], "test").expect("svg")
+            render_svg(&cs, &|_| true, &points, &[&route], "test").expect("svg")
         );
         // A failure: no route, P2 ringed (once per projection) and labelled in red, why below.
         let marked = Marked {

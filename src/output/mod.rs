@@ -1,7 +1,7 @@
 //! The render stage: what gen-rapid writes, made from the earlier stages' results only (the
 //! cell, the placed job, the plan). Nothing here asks the collision model, the timing or the
-//! searches: everything printed is in [`Plan`](crate::plan::Plan) or
-//! [`Placed`](crate::place::Placed).
+//! searches: everything printed is in [`Plan`](crate::refine::Plan) (or, for the comparison,
+//! a [`Route`](crate::plan::Route)) or [`Placed`](crate::place::Placed).
 //!
 //! - [`program`]: the plan as a RAPID program, [`rapid`]: its text (template, number format,
 //!   the names of the generated data);

@@ -1,22 +1,23 @@
 //! [`Plan`] -> [`rapid::Program`](Program): the targets in visiting order with all six axes and
-//! the speed and zone of the move into each (`Plan::motion_into`), the robtarget written beside
-//! each robtarget point, the tooldata and wobjdata the cell declares, the header facts (the cell
-//! file, the robot files and their convention, the planner and grid, the clearance asked for,
-//! the base used, the moves, the certified smallest clearance, the time estimate, the zoned vias
-//! and the via zone, the paper's method alone) and the
-//! robot's ranges for the renderer's last guard. Everything comes from the cell, the placed job,
-//! the plan and the [`RobotFacts`] the pipeline hands over; no text is produced here (`rapid`
-//! does).
+//! the speed and zone of the move into each ([`Plan::motions`]), the robtarget written
+//! beside each robtarget point, the tooldata and wobjdata the cell declares, the header facts
+//! (the cell file, the robot files and their convention, the planner and grid, the clearance
+//! asked for, the base used, the moves, the certified smallest clearance, the time estimate, the
+//! zoned vias and the via zone, the paper's method alone) and the robot's ranges for the
+//! renderer's last guard. Everything comes from the cell, the placed job, the plan and the
+//! [`RobotFacts`] of the robot files; no text is produced here (`rapid` does).
 
 use super::rapid::{
     AxisRanges, Header, JointTarget, Pose, Program, RobTarget, TargetKind, ToolData, WobjData,
 };
 use crate::cell::{Cell, Frame};
 use crate::place::{Origin, Placed};
-use crate::plan::{Plan, WaypointKind};
+use crate::plan::WaypointKind;
+use crate::refine::Plan;
+use crate::robot::{Coupling, Robot};
+use std::path::Path;
 
-/// What the module states about the robot and checks against it, from the robot files (the
-/// pipeline fills it, so the output stage reads no robot model).
+/// What the module states about the robot and checks against it, from the robot files.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RobotFacts {
     /// The URDF's file name.
@@ -26,6 +27,29 @@ pub struct RobotFacts {
     /// Axis 3 coupled to axis 2 (parallelogram).
     pub parallelogram: bool,
     pub ranges: AxisRanges,
+}
+
+impl RobotFacts {
+    /// The facts of `robot`: its files by name, like the cell's (the module names the files,
+    /// not where they lie, so a cell moved elsewhere gives the same bytes), its coupling and its
+    /// axis ranges.
+    pub fn of(robot: &Robot) -> RobotFacts {
+        let shown = |p: &Path| {
+            p.file_name()
+                .map(|f| f.to_string_lossy().into_owned())
+                .unwrap_or_default()
+        };
+        let c = &robot.controller;
+        RobotFacts {
+            urdf: shown(&robot.urdf_path),
+            controller: c.source.as_deref().map(shown),
+            parallelogram: c.coupling == Coupling::Parallelogram,
+            ranges: AxisRanges {
+                axes_deg: c.axes.map(|a| [a.min_deg, a.max_deg]),
+                coupled_axis3_deg: c.coupled_axis3_deg,
+            },
+        }
+    }
 }
 
 fn pose(f: &Frame) -> Pose {
@@ -38,11 +62,11 @@ fn pose(f: &Frame) -> Pose {
 /// The module's content for a plan of `cell`, placed as `placed`, on the robot of `robot`.
 pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> Program {
     let targets = plan
+        .route
         .waypoints
         .iter()
-        .enumerate()
-        .map(|(k, w)| {
-            let motion = plan.motion_into(k, &placed.points);
+        .zip(plan.motions())
+        .map(|(w, motion)| {
             let (kind, robtarget) = match w.kind {
                 WaypointKind::CellPoint(i) => {
                     let p = placed.points.get(i);
@@ -61,8 +85,8 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             JointTarget {
                 kind,
                 axes_deg: w.joints_deg,
-                speed: motion.speed,
-                zone: motion.zone,
+                speed: motion.speed.clone(),
+                zone: motion.zone.clone(),
                 robtarget,
             }
         })
@@ -86,18 +110,18 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             urdf: robot.urdf.clone(),
             controller: robot.controller.clone(),
             parallelogram: robot.parallelogram,
-            planner: plan.method.name().to_string(),
-            grid_deg: plan.grid_deg,
+            planner: plan.route.method.name().to_string(),
+            grid_deg: plan.route.grid_deg,
             clearance_mm: cell.planner.clearance_mm,
             base_mm: placed.placement.base_mm,
             yaw_deg: placed.placement.yaw_deg,
-            moves: plan.moves(),
-            min_clearance_mm: plan.min_clearance.as_ref().map(|c| c.mm),
-            estimated_time_s: plan.estimate.as_ref().map(|e| e.total_s),
-            zoned_vias: plan.zoned_vias(&placed.points),
+            moves: plan.route.moves(),
+            min_clearance_mm: plan.least.as_ref().map(|c| c.mm),
+            estimated_time_s: Some(plan.total_s),
+            zoned_vias: plan.zoned_vias(),
             // The zone a via gets where its corner is proven (`motion.via_zone`).
             via_zone: cell.motion.via_zone.clone(),
-            paper: plan.paper.map(|p| (p.moves, p.time_s)),
+            paper: Some((plan.paper.moves, plan.paper.time_s)),
         },
         targets,
         // The tool block's name when there is one (the cell validation sees to it).

@@ -21,11 +21,12 @@ use super::poses::Poser;
 use super::rapid::{format_fixed, Program, TargetKind};
 use crate::cell::{Base, Cell};
 use crate::place::Placed;
-use crate::plan::{Plan, WaypointKind};
+use crate::plan::WaypointKind;
 use crate::precision::{
     REPORT_CLEARANCE_DECIMALS, REPORT_GRID_DECIMALS, REPORT_JOINT_DECIMALS,
     REPORT_POSITION_DECIMALS, REPORT_TIME_DECIMALS, REPORT_YAW_DECIMALS,
 };
+use crate::refine::Plan;
 use crate::robot::Robot;
 use serde::{Serialize, Serializer};
 
@@ -106,7 +107,7 @@ pub struct Totals {
     pub vias: usize,
     pub moves: usize,
     /// The sum of the moves' estimated times, s.
-    pub estimated_time_s: Option<Fixed>,
+    pub estimated_time_s: Fixed,
     /// The smallest of the moves' clearances; `null` without obstacles.
     pub min_clearance: Option<ClearanceInfo>,
     /// The vias that fly by (a zone other than a stop point) and the zone a proven via gets.
@@ -154,9 +155,9 @@ pub struct MoveInfo {
     /// The certified smallest clearance along it; `null` without obstacles.
     pub min_clearance: Option<ClearanceInfo>,
     /// Its estimated time, s.
-    pub time_s: Option<Fixed>,
+    pub time_s: Fixed,
     /// What set its time from rest to rest: `axis`, `tcp` or `reorientation`.
-    pub limit: Option<&'static str>,
+    pub limit: &'static str,
     /// The speeddata and zonedata of its `MoveAbsJ`.
     pub speed: String,
     pub zone: String,
@@ -228,8 +229,9 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
     } = input;
     let poser = Poser::new(robot, placed.placement, cell.tool.as_ref());
     let name = |k: usize| names.get(k).cloned().unwrap_or_default();
-    let mut waypoints = Vec::with_capacity(plan.waypoints.len());
-    for (k, w) in plan.waypoints.iter().enumerate() {
+    let route = &plan.route;
+    let mut waypoints = Vec::with_capacity(route.waypoints.len());
+    for (k, w) in route.waypoints.iter().enumerate() {
         let what = |field: &str| format!("{field} of waypoint '{}'", name(k));
         waypoints.push(WaypointInfo {
             name: name(k),
@@ -250,30 +252,23 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
             )?,
         });
     }
-    let mut moves = Vec::with_capacity(plan.moves());
-    for i in 0..plan.moves() {
+    let mut moves = Vec::with_capacity(plan.moves.len());
+    for (i, m) in plan.moves.iter().enumerate() {
         let what = format!("the clearance of move {}", i + 1);
         let target = program.targets.get(i + 1);
         moves.push(MoveInfo {
             from: name(i),
             to: name(i + 1),
-            min_clearance: match plan.move_clearances.get(i).and_then(Option::as_ref) {
+            min_clearance: match &m.clearance {
                 Some(c) => Some(clearance(c, &what)?),
                 None => None,
             },
-            time_s: match plan.estimate.as_ref().and_then(|e| e.move_s.get(i)) {
-                Some(&t) => Some(fixed(
-                    || format!("the time of move {}", i + 1),
-                    t,
-                    REPORT_TIME_DECIMALS,
-                )?),
-                None => None,
-            },
-            limit: plan
-                .estimate
-                .as_ref()
-                .and_then(|e| e.move_limit.get(i))
-                .map(|l| l.name()),
+            time_s: fixed(
+                || format!("the time of move {}", i + 1),
+                m.estimate.time_s,
+                REPORT_TIME_DECIMALS,
+            )?,
+            limit: m.estimate.limit.name(),
             speed: target.map(|t| t.speed.clone()).unwrap_or_default(),
             zone: target.map(|t| t.zone.clone()).unwrap_or_default(),
         });
@@ -307,8 +302,8 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
             )?,
             chosen: cell.robot.base == Base::Auto,
         },
-        method: plan.method.name().to_string(),
-        grid_deg: fixed(|| "the grid".into(), plan.grid_deg, REPORT_GRID_DECIMALS)?,
+        method: route.method.name().to_string(),
+        grid_deg: fixed(|| "the grid".into(), route.grid_deg, REPORT_GRID_DECIMALS)?,
         clearance_mm: fixed(
             || "the clearance".into(),
             cell.planner.clearance_mm,
@@ -320,19 +315,16 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
             .as_ref()
             .map_or_else(|| "wobj0".to_string(), |w| w.name.clone()),
         totals: Totals {
-            waypoints: plan.waypoints.len(),
+            waypoints: route.waypoints.len(),
             cell_points,
-            vias: plan.waypoints.len() - cell_points.min(plan.waypoints.len()),
-            moves: plan.moves(),
-            estimated_time_s: match &plan.estimate {
-                Some(e) => Some(fixed(
-                    || "the total time".into(),
-                    e.total_s,
-                    REPORT_TIME_DECIMALS,
-                )?),
-                None => None,
-            },
-            min_clearance: match &plan.min_clearance {
+            vias: route.waypoints.len() - cell_points.min(route.waypoints.len()),
+            moves: route.moves(),
+            estimated_time_s: fixed(
+                || "the total time".into(),
+                plan.total_s,
+                REPORT_TIME_DECIMALS,
+            )?,
+            min_clearance: match &plan.least {
                 Some(c) => Some(clearance(c, "the smallest clearance")?),
                 None => None,
             },

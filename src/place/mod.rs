@@ -4,7 +4,7 @@
 //! (`points.rs`), and points given as robtargets (TCP poses in a work object, with a tool),
 //! solved by the six-axis inverse kinematics (`robtarget.rs`).
 //!
-//! **Every value in range** (issue 8): a cell's own values (a `joints` point, `robot.wrist`)
+//! **Every value in range**: a cell's own values (a `joints` point, `robot.wrist`)
 //! outside the controller's ranges (the URDF's limits without a controller file; all six axes
 //! and the coupled axis-3 range) are an input error at their line ([`PlaceError::Range`]); a
 //! computed one (IK) is never chosen, and a point without an in-range solution is a planning

@@ -148,7 +148,7 @@ impl WristSchedule {
 /// whole waves, and the eager waves follow the optimistic ones): per node 0 (not looked at
 /// yet), [`TOOL_CLEAR`] or [`TOOL_BLOCKED`], 2 bits a node, 32 nodes a word (a quarter of the
 /// memory of a byte a node: fewer cache misses where a look's margin answers the nodes around
-/// it, about 3 % of torch-trunk's time at 1 deg). Empty without a tool (then no node needs a
+/// it). Empty without a tool (then no node needs a
 /// look). Filled in any order, by any thread: the answer at a node is a pure function of the
 /// node and the leg, so a race only repeats the work. A word is read and written back whole
 /// (no atomic read-modify-write, which would cost more than it saves): a write racing another in

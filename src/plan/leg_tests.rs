@@ -296,8 +296,8 @@ fn where_the_optimistic_walk_runs_out_the_eager_wave_finds_the_way() {
 fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_accepted_ones() {
     // tests/ok/complete_search_2deg.yaml (found by a seeded generator of random cells): on a
     // 2 deg grid every path the paper's wave offers from P to Q has a step the step check
-    // refuses, so the walk on it runs out (the search used to give up here); the wave over
-    // accepted steps has a path, and the leg plans.
+    // refuses, so the walk on it runs out (a search on that wave alone gives up here); the
+    // wave over accepted steps has a path, and the leg plans.
     let boxes = vec![
         bx("b0", [641.0, 453.0, 0.0], [1041.0, 933.0, 199.0]),
         bx("b1", [-137.0, 537.0, 0.0], [57.0, 1047.0, 1383.0]),

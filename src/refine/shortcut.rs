@@ -1,4 +1,4 @@
-//! The shortcut pass (issue 10, item 3; beyond the paper): routes shorter than the grid allows.
+//! The shortcut pass (beyond the paper): routes shorter than the grid allows.
 //!
 //! The paper's route keeps the grid's corners: its shortening joins grid nodes `k -> k+2` and its
 //! merge joins collinear moves. This pass works on the route as planned, leg by leg, off the
@@ -15,14 +15,15 @@
 //!
 //! Every candidate is rounded to the written precision (0.001 deg) before it is proven, so what
 //! is proven is what is written. A change (one leg's joins, one via's slide) is kept only when
-//! the time estimate does not grow. A via slid to the very edge of the clearance leaves no room
+//! the time estimate of the route (its motions as planned, `plan::motion::planned`) does not
+//! grow. A via slid to the very edge of the clearance leaves no room
 //! for a zone's corner (`collision::corner`); so where a fly-by zone is asked, the refine stage
 //! also runs this pass on a model asking a margin more clearance and keeps the faster result
 //! (`refine`).
 //!
 //! **On all cores, decided on one** (`crate::parallel::map_on`; beyond the paper, as the pass
-//! is). The proofs are almost all the cost; the decisions (the time of the whole plan, a float
-//! sum, against the best so far) stay one at a time in the order above, so the plan is the one
+//! is). The proofs are almost all the cost; the decisions (the time of the whole route, a float
+//! sum, against the best so far) stay one at a time in the order above, so the route is the one
 //! a single core makes, bit for bit. At the start of each round (where two legs or more have vias
 //! to move: a thread costs about a proof) every leg's proofs are made at
 //! once, a leg to a core, as if every proven change were kept (the usual case): its joins, then
@@ -38,7 +39,7 @@
 use crate::collision::CollisionModel;
 use crate::parallel;
 use crate::plan::leg::WristSchedule;
-use crate::plan::{Plan, Waypoint, WaypointKind};
+use crate::plan::{Route, Waypoint, WaypointKind};
 use crate::precision::quantize_joints;
 
 /// Most rounds of joins and slides.
@@ -47,43 +48,43 @@ pub const ROUNDS: usize = 4;
 /// Halvings of the slide's fraction when the whole slide is not proven.
 pub const SLIDE_STEPS: usize = 6;
 
-/// The continuous shortcut pass (module doc); `time_s` estimates a plan's time.
-pub fn shortcut(mut plan: Plan, model: &CollisionModel, time_s: &dyn Fn(&Plan) -> f64) -> Plan {
-    let mut best_s = time_s(&plan);
+/// The continuous shortcut pass (module doc); `time_s` estimates a route's time.
+pub fn shortcut(mut route: Route, model: &CollisionModel, time_s: &dyn Fn(&Route) -> f64) -> Route {
+    let mut best_s = time_s(&route);
     for _ in 0..ROUNDS {
         let mut changed = false;
         // Every leg's proofs of the round at once (module doc), then the decisions in order.
-        let ahead = ahead_of_round(&plan, model);
+        let ahead = ahead_of_round(&route, model);
         // 1. Joins, in leg order. Leg `l`'s waypoints are those `ahead` started from: an
         // earlier leg's change moves them in the route, never changes them.
         for (l, a) in ahead.iter().enumerate() {
             if let Some(kept) = &a.kept {
-                let c = with_leg(&plan, l, kept.clone());
+                let c = with_leg(&route, l, kept.clone());
                 let t = time_s(&c);
                 if t <= best_s {
-                    (plan, best_s, changed) = (c, t, true);
+                    (route, best_s, changed) = (c, t, true);
                 }
             }
         }
         // 2. Slides, in route order: a slide computed ahead where its key holds.
-        for k in 1..plan.waypoints.len().saturating_sub(1) {
-            let WaypointKind::Via { leg, .. } = plan.waypoints[k].kind else {
+        for k in 1..route.waypoints.len().saturating_sub(1) {
+            let WaypointKind::Via { leg, .. } = route.waypoints[k].kind else {
                 continue;
             };
-            let w = &plan.waypoints;
+            let w = &route.waypoints;
             let key = [w[k - 1].joints_deg, w[k].joints_deg, w[k + 1].joints_deg];
             // `slides[i]` is the slide of the leg's waypoint `i + 1` (its first is a cell point).
-            let i = k.checked_sub(plan.legs[leg].waypoints.start + 1);
+            let i = k.checked_sub(route.legs[leg].waypoints.start + 1);
             let six = match i.and_then(|i| ahead[leg].slides.get(i)) {
                 Some(g) if same_bits(&g.key, &key) => g.six,
-                _ => slide_six(&key, &schedule_of(&plan, leg), model),
+                _ => slide_six(&key, &schedule_of(&route, leg), model),
             };
             if let Some(six) = six {
-                let mut c = plan.clone();
+                let mut c = route.clone();
                 c.waypoints[k].joints_deg = six;
                 let t = time_s(&c);
                 if t <= best_s {
-                    (plan, best_s, changed) = (c, t, true);
+                    (route, best_s, changed) = (c, t, true);
                 }
             }
         }
@@ -91,7 +92,7 @@ pub fn shortcut(mut plan: Plan, model: &CollisionModel, time_s: &dyn Fn(&Plan) -
             break;
         }
     }
-    plan
+    route
 }
 
 /// A leg's proofs of a round, computed ahead: the waypoints its joins keep (`None`: no via
@@ -109,32 +110,32 @@ struct Guess {
     six: Option<[f64; 6]>,
 }
 
-/// Every leg's [`Ahead`] for a round of `plan`, legs on all cores: its joins, then the chain of
+/// Every leg's [`Ahead`] for a round of `route`, legs on all cores: its joins, then the chain of
 /// its slides on the waypoints the joins keep, as if every proven change were kept (the usual
 /// case). A slide reads only its via, the via's two neighbours and the leg's cell points (which
 /// no change moves), so where the pass meets a via with the same three joints, bit for bit, as
 /// a slide computed ahead, that slide is what it would compute there; where an earlier change of
 /// the leg was not kept, the joints differ and the pass computes the slide anew.
-fn ahead_of_round(plan: &Plan, model: &CollisionModel) -> Vec<Ahead> {
-    let w = &plan.waypoints;
-    let legs: Vec<usize> = (0..plan.legs.len())
-        .filter(|&l| plan.legs[l].waypoints.len() > 2)
+fn ahead_of_round(route: &Route, model: &CollisionModel) -> Vec<Ahead> {
+    let w = &route.waypoints;
+    let legs: Vec<usize> = (0..route.legs.len())
+        .filter(|&l| route.legs[l].waypoints.len() > 2)
         .collect();
     // A map costs about a proof's time, and a leg with one via that cannot slide asks one
     // proof (its join): with one leg or none asking more, the legs are proven here, in turn.
     let busy = legs.iter().filter(|&&l| {
-        let r = plan.legs[l].waypoints.clone();
+        let r = route.legs[l].waypoints.clone();
         r.len() > 3 || (r.start + 1..r.end - 1).any(|k| can_slide(&w[k - 1], &w[k], &w[k + 1]))
     });
     let threads = if busy.count() >= 2 { usize::MAX } else { 1 };
     let per_leg = parallel::map_on(threads, &legs, |&l| {
-        let ws = &plan.waypoints[plan.legs[l].waypoints.clone()];
+        let ws = &route.waypoints[route.legs[l].waypoints.clone()];
         let kept = join_kept(ws, model);
-        let schedule = schedule_of(plan, l);
+        let schedule = schedule_of(route, l);
         let slides = slide_chain(kept.as_deref().unwrap_or(ws), l, &schedule, model);
         Ahead { kept, slides }
     });
-    let mut all: Vec<Ahead> = plan.legs.iter().map(|_| Ahead::default()).collect();
+    let mut all: Vec<Ahead> = route.legs.iter().map(|_| Ahead::default()).collect();
     for (&l, a) in legs.iter().zip(per_leg) {
         all[l] = a;
     }
@@ -186,11 +187,11 @@ fn same_bits(a: &[[f64; 6]; 3], b: &[[f64; 6]; 3]) -> bool {
 }
 
 /// The wrist schedule of leg `l`, from its cell points.
-fn schedule_of(plan: &Plan, l: usize) -> WristSchedule {
-    let range = plan.legs[l].waypoints.clone();
+fn schedule_of(route: &Route, l: usize) -> WristSchedule {
+    let range = route.legs[l].waypoints.clone();
     WristSchedule::new(
-        &plan.waypoints[range.start].joints_deg,
-        &plan.waypoints[range.end - 1].joints_deg,
+        &route.waypoints[range.start].joints_deg,
+        &route.waypoints[range.end - 1].joints_deg,
     )
 }
 
@@ -248,12 +249,12 @@ fn slide_six(
     best
 }
 
-/// `plan` with leg `l`'s waypoints replaced by `leg` (both ends as before); the vias renumbered
+/// `route` with leg `l`'s waypoints replaced by `leg` (both ends as before); the vias renumbered
 /// in order, the later legs' ranges shifted.
-pub(super) fn with_leg(plan: &Plan, l: usize, leg: Vec<Waypoint>) -> Plan {
-    let range = plan.legs[l].waypoints.clone();
+pub(super) fn with_leg(route: &Route, l: usize, leg: Vec<Waypoint>) -> Route {
+    let range = route.legs[l].waypoints.clone();
     let (old_len, new_len) = (range.len(), leg.len());
-    let mut out = plan.clone();
+    let mut out = route.clone();
     let mut leg = leg;
     for (index, w) in leg.iter_mut().enumerate().take(new_len - 1).skip(1) {
         w.kind = WaypointKind::Via { leg: l, index };
@@ -264,49 +265,46 @@ pub(super) fn with_leg(plan: &Plan, l: usize, leg: Vec<Waypoint>) -> Plan {
         let r = &later.waypoints;
         later.waypoints = (r.start + new_len - old_len)..(r.end + new_len - old_len);
     }
-    out.move_clearances = Vec::new();
-    out.min_clearance = None;
-    out.estimate = None;
-    out.zones = Vec::new();
     out
 }
 
 #[cfg(test)]
 mod tests {
-    //! The pass against the one-core pass it replaced (kept here as [`sequential`]: each leg's
-    //! joins and each via's slide proven at its turn), on real cells' routes: the same plan, bit
-    //! for bit, including where a proven change is not kept (its time grows).
+    //! The pass against a one-core pass ([`sequential`]: each leg's joins and each via's slide
+    //! proven at its turn), on real cells' routes: the same route, bit for bit, including where
+    //! a proven change is not kept (its time grows).
     use super::*;
     use crate::pipeline;
+    use crate::plan::motion;
     use crate::timing;
     use std::path::Path;
 
-    /// The pass as it ran on one core (the reference), and how many proven slides and joins it
-    /// did not keep.
+    /// The pass on one core (the reference), and how many proven slides and joins it did not
+    /// keep.
     fn sequential(
-        mut plan: Plan,
+        mut route: Route,
         model: &CollisionModel,
-        time_s: &dyn Fn(&Plan) -> f64,
-    ) -> (Plan, usize, usize) {
-        let mut best_s = time_s(&plan);
+        time_s: &dyn Fn(&Route) -> f64,
+    ) -> (Route, usize, usize) {
+        let mut best_s = time_s(&route);
         let (mut rejected, mut rejected_joins) = (0, 0);
         for _ in 0..ROUNDS {
             let mut changed = false;
-            for l in 0..plan.legs.len() {
-                if let Some(c) = join_leg(&plan, l, model) {
+            for l in 0..route.legs.len() {
+                if let Some(c) = join_leg(&route, l, model) {
                     let t = time_s(&c);
                     if t <= best_s {
-                        (plan, best_s, changed) = (c, t, true);
+                        (route, best_s, changed) = (c, t, true);
                     } else {
                         rejected_joins += 1;
                     }
                 }
             }
-            for k in 1..plan.waypoints.len().saturating_sub(1) {
-                if let Some(c) = slide(&plan, k, model) {
+            for k in 1..route.waypoints.len().saturating_sub(1) {
+                if let Some(c) = slide(&route, k, model) {
                     let t = time_s(&c);
                     if t <= best_s {
-                        (plan, best_s, changed) = (c, t, true);
+                        (route, best_s, changed) = (c, t, true);
                     } else {
                         rejected += 1;
                     }
@@ -316,31 +314,31 @@ mod tests {
                 break;
             }
         }
-        (plan, rejected, rejected_joins)
+        (route, rejected, rejected_joins)
     }
 
     /// The one-core pass's join of leg `l`, proven at its turn (the joins' proofs are the
     /// pure `join_kept`; what the test holds is when they are made and which are used).
-    fn join_leg(plan: &Plan, l: usize, model: &CollisionModel) -> Option<Plan> {
-        let ws = &plan.waypoints[plan.legs[l].waypoints.clone()];
-        join_kept(ws, model).map(|kept| with_leg(plan, l, kept))
+    fn join_leg(route: &Route, l: usize, model: &CollisionModel) -> Option<Route> {
+        let ws = &route.waypoints[route.legs[l].waypoints.clone()];
+        join_kept(ws, model).map(|kept| with_leg(route, l, kept))
     }
 
     /// The one-core pass's slide of via `k`, proven at its turn (`slide_six`, as the pass).
-    fn slide(plan: &Plan, k: usize, model: &CollisionModel) -> Option<Plan> {
-        let WaypointKind::Via { leg, .. } = plan.waypoints[k].kind else {
+    fn slide(route: &Route, k: usize, model: &CollisionModel) -> Option<Route> {
+        let WaypointKind::Via { leg, .. } = route.waypoints[k].kind else {
             return None;
         };
-        let w = &plan.waypoints;
+        let w = &route.waypoints;
         let key = [w[k - 1].joints_deg, w[k].joints_deg, w[k + 1].joints_deg];
-        let six = slide_six(&key, &schedule_of(plan, leg), model)?;
-        let mut c = plan.clone();
+        let six = slide_six(&key, &schedule_of(route, leg), model)?;
+        let mut c = route.clone();
         c.waypoints[k].joints_deg = six;
         Some(c)
     }
 
     /// The waypoints' joints as bits, and the legs' ranges: what must not differ.
-    fn bits(p: &Plan) -> (Vec<[u64; 6]>, Vec<String>, Vec<std::ops::Range<usize>>) {
+    fn bits(p: &Route) -> (Vec<[u64; 6]>, Vec<String>, Vec<std::ops::Range<usize>>) {
         (
             p.waypoints
                 .iter()
@@ -367,7 +365,9 @@ mod tests {
             let job = pipeline::load(Path::new(&path)).expect("the example cell loads");
             let placed = pipeline::place(&job).expect("the example cell is placed");
             let time_model = timing::TimeModel::new(&job.robot, job.cell.tool.as_ref());
-            let real_s = |p: &Plan| timing::estimate(p, &placed.points, &time_model).total_s;
+            let real_s = |p: &Route| {
+                timing::estimate(p, &motion::planned(p, &placed.points), &time_model).total_s
+            };
             for &grid_deg in grids {
                 let inspected = pipeline::inspect(&job, &placed, grid_deg);
                 let route = pipeline::route(&job, &placed, &inspected, job.cell.planner.method)
@@ -377,10 +377,10 @@ mod tests {
                 let margined = inspected.model.with_margin(super::super::MARGIN_MM);
                 for model in [&inspected.model, &margined] {
                     // The real time; one that turns every join down (slides judged by time);
-                    // and two that judge by a hash of the plan's bits, so that changes of any
+                    // and two that judge by a hash of the route's bits, so that changes of any
                     // kind are kept or turned down in patterns the real time never makes.
                     for judge in 0..4u64 {
-                        let time_s = |p: &Plan| match judge {
+                        let time_s = |p: &Route| match judge {
                             0 => real_s(p),
                             1 => real_s(p) + if p.waypoints.len() < vias { 1e3 } else { 0.0 },
                             _ => {

@@ -1,5 +1,5 @@
-//! Split corners (issue 10, item 2; beyond the paper): room for a fly-by zone at a via whose
-//! corner triangle comes too close to an obstacle.
+//! Split corners (beyond the paper): room for a fly-by zone at a via whose corner triangle
+//! comes too close to an obstacle.
 //!
 //! The corner triangle of via `V` between the moves `A -> V` and `V -> B` reaches to the
 //! midpoints of both moves (`collision::corner`); where it cuts into the clearance (a via that
@@ -21,91 +21,93 @@ use super::zones::{self, FINE};
 use crate::collision::CollisionModel;
 use crate::place::PlacedPoint;
 use crate::plan::leg::WristSchedule;
-use crate::plan::{Plan, Waypoint, WaypointKind};
+use crate::plan::{Route, Waypoint, WaypointKind};
 use crate::precision::quantize_joints;
 
 /// The fractions of the moves at which the new vias are tried, in order.
 pub const FRACTIONS: [f64; 4] = [0.5, 0.25, 0.125, 0.0625];
 
-/// The zone waypoint `k` of `plan` gets (as [`zones::certify_zones`] gives it, without the
-/// warnings and the clearance): the one it asks for where its corner is proven, else its own.
+/// The zone waypoint `k` of `route` gets (as [`zones::certify_zones`] gives it, without the
+/// warnings): the one it asks for where its corner is proven, else its own.
 fn zone_at(
-    plan: &Plan,
+    route: &Route,
     model: &CollisionModel,
     points: &[PlacedPoint],
     wanted: &[Option<String>],
     k: usize,
 ) -> String {
-    match (&wanted[k], plan.waypoints[k].kind) {
-        (Some(z), _) if zones::corner_is_proven(plan, model, k) => z.clone(),
-        (None, WaypointKind::CellPoint(i)) if k > 0 && k + 1 < plan.waypoints.len() => points
+    match (&wanted[k], route.waypoints[k].kind) {
+        (Some(z), _) if zones::corner_is_proven(route, model, k) => z.clone(),
+        (None, WaypointKind::CellPoint(i)) if k > 0 && k + 1 < route.waypoints.len() => points
             .get(i)
             .map_or(FINE.to_string(), |p| p.motion.zone.clone()),
         _ => FINE.to_string(),
     }
 }
 
-/// The split pass (module doc); `time_s` estimates a plan's time (reading [`Plan::zones`]).
-/// The result's zones are provisional: the caller certifies them (`zones::certify_zones`).
+/// The split pass (module doc); `time_s` estimates the time of a route whose waypoints have
+/// the zones given (one a waypoint). The zones the pass works with are provisional: the caller
+/// certifies the route's (`zones::certify_zones`).
 pub fn split_corners(
-    mut plan: Plan,
+    route: Route,
     model: &CollisionModel,
     points: &[PlacedPoint],
     via_zone: &str,
-    time_s: &dyn Fn(&Plan) -> f64,
-) -> Plan {
+    time_s: &dyn Fn(&Route, &[String]) -> f64,
+) -> Route {
     if !zones::is_fly_by(via_zone) {
-        return plan;
+        return route;
     }
-    let wanted = zones::wanted(&plan, points, via_zone);
-    plan.zones = (0..plan.waypoints.len())
-        .map(|k| zone_at(&plan, model, points, &wanted, k))
+    let wanted = zones::wanted(&route, points, via_zone);
+    let zones: Vec<String> = (0..route.waypoints.len())
+        .map(|k| zone_at(&route, model, points, &wanted, k))
         .collect();
-    let mut best_s = time_s(&plan);
+    let mut best_s = time_s(&route, &zones);
+    let mut best = (route, zones);
     let mut k = 1;
-    while k + 1 < plan.waypoints.len() {
-        let WaypointKind::Via { leg, .. } = plan.waypoints[k].kind else {
+    while k + 1 < best.0.waypoints.len() {
+        let WaypointKind::Via { leg, .. } = best.0.waypoints[k].kind else {
             k += 1;
             continue;
         };
-        if zones::is_fly_by(&plan.zones[k]) {
+        if zones::is_fly_by(&best.1[k]) {
             k += 1;
             continue;
         }
         let mut kept = false;
         for f in FRACTIONS {
-            let Some(c) = split_at(&plan, model, points, via_zone, k, leg, f) else {
+            let Some(c) = split_at(&best, model, points, via_zone, k, leg, f) else {
                 continue;
             };
-            let t = time_s(&c);
+            let t = time_s(&c.0, &c.1);
             if t < best_s {
-                (plan, best_s, kept) = (c, t, true);
+                (best, best_s, kept) = (c, t, true);
                 break;
             }
         }
         // Past `Q` (its corner is a thin triangle along a proven move, not split again).
         k += if kept { 3 } else { 1 };
     }
-    plan
+    best.0
 }
 
-/// `plan` with via `k` (of leg `leg`) split at fraction `f` (module doc), its zones updated
-/// around the split, or `None` where a new move or `V`'s new corner is not proven.
+/// `route` (with its `zones`) with via `k` (of leg `leg`) split at fraction `f` (module doc), its
+/// zones updated around the split, or `None` where a new move or `V`'s new corner is not proven.
 fn split_at(
-    plan: &Plan,
+    (route, zones): &(Route, Vec<String>),
     model: &CollisionModel,
     points: &[PlacedPoint],
     via_zone: &str,
     k: usize,
     leg: usize,
     f: f64,
-) -> Option<Plan> {
-    let w = &plan.waypoints;
+) -> Option<(Route, Vec<String>)> {
+    let w = &route.waypoints;
     let (a, v, b) = (w[k - 1].joints_deg, w[k].joints_deg, w[k + 1].joints_deg);
     // Axes 1..3 on the moves, axes 4..6 on the leg's wrist schedule, as every via's are (the
     // schedule is affine in axes 1..3 between its ends, so these lie on the moves up to the
     // rounding; what is proven is the rounded values).
-    let range = plan.legs[leg].waypoints.clone();
+    let range = route.legs[leg].waypoints.clone();
     let schedule = WristSchedule::new(&w[range.start].joints_deg, &w[range.end - 1].joints_deg);
     let on = |to: &[f64; 6]| {
         let x = lerp(&v, to, f);
@@ -130,14 +132,13 @@ fn split_at(
     let mut new_leg: Vec<Waypoint> = w[range.clone()].to_vec();
     let at = k - range.start;
     new_leg.splice(at..at + 1, [via(p), w[k].clone(), via(q)]);
-    let mut c = with_leg(plan, leg, new_leg);
+    let c = with_leg(route, leg, new_leg);
     // Zones: as before up to `A`, recomputed for `A, P, V, Q, B`, as before from past `B`.
     let wanted = zones::wanted(&c, points, via_zone);
-    let mut z = plan.zones[..k - 1].to_vec();
+    let mut z = zones[..k - 1].to_vec();
     z.extend((k - 1..k + 4).map(|j| zone_at(&c, model, points, &wanted, j)));
-    z.extend_from_slice(&plan.zones[k + 2..]);
-    c.zones = z;
-    Some(c)
+    z.extend_from_slice(&zones[k + 2..]);
+    Some((c, z))
 }
 
 /// The point at fraction `t` of the way from `from` to `to`.

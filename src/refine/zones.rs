@@ -1,4 +1,4 @@
-//! Certified zones (issue 10, item 2): which waypoints the robot may fly by.
+//! Certified zones: which waypoints the robot may fly by.
 //!
 //! A waypoint asks for a fly-by zone when it is a via and `motion.via_zone` is not a stop point,
 //! or when it is a cell point whose zone (its own `zone`, else `motion.zone`) is not a stop point
@@ -16,7 +16,7 @@ use crate::collision::CollisionModel;
 use crate::excerpt;
 use crate::place::PlacedPoint;
 use crate::plan::motion::is_stop_zone;
-use crate::plan::{Plan, WaypointKind, MIN_CLEARANCE_TOL_MM};
+use crate::plan::{Clearance, Route, WaypointKind, MIN_CLEARANCE_TOL_MM};
 
 /// The zone of a stop point.
 pub const FINE: &str = "fine";
@@ -29,9 +29,10 @@ pub fn is_fly_by(zone: &str) -> bool {
 
 /// The zone each waypoint asks for, `None` for a stop point (module doc); the first and last
 /// ask for none.
-pub fn wanted(plan: &Plan, points: &[PlacedPoint], via_zone: &str) -> Vec<Option<String>> {
-    let n = plan.waypoints.len();
-    plan.waypoints
+pub fn wanted(route: &Route, points: &[PlacedPoint], via_zone: &str) -> Vec<Option<String>> {
+    let n = route.waypoints.len();
+    route
+        .waypoints
         .iter()
         .enumerate()
         .map(|(k, w)| {
@@ -48,36 +49,42 @@ pub fn wanted(plan: &Plan, points: &[PlacedPoint], via_zone: &str) -> Vec<Option
 }
 
 /// The proof of the corner at waypoint `k` (`0 < k < n - 1`).
-pub fn corner_is_proven(plan: &Plan, model: &CollisionModel, k: usize) -> bool {
-    let w = &plan.waypoints;
+pub fn corner_is_proven(route: &Route, model: &CollisionModel, k: usize) -> bool {
+    let w = &route.waypoints;
     k > 0
         && k + 1 < w.len()
         && model.corner_is_safe(&w[k - 1].joints_deg, &w[k].joints_deg, &w[k + 1].joints_deg)
 }
 
-/// Certifies the zones of `plan` into [`Plan::zones`] and folds every zoned corner's smallest
-/// clearance into [`Plan::min_clearance`]; returns the warnings for stderr. `explicit[i]`: cell
-/// point `i` gives its own `zone`.
+/// The zones [`certify_zones`] gives a route, and the warnings for stderr.
+pub struct Zoning {
+    /// The zone of the move into each waypoint, one a waypoint.
+    pub zones: Vec<String>,
+    pub warnings: Vec<String>,
+}
+
+/// Certifies the zones of `route` (module doc): the zone of the move into each waypoint and the
+/// warnings for stderr. `explicit[i]`: cell point `i` gives its own `zone`.
 pub fn certify_zones(
-    plan: &mut Plan,
+    route: &Route,
     model: &CollisionModel,
     points: &[PlacedPoint],
     explicit: &[bool],
     via_zone: &str,
-) -> Vec<String> {
-    let n = plan.waypoints.len();
-    let wanted = wanted(plan, points, via_zone);
+) -> Zoning {
+    let n = route.waypoints.len();
+    let wanted = wanted(route, points, via_zone);
     // The corners that want a fly-by zone, proven on all cores (each alone).
     let asked: Vec<usize> = (0..n).filter(|&k| wanted[k].is_some()).collect();
     let mut proven = vec![false; n];
-    let answers = crate::parallel::map(&asked, |&k| corner_is_proven(plan, model, k));
+    let answers = crate::parallel::map(&asked, |&k| corner_is_proven(route, model, k));
     for (&k, ok) in asked.iter().zip(answers) {
         proven[k] = ok;
     }
     let mut warnings = Vec::new();
     let mut zones = vec![FINE.to_string(); n];
     for k in 0..n {
-        let WaypointKind::CellPoint(i) = plan.waypoints[k].kind else {
+        let WaypointKind::CellPoint(i) = route.waypoints[k].kind else {
             if let Some(z) = &wanted[k] {
                 if proven[k] {
                     zones[k] = z.clone();
@@ -109,11 +116,29 @@ pub fn certify_zones(
             )),
         }
     }
+    Zoning {
+        zones,
+        warnings: warnings
+            .into_iter()
+            .map(|w| excerpt::message(&w).into_owned())
+            .collect(),
+    }
+}
+
+/// `least`, a route's smallest clearance along its moves, with the smallest clearance over each
+/// corner `zones` flies by folded in, in route order (a corner's replaces it only when smaller).
+pub fn fold_corners(
+    least: Option<Clearance>,
+    route: &Route,
+    zones: &[String],
+    model: &CollisionModel,
+) -> Option<Clearance> {
+    let n = route.waypoints.len();
     // The zoned corners' smallest clearances, on all cores, folded in in their order.
     let zoned: Vec<usize> = (1..n.saturating_sub(1))
-        .filter(|&k| is_fly_by(&zones[k]))
+        .filter(|&k| zones.get(k).is_some_and(|z| is_fly_by(z)))
         .collect();
-    let w = &plan.waypoints;
+    let w = &route.waypoints;
     let corners = crate::parallel::map(&zoned, |&k| {
         model.min_clearance_over_corner(
             &w[k - 1].joints_deg,
@@ -122,17 +147,14 @@ pub fn certify_zones(
             MIN_CLEARANCE_TOL_MM,
         )
     });
+    let mut least = least;
     for mut c in corners.into_iter().flatten() {
         // The corner is proven to keep the clearance: a bound below it (a search budget
         // spent) is raised to it, still a certified lower bound.
         c.mm = c.mm.max(model.clearance_mm());
-        if plan.min_clearance.as_ref().is_none_or(|m| c.mm < m.mm) {
-            plan.min_clearance = Some(c);
+        if least.as_ref().is_none_or(|m| c.mm < m.mm) {
+            least = Some(c);
         }
     }
-    plan.zones = zones;
-    warnings
-        .into_iter()
-        .map(|w| excerpt::message(&w).into_owned())
-        .collect()
+    least
 }

@@ -499,7 +499,7 @@ mod tests {
             same(deg);
             same(-deg);
             // The neighbours by their bits, wrapping (below +0.0 they wrap to NaNs, which
-            // both take by the old path; a plain `-` would overflow in a debug build).
+            // both take by the same path; a plain `-` would overflow in a debug build).
             for k in 1..4 {
                 let (up, down) = (deg.to_bits().wrapping_add(k), deg.to_bits().wrapping_sub(k));
                 same(f64::from_bits(up));

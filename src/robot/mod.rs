@@ -542,8 +542,8 @@ mod tests {
             ),
             "{err}"
         );
-        // One link without: before, the other two cylinders were enough, and the upper arm
-        // went unchecked.
+        // One link without: the other two cylinders are not enough (the upper arm would go
+        // unchecked).
         let start = text
             .find(r#"<collision name="upper_arm">"#)
             .expect("upper arm");
@@ -565,8 +565,8 @@ mod tests {
             let err = urdf::robot_from_urdf(Path::new("x.urdf"), &urdf, None).unwrap_err();
             assert!(err.to_string().contains(needle), "{needle}: {err}");
         };
-        // A limit of 1e300 rad: before, the six-axis IK listed every turn of the axis within
-        // it and panicked (capacity overflow).
+        // A limit of 1e300 rad: unrefused, the six-axis IK would list every turn of the axis
+        // within it and panic (capacity overflow).
         refused(
             text.replace(
                 r#"lower="-2.9670597284" upper="2.9670597284""#,
@@ -574,7 +574,7 @@ mod tests {
             ),
             "joint 'joint_1' <limit>: the range -5.729577951308233e301 .. 5.729577951308233e301 deg reaches beyond -720 .. 720 deg",
         );
-        // NaN and huge origins: before, an IK message about the arm's shape.
+        // NaN and huge origins: refused here, not later by an IK message about the arm's shape.
         refused(
             text.replace(
                 r#"<origin xyz="0.150 0 0.475""#,
@@ -593,8 +593,8 @@ mod tests {
             text.replace(r#"<cylinder radius="0.15""#, r#"<cylinder radius="1e300""#),
             "link 'link_2': cylinder radius and length must be at most 1000 m",
         );
-        // A seventh revolute joint between joint 6 and tool0: before, silently left out (and
-        // tool0 with it).
+        // A seventh revolute joint between joint 6 and tool0: refused, not silently left out
+        // (and tool0 with it).
         refused(
             text.replace(
                 r#"<parent link="link_6"/><child link="tool0"/>"#,
@@ -612,8 +612,8 @@ mod tests {
             "</robot>",
             r#"<link name="spindle"/><joint name="spindle_joint" type="continuous"><parent link="tool0"/><child link="spindle"/><axis xyz="0 0 1"/></joint></robot>"#,
         );
-        // A loop of fixed joints after joint 6 (link_6 -> a -> b -> a, no tool0): before, the
-        // walk never ended.
+        // A loop of fixed joints after joint 6 (link_6 -> a -> b -> a, no tool0): a walk that
+        // does not refuse it never ends.
         refused(
             text.replace(r#"<link name="tool0"/>"#, r#"<link name="a"/><link name="b"/>"#)
                 .replace(
@@ -638,8 +638,8 @@ mod tests {
             err.contains("axis 1: the range -1e300 .. 170 deg reaches beyond"),
             "{err}"
         );
-        // Speeds and accelerations of 1e-300: before, accepted, and the header's estimated time
-        // written in over 300 digits.
+        // Speeds and accelerations of 1e-300: accepted, they would write the header's estimated
+        // time in over 300 digits.
         let ctrl = include_str!("../../robots/irb1400.controller.yaml");
         for (from, to, needle) in [
             (

@@ -18,8 +18,8 @@ use std::path::Path;
 const MM_PER_M: f64 = 1000.0;
 
 /// The largest length a URDF may give (m): 1 km, as a cell's numbers
-/// ([`crate::cell::MAX_MAGNITUDE`] mm).
-const MAX_LENGTH_M: f64 = crate::cell::MAX_MAGNITUDE / MM_PER_M;
+/// ([`crate::input::MAX_MAGNITUDE`] mm).
+const MAX_LENGTH_M: f64 = crate::input::MAX_MAGNITUDE / MM_PER_M;
 
 /// Why the numbers of an `<origin>` cannot be used, if they cannot: NaN or
 /// infinite, or a length beyond [`MAX_LENGTH_M`].

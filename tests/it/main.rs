@@ -24,6 +24,9 @@
 //! - `random_cells`: generated cells (with and without a tool), every method, every module
 //!   through the dense re-check.
 //! - `tool_cells`: the example cells with a tool, every method, and the tool's volume at work.
+//! - `tidy`: the house rules read from `src/` (dependency direction, no import cycles between
+//!   files, file length, no issue numbers, module docs), each checker held to a made-up
+//!   violation.
 //! - `common`: helpers: running the binary, temporary cells, reading a module (`module`), the
 //!   fixtures (`fixtures`), the dense re-check (`dense`), and `library`, the only file here that
 //!   names the library's paths.
@@ -46,4 +49,5 @@ mod refine;
 mod report;
 mod safety;
 mod templates;
+mod tidy;
 mod tool_cells;

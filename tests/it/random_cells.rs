@@ -192,7 +192,7 @@ fn random_cell_with(
         };
     }
     yaml += &format!("planner:\n  clearance: {clearance}\n");
-    // Every other cell flies by its vias where their corners are proven (issue 10).
+    // Every other cell flies by its vias where their corners are proven (the refine stage).
     if index % 2 == 1 {
         yaml += "motion:\n  via_zone: z50\n";
     }

@@ -1,11 +1,13 @@
-//! The refine stage (issue 10): the shortcut pass never lengthens a route (moves or estimated
-//! time) on the example cells and on random cells; without it the module is the paper's; the
-//! modules it writes pass the dense re-check (moves and zoned corners).
+//! The refine stage: the shortcut pass never lengthens a route (moves or estimated time) against
+//! the paper's method alone on the example cells and on random cells; without it the module
+//! writes the paper's route; the modules it writes pass the dense re-check (moves and zoned
+//! corners); the route written is certified as `plan::certify` certifies it anew.
 
 use crate::common::dense::check_module;
 use crate::common::library::{
     load_cell, load_robot, paper_and_refined, parse_cell, refined_and_recertified,
 };
+use crate::common::module::Module;
 use crate::common::{arg, gen_rapid, root, stdout};
 
 const EXAMPLES: [&str; 6] = [
@@ -68,15 +70,32 @@ fn without_the_shortcut_the_module_is_the_papers() {
     let path = root().join("cells/trunk.yaml");
     let cell = load_cell(&path);
     let r = paper_and_refined(&cell, cell.planner.grid_deg).expect("trunk");
+    // On the trunk the shortcut pass moves waypoints: the flag has something to leave out.
+    assert_ne!(
+        r.refined_route, r.paper_route,
+        "the shortcut changes nothing"
+    );
     let o = gen_rapid(&[arg(&path), "--no-shortcut"]);
     assert!(o.status.success());
-    assert_eq!(stdout(&o), r.paper_module, "--no-shortcut");
+    let module = Module::parse(&stdout(&o)).expect("module");
+    assert_eq!(module.header_moves, r.paper.0, "--no-shortcut");
+    assert_eq!(module.targets.len(), r.paper_route.len(), "--no-shortcut");
+    for ((name, written), planned) in module.targets.iter().zip(&r.paper_route) {
+        let off = (0..6)
+            .map(|k| (written[k] - planned[k]).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            off < 1e-9,
+            "--no-shortcut: {name} {written:?} against {planned:?}"
+        );
+    }
     let text = std::fs::read_to_string(&path).expect("cell");
     let off = text.replace("\nplanner:\n", "\nplanner:\n  shortcut: false\n");
     assert_ne!(off, text, "the trunk cell has a planner block");
     let cell = parse_cell(&path, &off).expect("shortcut: false");
     let r = paper_and_refined(&cell, cell.planner.grid_deg).expect("trunk");
-    assert_eq!(r.refined_module, r.paper_module, "planner.shortcut: false");
+    assert_eq!(r.refined_route, r.paper_route, "planner.shortcut: false");
+    assert_eq!(r.refined, r.paper, "planner.shortcut: false");
 }
 
 #[test]
@@ -116,8 +135,8 @@ fn on_gripper_pick_z50_splits_the_vias_by_the_cabinet_and_beats_fine() {
 fn the_written_route_is_certified_whether_the_shortcut_replaces_the_papers_route_or_not() {
     // A run plans the route without certifying its clearances (the refine stage certifies the
     // route it keeps): the plan written must carry, per move, what `plan::certify` finds anew.
-    // (The trunk has no fly-by zone: with one, the zoned corners' clearances also enter
-    // `min_clearance`, which `certify` alone does not give.)
+    // (The trunk has no fly-by zone: with one, the zoned corners' clearances also enter the
+    // plan's least, which `certify` alone does not give.)
     let path = root().join("cells/trunk.yaml");
     let text = std::fs::read_to_string(&path).expect("cell");
     let no_shortcut = text.replace("\nplanner:\n", "\nplanner:\n  shortcut: false\n");
@@ -140,14 +159,20 @@ fn the_written_route_is_certified_whether_the_shortcut_replaces_the_papers_route
     ] {
         let cell = parse_cell(&path, body).expect(what);
         let r = refined_and_recertified(&cell, 2.0).expect(what);
-        assert_eq!(r.refined.move_clearances.len(), r.refined.moves(), "{what}");
+        let clearances: Vec<_> = r
+            .refined
+            .moves
+            .iter()
+            .map(|m| m.clearance.clone())
+            .collect();
+        assert_eq!(clearances.len(), r.refined.route.moves(), "{what}");
         assert!(
-            r.refined.move_clearances.iter().all(Option::is_some),
+            clearances.iter().all(Option::is_some),
             "{what}: a move without its clearance"
         );
-        assert_eq!(r.refined.move_clearances, r.again.move_clearances, "{what}");
-        assert_eq!(r.refined.min_clearance, r.again.min_clearance, "{what}");
-        if r.refined.waypoints == r.paper.waypoints {
+        assert_eq!(clearances, r.again.clearances, "{what}");
+        assert_eq!(r.refined.least, r.again.least, "{what}");
+        if r.refined.route.waypoints == r.paper.waypoints {
             kept_the_papers += 1;
         } else {
             replaced_it += 1;

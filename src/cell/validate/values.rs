@@ -3,8 +3,9 @@
 //! angles), RAPID names. Each refusal points at the value.
 
 use super::super::raw::{RawPart, RawPose};
-use super::super::{CellError, Frame, Loc, MAX_MAGNITUDE, QUATERNION_NORM_TOL};
+use super::super::{CellError, Frame, Loc, QUATERNION_NORM_TOL};
 use crate::excerpt;
+use crate::input::MAX_MAGNITUDE;
 use crate::names::{check_data_name, check_identifier};
 use crate::precision::{self, JOINT_DECIMALS, MASS_DECIMALS, POSITION_DECIMALS};
 use crate::robot::ik::six::ConfData;

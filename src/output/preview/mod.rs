@@ -1,4 +1,4 @@
-//! The 3D preview page (`--html FILE`, issue 12): one self-contained HTML file that shows the
+//! The 3D preview page (`--html FILE`): one self-contained HTML file that shows the
 //! cell's boxes, the robot's collision cylinders and the tool's shapes, and plays the program
 //! along its estimated timing, with the waypoints, the TCP trace and the place of the smallest
 //! clearance; on a failed plan, the cell and the points that could not be joined.

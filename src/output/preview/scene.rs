@@ -4,8 +4,7 @@
 //! the TCP trace, and the place of the smallest clearance; or, for a failed plan, the cell, the
 //! robot where it could be placed and the points that could not be joined.
 //!
-//! **Keyframes.** Move `i` starts when move `i - 1` ends and lasts the estimate's
-//! `move_s[i]`; within it all six axes run together along the straight joint move (`MoveAbsJ`)
+//! **Keyframes.** Move `i` starts when move `i - 1` ends and lasts its estimated time; within it all six axes run together along the straight joint move (`MoveAbsJ`)
 //! at the progress of the move's profile (`Profile::progress`, the leading axis' profile of the
 //! time stage: the leading axis', or the TCP path's when the speeddata leads). A move is sampled
 //! piece by piece (a ramp, the cruise, a ramp; or its one quintic) every [`KEYFRAME_STEP_S`] of
@@ -15,7 +14,8 @@
 //! about a millimetre of the kinematics (a test measures it).
 //!
 //! **The smallest clearance** is the plan's certified figure, on the move, link and obstacle the
-//! plan names ([`Plan::move_clearances`]). Where on the move it occurs is only for the picture:
+//! plan names (the move whose clearance is [`Plan::least`]; none where the least is a zoned
+//! corner's). Where on the move it occurs is only for the picture:
 //! the move is sampled ([`CLEARANCE_SAMPLES`]) and at each sample the closest points of the
 //! named shape and box are found by alternating projections (two convex sets: project onto one,
 //! then the other, until the pair stops moving); the nearest sample gives the time and the two
@@ -28,7 +28,8 @@ use super::{
 use crate::cell::{Cell, Target, ToolGeometry};
 use crate::output::poses::Poser;
 use crate::place::{Placed, PlacedPoint, Placement};
-use crate::plan::{Plan, Profile};
+use crate::plan::motion::Profile;
+use crate::refine::Plan;
 use crate::robot::Robot;
 use nalgebra::{Isometry3, Point3, Vector3};
 
@@ -38,8 +39,6 @@ pub const KEYFRAME_STEP_S: f64 = 1.0 / 30.0;
 pub const KEYFRAME_STEP_DEG: f64 = 1.0;
 /// Samples along the move of the smallest clearance, to place its marker.
 pub const CLEARANCE_SAMPLES: usize = 400;
-/// A move takes this long in the picture when the plan has no time estimate, s.
-const UNTIMED_MOVE_S: f64 = 1.0;
 
 /// One shape of the robot model and the frame it hangs on.
 enum Carrier {
@@ -180,16 +179,10 @@ fn title(cell: &Cell) -> (String, String) {
     (format!("{} - {file}", cell.module), file)
 }
 
-/// Each move's duration and profile: the estimate's, or [`UNTIMED_MOVE_S`] on one quintic.
+/// Each move's estimated duration and profile.
 fn timing(plan: &Plan) -> Vec<(f64, Profile)> {
-    (0..plan.moves())
-        .map(|i| match &plan.estimate {
-            Some(e) => (
-                e.move_s.get(i).copied().unwrap_or(0.0),
-                e.move_profile.get(i).copied().unwrap_or(Profile::Quintic),
-            ),
-            None => (UNTIMED_MOVE_S, Profile::Quintic),
-        })
+    (plan.moves.iter())
+        .map(|m| (m.estimate.time_s, m.estimate.profile))
         .collect()
 }
 
@@ -199,15 +192,16 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
     let poser = Poser::new(robot, placed.placement, cell.tool.as_ref());
     let (defs, carriers) = shapes(robot, cell);
     let timing = timing(plan);
+    let route = &plan.route;
     let mut keyframes = Vec::new();
-    let mut waypoints = Vec::with_capacity(plan.waypoints.len());
-    let mut starts = Vec::with_capacity(plan.moves());
+    let mut waypoints = Vec::with_capacity(route.waypoints.len());
+    let mut starts = Vec::with_capacity(route.moves());
     let mut t0 = 0.0;
-    for (k, w) in plan.waypoints.iter().enumerate() {
+    for (k, w) in route.waypoints.iter().enumerate() {
         if k == 0 {
             keyframes.push(keyframe(&poser, &carriers, 0.0, &w.joints_deg));
         } else {
-            let from = &plan.waypoints[k - 1].joints_deg;
+            let from = &route.waypoints[k - 1].joints_deg;
             let (duration, profile) = timing[k - 1];
             starts.push(t0);
             let largest = (0..6)
@@ -248,10 +242,10 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
         waypoints,
         clearance,
         // As the module header states it.
-        total_time_s: plan
-            .estimate
-            .as_ref()
-            .map(|e| crate::precision::round(e.total_s, crate::precision::TIME_DECIMALS)),
+        total_time_s: Some(crate::precision::round(
+            plan.total_s,
+            crate::precision::TIME_DECIMALS,
+        )),
         failure: None,
     }
 }
@@ -273,11 +267,8 @@ fn clearance(
     timing: &[(f64, Profile)],
     starts: &[f64],
 ) -> Option<SceneClearance> {
-    let least = plan.min_clearance.as_ref()?;
-    let i = plan
-        .move_clearances
-        .iter()
-        .position(|c| c.as_ref() == Some(least))?;
+    let least = plan.least.as_ref()?;
+    let i = (plan.moves.iter()).position(|m| m.clearance.as_ref() == Some(least))?;
     // The link (or tool shape) named by the clearance, and the obstacle.
     let (part, shape_name) = crate::output::clearance_part(least);
     let kind = if part == "tool" {
@@ -290,8 +281,8 @@ fn clearance(
         .position(|d| d.kind == kind && d.name == shape_name)?;
     let obstacle = cell.obstacles.iter().find(|o| o.name == least.obstacle)?;
     let (from, to) = (
-        &plan.waypoints[i].joints_deg,
-        &plan.waypoints[i + 1].joints_deg,
+        &plan.route.waypoints[i].joints_deg,
+        &plan.route.waypoints[i + 1].joints_deg,
     );
     let (duration, profile) = timing.get(i).copied().unwrap_or((0.0, Profile::Quintic));
     let mut best: Option<(f64, f64, [[f64; 3]; 2])> = None;
@@ -482,7 +473,7 @@ pub fn failure_scene(
 mod tests {
     //! The scene of a real (small) run: the bundled IRB 1400 with a tool, a table and a post.
     use super::*;
-    use crate::pipeline::{self, Loaded};
+    use crate::pipeline::{self, Loaded, Options};
     use crate::plan::Method;
     use std::path::Path;
 
@@ -521,9 +512,10 @@ planner: { grid: 5 }
     #[test]
     fn keyframes_follow_the_estimate_and_the_kinematics() {
         let job = job();
-        let out = pipeline::run(&job, Method::Extensile, 5.0).expect("plans");
+        let out = pipeline::run(&job, &Options::new(Method::Extensile, 5.0)).expect("plans");
         let plan = &out.plan;
-        assert!(plan.moves() >= 2, "the post makes a via");
+        let route = &plan.route;
+        assert!(route.moves() >= 2, "the post makes a via");
         let s = scene(
             &job.cell,
             &job.robot,
@@ -542,10 +534,9 @@ planner: { grid: 5 }
         );
         assert!(s.keyframes.iter().all(|k| k.poses.len() == 6));
         // Time runs from 0 to the estimate, never backwards.
-        let e = plan.estimate.as_ref().expect("timed");
         assert_eq!(s.keyframes[0].time_s, 0.0);
         let last = s.keyframes.last().expect("keyframes");
-        assert!((last.time_s - e.total_s).abs() < 1e-9);
+        assert!((last.time_s - plan.total_s).abs() < 1e-9);
         assert!(s.keyframes.windows(2).all(|w| w[0].time_s <= w[1].time_s));
         // Each waypoint is reached when its moves' times add up, where forward kinematics puts
         // its TCP (the tool's 200 mm beyond the flange), with the module's names.
@@ -553,14 +544,14 @@ planner: { grid: 5 }
         let mut t = 0.0;
         for (k, w) in s.waypoints.iter().enumerate() {
             if k > 0 {
-                t += e.move_s[k - 1];
+                t += plan.moves[k - 1].estimate.time_s;
             }
             assert!((w.time_s - t).abs() < 1e-9);
             assert_eq!(w.name, out.rendered.names[k]);
-            let tcp = poser.tcp_mm(&plan.waypoints[k].joints_deg);
+            let tcp = poser.tcp_mm(&route.waypoints[k].joints_deg);
             assert_eq!(w.tcp_mm, tcp);
             let flange = poser
-                .tool0(&plan.waypoints[k].joints_deg)
+                .tool0(&route.waypoints[k].joints_deg)
                 .translation
                 .vector;
             let reach = (0..3)
@@ -575,10 +566,10 @@ planner: { grid: 5 }
         assert_eq!(s.waypoints[1].kind, WaypointKind::Via);
         // Halfway through the first move in time the robot is where the move's profile says:
         // the straight joint move at the profile's progress (0.5 by symmetry).
-        let half = e.move_s[0] / 2.0;
+        let half = plan.moves[0].estimate.time_s / 2.0;
         let mid = lerp6(
-            &plan.waypoints[0].joints_deg,
-            &plan.waypoints[1].joints_deg,
+            &route.waypoints[0].joints_deg,
+            &route.waypoints[1].joints_deg,
             0.5,
         );
         let kf = s
@@ -594,10 +585,11 @@ planner: { grid: 5 }
         // TCP is within a millimetre of the kinematics at that time (about 0.5 mm here).
         let mut worst: f64 = 0.0;
         let mut t0 = 0.0;
-        for (i, (&duration, profile)) in e.move_s.iter().zip(&e.move_profile).enumerate() {
+        for (i, m) in plan.moves.iter().enumerate() {
+            let (duration, profile) = (m.estimate.time_s, m.estimate.profile);
             let (from, to) = (
-                &plan.waypoints[i].joints_deg,
-                &plan.waypoints[i + 1].joints_deg,
+                &route.waypoints[i].joints_deg,
+                &route.waypoints[i + 1].joints_deg,
             );
             let within = |t: f64| t >= t0 - 1e-9 && t <= t0 + duration + 1e-9;
             for w in s.keyframes.windows(2) {
@@ -626,7 +618,7 @@ planner: { grid: 5 }
     #[test]
     fn the_smallest_clearance_is_marked_where_it_occurs() {
         let job = job();
-        let out = pipeline::run(&job, Method::Extensile, 5.0).expect("plans");
+        let out = pipeline::run(&job, &Options::new(Method::Extensile, 5.0)).expect("plans");
         let s = scene(
             &job.cell,
             &job.robot,
@@ -634,11 +626,11 @@ planner: { grid: 5 }
             &out.plan,
             &out.rendered.names,
         );
-        let least = out.plan.min_clearance.as_ref().expect("obstacles");
+        let least = out.plan.least.as_ref().expect("obstacles");
         let c = s.clearance.expect("marked");
         assert_eq!(c.shape, crate::output::clearance_part(least).1);
         assert_eq!(c.obstacle, least.obstacle);
-        assert_eq!(out.plan.move_clearances[c.move_index].as_ref(), Some(least));
+        assert_eq!(out.plan.moves[c.move_index].clearance.as_ref(), Some(least));
         assert_eq!(
             c.distance_mm,
             crate::precision::round(least.mm, crate::precision::LENGTH_DECIMALS)

@@ -414,7 +414,7 @@ fn render_rejects_target_named_like_module_or_tool() {
 
 #[test]
 fn vias_take_no_name_of_the_module_or_its_data() {
-    // A module or tool called like a via is valid RAPID; the via steps aside (was a name clash,
+    // A module or tool called like a via is valid RAPID; the via steps aside (no name clash,
     // exit 4, at render time).
     let mut p = small_program();
     p.module = "Via01_01".into();

@@ -142,8 +142,8 @@ pub fn merge_paths<G: Graph + ?Sized>(a: &[Node], b: &[Node], graph: &G) -> Grid
     path
 }
 
-/// The search with both waves whole (`wave::expand`), as it was before the two were
-/// numbered together: the reference the search must equal.
+/// The search with both waves whole (`wave::expand`), not numbered together: the reference
+/// the search must equal.
 #[cfg(test)]
 pub(crate) fn search_with_whole_waves<G: Graph>(
     cs: &CSpace,

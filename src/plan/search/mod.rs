@@ -35,31 +35,10 @@ pub mod depth_first;
 pub mod extensile;
 pub mod neighboring;
 
-/// The three path searches of the paper (section 4).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Method {
-    Neighboring,
-    DepthFirst,
-    Extensile,
-}
+/// The searches' names, as the cell chooses one ([`Method`], `planner.method`).
+pub use crate::cell::Method;
 
-impl Method {
-    pub const ALL: [Method; 3] = [Method::Neighboring, Method::DepthFirst, Method::Extensile];
-
-    /// The name the cell file and the command line use.
-    pub fn name(self) -> &'static str {
-        match self {
-            Method::Neighboring => "neighboring",
-            Method::DepthFirst => "depth-first",
-            Method::Extensile => "extensile",
-        }
-    }
-
-    pub fn parse(s: &str) -> Option<Method> {
-        Method::ALL.into_iter().find(|m| m.name() == s)
-    }
-}
-
+/// The searches themselves (the names are the cell's).
 impl Method {
     /// The path `start -> end` by this method on the inspected grid `cs`, over the nodes and
     /// steps of `graph` (the whole-move check decides which steps exist).
@@ -91,12 +70,6 @@ pub enum SearchFailure {
     /// The walk back found no step: impossible on a wave of the same graph (module doc); a
     /// defect if it happens.
     WalkFailed,
-}
-
-impl std::fmt::Display for Method {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name())
-    }
 }
 
 use crate::plan::cspace::{CSpace, Node};

@@ -130,7 +130,8 @@ mod tests {
         assert_path(&p, [0, 0, 0], [3, 1, 0]);
         assert!(!p.contains(&[2, 0, 0]));
         // Along the diagonal every 3-step path passes (1,1); with its steps refused the wave
-        // numbers around it and the search takes the longer way (the old walk gave up here).
+        // numbers around it and the search takes the longer way (a walk on the wave that
+        // numbered over the refused steps would give up here).
         let p = search(&cs, [0, 0, 0], [3, 3, 0], &avoid([1, 1, 0])).expect("around (1,1)");
         assert_path(&p, [0, 0, 0], [3, 3, 0]);
         assert!(!p.contains(&[1, 1, 0]) && p.len() == 5, "{p:?}");

@@ -12,7 +12,7 @@
 //! take without obstacles) exceeds a bound on the ends' distance is left out, and the bound
 //! grows until the waves meet within it (`corridor_rows`). The corridor is the same; the waves
 //! number the nodes between the ends rather than the balls around them, and a leg looks at
-//! its tool at fewer nodes (torch-trunk at 1 deg: 17 % fewer instructions; gripper-pick 31 %).
+//! its tool at fewer nodes.
 
 use super::rows::{Level, RowWave};
 use super::{ends_usable, expand, label_word, residue_code, with_code, Connectivity, Graph};
@@ -144,7 +144,7 @@ pub(super) fn corridor_waves<G: Graph + ?Sized>(
 /// memo keeps its looks across the tries (`plan::leg`): a try again costs the waves' word
 /// operations and the fresh pages they touch, not the looks. Over 6 neighbours the waves are
 /// not bounded: the grid distance estimates axis steps poorly (up to a third of them), and the
-/// tries cost more than they save (an open grid took twice as long).
+/// tries cost more than they save (`benches/README.md`).
 fn corridor_rows<G: Graph + ?Sized, const K: usize>(
     cs: &CSpace,
     graph: &G,
@@ -250,17 +250,16 @@ fn corridor_rows<G: Graph + ?Sized, const K: usize>(
 }
 
 /// The corridor waves' bound grows by `1 / BOUND_GROWTH` of itself (at least 2) when a wave ran
-/// out having left nodes out ([`corridor_rows`]). Instructions of whole runs at 1 deg (M) by
-/// the divisor, torch-trunk / the same without tool shapes / trunk: 2 -> 2056 / 1254 / 1100;
-/// 4 -> 1931 / 1261 / 1059; 8 -> 1812 / 1244 / 1045; 16 -> 1828 / 1270 / 1044; 32 -> 1930 /
-/// 1313 / 1041 (unbounded: 2179 / 1298 / 1147).
+/// out having left nodes out ([`corridor_rows`]): of the divisors 2 to 32, 8 costs the example
+/// cells' whole runs about the fewest instructions (`benches/README.md`).
 const BOUND_GROWTH: i64 = 8;
 
 /// After this many tries the bound doubles instead: ends that are not joined stop being
 /// numbered again once the bound leaves nothing out, and doubling gets there in a few more
 /// tries, each numbering more than the one before (so the tries together cost a small
-/// multiple of the last). Waves whose ends a wall keeps apart took about twice as long as
-/// unbounded ones in a review's open test grid (no looks); the example cells all gain.
+/// multiple of the last). Without the doubling, waves whose ends a wall keeps apart cost far
+/// more than unbounded ones on an open test grid (no looks, `benches/README.md`); the example
+/// cells all gain.
 const BOUND_FINE_TRIES: u32 = 6;
 
 /// How two corridor waves ended ([`meet`]).

@@ -7,9 +7,11 @@ pub use gen_rapid::robot::Robot;
 
 use gen_rapid::cell;
 use gen_rapid::error::Error;
-use gen_rapid::pipeline;
+use gen_rapid::output::rapid::ModuleTemplate;
+use gen_rapid::pipeline::{self, Options};
 use gen_rapid::place::Placed;
-use gen_rapid::plan::{Method, Plan};
+use gen_rapid::plan::{Certified, Method, Route};
+use gen_rapid::refine::{Plan, Refined};
 use std::path::Path;
 
 /// The bundled IRB 1400.
@@ -46,7 +48,7 @@ pub fn cell_from_bytes(path: &Path, file: &str, bytes: Vec<u8>) -> Result<(Cell,
     }
 }
 
-/// The whole run after load (place, inspect, plan, time, render) for a cell with `robot`, on a
+/// The whole run after load (place, inspect, plan, refine, render) for a cell with `robot`, on a
 /// grid of `grid_deg`: the module text.
 pub fn run_with(
     cell: &Cell,
@@ -60,7 +62,7 @@ pub fn run_with(
         text: text.to_string(),
         robot: robot.clone(),
     };
-    match pipeline::run(&job, cell.planner.method, grid_deg) {
+    match pipeline::run(&job, &Options::new(cell.planner.method, grid_deg)) {
         Ok(out) => Ok(out.rendered.text),
         Err(halted) => Err(refusal(*halted.error, file, Some(text))),
     }
@@ -130,17 +132,19 @@ fn placed_and_inspected(
     Ok((job, placed, inspected))
 }
 
-/// Plans `cell` with every method on one inspected grid of `grid_deg`. Any error but a planning
-/// failure (the cell, the robot, a point, rendering) is `Err` with its message.
+/// Plans `cell` with every method on one inspected grid of `grid_deg`, as a run does (route,
+/// refine, render). Any error but a planning failure (the cell, the robot, a point, rendering)
+/// is `Err` with its message.
 pub fn plan_every_method(cell: &Cell, grid_deg: f64) -> Result<Vec<(String, Planned)>, String> {
     let (job, placed, inspected) = placed_and_inspected(cell, grid_deg)?;
+    let template = ModuleTemplate::embedded();
+    let shortcut = cell.planner.shortcut;
     Method::ALL
         .into_iter()
         .map(|m| {
-            let planned = match pipeline::plan(&job, &placed, &inspected, m)
-                .map(|p| pipeline::time(&job, &placed, p))
-                .map(|p| pipeline::refine(&job, &placed, &inspected, p).plan)
-                .and_then(|p| pipeline::render(&job, &placed, &p))
+            let planned = match pipeline::route(&job, &placed, &inspected, m)
+                .map(|r| pipeline::refine(&job, &placed, &inspected, r, shortcut).plan)
+                .and_then(|p| pipeline::render(&job, &placed, &p, &template))
             {
                 Ok(out) => Planned::Module(out.text),
                 Err(e @ Error::Plan { .. }) => Planned::PlanningFailed(e.to_string()),
@@ -151,43 +155,32 @@ pub fn plan_every_method(cell: &Cell, grid_deg: f64) -> Result<Vec<(String, Plan
         .collect()
 }
 
-/// A plan stage (`pipeline::plan`, certified, or `pipeline::route`, as a run plans), as the
-/// pipeline's signature of both.
-type PlanStage =
-    fn(&pipeline::Loaded, &Placed, &pipeline::Inspected, Method) -> Result<Plan, Error>;
-
-/// `cell` on a grid of `grid_deg` through the plan stage `stage` and the time stage (the
-/// paper's figure kept), then the refine stage: the job, its placed points and inspected grid,
-/// the paper's route and the refined plan.
+/// `cell` on a grid of `grid_deg` through the plan stage and the refine stage, as a run: the
+/// job, its placed points and inspected grid, the plan stage's route and the refined plan.
 fn through_refine(
-    stage: PlanStage,
     cell: &Cell,
     grid_deg: f64,
-) -> Result<(pipeline::Loaded, Placed, pipeline::Inspected, Plan, Plan), String> {
+) -> Result<(pipeline::Loaded, Placed, pipeline::Inspected, Route, Plan), String> {
     let (job, placed, inspected) = placed_and_inspected(cell, grid_deg)?;
-    let paper = stage(&job, &placed, &inspected, cell.planner.method)
-        .map(|p| {
-            pipeline::keep_paper_figure(&job, &placed, &inspected, pipeline::time(&job, &placed, p))
-        })
+    let route = pipeline::route(&job, &placed, &inspected, cell.planner.method)
         .map_err(|e| e.to_string())?;
-    let refined = pipeline::refine(&job, &placed, &inspected, paper.clone()).plan;
-    Ok((job, placed, inspected, paper, refined))
+    let shortcut = cell.planner.shortcut;
+    let Refined { plan, .. } = pipeline::refine(&job, &placed, &inspected, route.clone(), shortcut);
+    Ok((job, placed, inspected, route, plan))
 }
 
-/// A run's plan of `cell` on a grid of `grid_deg` as the binary makes it (the route without its
-/// clearances certified, timed, then the refine stage), the paper's route it started from, and
-/// the run's plan with its clearances certified anew by `plan::certify` (an independent
-/// computation to compare the refine stage's certificate with).
+/// A run's plan of `cell` on a grid of `grid_deg` as the binary makes it, the plan stage's
+/// route it started from, and the plan's route with its clearances certified anew by
+/// `plan::certify` (an independent computation to compare the refine stage's certificate with).
 pub struct Recertified {
-    pub paper: Plan,
+    pub paper: Route,
     pub refined: Plan,
-    pub again: Plan,
+    pub again: Certified,
 }
 
 pub fn refined_and_recertified(cell: &Cell, grid_deg: f64) -> Result<Recertified, String> {
-    let (_, _, inspected, paper, refined) = through_refine(pipeline::route, cell, grid_deg)?;
-    // `certify` measures every move again, whatever clearances the plan carries.
-    let again = gen_rapid::plan::certify(refined.clone(), &inspected.model);
+    let (_, _, inspected, paper, refined) = through_refine(cell, grid_deg)?;
+    let again = gen_rapid::plan::certify(refined.route.clone(), &inspected.model);
     Ok(Recertified {
         paper,
         refined,
@@ -195,28 +188,29 @@ pub fn refined_and_recertified(cell: &Cell, grid_deg: f64) -> Result<Recertified
     })
 }
 
-/// The paper's route (plan and time, no refine stage) and the refined one (shortcut and zones,
-/// as a run writes it) of `cell` on a grid of `grid_deg`: `(moves, estimated s)` of each, and
-/// both module texts.
+/// The paper's method alone (the plan stage's route and the time the plan states for it) and
+/// the refined route (shortcut and zones, as a run writes it) of `cell` on a grid of
+/// `grid_deg`: `(moves, estimated s)` of each, the waypoints of both routes (all six axes) and
+/// the refined module's text.
 pub struct PaperAndRefined {
     pub paper: (usize, f64),
     pub refined: (usize, f64),
-    pub paper_module: String,
+    pub paper_route: Vec<[f64; 6]>,
+    pub refined_route: Vec<[f64; 6]>,
     pub refined_module: String,
 }
 
 pub fn paper_and_refined(cell: &Cell, grid_deg: f64) -> Result<PaperAndRefined, String> {
-    let (job, placed, _, paper, refined) = through_refine(pipeline::plan, cell, grid_deg)?;
-    let time = |p: &Plan| p.estimate.as_ref().map_or(f64::NAN, |e| e.total_s);
-    let text = |p| {
-        pipeline::render(&job, &placed, p)
-            .map(|r| r.text)
-            .map_err(|e| e.to_string())
-    };
+    let (job, placed, _, route, plan) = through_refine(cell, grid_deg)?;
+    let six = |r: &Route| r.waypoints.iter().map(|w| w.joints_deg).collect();
+    let module = pipeline::render(&job, &placed, &plan, &ModuleTemplate::embedded())
+        .map(|r| r.text)
+        .map_err(|e| e.to_string())?;
     Ok(PaperAndRefined {
-        paper: (paper.moves(), time(&paper)),
-        refined: (refined.moves(), time(&refined)),
-        paper_module: text(&paper)?,
-        refined_module: text(&refined)?,
+        paper: (plan.paper.moves, plan.paper.time_s),
+        refined: (plan.route.moves(), plan.total_s),
+        paper_route: six(&route),
+        refined_route: six(&plan.route),
+        refined_module: module,
     })
 }

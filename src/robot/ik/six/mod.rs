@@ -69,7 +69,7 @@
 //! chosen joints are rounded for the module (`bound.rs`).
 //!
 //! # Why not the `rs-opw-kinematics` crate
-//! It was evaluated (3.0.0 and the nalgebra-based 1.8.20; BSD-3, actively maintained, with a
+//! We read it (3.0.0 and the nalgebra-based 1.8.20; BSD-3, actively maintained, with a
 //! `Parallelogram` wrapper that adds `q2` to `q3` as our coupling does). Its OPW parameters could
 //! be derived from our URDF (`a1` = 150, `a2` = -120, `c1` = 475, `c2` = 600, `c3` = 720,
 //! `c4` = 85, joint-3 offset -90 deg for the IRB 1400). It does not fit:

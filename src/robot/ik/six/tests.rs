@@ -57,7 +57,7 @@ fn random_in_range(rng: &mut Rng, robot: &Robot) -> Axes6 {
 }
 
 fn torch() -> Isometry3<f64> {
-    // The bent torch: 350 mm out, tilted 45 deg about y.
+    // A bent torch: 350 mm out, tilted 45 deg about y.
     Isometry3::from_parts(
         Translation3::new(0.0, 0.0, 350.0),
         UnitQuaternion::new_normalize(nalgebra::Quaternion::new(0.9238795, 0.0, 0.3826834, 0.0)),
@@ -691,7 +691,8 @@ fn a_target_at_a_limit_solves() {
 }
 
 /// Rounding a solution to 0.001 deg moves the TCP no more than the bound, and for the IRB 1400
-/// with a 350 mm torch the bound stays within the 0.1 mm and 0.01 deg.
+/// with a 350 mm torch the bound stays within the 0.1 mm and 0.01 deg a robtarget's
+/// jointtarget must keep.
 #[test]
 fn rounding_bound_holds() {
     let (robot, ik) = irb();
