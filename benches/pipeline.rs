@@ -5,7 +5,6 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use gen_rapid::pipeline::{self, Options};
-use gen_rapid::progress::Silent;
 use std::hint::black_box;
 use std::path::Path;
 use std::time::Duration;

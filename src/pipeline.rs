@@ -16,7 +16,7 @@ use crate::output::program::{self, RobotFacts};
 use crate::output::rapid::{self, ModuleTemplate, RapidError, TemplateError};
 use crate::place::{self, locate::Sketch, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
-use crate::plan::{self, Method, Route};
+use crate::plan::{self, Legs, Method, Route};
 use crate::progress::{Progress, Silent};
 use crate::refine::{self, Plan, Refined};
 use crate::timing;
@@ -85,15 +85,27 @@ pub fn inspect(job: &Loaded, placed: &Placed, grid_deg: f64) -> Inspected {
     Inspected { model, cspace }
 }
 
-/// Plan: the route through the points with `method`, every move proven; a failure points at the
-/// point it is about.
+/// Plan: the route through the points with `method` (the paper's method: every leg on the
+/// grid), every move proven; a failure points at the point it is about.
 pub fn route(
     job: &Loaded,
     placed: &Placed,
     got: &Inspected,
     method: Method,
 ) -> Result<Route, Error> {
-    plan::route(&got.cspace, &got.model, &placed.points, method).map_err(|source| {
+    route_with(job, placed, got, method, Legs::GridOnly)
+}
+
+/// [`route`] with `legs` saying which legs the grid plans (`plan::direct`).
+pub fn route_with(
+    job: &Loaded,
+    placed: &Placed,
+    got: &Inspected,
+    method: Method,
+    legs: Legs,
+) -> Result<Route, Error> {
+    let (cs, model, points) = (&got.cspace, &got.model, &placed.points);
+    plan::route_with(cs, model, points, method, legs).map_err(|source| {
         let loc = job.cell.points.get(source.point()).map(|p| p.loc);
         Error::Plan {
             source,
@@ -217,7 +229,8 @@ pub fn run(job: &Loaded, opts: &Options) -> Result<Outcome, Halted> {
     let placed = place(job)?;
     let inspected = inspect(job, &placed, opts.grid_deg);
     progress.stage("planning and proving the moves", 0);
-    let route = match route(job, &placed, &inspected, opts.method) {
+    let legs = Legs::of(&job.cell.planner);
+    let route = match route_with(job, &placed, &inspected, opts.method, legs) {
         Ok(route) => route,
         Err(error) => {
             let searched = Some(Box::new(Searched { placed, inspected }));

@@ -355,6 +355,7 @@ mod tests {
                 from: 0,
                 to: 1,
                 grid_path: Vec::new(),
+                straight: false,
                 waypoints: 0..4,
             }],
         };

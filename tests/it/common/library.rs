@@ -206,8 +206,11 @@ pub fn paper_and_refined(cell: &Cell, grid_deg: f64) -> Result<PaperAndRefined, 
     let module = pipeline::render(&job, &placed, &plan, &ModuleTemplate::embedded())
         .map(|r| r.text)
         .map_err(|e| e.to_string())?;
+    let paper = plan
+        .paper
+        .ok_or("the plan stage's route is the paper's: a figure")?;
     Ok(PaperAndRefined {
-        paper: (plan.paper.moves, plan.paper.time_s),
+        paper: (paper.moves, paper.time_s),
         refined: (plan.route.moves(), plan.total_s),
         paper_route: six(&route),
         refined_route: six(&plan.route),
