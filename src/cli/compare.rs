@@ -53,7 +53,9 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
         }
         failure
     })?;
-    let inspected = pipeline::inspect(&job, &placed, grid_deg, &Silent);
+    let inspected = pipeline::inspect(&job, &placed, grid_deg);
+    // The whole grid inspected first, as the paper does: no method's planning time holds it.
+    inspected.cspace.inspect_all(&Silent);
     let attempts = attempts(&job, &placed, &inspected);
     let mut rows: Vec<Row> = attempts
         .iter()

@@ -11,7 +11,6 @@ use gen_rapid::output::rapid::ModuleTemplate;
 use gen_rapid::pipeline::{self, Options};
 use gen_rapid::place::Placed;
 use gen_rapid::plan::{Certified, Method, Route};
-use gen_rapid::progress::Silent;
 use gen_rapid::refine::{Plan, Refined};
 use std::path::Path;
 
@@ -128,7 +127,7 @@ fn placed_and_inspected(
         robot,
     };
     let placed = pipeline::place(&job).map_err(|e| e.to_string())?;
-    let inspected = pipeline::inspect(&job, &placed, grid_deg, &Silent);
+    let inspected = pipeline::inspect(&job, &placed, grid_deg);
     Ok((job, placed, inspected))
 }
 
@@ -206,8 +205,11 @@ pub fn paper_and_refined(cell: &Cell, grid_deg: f64) -> Result<PaperAndRefined, 
     let module = pipeline::render(&job, &placed, &plan, &ModuleTemplate::embedded())
         .map(|r| r.text)
         .map_err(|e| e.to_string())?;
+    let paper = plan
+        .paper
+        .ok_or("the plan stage's route is the paper's: a figure")?;
     Ok(PaperAndRefined {
-        paper: (plan.paper.moves, plan.paper.time_s),
+        paper: (paper.moves, paper.time_s),
         refined: (plan.route.moves(), plan.total_s),
         paper_route: six(&route),
         refined_route: six(&plan.route),
