@@ -28,6 +28,7 @@
 //! later stages do not use all of these yet: [`unsupported`] says which, and the pipeline
 //! refuses a cell that uses them.
 
+mod present;
 mod raw;
 mod syntax;
 mod unsupported;
@@ -71,9 +72,13 @@ pub const QUATERNION_NORM_TOL: f64 = 1e-3;
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct RobotSpec {
-    /// Resolved against the cell file's directory.
+    /// `robot.urdf`, resolved against the cell file's directory; empty with `robot.model`.
     pub urdf_path: PathBuf,
+    /// Where the robot is named: `robot.urdf`'s value, or `robot.model`'s.
     pub urdf_loc: Loc,
+    /// `robot.model`: a robot built into gen-rapid, by name (the load stage knows the names);
+    /// `None` with `robot.urdf`.
+    pub model: Option<String>,
     /// `robot.controller`: the controller file named explicitly, resolved against the cell
     /// file's directory. `None`: the `<stem>.controller.yaml` beside the URDF, if there is one.
     pub controller_path: Option<PathBuf>,
@@ -411,6 +416,8 @@ pub struct Planner {
     /// `planner.shortcut`: after the paper's method, the continuous shortcut pass (`refine`).
     /// `false` keeps the paper's method alone.
     pub shortcut: bool,
+    /// Where `planner.grid` is given (`None`: the default), for a budget the grid passes.
+    pub grid_loc: Option<Loc>,
 }
 
 /// The cell's `motion:` defaults.
@@ -584,8 +591,11 @@ pub fn parse(path: &Path, text: &str) -> Result<Cell, CellError> {
     budget.enforce_alias_anchor_ratio = false;
     let mut options = serde_saphyr::Options::default();
     options.budget = Some(budget);
-    let raw: raw::RawCell = serde_saphyr::from_str_with_options(text, options)
+    let raw: raw::RawCell = serde_saphyr::from_str_with_options(text, options.clone())
         .map_err(|e| syntax::refusal(text, &e))?;
+    if let Some(e) = present::first_key_without_value(text, options) {
+        return Err(e);
+    }
     validate::cell(path, raw)
 }
 

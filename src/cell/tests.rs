@@ -21,6 +21,7 @@ fn defaults_fill_what_a_cell_leaves_out() {
             grid_deg: 1.0,
             clearance_mm: 10.0,
             shortcut: true,
+            grid_loc: None,
         }
     );
     assert_eq!(
@@ -180,8 +181,25 @@ fn refusals_name_the_key_and_its_place() {
             10,
         ),
         (
+            format!("{MINIMAL}motion:\n  speed: vFast\n  zone: VFAST\n"),
+            "motion.zone 'VFAST' is already the name of motion.speed",
+            10,
+        ),
+        (
+            format!("{MINIMAL}motion:\n  zone: mine\n").replace("module: M", "module: Mine"),
+            "module name 'Mine' is already the name of motion.zone",
+            1,
+        ),
+        // A predefined name of another type: the type says it (`zone: v300` is a speeddata).
+        (
             format!("{MINIMAL}motion:\n  zone: v300\n"),
-            "motion.zone 'v300' is already the name of motion.speed (its default)",
+            "motion.zone 'v300' is a speeddata in RAPID, not a zonedata",
+            9,
+        ),
+        // Data named like the default routine: refused at the datum's line.
+        (
+            format!("{MINIMAL}motion:\n  speed: MAIN\n"),
+            "motion.speed 'MAIN' is already the name of the module's PROC main",
             9,
         ),
         // `base: auto` needs positions, not joint values.
@@ -405,4 +423,41 @@ fn many_aliases_of_one_anchor_are_an_ordinary_cell() {
         .points
         .iter()
         .all(|p| p.target == cell.points[0].target));
+}
+
+/// `robot.model` names a robot instead of `robot.urdf`: one of the two, no controller file
+/// beside a model, each refusal at its line. The names themselves are the load stage's.
+#[test]
+fn robot_model_or_urdf_one_of_the_two() {
+    let model = MINIMAL.replace("urdf: ../robots/r.urdf", "model: irb120_3_58");
+    let c = parse_str(&model).expect("a model");
+    assert_eq!(c.robot.model.as_deref(), Some("irb120_3_58"));
+    assert_eq!(c.robot.urdf_path, Path::new(""));
+    assert_eq!((c.robot.urdf_loc.line, c.robot.urdf_loc.column), (3, 10));
+    assert_eq!(parse_str(MINIMAL).expect("a URDF").robot.model, None);
+    let refused = |text: &str, line: u64, needle: &str| {
+        let e = parse_str(text).expect_err(needle);
+        assert_eq!(e.loc().map(|l| l.line), Some(line), "{needle}: {e}");
+        assert!(e.to_string().contains(needle), "{needle}: {e}");
+    };
+    refused(
+        &MINIMAL.replace("  base:", "  model: irb1400\n  base:"),
+        4,
+        "robot.model and robot.urdf name the robot twice",
+    );
+    refused(
+        &MINIMAL.replace("  urdf: ../robots/r.urdf\n", ""),
+        3,
+        "names no robot",
+    );
+    refused(
+        &model.replace("  base:", "  controller: r.controller.yaml\n  base:"),
+        4,
+        "robot.controller goes with robot.urdf",
+    );
+    refused(
+        &model.replace("irb120_3_58", "''"),
+        3,
+        "robot.model must name a robot",
+    );
 }

@@ -555,7 +555,9 @@ pub fn splice(
         if *run == (0..stops.len()) && followed.into.iter().all(|i| matches!(i, Reach::Air)) {
             let mut plan = plan.clone();
             plan.total_s += waits_s;
-            plan.paper.time_s += waits_s;
+            if let Some(p) = &mut plan.paper {
+                p.time_s += waits_s;
+            }
             return plan;
         }
     }
@@ -567,10 +569,11 @@ pub fn splice(
     let mut waypoints: Vec<Waypoint> = Vec::new();
     let mut legs: Vec<Leg> = Vec::new();
     let mut moves: Vec<Move> = Vec::new();
-    let mut paper = PaperFigure {
+    // The paper's figure: of the whole program when every run's route is the paper's.
+    let mut paper = Some(PaperFigure {
         moves: 0,
         time_s: waits_s,
-    };
+    });
     let mut total_s = waits_s;
     let mut into_first = stops.first().map(|s| s.motion.clone());
     let mut least: Option<crate::plan::Clearance> = None;
@@ -610,15 +613,17 @@ pub fn splice(
                 legs.push(Leg {
                     from: followed.entry_of(&run, l.from),
                     to: followed.entry_of(&run, l.to),
-                    grid_path: l.grid_path.clone(),
                     waypoints: l.waypoints.start + offset..l.waypoints.end + offset,
+                    ..l.clone()
                 });
             }
             keep_least(plan.least.as_ref());
             moves.extend(plan.moves);
             total_s += plan.total_s;
-            paper.moves += plan.paper.moves;
-            paper.time_s += plan.paper.time_s;
+            paper = paper.zip(plan.paper).map(|(p, q)| PaperFigure {
+                moves: p.moves + q.moves,
+                time_s: p.time_s + q.time_s,
+            });
             k = run.end - 1;
         } else if waypoints.is_empty() {
             if let Some(s) = stops.get(k) {
@@ -641,8 +646,10 @@ pub fn splice(
             };
             keep_least(m.proof.clearance.as_ref());
             total_s += m.time.stop_s;
-            paper.moves += 1;
-            paper.time_s += m.time.stop_s;
+            if let Some(p) = &mut paper {
+                p.moves += 1;
+                p.time_s += m.time.stop_s;
+            }
             moves.push(Move {
                 motion: s.motion.clone(),
                 clearance: m.proof.clearance.clone(),

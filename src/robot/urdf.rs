@@ -3,15 +3,17 @@
 //!
 //! What it accepts: one serial chain from the root link through exactly six revolute (or
 //! continuous) joints; fixed joints anywhere in the chain are folded into the next joint's origin;
-//! a fixed child named `tool0` after joint 6 gives the tool0 frame and ends the chain (joints
+//! a fixed child named `tool0` after joint 6 (required: the flange is never guessed) gives the
+//! tool0 frame and ends the chain (joints
 //! below tool0 belong to a tool and are ignored; a 7th revolute joint before it is refused:
 //! gen-rapid plans six-axis arms). Each child link of joints 1..3 must carry
-//! collision geometry, cylinders only (the paper's lumped model); collision geometry of links
-//! 4..6 is ignored (the forearm cylinder covers the wrist, paper section 6). Every number the
-//! chain uses must be finite, lengths within 1 km, axis ranges within two turns each way.
+//! collision geometry (the paper's lumped model); the root link (base_link) and links 4..6 may
+//! (beyond the paper: `lumped.rs` carries them); every collision geometry is a cylinder. Every
+//! number the chain uses must be finite, lengths within 1 km, axis ranges within two turns each
+//! way.
 
 use super::controller::{self, AxisSpec, Controller, Coupling};
-use super::{LinkCylinder, RevoluteJoint, Robot, RobotError};
+use super::{LinkFrame, OwnCylinder, RevoluteJoint, Robot, RobotError};
 use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
 use std::path::Path;
 
@@ -55,6 +57,15 @@ pub fn robot_from_urdf(
         path: path.to_path_buf(),
         message,
     };
+    if let Some(line) = super::xml_depth::too_deep(text) {
+        return Err(RobotError::ParseUrdf {
+            path: path.to_path_buf(),
+            message: format!(
+                "its elements nest more than {} deep (line {line}); a URDF nests a few levels",
+                super::xml_depth::MAX_DEPTH
+            ),
+        });
+    }
     let urdf = urdf_rs::read_from_string(text).map_err(|e| RobotError::ParseUrdf {
         path: path.to_path_buf(),
         message: e.to_string(),
@@ -85,6 +96,8 @@ pub fn robot_from_urdf(
     let mut joints = Vec::new();
     let mut pending = Isometry3::identity(); // fixed joints since the last revolute one
     let mut flange_to_tool0 = Isometry3::identity();
+    let mut found_tool0 = false;
+    let root_name = root.clone();
     let mut link = root;
     let mut visited = std::collections::HashSet::new();
     loop {
@@ -96,6 +109,7 @@ pub fn robot_from_urdf(
         }
         // Joint 6's own child named tool0 is the flange frame; what hangs below it is the tool's.
         if joints.len() == 6 && link == "tool0" {
+            found_tool0 = true;
             break;
         }
         let children: Vec<&urdf_rs::Joint> = urdf
@@ -142,6 +156,7 @@ pub fn robot_from_urdf(
                 pending *= pose_mm(&next.origin);
                 if joints.len() == 6 && next.child.link == "tool0" {
                     flange_to_tool0 = pending;
+                    found_tool0 = true;
                     // What hangs below tool0 (a spindle, a gripper's fingers) is the tool's,
                     // which the cell's `tool:` describes: the arm's chain ends here.
                     break;
@@ -170,63 +185,45 @@ pub fn robot_from_urdf(
             joints.len()
         )));
     }
-
-    let mut cylinders = Vec::new();
-    for (index, (joint, _, _)) in joints.iter().enumerate().take(3) {
-        let Some(l) = urdf.links.iter().find(|l| l.name == joint.child.link) else {
-            return Err(model_err(format!(
-                "link '{}' is not defined",
-                joint.child.link
-            )));
+    // The flange is the link named tool0 (the ROS-Industrial convention; RAPID's tool0 is the
+    // flange): the last link is not taken in its stead, its frame may be turned or offset.
+    if !found_tool0 {
+        let elsewhere = if urdf.links.iter().any(|l| l.name == "tool0") {
+            "; a link named tool0 is in the URDF, but not fixed below joint 6"
+        } else {
+            ""
         };
-        if l.collision.is_empty() {
+        return Err(model_err(format!(
+            "no link named tool0 below joint 6 ('{}'): the chain ends at link '{}'{elsewhere}; gen-rapid takes the flange as the link tool0, fixed to joint 6's link, and would not guess it",
+            joints.last().map_or("", |(j, _, _)| j.name.as_str()),
+            crate::excerpt::value(&link)
+        )));
+    }
+
+    // The root's cylinders (optional), then each child link's: links 1..3 must carry some.
+    let mut collision = cylinders_of(&urdf, &root_name, LinkFrame::Base).map_err(model_err)?;
+    for (index, (joint, _, _)) in joints.iter().enumerate() {
+        let own =
+            cylinders_of(&urdf, &joint.child.link, LinkFrame::Child(index)).map_err(model_err)?;
+        if own.is_empty() && index < 3 {
             return Err(model_err(format!(
                 "link '{}' (moved by joint {}, '{}') carries no <collision> cylinder: gen-rapid could not check its moves (the paper's model lumps the arm into its first three links, each a cylinder)",
-                l.name,
+                joint.child.link,
                 index + 1,
                 joint.name
             )));
         }
-        for c in &l.collision {
-            let urdf_rs::Geometry::Cylinder { radius, length } = c.geometry else {
-                return Err(model_err(format!(
-                    "link '{}': collision geometry must be a cylinder (gen-rapid lumps links 1..3 into cylinders)",
-                    l.name
-                )));
-            };
-            if !(radius > 0.0 && length > 0.0) {
-                return Err(model_err(format!(
-                    "link '{}': cylinder radius and length must be positive",
-                    l.name
-                )));
-            }
-            if radius > MAX_LENGTH_M || length > MAX_LENGTH_M {
-                return Err(model_err(format!(
-                    "link '{}': cylinder radius and length must be at most {MAX_LENGTH_M} m",
-                    l.name
-                )));
-            }
-            if let Some(fault) = pose_fault(&c.origin) {
-                return Err(model_err(format!("link '{}' <collision>: {fault}", l.name)));
-            }
-            // URDF cylinders are centred on their origin, axis along local z.
-            let pose = pose_mm(&c.origin);
-            let half = length * MM_PER_M / 2.0;
-            cylinders.push(LinkCylinder {
-                link: l.name.clone(),
-                joint_index: index,
-                a: pose * Point3::new(0.0, 0.0, -half),
-                b: pose * Point3::new(0.0, 0.0, half),
-                radius_mm: radius * MM_PER_M,
-            });
-        }
+        collision.extend(own);
     }
 
     let controller = match controller_file {
         Some((cpath, ctext)) => {
-            let mut c = controller::parse(ctext).map_err(|message| RobotError::Controller {
+            let mut c = controller::parse(ctext).map_err(|f| RobotError::Controller {
                 path: cpath.to_path_buf(),
-                message,
+                message: f.message,
+                line: f.line,
+                column: f.column,
+                line_text: crate::excerpt::nth_line(ctext, f.line).map(str::to_string),
             })?;
             c.source = Some(cpath.to_path_buf());
             c
@@ -235,22 +232,74 @@ pub fn robot_from_urdf(
             .map_err(model_err)?,
     };
 
+    let joints: Vec<RevoluteJoint> = joints
+        .into_iter()
+        .map(|(j, origin, axis)| RevoluteJoint {
+            name: j.name.clone(),
+            child_link: j.child.link.clone(),
+            origin,
+            axis,
+        })
+        .collect();
+    let (cylinders, flange_parts) = super::lumped::lump(&joints, &collision);
     Ok(Robot {
         name: urdf.name.clone(),
         urdf_path: path.to_path_buf(),
-        joints: joints
-            .into_iter()
-            .map(|(j, origin, axis)| RevoluteJoint {
-                name: j.name.clone(),
-                child_link: j.child.link.clone(),
-                origin,
-                axis,
-            })
-            .collect(),
+        model: None,
+        joints,
         flange_to_tool0,
         cylinders,
+        flange_parts,
+        collision,
         controller,
     })
+}
+
+/// The collision cylinders of the link named `name` (none when it has no `<collision>`), in
+/// the link's frame, mm; the message says what is wrong with one that cannot be used.
+fn cylinders_of(
+    urdf: &urdf_rs::Robot,
+    name: &str,
+    frame: LinkFrame,
+) -> Result<Vec<OwnCylinder>, String> {
+    let Some(l) = urdf.links.iter().find(|l| l.name == name) else {
+        return Err(format!("link '{name}' is not defined"));
+    };
+    let mut out = Vec::new();
+    for c in &l.collision {
+        let urdf_rs::Geometry::Cylinder { radius, length } = c.geometry else {
+            return Err(format!(
+                "link '{}': collision geometry must be a cylinder (gen-rapid carries every link as cylinders)",
+                l.name
+            ));
+        };
+        if !(radius > 0.0 && length > 0.0) {
+            return Err(format!(
+                "link '{}': cylinder radius and length must be positive",
+                l.name
+            ));
+        }
+        if radius > MAX_LENGTH_M || length > MAX_LENGTH_M {
+            return Err(format!(
+                "link '{}': cylinder radius and length must be at most {MAX_LENGTH_M} m",
+                l.name
+            ));
+        }
+        if let Some(fault) = pose_fault(&c.origin) {
+            return Err(format!("link '{}' <collision>: {fault}", l.name));
+        }
+        // URDF cylinders are centred on their origin, axis along local z.
+        let pose = pose_mm(&c.origin);
+        let half = length * MM_PER_M / 2.0;
+        out.push(OwnCylinder {
+            link: l.name.clone(),
+            frame,
+            a: pose * Point3::new(0.0, 0.0, -half),
+            b: pose * Point3::new(0.0, 0.0, half),
+            radius_mm: radius * MM_PER_M,
+        });
+    }
+    Ok(out)
 }
 
 /// A serial convention from the URDF's own limits and velocities.

@@ -42,6 +42,7 @@ mod convention;
 mod estimate;
 mod fuzz;
 mod golden;
+mod hostile;
 mod locate;
 mod messages;
 mod pictures;

@@ -29,19 +29,19 @@ use super::{
 };
 use crate::excerpt;
 use crate::geometry::Aabb;
-use crate::names::{check_identifier, robtarget_name, ROBTARGET_SUFFIX};
+use crate::names::{check_identifier, robtarget_name, DataType, ROBTARGET_SUFFIX};
 use crate::precision::{LENGTH_DECIMALS, YAW_DECIMALS};
 use nalgebra::Point3;
 use serde_saphyr::Spanned;
 use std::collections::{BTreeMap, HashMap};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use values::{
     bounded, data_name, decimals, identifier, invalid, invalid_help, joint_value, loc, triple,
 };
 
 /// Validates every section of a parsed cell file (module docs).
 pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
-    let module = identifier(&raw.module, "module")?;
+    let module = values::module_name(&raw.module)?;
     let robot = robot(path, &raw.robot)?;
     let obstacles = obstacles(&raw.obstacles)?;
     // The work objects and loads first: points name them.
@@ -90,14 +90,53 @@ pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
 
 // ---- sections ----
 
+/// The help line of a `robot:` that names no robot.
+const MODEL_HELP: &str = "`model: irb2600_12_165` names a robot built into gen-rapid (`gen-rapid robots` lists them), `urdf: FILE` a URDF file (relative to the cell file)";
+
 /// `robot:`.
 fn robot(path: &Path, r: &Spanned<RawRobot>) -> Result<RobotSpec, CellError> {
+    let whole = loc(r);
     let r = &r.value;
-    if r.urdf.value.trim().is_empty() {
-        return Err(invalid(loc(&r.urdf), "robot.urdf must name a URDF file"));
-    }
     let dir = path.parent().unwrap_or(Path::new(""));
-    let urdf_path = dir.join(&r.urdf.value);
+    let (urdf_path, urdf_loc, model) = match (&r.urdf, &r.model) {
+        (Some(u), None) => {
+            if u.value.trim().is_empty() {
+                return Err(invalid(loc(u), "robot.urdf must name a URDF file"));
+            }
+            (dir.join(&u.value), loc(u), None)
+        }
+        (None, Some(m)) => {
+            if m.value.trim().is_empty() {
+                return Err(invalid_help(
+                    loc(m),
+                    "robot.model must name a robot",
+                    MODEL_HELP,
+                ));
+            }
+            if let Some(c) = &r.controller {
+                return Err(invalid_help(
+                    loc(c),
+                    "robot.controller goes with robot.urdf, not with robot.model",
+                    "a shipped model brings its own controller file; to use another, name the URDF with robot.urdf and the controller file with robot.controller",
+                ));
+            }
+            (PathBuf::new(), loc(m), Some(m.value.clone()))
+        }
+        (Some(_), Some(m)) => {
+            return Err(invalid_help(
+                loc(m),
+                "robot.model and robot.urdf name the robot twice",
+                "give one of them: robot.model names a robot built into gen-rapid (`gen-rapid robots` lists them), robot.urdf a URDF file",
+            ))
+        }
+        (None, None) => {
+            return Err(invalid_help(
+                whole,
+                "the robot section names no robot: give robot.model or robot.urdf",
+                MODEL_HELP,
+            ))
+        }
+    };
     let base = match &r.base.value {
         RawBase::Auto => Base::Auto,
         RawBase::Xyz(v) => {
@@ -158,7 +197,8 @@ fn robot(path: &Path, r: &Spanned<RawRobot>) -> Result<RobotSpec, CellError> {
     };
     Ok(RobotSpec {
         urdf_path,
-        urdf_loc: loc(&r.urdf),
+        urdf_loc,
+        model,
         controller_path,
         controller_loc: r.controller.as_ref().map(loc).unwrap_or_default(),
         base,
@@ -228,6 +268,7 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
         grid_deg: defaults::GRID_DEG,
         clearance_mm: defaults::CLEARANCE_MM,
         shortcut: defaults::SHORTCUT,
+        grid_loc: None,
     };
     let Some(p) = p else {
         return Ok(planner);
@@ -248,6 +289,7 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
         planner.grid_deg = check_grid(g.value).map_err(|m| {
             invalid_help(loc(g), m, "planner.grid is the grid spacing d in degrees (default 1; finer is slower and needs more memory: 0.25 deg holds 413 M nodes)")
         })?;
+        planner.grid_loc = Some(loc(g));
     }
     if let Some(c) = &p.clearance {
         bounded(c, "planner.clearance", "a number >= 0 (mm)")?;
@@ -271,8 +313,8 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
         Some(p) => (identifier(p, "motion.proc")?, ProcFrom::Cell(loc(p))),
         None => (defaults::PROC.to_string(), ProcFrom::Default),
     };
-    let name = |s: Option<&Spanned<String>>, default: &str, what: &str| match s {
-        Some(s) => data_name(s, what),
+    let name = |s: Option<&Spanned<String>>, default: &str, what: &str, ty| match s {
+        Some(s) => data_name(s, what, ty),
         None => Ok(default.to_string()),
     };
     Ok(Motion {
@@ -280,16 +322,19 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
             m.and_then(|m| m.speed.as_ref()),
             defaults::SPEED,
             "motion.speed",
+            DataType::Speed,
         )?,
         zone: name(
             m.and_then(|m| m.zone.as_ref()),
             defaults::ZONE,
             "motion.zone",
+            DataType::Zone,
         )?,
         tool: name(
             m.and_then(|m| m.tool.as_ref()),
             defaults::TOOL,
             "motion.tool",
+            DataType::Tool,
         )?,
         proc,
         proc_from,
@@ -310,7 +355,7 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
 /// point must be told from a fly-by point, which only the predefined data say here. Written as
 /// the table spells it (`Z50` is `z50`).
 fn via_zone(z: &Spanned<String>) -> Result<String, CellError> {
-    data_name(z, "motion.via_zone")?;
+    data_name(z, "motion.via_zone", DataType::Zone)?;
     match crate::rapid_data::PREDEFINED_ZONES
         .iter()
         .find(|(name, _)| name.eq_ignore_ascii_case(&z.value))
