@@ -138,6 +138,7 @@ impl Error {
             }
             Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
             Error::Place(PlaceError::Range { .. }) => Some("joint values are controller values (what a jointtarget holds) and must lie in the robot's ranges, all six axes; a point without axes 4..6 takes robot.wrist".into()),
+            Error::Place(PlaceError::Robtarget { hint: Some(h), .. }) => Some(h.clone()),
             Error::Place(PlaceError::Robtarget { .. }) => Some("a robtarget is the TCP pose [[x, y, z], [q1, q2, q3, q4]] in the work object's frame (mm, quaternion [w, x, y, z]) of the tool's TCP (tool.tframe); confdata [cf1, cf4, cf6, cfx] picks one of the arm's solutions, without it the one nearest the previous point is taken".into()),
             Error::Template(TemplateError::Invalid { out_of_fuel: true, .. })
             | Error::Rapid(RapidError::UserTemplate(TemplateError::Invalid { out_of_fuel: true, .. })) => Some(format!("a template may run at most {} minijinja instructions (a loop that never ends, or runs too often, stops here); loop over the program's lists (README's \"Your own module template\"), not over ranges of your own", crate::output::rapid::TEMPLATE_FUEL)),

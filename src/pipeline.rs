@@ -14,6 +14,7 @@ use crate::error::{Error, Failure};
 pub use crate::load::{load, Loaded};
 use crate::output::program::{self, RobotFacts};
 use crate::output::rapid::{self, ModuleTemplate, RapidError, TemplateError};
+use crate::place::near_limit::{near_limits, NearLimit};
 use crate::place::{self, locate::Sketch, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
 use crate::plan::{self, Method, Route};
@@ -225,7 +226,16 @@ pub fn run(job: &Loaded, opts: &Options) -> Result<Outcome, Halted> {
     };
     progress.stage("shortening the route and proving the zones", 0);
     let shortcut = job.cell.planner.shortcut;
-    let Refined { plan, warnings } = refine(job, &placed, &inspected, route, shortcut);
+    let Refined {
+        plan,
+        warnings: refined,
+    } = refine(job, &placed, &inspected, route, shortcut);
+    // The place stage's warnings (axes 4 and 6 near a limit), then the refine stage's.
+    let mut warnings: Vec<String> = near_limits(&placed, &job.robot)
+        .iter()
+        .map(NearLimit::warning)
+        .collect();
+    warnings.extend(refined);
     progress.stage("writing the module", 0);
     let rendered = render(job, &placed, &plan, &opts.template)?;
     Ok(Outcome {

@@ -369,6 +369,8 @@ fn the_guard_refuses_what_the_later_stages_do_not_carry_out_at_its_first_line() 
     let wobj = "wobjs:\n  - { name: wA, uframe: [[0, 0, 0], [1, 0, 0, 0]] }\n";
     let c = parse_str(&format!("{plain}{wobj}")).expect("one work object in a list");
     unsupported(&c).expect("one work object");
+    let base = plain.replace("  base: [0, 0, 0]\n", "  base: [0, 0, 0]\n  frame: base\n");
+    unsupported(&parse_str(&base).expect("valid")).expect("`robot.frame: base` is carried out");
     let cases = [
         (SEAM.to_string(), "`loads:`", "{ name: loadPart"),
         (SEAM.replace("loads:\n  - { name: loadPart, mass: 1.2, cog: [0, 0, 60] }\n  - { name: loadBox, mass: 0.5 }\n", "").replace(", { grip_load: loadBox }", ""), "point 'S1': `approach`", "approach: 40"),
@@ -379,7 +381,6 @@ fn the_guard_refuses_what_the_later_stages_do_not_carry_out_at_its_first_line() 
         (plain.replace("move: joint", "do: [{ wait_time: 1 }]"), "point 'B': actions (`do`)", "wait_time: 1"),
         (plain.replace("motion:\n", "  - { revisit: a }\nmotion:\n"), "the revisit of 'A' (line 8): `revisit`", "revisit: a"),
         (plain.replace("cycle: false", "cycle: true"), "`motion.cycle: true`", "cycle: true"),
-        (plain.replace("  base: [0, 0, 0]\n", "  base: [0, 0, 0]\n  frame: base\n"), "`robot.frame: base`", "frame: base"),
     ];
     for (text, needle, at) in cases {
         let c = parse_str(&text).unwrap_or_else(|e| panic!("{needle}: {e}\n{text}"));

@@ -61,6 +61,12 @@ fn pose(f: &Frame) -> Pose {
 
 /// The module's content for a plan of `cell`, placed as `placed`, on the robot of `robot`.
 pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> Program {
+    // `robot.frame`: a robtarget in wobj0 and a uframe as the module writes them.
+    let frame = cell.robot.frame;
+    let robtarget_as_written = |f: &Frame| match cell.wobjs.is_empty() {
+        true => placed.placement.written(frame, f),
+        false => *f,
+    };
     let targets = plan
         .route
         .waypoints
@@ -72,7 +78,7 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
                     let p = placed.points.get(i);
                     let robtarget = match p.map(|p| &p.origin) {
                         Some(Origin::Robtarget { pose: f, conf }) => Some(RobTarget {
-                            pose: pose(f),
+                            pose: pose(&robtarget_as_written(f)),
                             conf: conf.to_array(),
                         }),
                         _ => None,
@@ -122,6 +128,7 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             // The zone a via gets where its corner is proven (`motion.via_zone`).
             via_zone: cell.motion.via_zone.clone(),
             paper: Some((plan.paper.moves, plan.paper.time_s)),
+            frame,
         },
         targets,
         // The tool block's name when there is one (the cell validation sees to it).
@@ -130,7 +137,7 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
         // One work object at most (`cell::unsupported` refuses several).
         wobj: cell.wobjs.first().map(|w| WobjData {
             name: w.name.clone(),
-            uframe: pose(&w.uframe),
+            uframe: pose(&placed.placement.written(frame, &w.uframe)),
         }),
         ranges: robot.ranges,
         proc_name: cell.motion.proc.clone(),

@@ -12,6 +12,8 @@
 //! - `compare`: `gen-rapid compare` and the paper's comparison of the three searches.
 //! - `fuzz`: the seeded fuzz target over loading, validating and placing cells
 //!   (`GEN_RAPID_FUZZ_CASES`, `GEN_RAPID_FUZZ_SEED`).
+//! - `frames`: `robot.frame: base` (the numbers written in the base frame, by hand; the same
+//!   joints as in the cell frame).
 //! - `locate`: `base: auto`, `xyz` points and branches, `gen-rapid locate`.
 //! - `preview_browser`: the `--html` preview page in headless Chromium (skipped, saying so,
 //!   where no Chromium is installed).
@@ -38,6 +40,7 @@ mod common;
 mod compare;
 mod convention;
 mod estimate;
+mod frames;
 mod fuzz;
 mod golden;
 mod locate;

@@ -1,6 +1,7 @@
 //! Tests of [`render`](super::render) (format and names have their own).
 
 use super::*;
+use crate::cell::RobotFrame;
 use crate::names::check_identifier;
 
 fn point(name: &str, axes_deg: [f64; 6]) -> JointTarget {
@@ -55,6 +56,7 @@ fn header(moves: usize) -> Header {
         zoned_vias: (1, 2),
         via_zone: "z50".to_string(),
         paper: Some((moves + 1, 4.0)),
+        frame: RobotFrame::Cell,
     }
 }
 
@@ -147,6 +149,7 @@ fn awkward_program() -> Program {
             zoned_vias: (0, 1),
             via_zone: "fine".to_string(),
             paper: None,
+            frame: RobotFrame::Cell,
         },
         targets: targets
             .into_iter()
