@@ -1,6 +1,7 @@
 //! What would make an unreachable robtarget reachable: the help line of a robtarget that fails
-//! because axis 5 would leave its range or the pose is out of reach ([`SixAxisError::Axis5`],
-//! [`SixAxisError::OutOfReach`]), when a change a programmer can make does it.
+//! because axis 5 (or another axis) would leave its range or the pose is out of reach
+//! ([`SixAxisError::Axis5`], [`SixAxisError::OutOfRange`], [`SixAxisError::OutOfReach`]), when
+//! a change a programmer can make does it.
 //!
 //! 1. **A turn of the tool about its own z axis** (the TCP's, `pose * Rz(turn)`), tried in
 //!    [`TURN_STEP_DEG`] steps, the smallest turn first (positive before negative at equal size,
@@ -10,7 +11,7 @@
 //!    (7 decimals) and that quaternion, read back as the cell reads it, is what is verified.
 //! 2. **Out of reach: a move of the base** along the floor, straight towards the point's wrist
 //!    centre (away from it when it is too near), in [`BASE_STEP_MM`] steps from the shortfall on,
-//!    at most [`BASE_MOVE_MAX_MM`] beyond it.
+//!    at most [`BASE_MOVE_MAX_MM`] beyond it, keeping the confdata the point asks for.
 //!
 //! A suggestion is made only when the six-axis IK of the changed pose (or from the moved base)
 //! has a solution that the place stage accepts as it would accept any: in range after rounding,
@@ -105,7 +106,7 @@ fn find<C: PoseCheck>(
     check_at: &impl Fn(Placement) -> C,
 ) -> Option<String> {
     let reach = match source {
-        ChooseError::Ik(SixAxisError::Axis5 { .. }) => None,
+        ChooseError::Ik(SixAxisError::Axis5 { .. } | SixAxisError::OutOfRange { .. }) => None,
         ChooseError::Ik(SixAxisError::OutOfReach {
             wrist_mm,
             front_mm,
@@ -116,7 +117,7 @@ fn find<C: PoseCheck>(
         _ => return None,
     };
     let p = cell.points.iter().find(|p| p.name == point)?;
-    let Target::Robtarget { pose, .. } = &p.target else {
+    let Target::Robtarget { pose, conf } = &p.target else {
         return None;
     };
     let tcp = Tcp::of(cell, robot).ok()?;
@@ -157,7 +158,7 @@ fn find<C: PoseCheck>(
             ],
             yaw_deg: placement.yaw_deg,
         };
-        if let Ok(s) = tcp.choose(pose, None, moved, None, &check_at(moved)) {
+        if let Ok(s) = tcp.choose(pose, *conf, moved, None, &check_at(moved)) {
             let [x, y, z] = moved.base_mm;
             return Some(format!(
                 "no turn of the tool about its z axis ({TURN_STEP_DEG} deg steps) makes point '{point}' reachable; moving the robot's base {step} mm {} it, to robot.base [{x:.1}, {y:.1}, {z:.1}], does (by the inverse kinematics axes {}, in range and free of collision; the other points are not checked from there)",
@@ -178,4 +179,108 @@ fn round1(v: f64) -> f64 {
 fn fmt_axes(a: &[f64; 6]) -> String {
     let v: Vec<String> = a.iter().map(|x| format!("{x:.1}")).collect();
     format!("[{}]", v.join(", "))
+}
+
+#[cfg(test)]
+mod tests {
+    //! Each hint is checked by the place stage itself: the cell changed as the hint says places.
+    use super::*;
+    use crate::robot::Robot;
+    use std::path::Path;
+
+    /// Accepts every pose (no obstacles).
+    struct Open;
+    impl PoseCheck for Open {
+        fn why_blocked(&self, _: &[f64; 6]) -> Option<String> {
+            None
+        }
+    }
+
+    /// A torch tilted 45 deg against the flange, 350 mm out, on a robot at the origin.
+    fn cell(w1: &str) -> Cell {
+        let text = format!(
+            "module: M\nrobot:\n  urdf: r.urdf\n  base: [0, 0, 0]\ntool:\n  name: tTorch\n  tframe: [[0, 0, 350], [0.9238795, 0, 0.3826834, 0]]\npoints:\n  - {{ name: P1, joints: [0, 0, 0] }}\n  - {{ name: W1, robtarget: {w1} }}\n"
+        );
+        crate::cell::parse(Path::new("x.yaml"), &text).unwrap_or_else(|e| panic!("{e}\n{text}"))
+    }
+
+    fn placed(cell: &Cell) -> Result<super::super::Placed, PlaceError> {
+        super::super::place(cell, &Robot::irb1400(), |_| Open)
+    }
+
+    /// The text between `from` and the next `to` in `s`.
+    fn between<'a>(s: &'a str, from: &str, to: &str) -> &'a str {
+        let a = s.find(from).unwrap_or_else(|| panic!("no {from} in {s}")) + from.len();
+        &s[a..a + s[a..].find(to).unwrap_or_else(|| panic!("no {to} in {s}"))]
+    }
+
+    /// The torch at the pose of axes [0, -20, 0, 0, 50, 0], turned half a turn about its z: axis
+    /// 5 would need 147.3 deg. The hint's turn (75 deg) places, every smaller turn tried (15, -15,
+    /// .., 60, -60) does not.
+    #[test]
+    fn an_axis_5_failure_suggests_the_smallest_turn_that_places() {
+        let pos = "[944.401, 0, 825.586]";
+        let c = cell(&format!("[{pos}, [0, 0.9990482, 0, -0.0436194]]"));
+        let Err(e @ PlaceError::Robtarget { .. }) = placed(&c) else {
+            panic!("W1 places")
+        };
+        let PlaceError::Robtarget { source, hint, .. } = &e else {
+            unreachable!()
+        };
+        assert!(
+            matches!(**source, ChooseError::Ik(SixAxisError::Axis5 { .. })),
+            "{source}"
+        );
+        let hint = hint.as_deref().expect("a hint");
+        assert!(hint.starts_with("turned 75 deg about its own z axis"), "{hint}");
+        let q = between(hint, "orientation ", " (the");
+        let turned = placed(&cell(&format!("[{pos}, {q}]"))).expect("the hinted turn places");
+        assert!(turned.points[1].joints_deg[4].abs() <= 115.0);
+        let given = UnitQuaternion::from_quaternion(Quaternion::new(0.0, 0.9990482, 0.0, -0.0436194));
+        for turn in [15.0, -15.0, 30.0, -30.0, 45.0, -45.0, 60.0, -60.0] {
+            let r = given * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), f64::to_radians(turn));
+            let q = format!("[{}, {}, {}, {}]", r.w, r.i, r.j, r.k);
+            assert!(placed(&cell(&format!("[{pos}, {q}]"))).is_err(), "{turn} deg places");
+        }
+    }
+
+    /// 1280 mm out of reach: no turn helps; the base moved as the hint says reaches it (with
+    /// the confdata asked for).
+    #[test]
+    fn an_out_of_reach_failure_suggests_the_base_move_that_places() {
+        let w1 = "[[2200, 300, 150], [0, 0, 1, 0], [0, -1, 0, 0]]";
+        let e = placed(&cell(w1)).expect_err("out of reach");
+        let PlaceError::Robtarget { source, hint, .. } = &e else {
+            panic!("{e}")
+        };
+        assert!(
+            matches!(**source, ChooseError::Ik(SixAxisError::OutOfReach { .. })),
+            "{source}"
+        );
+        let hint = hint.as_deref().expect("a hint");
+        assert!(hint.starts_with("no turn of the tool"), "{hint}");
+        let base = between(hint, "to robot.base ", ", does");
+        let with_base = |base: &str| {
+            let text = format!(
+                "module: M\nrobot:\n  urdf: r.urdf\n  base: {base}\ntool:\n  name: tTorch\n  tframe: [[0, 0, 350], [0.9238795, 0, 0.3826834, 0]]\npoints:\n  - {{ name: P1, joints: [0, 0, 0] }}\n  - {{ name: W1, robtarget: {w1} }}\n"
+            );
+            crate::cell::parse(Path::new("x.yaml"), &text).expect("cell")
+        };
+        let moved = placed(&with_base(base)).unwrap_or_else(|e| panic!("from {base}: {e}"));
+        // From the origin: 10 mm less of the same move (the step) does not reach it.
+        let [x, y, z] = moved.placement.base_mm;
+        let n = x.hypot(y);
+        let shorter = format!("[{:.1}, {:.1}, {z}]", x - 10.0 * x / n, y - 10.0 * y / n);
+        assert!(placed(&with_base(&shorter)).is_err(), "{shorter} reaches it");
+    }
+
+    /// Other failures get no hint: the generic help stays.
+    #[test]
+    fn a_confdata_failure_gets_no_hint() {
+        let e = placed(&cell("[[1000, 0, 800], [0, 0, 1, 0], [2, 0, 0, 0]]")).expect_err("cf1 2");
+        let PlaceError::Robtarget { hint, .. } = &e else {
+            panic!("{e}")
+        };
+        assert_eq!(*hint, None, "{e}");
+    }
 }

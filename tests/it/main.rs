@@ -26,6 +26,7 @@
 //! - `random_cells`: generated cells (with and without a tool), every method, every module
 //!   through the dense re-check.
 //! - `tool_cells`: the example cells with a tool, every method, and the tool's volume at work.
+//! - `warnings`: axes 4 and 6 near their limits (stderr and the report's `near_limits`).
 //! - `tidy`: the house rules read from `src/` (dependency direction, no import cycles between
 //!   files, file length, no issue numbers, module docs), each checker held to a made-up
 //!   violation.
@@ -54,3 +55,4 @@ mod safety;
 mod templates;
 mod tidy;
 mod tool_cells;
+mod warnings;
