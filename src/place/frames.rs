@@ -137,9 +137,6 @@ mod tests {
         assert_eq!(w.pos_mm, [86.603, -50.0, 0.0]);
         // Rz(-30) = [cos 15, 0, 0, -sin 15].
         let (s15, c15) = 15f64.to_radians().sin_cos();
-        assert_eq!(
-            w.quat_wxyz,
-            [round(c15, 9), 0.0, 0.0, round(-s15, 9)]
-        );
+        assert_eq!(w.quat_wxyz, [round(c15, 9), 0.0, 0.0, round(-s15, 9)]);
     }
 }

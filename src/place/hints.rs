@@ -232,15 +232,23 @@ mod tests {
             "{source}"
         );
         let hint = hint.as_deref().expect("a hint");
-        assert!(hint.starts_with("turned 75 deg about its own z axis"), "{hint}");
+        assert!(
+            hint.starts_with("turned 75 deg about its own z axis"),
+            "{hint}"
+        );
         let q = between(hint, "orientation ", " (the");
         let turned = placed(&cell(&format!("[{pos}, {q}]"))).expect("the hinted turn places");
         assert!(turned.points[1].joints_deg[4].abs() <= 115.0);
-        let given = UnitQuaternion::from_quaternion(Quaternion::new(0.0, 0.9990482, 0.0, -0.0436194));
+        let given =
+            UnitQuaternion::from_quaternion(Quaternion::new(0.0, 0.9990482, 0.0, -0.0436194));
         for turn in [15.0, -15.0, 30.0, -30.0, 45.0, -45.0, 60.0, -60.0] {
-            let r = given * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), f64::to_radians(turn));
+            let r =
+                given * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), f64::to_radians(turn));
             let q = format!("[{}, {}, {}, {}]", r.w, r.i, r.j, r.k);
-            assert!(placed(&cell(&format!("[{pos}, {q}]"))).is_err(), "{turn} deg places");
+            assert!(
+                placed(&cell(&format!("[{pos}, {q}]"))).is_err(),
+                "{turn} deg places"
+            );
         }
     }
 
@@ -271,7 +279,10 @@ mod tests {
         let [x, y, z] = moved.placement.base_mm;
         let n = x.hypot(y);
         let shorter = format!("[{:.1}, {:.1}, {z}]", x - 10.0 * x / n, y - 10.0 * y / n);
-        assert!(placed(&with_base(&shorter)).is_err(), "{shorter} reaches it");
+        assert!(
+            placed(&with_base(&shorter)).is_err(),
+            "{shorter} reaches it"
+        );
     }
 
     /// Other failures get no hint: the generic help stays.

@@ -18,8 +18,11 @@
  * - Draw order: opaque meshes, lines, then the translucent boxes back to front with depth
  *   writes off (back faces, then front faces).
  * - Text (waypoint and obstacle names, the clearance, failed points) is HTML laid over the
- *   canvas, at the projection of its 3D anchor, moved every frame.
- * - Orbit camera about the centre of everything drawn, first seen from the robot's right
+ *   canvas, at the projection of its 3D anchor, moved every frame; a point's label that would
+ *   cover another point's (points at the same place) moves down below it.
+ * - Orbit camera about the centre of the robot's shapes over the whole motion, the TCP trace and
+ *   the points (not the boxes: a large floor or fence may reach out of the view), first seen
+ *   from the robot's right
  *   (relative to its base yaw), a little behind and above it: drag rotates, wheel zooms,
  *   right- or shift-drag pans,
  *   double-click resets; space plays or pauses.
@@ -334,17 +337,35 @@
   // Two bounding boxes: of everything drawn (the fallback), and of the robot, the tool, its
   // trace and the points (the focus), which sets the camera, the grid and the marker size, so a
   // large floor or fence does not make the cell tiny (boxes may then reach out of the view).
-  function box() { return { lo: [Infinity, Infinity, Infinity], hi: [-Infinity, -Infinity, -Infinity] }; }
+  function bounds() { return { lo: [Infinity, Infinity, Infinity], hi: [-Infinity, -Infinity, -Infinity] }; }
   function extendBox(b, p) {
     for (var i = 0; i < 3; i++) { b.lo[i] = Math.min(b.lo[i], p[i]); b.hi[i] = Math.max(b.hi[i], p[i]); }
   }
-  var all = box(), focus = box();
+  var all = bounds(), focus = bounds();
   function extend(p) { extendBox(all, p); extendBox(focus, p); }
   scene.obstacles.forEach(function (o) { extendBox(all, o.min_mm); extendBox(all, o.max_mm); });
   if (scene.base) extend(scene.base.position_mm);
+  // Each shape's bounding ball in its own frame, placed by every keyframe.
+  var balls = scene.shapes.map(function (s) {
+    var g = s.geometry;
+    if (g.type === "cylinder") {
+      var d = sub(g.to_mm, g.from_mm);
+      return { c: scale(add(g.from_mm, g.to_mm), 0.5), r: Math.hypot(d[0], d[1], d[2]) / 2 + g.radius_mm };
+    }
+    if (g.type === "box") {
+      var e = sub(g.max_mm, g.min_mm);
+      return { c: scale(add(g.min_mm, g.max_mm), 0.5), r: Math.hypot(e[0], e[1], e[2]) / 2 };
+    }
+    return { c: g.centre_mm, r: g.radius_mm };
+  });
   keys.forEach(function (k) {
     extend(k.tcp_mm);
-    k.poses.forEach(function (p) { extend(p.position_mm); });
+    k.poses.forEach(function (p, n) {
+      var m = compose(p.position_mm, p.quat_wxyz, [1, 1, 1]), c = balls[n].c, r = balls[n].r;
+      var w = [0, 1, 2].map(function (i) { return m[i] * c[0] + m[4 + i] * c[1] + m[8 + i] * c[2] + m[12 + i]; });
+      extend(sub(w, [r, r, r]));
+      extend(add(w, [r, r, r]));
+    });
   });
   scene.waypoints.forEach(function (w) { extend(w.tcp_mm); });
   if (scene.failure) scene.failure.points.forEach(function (p) { extend(p.position_mm); });
@@ -352,8 +373,7 @@
   var lo = framed.lo, hi = framed.hi;
   if (!isFinite(lo[0])) { lo = [-500, -500, 0]; hi = [500, 500, 1000]; }
   var centre = scale(add(lo, hi), 0.5);
-  // The shapes reach beyond their frames' origins (the links' radii, the tool): a margin.
-  var radius = Math.max(300, 0.5 * Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) + 150);
+  var radius = Math.max(300, 0.5 * Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]));
   var marker = radius * 0.012;
 
   var lineSets = [];

@@ -90,15 +90,23 @@ fn frame_base_writes_the_uframe_in_the_base_frame_and_proves_the_same_joints() {
     // [cos 45, 0, 0, -sin 45]. Robtargets in the work object and every jointtarget stay.
     let diff = differing(&golden, &base);
     assert_eq!(diff.len(), 2, "{diff:#?}");
-    assert!(diff[0].0.contains("frames: robtargets and the user frame are given in the cell frame"));
+    assert!(diff[0]
+        .0
+        .contains("frames: robtargets and the user frame are given in the cell frame"));
     assert!(
-        diff[0].1.contains("frames: the user frame and robtargets in wobj0 are written in the robot's base frame"),
+        diff[0].1.contains(
+            "frames: the user frame and robtargets in wobj0 are written in the robot's base frame"
+        ),
         "{}",
         diff[0].1
     );
-    assert!(diff[1].0.contains("[[-830.000,-380.000,100.000],[1.000000000,0.000000000,0.000000000,0.000000000]]"));
+    assert!(diff[1].0.contains(
+        "[[-830.000,-380.000,100.000],[1.000000000,0.000000000,0.000000000,0.000000000]]"
+    ));
     assert!(
-        diff[1].1.contains("[[470.000,830.000,100.000],[0.707106781,0.000000000,0.000000000,-0.707106781]]"),
+        diff[1].1.contains(
+            "[[470.000,830.000,100.000],[0.707106781,0.000000000,0.000000000,-0.707106781]]"
+        ),
         "{}",
         diff[1].1
     );
@@ -144,8 +152,15 @@ fn frame_base_writes_wobj0_robtargets_in_the_base_frame_and_proves_the_same_join
             "{name}: {:?}",
             r.quat_wxyz
         );
-        let same = mc.robtargets.iter().find(|(n, _)| n == name).expect("cell frame");
-        assert_eq!(same.1.conf, r.conf, "{name}: the confdata do not depend on the frame");
+        let same = mc
+            .robtargets
+            .iter()
+            .find(|(n, _)| n == name)
+            .expect("cell frame");
+        assert_eq!(
+            same.1.conf, r.conf,
+            "{name}: the confdata do not depend on the frame"
+        );
     }
     assert_eq!(controller_reaches_every_robtarget(&irb1400(), &mb), 4);
 }

@@ -329,9 +329,7 @@ fn label_top(dom: &str, text: &str) -> f64 {
         .nth(1)
         .and_then(|t| t.split("px").next())
         .unwrap_or_else(|| panic!("no top in {tag}"));
-    top.trim()
-        .parse()
-        .unwrap_or_else(|e| panic!("{tag}: {e}"))
+    top.trim().parse().unwrap_or_else(|e| panic!("{tag}: {e}"))
 }
 
 /// Whether the page shows one of `labels`.
@@ -477,7 +475,10 @@ fn preview_pages_render_in_headless_chromium() {
         least["name"].as_str().unwrap_or_default(),
         least["obstacle"].as_str().unwrap_or_default()
     );
-    assert!(page.dom.contains(&text), "the fly-by page shows no {text:?}");
+    assert!(
+        page.dom.contains(&text),
+        "the fly-by page shows no {text:?}"
+    );
     assert!(page.image.share(red) > 0.0005, "no clearance marker");
 
     // A floor 40 m wide under the trunk cell: the robot is still drawn large.

@@ -261,7 +261,10 @@ fn base(p: Placement) -> SceneBase {
 
 /// The pieces of moves the least clearance is looked for on (module docs): `(move, from, to,
 /// corner)`, `from`/`to` fractions of the move, `corner` the waypoint whose zoned corner it is.
-fn searched_pieces(plan: &Plan, least: &crate::plan::Clearance) -> Vec<(usize, f64, f64, Option<usize>)> {
+fn searched_pieces(
+    plan: &Plan,
+    least: &crate::plan::Clearance,
+) -> Vec<(usize, f64, f64, Option<usize>)> {
     if let Some(i) = (plan.moves.iter()).position(|m| m.clearance.as_ref() == Some(least)) {
         return vec![(i, 0.0, 1.0, None)];
     }
@@ -693,7 +696,13 @@ planner: { grid: 5 }
             mm: least.mm - 0.3,
             ..least.clone()
         });
-        let s = scene(&job.cell, &job.robot, &out.placed, &plan, &out.rendered.names);
+        let s = scene(
+            &job.cell,
+            &job.robot,
+            &out.placed,
+            &plan,
+            &out.rendered.names,
+        );
         let c = s.clearance.expect("marked");
         assert_eq!(c.corner_waypoint, Some(1));
         assert!(c.move_index <= 1, "{}", c.move_index);
@@ -701,7 +710,13 @@ planner: { grid: 5 }
             c.distance_mm,
             crate::precision::round(least.mm - 0.3, crate::precision::LENGTH_DECIMALS)
         );
-        assert_eq!((c.shape.as_str(), c.obstacle.as_str()), (crate::output::clearance_part(&least).1, least.obstacle.as_str()));
+        assert_eq!(
+            (c.shape.as_str(), c.obstacle.as_str()),
+            (
+                crate::output::clearance_part(&least).1,
+                least.obstacle.as_str()
+            )
+        );
         // On the second half of the move into the via or the first half of the move out.
         let t = c.time_s.expect("a time");
         let (w0, w1, w2) = (&s.waypoints[0], &s.waypoints[1], &s.waypoints[2]);
@@ -709,7 +724,13 @@ planner: { grid: 5 }
         assert!(t >= a - 1e-9 && t <= b + 1e-9, "{t} outside {a} .. {b}");
         // Without the fly-by zone no corner holds it: nothing is marked rather than a wrong move.
         plan.moves[0].motion.zone = "fine".into();
-        let s = scene(&job.cell, &job.robot, &out.placed, &plan, &out.rendered.names);
+        let s = scene(
+            &job.cell,
+            &job.robot,
+            &out.placed,
+            &plan,
+            &out.rendered.names,
+        );
         assert!(s.clearance.is_none());
     }
 

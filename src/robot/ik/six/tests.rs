@@ -501,8 +501,14 @@ fn equally_near_solutions_are_ordered_by_room_to_the_limits() {
     }
     // By hand, each axis's room (ranges 170, 70, -65..70, 150, 115, 300): 160, 50, 40, 110, 65
     // and 20 (near_stop) or 220 (roomy); smallest first, 20 against 40.
-    assert_eq!(ik.rooms_deg(&near_stop.axes_deg), [20.0, 40.0, 50.0, 65.0, 110.0, 160.0]);
-    assert_eq!(ik.rooms_deg(&roomy.axes_deg), [40.0, 50.0, 65.0, 110.0, 160.0, 220.0]);
+    assert_eq!(
+        ik.rooms_deg(&near_stop.axes_deg),
+        [20.0, 40.0, 50.0, 65.0, 110.0, 160.0]
+    );
+    assert_eq!(
+        ik.rooms_deg(&roomy.axes_deg),
+        [40.0, 50.0, 65.0, 110.0, 160.0, 220.0]
+    );
     // The chooser on a real pose of both: the roomy turn of axis 6.
     let pose = robot.tool0(&roomy.axes_deg);
     let ok = |_: &Axes6| Ok::<(), String>(());
