@@ -136,6 +136,10 @@ impl Error {
                 use crate::robot::controller::MAX_AXIS_DEG as R;
                 Some(format!("the fault is in the URDF named above: gen-rapid reads one serial chain of six revolute joints up to tool0, finite numbers, lengths within {} km, ranges within -{R} .. {R} deg, cylinders on the links of joints 1..3 (README, \"The cell file\")", crate::input::MAX_MAGNITUDE / 1e6))
             }
+            Error::Robot {
+                source: RobotError::UnknownModel { .. },
+                ..
+            } => Some(format!("the robots built into gen-rapid are {} (`gen-rapid robots` lists them); any other robot is named by its URDF file with robot.urdf", crate::robot::models::names())),
             Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
             Error::Place(PlaceError::Range { .. }) => Some("joint values are controller values (what a jointtarget holds) and must lie in the robot's ranges, all six axes; a point without axes 4..6 takes robot.wrist".into()),
             Error::Place(PlaceError::Robtarget { hint: Some(h), .. }) => Some(h.clone()),

@@ -1,6 +1,8 @@
 //! The independent whole-move check: read a `.mod` as written (targets, moves, the header's base
-//! and yaw), place the robot's link cylinders and the cell's tool shapes (`Cell::tool`, carried
-//! by the flange: the robot's `tool0`) with the URDF kinematics, and sample every straight
+//! and yaw), place the robot's link cylinders (every link's, base_link to link_6, as the URDF
+//! gives them on its own link: `Robot::collision`, not the enclosures the collision model
+//! carries them by) and the cell's tool shapes (`Cell::tool`, carried by the flange: the robot's
+//! `tool0`) with the URDF kinematics, and sample every straight
 //! six-axis move so densely that no point of the arm or the tool moves more than 1 mm between
 //! samples, measuring the exact distance to every box with parry3d's own shapes. It shares no
 //! code with `collision` or `geometry`: only the cell types and parser and the robot's
@@ -11,16 +13,26 @@
 //!
 //! # What the robot stands on: this check's own reading
 //!
-//! The base cylinder (link 1) starts at the mounting plane, so a floor under the robot touches
-//! it. This check does not take the collision model's rule for that; it reads it from the
-//! geometry it computes itself, pose by pose: a box is not measured against a link-1 cylinder
+//! The base cylinder (base_link's, or link 1's on a robot whose base_link carries none, as the
+//! IRB 1400's) starts at the mounting plane, so a floor under the robot touches it. This check
+//! does not take the collision model's rule for that; it reads it from the geometry it computes
+//! itself, pose by pose: a box is not measured against a base_link or link-1 cylinder
 //! only when the box lies wholly at or below the mounting plane (the header's base z) *and* the
 //! cylinder, placed by this check's forward kinematics, lies wholly on or above the box's top
 //! (its lowest point, `min(end z) - r sin(tilt)`, is not below the top). Any other contact
 //! counts: a box reaching above the mounting plane, or a base cylinder that dips below the top
-//! of what it would stand on. Links 2 and 3 are measured against every box.
+//! of what it would stand on. Links 2..6 are measured against every box.
+//!
+//! # The header's smallest clearance
+//!
+//! The collision model certifies its smallest clearance for what it checks. Where that is the
+//! URDF's cylinders themselves (links 1..3 alone, the IRB 1400), the header is held to within
+//! 0.05 mm of the minimum measured here; where the model checks enclosures of some links
+//! (base_link about axis 1, link 4 about axis 4, link 5 as a ball: `robot/lumped.rs`), its
+//! figure may lie further below, and the header is held to be a lower bound of the minimum
+//! measured here (within the rounding) and never negative.
 
-use super::library::{Base, Cell, Robot, Target, Tool, ToolGeometry};
+use super::library::{Base, Cell, LinkFrame, Robot, Target, Tool, ToolGeometry};
 use super::module::Module;
 use super::tcp::{check_tcp, TcpReport};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
@@ -31,9 +43,38 @@ use parry3d::shape::{Ball, Cuboid, Cylinder, Shape};
 /// cylinder's lowest point and the box top.
 const STAND_TOL_MM: f64 = 1e-6;
 
-/// No point of the arm is farther than this from any joint axis (IRB 1400: reach 1.44 m plus
-/// the wrist; radius and offsets stay well below 2 m), mm.
+/// No point of the IRB 1400 is farther than this from any joint axis (reach 1.44 m plus the
+/// wrist; radius and offsets stay well below 2 m), mm; a larger robot takes its own bound
+/// ([`arm_radius_mm`]).
 const ARM_RADIUS_MM: f64 = 2000.0;
+
+/// A bound on the distance of any point of any link cylinder from any joint axis, mm: for a
+/// cylinder on the child of joint `j` and an axis `i <= j`, the length across axis `i` of joint
+/// `i + 1`'s origin, the lengths of the origins after it up to `j`, and the cylinder's farthest
+/// point from its link's origin (the ends' distance plus the radius); at least
+/// [`ARM_RADIUS_MM`].
+fn arm_radius_mm(robot: &Robot) -> f64 {
+    let t = |k: usize| robot.joints[k].origin.translation.vector;
+    let mut r: f64 = ARM_RADIUS_MM;
+    for c in &robot.collision {
+        let LinkFrame::Child(j) = c.frame else {
+            continue; // base_link does not move
+        };
+        let far = c.a.coords.norm().max(c.b.coords.norm()) + c.radius_mm;
+        for i in 0..=j {
+            let u = robot.joints[i].axis.into_inner();
+            let across = if i < j {
+                let v = t(i + 1);
+                (v - u * u.dot(&v)).norm()
+            } else {
+                0.0
+            };
+            let chain: f64 = (i + 2..=j).map(|k| t(k).norm()).sum();
+            r = r.max(across + chain + far);
+        }
+    }
+    r
+}
 
 /// A cell-frame xyz point's written joints must give it back within this, mm (the module's
 /// 0.001 deg moves the wrist centre by less than 0.05 mm).
@@ -75,6 +116,8 @@ struct ToolPiece {
 /// The robot placed in the cell, with the cell's boxes and tool.
 pub struct Scene<'a> {
     robot: &'a Robot,
+    /// [`arm_radius_mm`] of the robot.
+    arm_radius_mm: f64,
     cell_from_robot: Isometry3<f64>,
     blocks: Vec<Block>,
     tool: Vec<ToolPiece>,
@@ -191,6 +234,7 @@ impl<'a> Scene<'a> {
             .collect();
         Scene {
             robot,
+            arm_radius_mm: arm_radius_mm(robot),
             cell_from_robot,
             blocks,
             tool: Vec::new(),
@@ -201,7 +245,7 @@ impl<'a> Scene<'a> {
     /// The most any point of the arm or the tool can move per radian of any joint, mm: the arm
     /// radius plus the tool's extent beyond the flange.
     pub fn radius_mm(&self) -> f64 {
-        ARM_RADIUS_MM + self.tool_extent_mm
+        self.arm_radius_mm + self.tool_extent_mm
     }
 
     /// Height of the mounting plane (the base frame's origin), cell frame, mm.
@@ -213,14 +257,17 @@ impl<'a> Scene<'a> {
     /// controller axes 1..6, and where (a link by name, a tool shape as `tool shape 'name'`);
     /// `mm` is infinite when nothing is measured.
     pub fn nearest(&self, axes: [f64; 6]) -> Nearest {
-        let poses = self.robot.arm_link_poses(&[axes[0], axes[1], axes[2]]);
+        let poses = self.robot.link_poses(&axes);
         let mut best = Nearest {
             mm: f64::INFINITY,
             link: String::new(),
             obstacle: String::new(),
         };
-        for c in &self.robot.cylinders {
-            let frame = self.cell_from_robot * poses[c.joint_index];
+        for c in &self.robot.collision {
+            let (frame, base) = match c.frame {
+                LinkFrame::Base => (self.cell_from_robot, true),
+                LinkFrame::Child(k) => (self.cell_from_robot * poses[k], k == 0),
+            };
             let (a, b) = (frame * c.a, frame * c.b);
             let axis = b - a;
             let len = axis.norm();
@@ -237,7 +284,7 @@ impl<'a> Scene<'a> {
             let cyl = Cylinder::new(len / 2.0, c.radius_mm);
             let lowest_z = lowest_point_z(a, b, dir, c.radius_mm);
             for block in &self.blocks {
-                if c.joint_index == 0 && self.stands_on(lowest_z, block) {
+                if base && self.stands_on(lowest_z, block) {
                     continue;
                 }
                 let d = parry3d::query::distance(&pose, &cyl, &block.pose, &block.cuboid)
@@ -346,9 +393,9 @@ impl<'a> Scene<'a> {
         (best, count, self.radius_mm() * widest / n as f64)
     }
 
-    /// Whether a link-1 cylinder whose lowest point is at `lowest_z` stands on `block` (module
-    /// doc): the block wholly at or below the mounting plane, the cylinder wholly on or above
-    /// the block's top.
+    /// Whether a base_link or link-1 cylinder whose lowest point is at `lowest_z` stands on
+    /// `block` (module doc): the block wholly at or below the mounting plane, the cylinder
+    /// wholly on or above the block's top.
     fn stands_on(&self, lowest_z: f64, block: &Block) -> bool {
         block.top_z <= self.mounting_plane_z() + STAND_TOL_MM
             && lowest_z >= block.top_z - STAND_TOL_MM
@@ -611,11 +658,23 @@ pub fn check_module(
 
     // The header's min clearance is a lower bound within 0.05 mm of the true minimum, which lies
     // at most 0.5 mm below the smallest sample of a move (1 mm of motion between samples), at
-    // most the step reached below that of a corner, and not above either.
+    // most the step reached below that of a corner, and not above either. Where the model
+    // checks enclosures of some links (module doc), a lower bound, not below 0.
+    let enclosed = robot
+        .collision
+        .iter()
+        .any(|c| matches!(c.frame, LinkFrame::Base | LinkFrame::Child(3..)));
     match (module.min_clearance_mm, smallest.mm.is_finite()) {
         (Some(h), true) => {
             let (lo, hi) = (
-                (smallest.mm - 0.5).min(corner_smallest) - HEADER_TOL_MM - HEADER_ROUNDING_MM,
+                match enclosed {
+                    false => {
+                        (smallest.mm - 0.5).min(corner_smallest)
+                            - HEADER_TOL_MM
+                            - HEADER_ROUNDING_MM
+                    }
+                    true => 0.0,
+                },
                 smallest.mm + HEADER_ROUNDING_MM,
             );
             if !(lo - 1e-9..=hi + 1e-9).contains(&h) {
