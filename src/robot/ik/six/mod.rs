@@ -89,6 +89,8 @@
 
 mod bound;
 mod choose;
+#[cfg(test)]
+mod choose_tests;
 mod conf;
 mod error;
 mod solve;
