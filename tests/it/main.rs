@@ -44,6 +44,7 @@ mod estimate;
 mod frames;
 mod fuzz;
 mod golden;
+mod hostile;
 mod locate;
 mod messages;
 mod pictures;

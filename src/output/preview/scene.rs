@@ -11,7 +11,10 @@
 //! time and every [`KEYFRAME_STEP_DEG`] of its largest axis change (whichever gives more
 //! samples), a ramp into at least [`RAMP_KEYFRAMES`] (a TCP-limited move's ramps are short and
 //! steep), both ends included, so the page's linear interpolation between keyframes stays within
-//! about a millimetre of the kinematics (a test measures it).
+//! about a millimetre of the kinematics (a test measures it). A run of more than
+//! [`MAX_KEYFRAMES`] keyframes (slow speeds, long moves) is thinned to about that many: every
+//! `stride`-th keyframe and every waypoint kept, so the page stays a few MB; its motion between
+//! them is then coarser.
 //!
 //! **The smallest clearance** is the plan's certified figure, with the link and obstacle the
 //! plan names, on the move whose clearance is [`Plan::least`], or, where the least is a zoned
@@ -148,11 +151,12 @@ fn lerp6(a: &[f64; 6], b: &[f64; 6], s: f64) -> [f64; 6] {
 /// Keyframes ramps are cut into at least (module docs).
 const RAMP_KEYFRAMES: f64 = 4.0;
 
-/// The times (s, after the move's start, the last `duration`) of a move's keyframes (module
-/// docs): each piece of the profile (a ramp, the cruise, a ramp; or the whole quintic) cut into
-/// equal steps of at most [`KEYFRAME_STEP_S`] and [`KEYFRAME_STEP_DEG`] of the largest axis
-/// change over the piece, a ramp into at least [`RAMP_KEYFRAMES`].
-fn keyframe_times(duration: f64, profile: Profile, largest_deg: f64) -> Vec<f64> {
+/// The pieces of a move's keyframes (module docs): each piece of the profile (a ramp, the
+/// cruise, a ramp; or the whole quintic) from `a` to `b` (s, after the move's start) cut into
+/// `n` equal steps of at most [`KEYFRAME_STEP_S`] and [`KEYFRAME_STEP_DEG`] of the largest axis
+/// change over the piece, a ramp into at least [`RAMP_KEYFRAMES`]. Counted, not listed: a slow
+/// move of a large arm has millions.
+fn keyframe_pieces(duration: f64, profile: Profile, largest_deg: f64) -> Vec<(f64, f64, u64)> {
     let pieces: Vec<(f64, f64, f64)> = match profile {
         Profile::Cruise { ramp_s } if ramp_s > 0.0 && 2.0 * ramp_s <= duration => vec![
             (0.0, ramp_s, RAMP_KEYFRAMES),
@@ -161,20 +165,51 @@ fn keyframe_times(duration: f64, profile: Profile, largest_deg: f64) -> Vec<f64>
         ],
         _ => vec![(0.0, duration, 1.0)],
     };
+    pieces
+        .into_iter()
+        .map(|(a, b, least)| {
+            let share = profile.progress(b, duration) - profile.progress(a, duration);
+            let n = ((b - a) / KEYFRAME_STEP_S)
+                .ceil()
+                .max((largest_deg * share / KEYFRAME_STEP_DEG).ceil())
+                .max(least);
+            // A NaN or a count past u64 (it cannot be listed anyway) becomes the most.
+            let n = if n.is_finite() { n as u64 } else { u64::MAX };
+            (a, b, n.max(1))
+        })
+        .collect()
+}
+
+/// The most keyframes a page holds: a page past it is thinned (every `stride`-th keyframe of
+/// the run kept, and every waypoint's), so the page stays a few MB (60 points at `v5`
+/// sampled every 1/30 s made a 157 MB page).
+pub const MAX_KEYFRAMES: u64 = 20_000;
+
+/// The times (s, after the move's start, the last `duration`) of a move's keyframes: of its
+/// pieces ([`keyframe_pieces`]), the keyframes numbered `first + j` (counting on from the
+/// keyframes of the moves before) that are multiples of `stride`, and the move's end.
+fn keyframe_times(pieces: &[(f64, f64, u64)], first: u64, stride: u64) -> Vec<f64> {
     let mut times = Vec::new();
-    for (a, b, least) in pieces {
-        let share = profile.progress(b, duration) - profile.progress(a, duration);
-        let n = ((b - a) / KEYFRAME_STEP_S)
-            .ceil()
-            .max((largest_deg * share / KEYFRAME_STEP_DEG).ceil())
-            .max(least) as usize;
-        times.extend((1..=n).map(|j| {
+    let mut before = first;
+    for (k, &(a, b, n)) in pieces.iter().enumerate() {
+        let at = |j: u64| {
             if j == n {
                 b
             } else {
                 a + (b - a) * j as f64 / n as f64
             }
-        }));
+        };
+        // The first j in 1..=n with (before + j) a multiple of the stride, then every stride.
+        let mut j = stride - before % stride;
+        while j <= n {
+            times.push(at(j));
+            j = j.saturating_add(stride);
+        }
+        let last = k + 1 == pieces.len();
+        if last && times.last() != Some(&b) {
+            times.push(b);
+        }
+        before = before.saturating_add(n);
     }
     times
 }
@@ -207,6 +242,23 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
     let mut waypoints = Vec::with_capacity(route.waypoints.len());
     let mut starts = Vec::with_capacity(route.moves());
     let mut t0 = 0.0;
+    let pieces: Vec<Vec<(f64, f64, u64)>> = route
+        .waypoints
+        .windows(2)
+        .zip(&timing)
+        .map(|(pair, &(duration, profile))| {
+            let largest = (0..6)
+                .map(|a| (pair[1].joints_deg[a] - pair[0].joints_deg[a]).abs())
+                .fold(0.0, f64::max);
+            keyframe_pieces(duration, profile, largest)
+        })
+        .collect();
+    let total = pieces
+        .iter()
+        .flatten()
+        .fold(1u64, |sum, p| sum.saturating_add(p.2));
+    let stride = total.div_ceil(MAX_KEYFRAMES).max(1);
+    let mut counted = 0u64;
     for (k, w) in route.waypoints.iter().enumerate() {
         if k == 0 {
             keyframes.push(keyframe(&poser, &carriers, 0.0, &w.joints_deg));
@@ -214,10 +266,10 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
             let from = &route.waypoints[k - 1].joints_deg;
             let (duration, profile) = timing[k - 1];
             starts.push(t0);
-            let largest = (0..6)
-                .map(|a| (w.joints_deg[a] - from[a]).abs())
-                .fold(0.0, f64::max);
-            let times = keyframe_times(duration, profile, largest);
+            let times = keyframe_times(&pieces[k - 1], counted, stride);
+            counted = pieces[k - 1]
+                .iter()
+                .fold(counted, |sum, p| sum.saturating_add(p.2));
             let last = times.len() - 1;
             for (j, &t) in times.iter().enumerate() {
                 let axes = if j == last {

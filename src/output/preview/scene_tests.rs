@@ -1,4 +1,6 @@
-//! The scene of a real (small) run: the bundled IRB 1400 with a tool, a table and a post.
+//! Tests of the preview's scene: keyframes, the clearance's place, the shapes each link and
+//! tool part is drawn with. The scene of a real (small) run: the bundled IRB 1400 with a tool,
+//! a table and a post.
 
 use super::*;
 use crate::pipeline::{self, Loaded, Options};
