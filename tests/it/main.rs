@@ -24,6 +24,7 @@
 //! - `random_cells`: generated cells (with and without a tool), every method, every module
 //!   through the dense re-check.
 //! - `tool_cells`: the example cells with a tool, every method, and the tool's volume at work.
+//! - `readme`: every command the README shows, run, against the lines it quotes.
 //! - `tidy`: the house rules read from `src/` (dependency direction, no import cycles between
 //!   files, file length, no issue numbers, module docs), each checker held to a made-up
 //!   violation.
@@ -45,6 +46,7 @@ mod messages;
 mod pictures;
 mod preview_browser;
 mod random_cells;
+mod readme;
 mod refine;
 mod report;
 mod safety;
