@@ -271,8 +271,7 @@ fn describe(e: &Error, text: &Text) -> Said {
     }
 }
 
-const FORM_HELP: &str =
-    "docs/cell.md and docs/guide.md show the form of every key";
+const FORM_HELP: &str = "docs/cell.md and docs/guide.md show the form of every key";
 
 const KEYS_HELP: &str = "a cell gives `module: Name`, `robot:` (with `urdf:` and `base:`) and `points:` (at least two), and may give `obstacles:`, `planner:`, `motion:`, `tool:`, `wobj:` or `wobjs:`, and `loads:` (docs/cell.md)";
 

@@ -35,7 +35,14 @@ fn blocks(text: &str) -> Vec<Block> {
         match open.take() {
             None => {
                 if let Some(info) = trimmed.strip_prefix("```") {
-                    open = Some((indent, Block { info: info.trim().to_string(), line: i + 2, lines: Vec::new() }));
+                    open = Some((
+                        indent,
+                        Block {
+                            info: info.trim().to_string(),
+                            line: i + 2,
+                            lines: Vec::new(),
+                        },
+                    ));
                 }
             }
             Some((fence_indent, mut block)) => {
@@ -43,7 +50,11 @@ fn blocks(text: &str) -> Vec<Block> {
                     out.push(block);
                 } else {
                     let cut = raw.len().min(fence_indent);
-                    let body = if raw[..cut].trim().is_empty() { &raw[cut..] } else { raw };
+                    let body = if raw[..cut].trim().is_empty() {
+                        &raw[cut..]
+                    } else {
+                        raw
+                    };
                     block.lines.push(body.to_string());
                     open = Some((fence_indent, block));
                 }
@@ -65,10 +76,17 @@ fn examples(block: &Block) -> Vec<Example> {
     let mut out: Vec<Example> = Vec::new();
     for (k, l) in block.lines.iter().enumerate() {
         if let Some(cmd) = l.strip_prefix("$ ") {
-            out.push(Example { line: block.line + k, command: cmd.trim().to_string(), quoted: Vec::new() });
+            out.push(Example {
+                line: block.line + k,
+                command: cmd.trim().to_string(),
+                quoted: Vec::new(),
+            });
         } else {
             let last = out.last_mut().unwrap_or_else(|| {
-                panic!("README line {}: a console block starts with output, not a `$ ` command", block.line + k)
+                panic!(
+                    "README line {}: a console block starts with output, not a `$ ` command",
+                    block.line + k
+                )
             });
             last.quoted.push(l.clone());
         }
@@ -101,7 +119,10 @@ fn mismatch(quoted: &[String], actual: &[String]) -> Option<String> {
         }
         let want = normalised(q);
         let found = if skipping {
-            actual[at..].iter().position(|a| normalised(a) == want).map(|p| at + p)
+            actual[at..]
+                .iter()
+                .position(|a| normalised(a) == want)
+                .map(|p| at + p)
         } else {
             (actual.get(at).map(|a| normalised(a)) == Some(want.clone())).then_some(at)
         };
@@ -110,7 +131,9 @@ fn mismatch(quoted: &[String], actual: &[String]) -> Option<String> {
             None => {
                 return Some(format!(
                     "the README quotes\n    {q}\nbut the output has {}",
-                    actual.get(at).map_or("no more lines".to_string(), |a| format!("\n    {a}"))
+                    actual
+                        .get(at)
+                        .map_or("no more lines".to_string(), |a| format!("\n    {a}"))
                 ))
             }
         }
@@ -155,7 +178,8 @@ fn run(dir: &Path, command: &str) -> Option<(Vec<String>, bool)> {
 fn scratch() -> tempfile::TempDir {
     let dir = tempfile::tempdir().expect("a scratch directory");
     for name in ["cells", "robots", "templates", "tests"] {
-        std::os::unix::fs::symlink(root().join(name), dir.path().join(name)).expect("link an input directory");
+        std::os::unix::fs::symlink(root().join(name), dir.path().join(name))
+            .expect("link an input directory");
     }
     dir
 }
@@ -166,15 +190,23 @@ fn the_readme_commands_print_what_the_readme_quotes() {
     let dir = scratch();
     let all = blocks(&text);
     for b in all.iter().filter(|b| b.info == "yaml") {
-        if let Some(name) = b.lines.first().and_then(|l| l.strip_prefix("# ")).filter(|n| n.ends_with(".yaml")) {
-            std::fs::write(dir.path().join(name.trim()), b.lines.join("\n") + "\n").expect("write a README cell");
+        if let Some(name) = b
+            .lines
+            .first()
+            .and_then(|l| l.strip_prefix("# "))
+            .filter(|n| n.ends_with(".yaml"))
+        {
+            std::fs::write(dir.path().join(name.trim()), b.lines.join("\n") + "\n")
+                .expect("write a README cell");
         }
     }
     let mut ran = 0;
     let mut failures = Vec::new();
     for b in all.iter().filter(|b| b.info == "console") {
         for ex in examples(b) {
-            let Some((lines, ok)) = run(dir.path(), &ex.command) else { continue };
+            let Some((lines, ok)) = run(dir.path(), &ex.command) else {
+                continue;
+            };
             ran += 1;
             let should_fail = ex.quoted.first().is_some_and(|q| q.starts_with("error:"));
             if ok == should_fail {
@@ -182,7 +214,11 @@ fn the_readme_commands_print_what_the_readme_quotes() {
                     "README line {}: `{}` {}:\n{}",
                     ex.line,
                     ex.command,
-                    if ok { "succeeded, but the README quotes an error" } else { "failed" },
+                    if ok {
+                        "succeeded, but the README quotes an error"
+                    } else {
+                        "failed"
+                    },
                     lines.join("\n")
                 ));
             } else if let Some(why) = mismatch(&ex.quoted, &lines) {
@@ -191,7 +227,10 @@ fn the_readme_commands_print_what_the_readme_quotes() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
-    assert!(ran >= 5, "README: only {ran} commands ran; are its console blocks still marked `console`?");
+    assert!(
+        ran >= 5,
+        "README: only {ran} commands ran; are its console blocks still marked `console`?"
+    );
 }
 
 /// Every option the README's command-line table names is one `gen-rapid --help` describes, and
@@ -221,9 +260,23 @@ fn the_matcher_holds_quotes_to_the_output() {
     let s = |v: &[&str]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>();
     let out = s(&["a", "b", "c", "gen-rapid: x: 10 moves, 1 deg grid, 0.31 s"]);
     assert!(mismatch(&s(&["a", "b"]), &out).is_none());
-    assert!(mismatch(&s(&["a", "c"]), &out).is_some(), "a skipped line needs `...`");
+    assert!(
+        mismatch(&s(&["a", "c"]), &out).is_some(),
+        "a skipped line needs `...`"
+    );
     assert!(mismatch(&s(&["...", "c"]), &out).is_none());
-    assert!(mismatch(&s(&["...", "gen-rapid: x: 10 moves, 1 deg grid, 2.50 s"]), &out).is_none());
-    assert!(mismatch(&s(&["...", "gen-rapid: x: 11 moves, 1 deg grid, 0.31 s"]), &out).is_some());
-    assert!(mismatch(&s(&["a", "b", "c", "d", "e"]), &out).is_some(), "a line beyond the output");
+    assert!(mismatch(
+        &s(&["...", "gen-rapid: x: 10 moves, 1 deg grid, 2.50 s"]),
+        &out
+    )
+    .is_none());
+    assert!(mismatch(
+        &s(&["...", "gen-rapid: x: 11 moves, 1 deg grid, 0.31 s"]),
+        &out
+    )
+    .is_some());
+    assert!(
+        mismatch(&s(&["a", "b", "c", "d", "e"]), &out).is_some(),
+        "a line beyond the output"
+    );
 }
