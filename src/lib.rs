@@ -8,6 +8,8 @@
 //! ```
 
 // Leaves, used by any stage.
+/// The first YAML key given no value (the cell's and the controller file's refusal).
+pub mod blank_key;
 pub mod excerpt;
 pub mod geometry;
 pub mod input;
@@ -27,6 +29,8 @@ pub mod zeroed;
 pub mod robot;
 
 // load: the cell file
+/// The budgets of a run (memory and time), checked before the work.
+pub mod budget;
 pub mod cell;
 
 // place: where the robot stands, every point on six axes

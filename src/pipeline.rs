@@ -9,18 +9,19 @@
 //! everything after them is a pure function of their results. Errors are the stages' own,
 //! wrapped in [`Error`] with the place in the cell file they point at.
 
-use crate::collision::CollisionModel;
+use crate::collision::{CollisionModel, GridCheck};
 use crate::error::{Error, Failure};
-pub use crate::load::{load, robot_of, Loaded};
+pub use crate::load::{check_budgets, load, robot_of, Loaded};
 use crate::output::program::{self, RobotFacts};
 use crate::output::rapid::{self, ModuleTemplate, RapidError, TemplateError};
 use crate::place::{self, locate::Sketch, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
-use crate::plan::{self, Method, Route};
+use crate::plan::{self, Legs, Method, Route};
 use crate::progress::{Progress, Silent};
 use crate::refine::{self, Plan, Refined};
 use crate::timing;
 use std::path::Path;
+use std::sync::Arc;
 
 /// The warnings for stderr right after loading: the robot's convention when it has no
 /// controller file, and the speeddata the time stage cannot estimate.
@@ -64,32 +65,47 @@ pub fn sketch(job: &Loaded) -> Result<Sketch, Error> {
 }
 
 /// The inspect stage's result: the collision model of the placed robot and the grid over axes
-/// 1..3 with every node inspected (paper section 3).
+/// 1..3 (paper section 3), its nodes inspected as the plan stage's waves reach them
+/// (`plan::cspace`: the same codes as inspecting every node first).
 pub struct Inspected {
-    pub model: CollisionModel,
+    pub model: Arc<CollisionModel>,
     pub cspace: CSpace,
 }
 
 /// Inspect: the model at the placement and the grid at `grid_deg` over the ranges of axes 1..3,
-/// reporting the grid fill to `progress` (one unit per axis-1 slice).
-pub fn inspect(job: &Loaded, placed: &Placed, grid_deg: f64, progress: &dyn Progress) -> Inspected {
+/// each node inspected when a wave first reads it (nothing inspected yet:
+/// `CSpace::inspect_all` inspects the whole grid).
+pub fn inspect(job: &Loaded, placed: &Placed, grid_deg: f64) -> Inspected {
     let model = CollisionModel::of_cell(&job.cell, &job.robot, placed.placement);
+    let model = Arc::new(model);
     let a = &job.robot.controller.axes;
     let grid = Grid::over([0, 1, 2].map(|k| [a[k].min_deg, a[k].max_deg]), grid_deg);
-    progress.stage("inspecting the grid", grid.dims[0] as u64);
-    let cspace = CSpace::build_observed(grid, &model.grid_check(grid_deg), progress);
+    let check = GridCheck::new(Arc::clone(&model), grid_deg);
+    let cspace = CSpace::lazy(grid, Arc::new(check));
     Inspected { model, cspace }
 }
 
-/// Plan: the route through the points with `method`, every move proven; a failure points at the
-/// point it is about.
+/// Plan: the route through the points with `method` (the paper's method: every leg on the
+/// grid), every move proven; a failure points at the point it is about.
 pub fn route(
     job: &Loaded,
     placed: &Placed,
     got: &Inspected,
     method: Method,
 ) -> Result<Route, Error> {
-    plan::route(&got.cspace, &got.model, &placed.points, method).map_err(|source| {
+    route_with(job, placed, got, method, Legs::GridOnly)
+}
+
+/// [`route`] with `legs` saying which legs the grid plans (`plan::direct`).
+pub fn route_with(
+    job: &Loaded,
+    placed: &Placed,
+    got: &Inspected,
+    method: Method,
+    legs: Legs,
+) -> Result<Route, Error> {
+    let (cs, model, points) = (&got.cspace, &got.model, &placed.points);
+    plan::route_with(cs, model, points, method, legs).map_err(|source| {
         let loc = job.cell.points.get(source.point()).map(|p| p.loc);
         Error::Plan {
             source,
@@ -208,12 +224,14 @@ impl std::fmt::Debug for Halted {
 /// Place, inspect, plan, refine and render, in that order, reporting each stage to
 /// `opts.progress`; the shortcut pass as `planner.shortcut` says.
 pub fn run(job: &Loaded, opts: &Options) -> Result<Outcome, Halted> {
+    check_budgets(job, opts.grid_deg, 1)?;
     let progress = opts.progress;
     progress.stage("placing the robot", 0);
     let placed = place(job)?;
-    let inspected = inspect(job, &placed, opts.grid_deg, progress);
+    let inspected = inspect(job, &placed, opts.grid_deg);
     progress.stage("planning and proving the moves", 0);
-    let route = match route(job, &placed, &inspected, opts.method) {
+    let legs = Legs::of(&job.cell.planner);
+    let route = match route_with(job, &placed, &inspected, opts.method, legs) {
         Ok(route) => route,
         Err(error) => {
             let searched = Some(Box::new(Searched { placed, inspected }));

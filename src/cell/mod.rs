@@ -28,6 +28,7 @@
 //! later stages do not use all of these yet: [`unsupported`] says which, and the pipeline
 //! refuses a cell that uses them.
 
+mod present;
 mod raw;
 mod syntax;
 mod unsupported;
@@ -401,6 +402,8 @@ pub struct Planner {
     /// `planner.shortcut`: after the paper's method, the continuous shortcut pass (`refine`).
     /// `false` keeps the paper's method alone.
     pub shortcut: bool,
+    /// Where `planner.grid` is given (`None`: the default), for a budget the grid passes.
+    pub grid_loc: Option<Loc>,
 }
 
 /// The cell's `motion:` defaults.
@@ -574,8 +577,11 @@ pub fn parse(path: &Path, text: &str) -> Result<Cell, CellError> {
     budget.enforce_alias_anchor_ratio = false;
     let mut options = serde_saphyr::Options::default();
     options.budget = Some(budget);
-    let raw: raw::RawCell = serde_saphyr::from_str_with_options(text, options)
+    let raw: raw::RawCell = serde_saphyr::from_str_with_options(text, options.clone())
         .map_err(|e| syntax::refusal(text, &e))?;
+    if let Some(e) = present::first_key_without_value(text, options) {
+        return Err(e);
+    }
     validate::cell(path, raw)
 }
 

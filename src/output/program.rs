@@ -133,7 +133,7 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             zoned_vias: plan.zoned_vias(),
             // The zone a via gets where its corner is proven (`motion.via_zone`).
             via_zone: cell.motion.via_zone.clone(),
-            paper: Some((plan.paper.moves, plan.paper.time_s)),
+            paper: plan.paper.map(|p| (p.moves, p.time_s)),
         },
         targets,
         // The tool block's name when there is one (the cell validation sees to it).

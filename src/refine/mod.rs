@@ -20,7 +20,7 @@
 //! the motion into each waypoint (the time stage, `timing`, lies to its left), called once per
 //! candidate; the winner's estimate is the plan's. A change inside the passes is kept only when
 //! that estimate does not grow. The paper's method alone is timed here too ([`paper_figure`]),
-//! the figure the plan is measured against.
+//! the figure the plan is measured against, when the route is the paper's (`Route::paper_alone`).
 //!
 //! A candidate route is certified only when it is proven again on the cell's model; the plan
 //! stage's route (proven as it was planned) is certified once, only if a candidate keeps it.
@@ -76,8 +76,9 @@ pub struct Plan {
     pub least: Option<Clearance>,
     /// The manipulation time, the sum of the moves', s.
     pub total_s: f64,
-    /// The paper's method alone on the same cell.
-    pub paper: PaperFigure,
+    /// The paper's method alone on the same cell; `None` when the route is not the paper's
+    /// (a leg gone straight without the grid: `plan::direct`), whose method then did not run.
+    pub paper: Option<PaperFigure>,
 }
 
 impl Plan {
@@ -125,7 +126,9 @@ pub fn refine(
     settings: &Settings,
     time: &TimeFn,
 ) -> Refined {
-    let paper = paper_figure(&route, model, points, time);
+    let paper = route
+        .paper_alone()
+        .then(|| paper_figure(&route, model, points, time));
     let all = match settings.shortcut {
         true => candidates(&route, model, points, settings.via_zone, time),
         false => vec![route.clone()],
@@ -238,7 +241,7 @@ fn finish(
     points: &[PlacedPoint],
     settings: &Settings,
     time: &TimeFn,
-    paper: PaperFigure,
+    paper: Option<PaperFigure>,
 ) -> Refined {
     let Certified {
         route,
@@ -289,7 +292,6 @@ mod tests {
     use super::*;
     use crate::pipeline;
     use crate::plan::Method;
-    use crate::progress::Silent;
     use crate::timing;
     use std::cell::Cell;
     use std::path::Path;
@@ -301,7 +303,7 @@ mod tests {
         // Fly-by vias where their corners are proven: zones differ from move to move.
         job.cell.motion.via_zone = "z50".into();
         let placed = pipeline::place(&job).expect("placed");
-        let inspected = pipeline::inspect(&job, &placed, 2.0, &Silent);
+        let inspected = pipeline::inspect(&job, &placed, 2.0);
         let route = pipeline::route(&job, &placed, &inspected, Method::Extensile).expect("route");
         let time_model = timing::TimeModel::new(&job.robot, job.cell.tool.as_ref());
         let calls = Cell::new(0);
@@ -361,8 +363,9 @@ mod tests {
             let (least, moves_least) = (plan.least.expect("obstacles"), certified.least);
             assert!(least.mm <= moves_least.expect("obstacles").mm);
             // Flying by never takes longer than the paper's route with its vias stopping.
-            assert!(plan.total_s <= plan.paper.time_s, "{shortcut}");
-            assert_eq!(plan.paper.moves, route.moves());
+            let paper = plan.paper.expect("the paper's route");
+            assert!(plan.total_s <= paper.time_s, "{shortcut}");
+            assert_eq!(paper.moves, route.moves());
         }
     }
 }

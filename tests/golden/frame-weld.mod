@@ -16,7 +16,6 @@ MODULE FrameWeld
     ! min clearance (mm): 10.3
     ! estimated time (s): 20.92
     ! zoned vias: 0 of 1 (via zone fine)
-    ! the paper's method alone: 10 moves, 20.92 s
 
     PERS tooldata tTorch2600 := [TRUE,[[116.673,0.000,336.673],[0.923879539,0.000000000,0.382683416,0.000000000]],[4.500,[0.000,0.000,120.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjFrame := [FALSE,TRUE,"",[[900.000,-400.000,880.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];

@@ -15,7 +15,6 @@ MODULE GripperPick
     ! min clearance (mm): 10.3
     ! estimated time (s): 10.10
     ! zoned vias: 0 of 2 (via zone fine)
-    ! the paper's method alone: 9 moves, 10.10 s
 
     PERS tooldata tGripper := [TRUE,[[0.000,0.000,180.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[3.200,[0.000,0.000,80.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjConveyor := [FALSE,TRUE,"",[[700.000,0.000,750.000],[0.707106781,0.000000000,0.000000000,0.707106781]],[[0,0,0],[1,0,0,0]]];

@@ -16,7 +16,6 @@ MODULE PalletStack
     ! min clearance (mm): 20.0
     ! estimated time (s): 33.11
     ! zoned vias: 0 of 5 (via zone fine)
-    ! the paper's method alone: 24 moves, 33.12 s
 
     PERS tooldata tVacuum := [TRUE,[[0.000,0.000,250.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[35.000,[0.000,0.000,150.000],[1,0,0,0],0,0,0]];
 

@@ -16,7 +16,6 @@ MODULE SmallAssembly
     ! min clearance (mm): 5.7
     ! estimated time (s): 6.04
     ! zoned vias: 0 of 1 (via zone fine)
-    ! the paper's method alone: 8 moves, 6.05 s
 
     PERS tooldata tGrip120 := [TRUE,[[0.000,0.000,110.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[0.800,[0.000,0.000,40.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjTable := [FALSE,TRUE,"",[[0.000,0.000,750.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];

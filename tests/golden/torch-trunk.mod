@@ -15,7 +15,6 @@ MODULE TorchTrunk
     ! min clearance (mm): 10.0
     ! estimated time (s): 32.56
     ! zoned vias: 0 of 10 (via zone fine)
-    ! the paper's method alone: 17 moves, 33.13 s
 
     PERS tooldata tTorch := [TRUE,[[116.673,0.000,336.673],[0.923879539,0.000000000,0.382683416,0.000000000]],[2.500,[0.000,0.000,120.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjTrunk := [FALSE,TRUE,"",[[-830.000,-380.000,100.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];

@@ -41,6 +41,7 @@ mod convention;
 mod estimate;
 mod fuzz;
 mod golden;
+mod hostile;
 mod locate;
 mod messages;
 mod pictures;

@@ -15,7 +15,6 @@ MODULE AutoTcp
     ! min clearance (mm): 367.1
     ! estimated time (s): 4.03
     ! zoned vias: 0 of 0 (via zone fine)
-    ! the paper's method alone: 2 moves, 4.03 s
 
     PERS tooldata tGripper := [TRUE,[[0.000,0.000,180.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[1.000,[0.000,0.000,0.000],[1,0,0,0],0,0,0]];
 

@@ -15,7 +15,6 @@ MODULE TcpCase
     ! min clearance (mm): 183.3
     ! estimated time (s): 4.64
     ! zoned vias: 0 of 0 (via zone fine)
-    ! the paper's method alone: 2 moves, 4.64 s
 
     PERS tooldata tTorch := [TRUE,[[0.000,0.000,250.000],[0.965925836,0.000000000,0.258819010,0.000000000]],[1.000,[0.000,0.000,0.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjTable := [FALSE,TRUE,"",[[700.000,-200.000,400.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];

@@ -1,4 +1,5 @@
-//! RAPID output stage: turns an already planned joint path into the text of an
+//! RAPID output stage (long: the render pass, its template context and the module's guards):
+//! turns an already planned joint path into the text of an
 //! ABB RAPID module (IRB 1400 on an IRC5 controller, loaded by RobotStudio).
 //!
 //! Everything the text needs is decided by earlier stages and handed over as a
@@ -83,6 +84,7 @@
 mod data;
 mod format;
 mod header;
+mod tags;
 mod target_names;
 
 pub use data::{AxisRanges, Pose, RobTarget, ToolData, WobjData, NO_EXTERNAL_AXES};
@@ -99,6 +101,8 @@ use minijinja::{value::Serde, AutoEscape, Environment, UndefinedBehavior};
 use serde::Serialize;
 use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Arc;
 
 /// The module template, embedded at compile time.
 pub const TEMPLATE: &str = include_str!("../../../templates/module.mod.j2");
@@ -265,8 +269,10 @@ pub enum TemplateError {
         /// That line of the template.
         line_text: Option<String>,
         message: String,
-        /// Rendering ran past [`TEMPLATE_FUEL`] instructions.
+        /// Rendering ran past [`TEMPLATE_FUEL`].
         out_of_fuel: bool,
+        /// The module passed [`MAX_MODULE_BYTES`].
+        over_cap: bool,
     },
 }
 
@@ -293,6 +299,7 @@ impl TemplateError {
             line_text,
             message,
             out_of_fuel: e.kind() == minijinja::ErrorKind::OutOfFuel,
+            over_cap: false,
         }
     }
 }
@@ -318,11 +325,26 @@ impl ModuleTemplate {
     /// The user's template read from `path`, compiled once here so that a syntax error is found
     /// before any planning (pointing at its line).
     pub fn user(path: &Path, source: String) -> Result<ModuleTemplate, TemplateError> {
+        if let Some(long) = tags::long_tag(&source) {
+            return Err(TemplateError::Invalid {
+                path: path.to_path_buf(),
+                line: Some(long.line),
+                column: Some(long.column),
+                line_text: source.lines().nth(long.line - 1).map(str::to_string),
+                message: format!(
+                    "this tag holds {} characters, more than the {} a tag may hold",
+                    long.chars,
+                    tags::MAX_TAG_CHARS
+                ),
+                out_of_fuel: false,
+                over_cap: false,
+            });
+        }
         let t = ModuleTemplate {
             path: Some(path.to_path_buf()),
             source,
         };
-        t.environment()
+        on_template_stack(|| t.environment().map(drop))
             .map_err(|e| TemplateError::of(path, &t.source, &e))?;
         Ok(t)
     }
@@ -341,8 +363,29 @@ impl ModuleTemplate {
     /// and at most [`TEMPLATE_FUEL`] instructions (a user's template that loops for ever, or
     /// 10^10 times, is an error, not a hang).
     fn environment(&self) -> Result<Environment<'_>, minijinja::Error> {
+        self.environment_counting(Arc::new(AtomicUsize::new(0)))
+    }
+
+    /// [`environment`](Self::environment) whose expressions refuse to write past
+    /// [`MAX_MODULE_BYTES`]: `written` counts the bytes the render has written (its writer
+    /// adds them), and each `{{ ... }}` checks it after writing, so a template that passes the
+    /// cap fails at that expression's line.
+    fn environment_counting(
+        &self,
+        written: Arc<AtomicUsize>,
+    ) -> Result<Environment<'_>, minijinja::Error> {
         let mut env = Environment::new();
         env.set_fuel(Some(TEMPLATE_FUEL));
+        env.set_formatter(move |out, state, value| {
+            minijinja::escape_formatter(out, state, value)?;
+            if written.load(Ordering::Relaxed) > MAX_MODULE_BYTES {
+                return Err(minijinja::Error::new(
+                    minijinja::ErrorKind::InvalidOperation,
+                    over_cap_message(),
+                ));
+            }
+            Ok(())
+        });
         env.set_undefined_behavior(UndefinedBehavior::Strict);
         env.set_auto_escape_callback(|_| AutoEscape::None);
         env.set_syntax(
@@ -359,25 +402,116 @@ impl ModuleTemplate {
     /// Renders the context; an error of the user's template becomes [`TemplateError`].
     fn render(&self, ctx: &ModuleCtx) -> Result<String, RapidError> {
         let name = self.name();
-        let rendered = self
-            .environment()
-            .and_then(|env| env.get_template(&name)?.render(Serde(ctx)));
+        let written = Arc::new(AtomicUsize::new(0));
+        let mut out = Capped {
+            bytes: Vec::new(),
+            written: Arc::clone(&written),
+        };
+        let rendered = on_template_stack(|| {
+            self.environment_counting(Arc::clone(&written))
+                .and_then(|env| {
+                    env.get_template(&name)?
+                        .render_captured_to(Serde(ctx), &mut out)
+                        .map(drop)
+                })
+        })
+        .and_then(|()| {
+            // Raw text past the cap with no expression after it: the cap, at no line.
+            if written.load(Ordering::Relaxed) > MAX_MODULE_BYTES {
+                Err(minijinja::Error::new(
+                    minijinja::ErrorKind::InvalidOperation,
+                    over_cap_message(),
+                ))
+            } else {
+                Ok(())
+            }
+        });
+        let over_cap = written.load(Ordering::Relaxed) > MAX_MODULE_BYTES;
         match (rendered, &self.path) {
-            (Ok(text), _) => Ok(text),
-            (Err(e), Some(path)) => Err(RapidError::UserTemplate(TemplateError::of(
-                path,
-                &self.source,
-                &e,
-            ))),
+            (Ok(()), _) => String::from_utf8(out.bytes).map_err(|e| {
+                RapidError::Template(minijinja::Error::new(
+                    minijinja::ErrorKind::InvalidOperation,
+                    e.to_string(),
+                ))
+            }),
+            (Err(e), Some(path)) => {
+                let mut t = TemplateError::of(path, &self.source, &e);
+                if let TemplateError::Invalid { over_cap: o, .. } = &mut t {
+                    *o = over_cap;
+                }
+                Err(RapidError::UserTemplate(t))
+            }
             (Err(e), None) => Err(RapidError::Template(e)),
         }
     }
 }
 
-/// The most instructions a template may run (minijinja's fuel): the embedded template renders
-/// a module of 20 000 targets well within it (tests), and a runaway loop stops after about two
-/// seconds.
-pub const TEMPLATE_FUEL: u64 = 100_000_000;
+/// The stack minijinja parses, compiles and renders a template on: it descends an expression
+/// by recursion, and the tags' length (`tags::MAX_TAG_CHARS`) bounds the depth to what this
+/// holds, whatever thread calls (a test's thread has 2 MiB).
+const TEMPLATE_STACK_BYTES: usize = 32 << 20;
+
+/// Runs `f` on a thread with [`TEMPLATE_STACK_BYTES`] of stack (an error if no thread can be
+/// made).
+fn on_template_stack<T: Send>(
+    f: impl FnOnce() -> Result<T, minijinja::Error> + Send,
+) -> Result<T, minijinja::Error> {
+    let failed = |what: &str| {
+        minijinja::Error::new(
+            minijinja::ErrorKind::InvalidOperation,
+            format!("the template's thread {what}"),
+        )
+    };
+    std::thread::scope(|scope| {
+        std::thread::Builder::new()
+            .stack_size(TEMPLATE_STACK_BYTES)
+            .spawn_scoped(scope, f)
+            .map_err(|_| failed("could not be made"))?
+            .join()
+            .map_err(|_| failed("stopped"))?
+    })
+}
+
+/// The most bytes a module may hold, through any template: far more than a module of the
+/// largest cell a run takes (2 000 points and their vias: a few MB), the size of the largest
+/// input file.
+pub const MAX_MODULE_BYTES: usize = 64 << 20;
+
+fn over_cap_message() -> String {
+    format!(
+        "the module passes {} MiB here, the most a module may hold",
+        MAX_MODULE_BYTES >> 20
+    )
+}
+
+/// The render's writer: keeps the module's bytes up to [`MAX_MODULE_BYTES`] and counts every
+/// byte written, so the template's expressions can refuse to go on past the cap (memory stays
+/// bounded: what passes the cap is counted, not kept).
+struct Capped {
+    bytes: Vec<u8>,
+    written: Arc<AtomicUsize>,
+}
+
+impl std::io::Write for Capped {
+    fn write(&mut self, b: &[u8]) -> std::io::Result<usize> {
+        let total = self.written.fetch_add(b.len(), Ordering::Relaxed) + b.len();
+        if total <= MAX_MODULE_BYTES {
+            self.bytes.extend_from_slice(b);
+        }
+        Ok(b.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+/// The fuel a template may burn (minijinja's: one a instruction, and one for every 64 bytes of
+/// data it makes, strings, lists and output alike, so it bounds both time and memory): the
+/// embedded template renders a module of 20 000 targets well within it (tests), a runaway
+/// loop stops within a second, and a template that builds strings (a macro doubling one, a
+/// string repeated) stops before it has made 1 GiB of them.
+pub const TEMPLATE_FUEL: u64 = 16_000_000;
 
 /// The template context (docs/outputs.md, "Your own module template"): every value already formatted;
 /// templates hold no logic.

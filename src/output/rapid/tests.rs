@@ -1,4 +1,5 @@
-//! Tests of [`render`](super::render) (format and names have their own).
+//! Tests of [`render`](super::render) (long: one test a rule of the module text; format and
+//! names have their own).
 
 use super::*;
 use crate::names::check_identifier;
@@ -751,9 +752,34 @@ fn a_huge_module_renders_within_the_fuel_and_a_runaway_template_is_stopped() {
     // Its help line says what stopped it (not the help of an undefined name).
     let help = crate::error::Error::Rapid(err).help().expect("a help line");
     assert!(
-        help.contains("at most 100000000 minijinja instructions"),
+        help.contains("at most 16000000 of minijinja's fuel"),
         "{help}"
     );
+    // A template that writes past the module's cap: refused at the expression that passes it
+    // (line 2), having kept no more than the cap (before: gigabytes written until the memory ran
+    // out, the fuel counting instructions only).
+    let big = "MODULE x\n{% for i in range(100000) %}{{ 'x' * 1000 }}\n{% endfor %}";
+    let t = ModuleTemplate::user(path, big.into()).expect("compiles");
+    let err = render_with(&small_program(), &t).expect_err("over the cap");
+    match &err {
+        RapidError::UserTemplate(TemplateError::Invalid { line, over_cap, .. }) => {
+            assert_eq!((*line, *over_cap), (Some(2), true), "{err}")
+        }
+        e => panic!("{e}"),
+    }
+    let help = crate::error::Error::Rapid(err).help().expect("a help line");
+    assert!(help.contains("at most 64 MiB"), "{help}");
+    // A macro doubling a string 40 times (a terabyte): the fuel counts the bytes it makes.
+    let doubling = "{% macro d(s, n) %}{% if n > 0 %}{{ d(s ~ s, n - 1) }}{% else %}{{ s }}{% endif %}{% endmacro %}{{ d('x', 40) | length }}";
+    let t = ModuleTemplate::user(path, doubling.into()).expect("compiles");
+    let err = render_with(&small_program(), &t).expect_err("out of fuel");
+    assert!(err.to_string().contains("out of fuel"), "{err}");
+    // A tag of a million operators is refused before it is parsed (before: a stack overflow).
+    let chain = format!("{{{{ 1{} }}}}", " + 1".repeat(1_000_000));
+    assert!(matches!(
+        ModuleTemplate::user(path, chain),
+        Err(TemplateError::Invalid { line: Some(1), .. })
+    ));
     let undefined = ModuleTemplate::user(path, "{{ no_such_name }}".into()).expect("compiles");
     let err = render_with(&small_program(), &undefined).expect_err("strict");
     let help = crate::error::Error::Rapid(err).help().expect("a help line");

@@ -17,6 +17,7 @@ use std::path::Path;
 const ORDER: &[&str] = &[
     "robot",
     "cell",
+    "budget",
     "place",
     "collision",
     "plan",
@@ -31,6 +32,7 @@ const ORDER: &[&str] = &[
 
 /// The leaves: any stage may use them; they use no other module of the crate.
 const LEAVES: &[&str] = &[
+    "blank_key",
     "excerpt",
     "geometry",
     "input",
