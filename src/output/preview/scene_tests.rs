@@ -14,9 +14,9 @@ tool:
   name: tStick
   tframe: [[0, 0, 200], [1, 0, 0, 0]]
   shapes:
-- { name: stick, cylinder: { from: [0, 0, 0], to: [0, 0, 150], radius: 20 } }
-- { name: knob, sphere: { centre: [0, 0, 160], radius: 15 } }
-- { name: plate, box: { min: [-40, -40, 0], max: [40, 40, 10] } }
+    - { name: stick, cylinder: { from: [0, 0, 0], to: [0, 0, 150], radius: 20 } }
+    - { name: knob, sphere: { centre: [0, 0, 160], radius: 15 } }
+    - { name: plate, box: { min: [-40, -40, 0], max: [40, 40, 10] } }
 obstacles:
   - { name: table, box: { min: [600, -300, 0], max: [1000, 300, 400] } }
   - { name: post, box: { min: [700, -60, 400], max: [820, 60, 1300] } }
