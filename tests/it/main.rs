@@ -27,6 +27,7 @@
 //!   through the dense re-check.
 //! - `tool_cells`: the example cells with a tool, every method, and the tool's volume at work.
 //! - `warnings`: axes 4 and 6 near their limits (stderr and the report's `near_limits`).
+//! - `readme`: every command the README shows, run, against the lines it quotes.
 //! - `tidy`: the house rules read from `src/` (dependency direction, no import cycles between
 //!   files, file length, no issue numbers, module docs), each checker held to a made-up
 //!   violation.
@@ -50,6 +51,7 @@ mod messages;
 mod pictures;
 mod preview_browser;
 mod random_cells;
+mod readme;
 mod refine;
 mod report;
 mod safety;

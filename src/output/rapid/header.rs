@@ -77,7 +77,7 @@ pub(super) fn comment_text(text: &str) -> String {
 }
 
 /// The header's facts, each formatted as the header writes it (and as a template sees them,
-/// `facts.*`; README). Free text is printable ASCII on one line.
+/// `facts.*`; docs/outputs.md). Free text is printable ASCII on one line.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Facts {
     pub generator: String,
