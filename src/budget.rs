@@ -1,5 +1,5 @@
 //! The budgets of a run: every input whose size drives memory or time is bounded before the
-//! work starts, so that no input the README allows makes a run abort for memory (4 GB of
+//! work starts, so that no input the cell format allows makes a run abort for memory (4 GB of
 //! address space) or last for minutes. It counts and allocates nothing (it knows the accepted
 //! grid steps, `cell::defaults`, and nothing else of the stages); the caller
 //! (`load::check_budgets`) says where in the input the budget was passed.

@@ -19,7 +19,7 @@ use crate::robot::ik::IkError;
 use crate::robot::RobotError;
 use std::path::PathBuf;
 
-/// Exit statuses (also in README.md).
+/// Exit statuses (also in docs/errors.md).
 pub mod exit {
     /// The cell file or the robot files are wrong (syntax, unknown key, bad value, bad URDF).
     pub const INPUT: u8 = 1;
@@ -148,14 +148,14 @@ impl Error {
                 ..
             } => {
                 use crate::robot::controller::{AXIS_ACCELERATION_DEG_S2 as A, AXIS_SPEED_DEG_S as V, MAX_AXIS_DEG as R};
-                Some(format!("the fault is in the controller file named above (robot.controller, or the <stem>.controller.yaml beside the URDF): each axis a range within -{R} .. {R} deg, a speed within {} .. {} deg/s and an acceleration within {} .. {} deg/s^2 (README, \"The cell file\")", V[0], V[1], A[0], A[1]))
+                Some(format!("the fault is in the controller file named above (robot.controller, or the <stem>.controller.yaml beside the URDF): each axis a range within -{R} .. {R} deg, a speed within {} .. {} deg/s and an acceleration within {} .. {} deg/s^2 (docs/cell.md)", V[0], V[1], A[0], A[1]))
             }
             Error::Robot {
                 source: RobotError::Model { .. },
                 ..
             } => {
                 use crate::robot::controller::MAX_AXIS_DEG as R;
-                Some(format!("the fault is in the URDF named above: gen-rapid reads one serial chain of six revolute joints up to tool0, finite numbers, lengths within {} km, ranges within -{R} .. {R} deg, cylinders on the links of joints 1..3 (README, \"The cell file\")", crate::input::MAX_MAGNITUDE / 1e6))
+                Some(format!("the fault is in the URDF named above: gen-rapid reads one serial chain of six revolute joints up to tool0, finite numbers, lengths within {} km, ranges within -{R} .. {R} deg, cylinders on the links of joints 1..3 (docs/cell.md)", crate::input::MAX_MAGNITUDE / 1e6))
             }
             Error::Robot {
                 source: RobotError::UnknownModel { .. },
@@ -163,12 +163,13 @@ impl Error {
             } => Some(format!("the robots built into gen-rapid are {} (`gen-rapid robots` lists them); any other robot is named by its URDF file with robot.urdf", crate::robot::models::names())),
             Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
             Error::Place(PlaceError::Range { .. }) => Some("joint values are controller values (what a jointtarget holds) and must lie in the robot's ranges, all six axes; a point without axes 4..6 takes robot.wrist".into()),
+            Error::Place(PlaceError::Robtarget { hint: Some(h), .. }) => Some(h.clone()),
             Error::Place(PlaceError::Robtarget { .. }) => Some("a robtarget is the TCP pose [[x, y, z], [q1, q2, q3, q4]] in the work object's frame (mm, quaternion [w, x, y, z]) of the tool's TCP (tool.tframe); confdata [cf1, cf4, cf6, cfx] picks one of the arm's solutions, without it the one nearest the previous point is taken".into()),
             Error::Template(TemplateError::Invalid { out_of_fuel: true, .. })
-            | Error::Rapid(RapidError::UserTemplate(TemplateError::Invalid { out_of_fuel: true, .. })) => Some(format!("a template may burn at most {} of minijinja's fuel (one an instruction, one for every 64 bytes of strings, lists and output it makes: a loop that never ends, runs too often or builds a huge string stops here); loop over the program's lists (README's \"Your own module template\"), not over ranges of your own", crate::output::rapid::TEMPLATE_FUEL)),
+            | Error::Rapid(RapidError::UserTemplate(TemplateError::Invalid { out_of_fuel: true, .. })) => Some(format!("a template may burn at most {} of minijinja's fuel (one an instruction, one for every 64 bytes of strings, lists and output it makes: a loop that never ends, runs too often or builds a huge string stops here); loop over the program's lists (docs/outputs.md, \"Your own module template\"), not over ranges of your own", crate::output::rapid::TEMPLATE_FUEL)),
             Error::Template(TemplateError::Invalid { over_cap: true, .. })
-            | Error::Rapid(RapidError::UserTemplate(TemplateError::Invalid { over_cap: true, .. })) => Some(format!("a module holds at most {} MiB (docs/limits.md); a template writes each target and move once (README's \"Your own module template\"), not in loops of its own", crate::output::rapid::MAX_MODULE_BYTES >> 20)),
-            Error::Template(_) | Error::Rapid(RapidError::UserTemplate(_)) => Some("the template is minijinja (Jinja2) text rendered with strict undefined names: README's \"Your own module template\" lists every name it may use".into()),
+            | Error::Rapid(RapidError::UserTemplate(TemplateError::Invalid { over_cap: true, .. })) => Some(format!("a module holds at most {} MiB (docs/limits.md); a template writes each target and move once (docs/outputs.md, \"Your own module template\"), not in loops of its own", crate::output::rapid::MAX_MODULE_BYTES >> 20)),
+            Error::Template(_) | Error::Rapid(RapidError::UserTemplate(_)) => Some("the template is minijinja (Jinja2) text rendered with strict undefined names: docs/outputs.md, \"Your own module template\" lists every name it may use".into()),
             Error::Rapid(RapidError::OutOfRange { .. }) => Some("this is a bug in gen-rapid: an earlier stage let an out-of-range value through; please report it with the cell file".into()),
             Error::Place(PlaceError::Locate { source: LocateError::PointOutOfReach { .. }, .. }) => Some("with `base: auto` the base stands on z = 0: move the point within the arm's reach of a base there, or give `base: [x, y, z]`".into()),
             Error::Place(PlaceError::Locate { .. }) => Some("`gen-rapid locate CELL --svg FILE` draws every point's reach region; move the points closer together or give `base: [x, y, z]`".into()),

@@ -54,7 +54,7 @@ A tool, a work object and points as TCP poses (robtargets; quaternions [w, x, y,
     - { name: W1, robtarget: [[600, -100, 300], [0, 0, 1, 0]] }     # TCP pose in the wobj
     - { name: W2, robtarget: [[600, 100, 300], [0, 0, 1, 0], [0, -1, 0, 0]], speed: v100 }
 A robtarget point may give its confdata [cf1, cf4, cf6, cfx]; speed and zone set the move into
-a point. With a tool block, leave out motion.tool. README.md describes every key.
+a point. With a tool block, leave out motion.tool. docs/cell.md describes every key.
 
 The module goes to stdout (or -o FILE); one summary line goes to stderr. On error nothing is
 written to stdout and no module FILE is made; when planning fails, --svg FILE draws why (the
@@ -103,7 +103,7 @@ struct RunArgs {
     #[arg(long, value_name = "FILE")]
     report: Option<PathBuf>,
     /// Render the module through this minijinja template instead of the embedded one
-    /// (templates/module.mod.j2 is the default; README lists the names a template may use).
+    /// (templates/module.mod.j2 is the default; docs/outputs.md lists the names a template may use).
     #[arg(long, value_name = "FILE")]
     template: Option<PathBuf>,
     /// Name the routine that makes the moves (default: the cell's motion.proc, else main).

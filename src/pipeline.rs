@@ -14,6 +14,7 @@ use crate::error::{Error, Failure};
 pub use crate::load::{check_budgets, load, robot_of, Loaded};
 use crate::output::program::{self, RobotFacts};
 use crate::output::rapid::{self, ModuleTemplate, RapidError, TemplateError};
+use crate::place::near_limit::{near_limits, NearLimit};
 use crate::place::{self, locate::Sketch, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
 use crate::plan::{self, Legs, Method, Route};
@@ -293,7 +294,10 @@ pub fn run(job: &Loaded, opts: &Options) -> Result<Outcome, Halted> {
     let inspected = inspect(job, &placed, opts.grid_deg);
     progress.stage("planning and proving the moves", 0);
     let legs = Legs::of(&job.cell.planner);
-    let Refined { plan, warnings } = match plan_all(job, &placed, &inspected, opts.method, legs) {
+    let Refined {
+        plan,
+        warnings: refined,
+    } = match plan_all(job, &placed, &inspected, opts.method, legs) {
         Ok(r) => r,
         Err(error) => {
             let searched = match error {
@@ -306,6 +310,12 @@ pub fn run(job: &Loaded, opts: &Options) -> Result<Outcome, Halted> {
             });
         }
     };
+    // The place stage's warnings (axes 4 and 6 near a limit), then the refine stage's.
+    let mut warnings: Vec<String> = near_limits(&placed, &job.robot)
+        .iter()
+        .map(NearLimit::warning)
+        .collect();
+    warnings.extend(refined);
     progress.stage("writing the module", 0);
     let rendered = render(job, &placed, &plan, &opts.template)?;
     Ok(Outcome {

@@ -552,7 +552,7 @@ impl CellError {
         match self {
             CellError::Syntax { help, .. } | CellError::Invalid { help, .. } => Some(
                 help.as_deref()
-                    .unwrap_or("README.md, \"The cell file\", describes every key and the values it takes"),
+                    .unwrap_or("docs/cell.md describes every key and the values it takes"),
             ),
             CellError::Read { .. } => Some(
                 "CELL is the path of a cell file (YAML text); `gen-rapid --help` shows a minimal cell",

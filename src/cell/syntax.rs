@@ -205,7 +205,7 @@ fn describe(e: &Error, text: &Text) -> Said {
         } => {
             let help = suggestion(field, expected)
                 .map(|k| format!("did you mean `{k}`?"))
-                .or_else(|| Some("remove the key, or check its spelling and indentation (README.md, \"The cell file\", lists every key)".into()));
+                .or_else(|| Some("remove the key, or check its spelling and indentation (docs/cell.md lists every key)".into()));
             said(
                 format!(
                     "unknown field `{}`, expected one of {}",
@@ -313,10 +313,9 @@ fn budget_breach(breach: &BudgetBreach) -> (String, String) {
     }
 }
 
-const FORM_HELP: &str =
-    "README.md, \"The cell file\" and \"For robot programmers\", shows the form of every key";
+const FORM_HELP: &str = "docs/cell.md and docs/guide.md show the form of every key";
 
-const KEYS_HELP: &str = "a cell gives `module: Name`, `robot:` (with `urdf:` and `base:`) and `points:` (at least two), and may give `obstacles:`, `planner:`, `motion:`, `tool:`, `wobj:` or `wobjs:`, and `loads:` (README.md, \"The cell file\"; docs/cell.md)";
+const KEYS_HELP: &str = "a cell gives `module: Name`, `robot:` (with `urdf:` and `base:`) and `points:` (at least two), and may give `obstacles:`, `planner:`, `motion:`, `tool:`, `wobj:` or `wobjs:`, and `loads:` (docs/cell.md)";
 
 /// The parser's refusals (module docs).
 fn scan(kind: &ErrorKind, loc: Loc, text: &Text, reader: String) -> Said {

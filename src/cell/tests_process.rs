@@ -369,6 +369,8 @@ fn the_guard_refuses_what_the_later_stages_do_not_carry_out_at_its_first_line() 
     let wobj = "wobjs:\n  - { name: wA, uframe: [[0, 0, 0], [1, 0, 0, 0]] }\n";
     let c = parse_str(&format!("{plain}{wobj}")).expect("one work object in a list");
     unsupported(&c).expect("one work object");
+    let base = plain.replace("  base: [0, 0, 0]\n", "  base: [0, 0, 0]\n  frame: base\n");
+    unsupported(&parse_str(&base).expect("valid")).expect("`robot.frame: base` is carried out");
     // Process moves, approach and retract lines, actions and loads are carried out.
     unsupported(&parse_str(SEAM).expect("valid")).expect("the seam is carried out");
     let cases = [
@@ -387,11 +389,6 @@ fn the_guard_refuses_what_the_later_stages_do_not_carry_out_at_its_first_line() 
             plain.replace("cycle: false", "cycle: true"),
             "`motion.cycle: true`",
             "cycle: true",
-        ),
-        (
-            plain.replace("  base: [0, 0, 0]\n", "  base: [0, 0, 0]\n  frame: base\n"),
-            "`robot.frame: base`",
-            "frame: base",
         ),
     ];
     for (text, needle, at) in cases {

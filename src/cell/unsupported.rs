@@ -1,12 +1,12 @@
 //! The guard between the cell file and the later stages: the keys the cell validation reads but
-//! the place, plan and render stages do not carry out yet (revisits, the closed cycle, the base
-//! frame, several work objects). A
+//! the place, plan and render stages do not carry out yet (revisits, the closed cycle, several
+//! work objects). A
 //! cell that uses one is refused at its line, so no module is written that leaves out what the
 //! cell asks for. Orientations given as `zyx` need no guard: they are read into the same
 //! quaternions. Once the later stages carry out a key, its line here goes; once they carry out
 //! all, this file goes.
 
-use super::{Cell, CellError, Loc, RobotFrame};
+use super::{Cell, CellError, Loc};
 
 /// Refuses a cell that uses a key the later stages do not carry out yet (module docs): the first
 /// such key in the file.
@@ -23,9 +23,6 @@ pub fn unsupported(cell: &Cell) -> Result<(), CellError> {
     }
     if cell.motion.cycle {
         uses.push((cell.motion.cycle_loc, "`motion.cycle: true`".into()));
-    }
-    if cell.robot.frame == RobotFrame::Base {
-        uses.push((cell.robot.frame_loc, "`robot.frame: base`".into()));
     }
     match uses.into_iter().min_by_key(|(l, _)| (l.line, l.column)) {
         None => Ok(()),

@@ -73,9 +73,15 @@ fn pose(f: &Frame) -> Pose {
 
 /// The module's content for a plan of `cell`, placed as `placed`, on the robot of `robot`.
 pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> Program {
+    // `robot.frame`: a robtarget in wobj0 and a uframe as the module writes them.
+    let frame = cell.robot.frame;
+    let robtarget_as_written = |f: &Frame| match cell.wobjs.is_empty() {
+        true => placed.placement.written(frame, f),
+        false => *f,
+    };
     let robtarget_of = |i: usize| match placed.points.get(i).map(|p| &p.origin) {
         Some(Origin::Robtarget { pose: f, conf }) => Some(RobTarget {
-            pose: pose(f),
+            pose: pose(&robtarget_as_written(f)),
             conf: conf.to_array(),
         }),
         _ => None,
@@ -119,7 +125,7 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
                 MoveKind::Circular { via, via_conf } => (
                     MoveHow::Circular {
                         via: RobTarget {
-                            pose: pose(&via),
+                            pose: pose(&robtarget_as_written(&via)),
                             conf: via_conf.to_array(),
                         },
                     },
@@ -175,6 +181,7 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             // The zone a via gets where its corner is proven (`motion.via_zone`).
             via_zone: cell.motion.via_zone.clone(),
             paper: plan.paper.map(|p| (p.moves, p.time_s)),
+            frame,
         },
         targets,
         // The tool block's name when there is one (the cell validation sees to it).
@@ -183,7 +190,7 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
         // One work object at most (`cell::unsupported` refuses several).
         wobj: cell.wobjs.first().map(|w| WobjData {
             name: w.name.clone(),
-            uframe: pose(&w.uframe),
+            uframe: pose(&placed.placement.written(frame, &w.uframe)),
         }),
         ranges: robot.ranges,
         proc_name: cell.motion.proc.clone(),

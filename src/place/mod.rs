@@ -29,7 +29,9 @@
 //! stage knows what it asks, not how the answer is found (the model comes after it).
 
 pub mod frames;
+mod hints;
 pub mod locate;
+pub mod near_limit;
 mod points;
 
 pub use frames::Placement;
@@ -149,6 +151,9 @@ pub enum PlaceError {
         yaw_deg: f64,
         source: Box<ChooseError<String>>,
         loc: Loc,
+        /// The help line when a turn of the tool or a move of the base makes it reachable
+        /// (`hints.rs`).
+        hint: Option<String>,
     },
 }
 
@@ -210,8 +215,9 @@ pub fn place<C: PoseCheck>(
                 true => Some(geometry(cell, robot)?),
                 false => None,
             };
-            let points =
-                points::resolve(cell, robot, geom.as_ref(), placement, &check_at(placement))?;
+            let check = check_at(placement);
+            let points = points::resolve(cell, robot, geom.as_ref(), placement, &check)
+                .map_err(|e| hints::with_hint(e, cell, robot, placement, &check, &check_at))?;
             Ok(Placed {
                 placement,
                 location: None,

@@ -5,7 +5,10 @@
 //! in the cell frame; without a `wobj:` block wobj0, whose frame is the cell frame). So
 //! `TCP (cell) = uframe * pose`, `TCP (robot base) = placement^-1 * TCP (cell)`, and the flange
 //! (tool0) pose the arm must reach is `TCP (robot base) * tframe^-1` (`tool.tframe`: the TCP in
-//! the flange frame; without a `tool:` block tool0, the identity).
+//! the flange frame; without a `tool:` block tool0, the identity). With `robot.frame: base` the
+//! uframe (or, in wobj0, the pose itself) is first taken as the module writes it in the base
+//! frame, rounded ([`Placement::written`]), so the joints solved are the controller's for the
+//! written data.
 //!
 //! **As written.** The module moves to a robtarget point by its `CONST robtarget` with ConfJ and
 //! ConfL on, so the controller's joints there are the inverse kinematics of the robtarget *as
@@ -30,8 +33,8 @@
 //! from the cell alone; the location stage takes it as an `xyz` point.
 
 use super::{PlaceError, Placement, PoseCheck};
-use crate::cell::{Cell, Frame, Point};
-use crate::robot::ik::six::{describe_violation, ConfData, SixAxisIk};
+use crate::cell::{Cell, Frame, Point, RobotFrame};
+use crate::robot::ik::six::{describe_violation, ChooseError, ConfData, SixAxisIk};
 use crate::robot::{Axes6, Robot};
 use nalgebra::{Isometry3, Point3};
 
@@ -45,8 +48,11 @@ pub(super) struct Tcp {
     ik: SixAxisIk,
     /// TCP in the flange frame.
     tframe: Isometry3<f64>,
-    /// Work object user frame in the cell frame.
+    /// Work object user frame in the cell frame (`None`: wobj0).
+    wobj: Option<Frame>,
     uframe: Isometry3<f64>,
+    /// The frame the module writes the uframe and wobj0 robtargets in.
+    written: RobotFrame,
 }
 
 impl Tcp {
@@ -59,17 +65,32 @@ impl Tcp {
         })?;
         // The frames as written (tooldata, wobjdata): what the controller computes with.
         let frame = |f: Option<Frame>| f.unwrap_or(Frame::IDENTITY).written().isometry();
+        // One work object at most (`cell::unsupported` refuses several): every robtarget's.
+        let wobj = cell.wobjs.first().map(|w| w.uframe);
         Ok(Tcp {
             ik,
             tframe: frame(cell.tool.as_ref().map(|t| t.tframe)),
-            // One work object at most (`cell::unsupported` refuses several): every robtarget's.
-            uframe: frame(cell.wobjs.first().map(|w| w.uframe)),
+            wobj,
+            uframe: frame(wobj),
+            written: cell.robot.frame,
         })
     }
 
     /// The TCP pose of a robtarget in the cell frame, as written (module docs, "Choice").
     fn tcp_in_cell(&self, pose: &Frame) -> Isometry3<f64> {
         self.uframe * pose.written().isometry()
+    }
+
+    /// The TCP pose of a robtarget in the robot base frame, from the data the module writes
+    /// (module docs).
+    fn tcp_in_base(&self, pose: &Frame, placement: Placement) -> Isometry3<f64> {
+        match (self.written, &self.wobj) {
+            (RobotFrame::Cell, _) => placement.cell_from_robot().inverse() * self.tcp_in_cell(pose),
+            (RobotFrame::Base, Some(u)) => {
+                placement.written(RobotFrame::Base, u).isometry() * pose.written().isometry()
+            }
+            (RobotFrame::Base, None) => placement.written(RobotFrame::Base, pose).isometry(),
+        }
     }
 
     /// The wrist centre of a robtarget, cell frame, mm (module docs).
@@ -79,18 +100,18 @@ impl Tcp {
         [w.x, w.y, w.z]
     }
 
-    /// Solves robtarget point `p` from `placement` (module docs): the written joint values and
-    /// the confdata the module states with them.
-    pub(super) fn solve(
+    /// The joints of `pose` as written from `placement` (module docs): the solution the IK
+    /// chooses among those in range, admitted for the confdata `wanted`, reaching the pose and
+    /// accepted by `check`.
+    pub(super) fn choose(
         &self,
-        p: &Point,
         pose: &Frame,
         wanted: Option<ConfData>,
         placement: Placement,
         previous: Option<&Axes6>,
         check: &impl PoseCheck,
-    ) -> Result<(Axes6, ConfData), PlaceError> {
-        let tcp = placement.cell_from_robot().inverse() * self.tcp_in_cell(pose);
+    ) -> Result<Axes6, ChooseError<String>> {
+        let tcp = self.tcp_in_base(pose, placement);
         let robot = self.ik.robot();
         let accept = |axes: &Axes6| -> Result<(), String> {
             if let Err(v) = robot.check_range6(axes) {
@@ -113,15 +134,31 @@ impl Tcp {
         };
         let solution = self
             .ik
-            .choose_tcp(&tcp, &self.tframe, wanted, previous, accept)
+            .choose_tcp(&tcp, &self.tframe, wanted, previous, accept)?;
+        Ok(solution.axes_deg)
+    }
+
+    /// Solves robtarget point `p` from `placement` (module docs): the written joint values and
+    /// the confdata the module states with them.
+    pub(super) fn solve(
+        &self,
+        p: &Point,
+        pose: &Frame,
+        wanted: Option<ConfData>,
+        placement: Placement,
+        previous: Option<&Axes6>,
+        check: &impl PoseCheck,
+    ) -> Result<(Axes6, ConfData), PlaceError> {
+        let q = self
+            .choose(pose, wanted, placement, previous, check)
             .map_err(|source| PlaceError::Robtarget {
                 point: p.name.clone(),
                 base_mm: placement.base_mm,
                 yaw_deg: placement.yaw_deg,
                 source: Box::new(source),
                 loc: p.loc,
+                hint: None,
             })?;
-        let q = solution.axes_deg;
         // The confdata asked for is written as asked (the joints are admitted for it, also on a
         // quadrant boundary); without one, the joints' own as written.
         Ok((q, wanted.unwrap_or_else(|| self.ik.conf(&q))))

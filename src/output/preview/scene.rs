@@ -16,10 +16,12 @@
 //! `stride`-th keyframe and every waypoint kept, so the page stays a few MB; its motion between
 //! them is then coarser.
 //!
-//! **The smallest clearance** is the plan's certified figure, on the move, link and obstacle the
-//! plan names (the move whose clearance is [`Plan::least`]; none where the least is a zoned
-//! corner's). Where on the move it occurs is only for the picture:
-//! the move is sampled ([`CLEARANCE_SAMPLES`]) and at each sample the closest points of the
+//! **The smallest clearance** is the plan's certified figure, with the link and obstacle the
+//! plan names, on the move whose clearance is [`Plan::least`], or, where the least is a zoned
+//! corner's (a fly-by `via_zone`: no move has it), on the corner of a fly-by waypoint: the page
+//! names that waypoint and marks the nearest place on the two half moves through it (the path
+//! the page draws; the controller's blend runs inside their corner). Where it occurs is only for
+//! the picture: the move (or each half move) is sampled ([`CLEARANCE_SAMPLES`]) and at each sample the closest points of the
 //! named shape and box are found by alternating projections (two convex sets: project onto one,
 //! then the other, until the pair stops moving); the nearest sample gives the time and the two
 //! points the page joins with a red line. That search certifies nothing.
@@ -319,6 +321,22 @@ fn base(p: Placement) -> SceneBase {
     }
 }
 
+/// The pieces of moves the least clearance is looked for on (module docs): `(move, from, to,
+/// corner)`, `from`/`to` fractions of the move, `corner` the waypoint whose zoned corner it is.
+fn searched_pieces(
+    plan: &Plan,
+    least: &crate::plan::Clearance,
+) -> Vec<(usize, f64, f64, Option<usize>)> {
+    if let Some(i) = (plan.moves.iter()).position(|m| m.clearance.as_ref() == Some(least)) {
+        return vec![(i, 0.0, 1.0, None)];
+    }
+    // A zoned corner's: the halves of the two moves through each fly-by waypoint.
+    (1..plan.moves.len())
+        .filter(|&k| crate::refine::zones::is_fly_by(&plan.moves[k - 1].motion.zone))
+        .flat_map(|k| [(k - 1, 0.5, 1.0, Some(k)), (k, 0.0, 0.5, Some(k))])
+        .collect()
+}
+
 /// The smallest clearance of the plan, marked where it occurs (module docs).
 fn clearance(
     cell: &Cell,
@@ -330,7 +348,6 @@ fn clearance(
     starts: &[f64],
 ) -> Option<SceneClearance> {
     let least = plan.least.as_ref()?;
-    let i = (plan.moves.iter()).position(|m| m.clearance.as_ref() == Some(least))?;
     // The link (or tool shape) named by the clearance, and the obstacle.
     let (part, shape_name) = crate::output::clearance_part(least);
     let kind = if part == "tool" {
@@ -342,35 +359,40 @@ fn clearance(
         .iter()
         .position(|d| d.kind == kind && d.name == shape_name)?;
     let obstacle = cell.obstacles.iter().find(|o| o.name == least.obstacle)?;
-    let (from, to) = (
-        &plan.route.waypoints[i].joints_deg,
-        &plan.route.waypoints[i + 1].joints_deg,
-    );
-    let (duration, profile) = timing.get(i).copied().unwrap_or((0.0, Profile::Quintic));
-    let mut best: Option<(f64, f64, [[f64; 3]; 2])> = None;
-    for j in 0..=CLEARANCE_SAMPLES {
-        let u = j as f64 / CLEARANCE_SAMPLES as f64;
-        let t = duration * u;
-        let axes = lerp6(from, to, profile.progress(t, duration));
-        let frame = match carriers[s] {
-            Carrier::Base => poser.base(),
-            Carrier::Link(k) => poser.links(&axes)[k],
-            Carrier::Flange => poser.tool0(&axes),
-        };
-        let (d, pts) = closest_points(
-            &defs[s].geometry,
-            &frame,
-            &obstacle.aabb.min,
-            &obstacle.aabb.max,
+    // (move, time in it, distance, points, corner)
+    type Best = (usize, f64, f64, [[f64; 3]; 2], Option<usize>);
+    let mut best: Option<Best> = None;
+    for (i, u0, u1, corner) in searched_pieces(plan, least) {
+        let (from, to) = (
+            &plan.route.waypoints[i].joints_deg,
+            &plan.route.waypoints[i + 1].joints_deg,
         );
-        if best.is_none_or(|b| d < b.1) {
-            best = Some((t, d, pts));
+        let (duration, profile) = timing.get(i).copied().unwrap_or((0.0, Profile::Quintic));
+        for j in 0..=CLEARANCE_SAMPLES {
+            let u = u0 + (u1 - u0) * j as f64 / CLEARANCE_SAMPLES as f64;
+            let t = duration * u;
+            let axes = lerp6(from, to, profile.progress(t, duration));
+            let frame = match carriers[s] {
+                Carrier::Base => poser.base(),
+                Carrier::Link(k) => poser.links(&axes)[k],
+                Carrier::Flange => poser.tool0(&axes),
+            };
+            let (d, pts) = closest_points(
+                &defs[s].geometry,
+                &frame,
+                &obstacle.aabb.min,
+                &obstacle.aabb.max,
+            );
+            if best.is_none_or(|b| d < b.2) {
+                best = Some((i, t, d, pts, corner));
+            }
         }
     }
-    let (t, _, points) = best?;
+    let (i, t, _, points, corner) = best?;
     Some(SceneClearance {
         distance_mm: crate::precision::round(least.mm, crate::precision::LENGTH_DECIMALS),
         move_index: i,
+        corner_waypoint: corner,
         shape: shape_name.to_string(),
         obstacle: least.obstacle.clone(),
         time_s: Some(starts.get(i).copied().unwrap_or(0.0) + t),

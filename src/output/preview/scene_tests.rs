@@ -1,7 +1,7 @@
 //! Tests of the preview's scene: keyframes, the clearance's place, the shapes each link and
-//! tool part is drawn with.
+//! tool part is drawn with. The scene of a real (small) run: the bundled IRB 1400 with a tool,
+//! a table and a post.
 
-//! The scene of a real (small) run: the bundled IRB 1400 with a tool, a table and a post.
 use super::*;
 use crate::pipeline::{self, Loaded, Options};
 use crate::plan::Method;
@@ -233,6 +233,60 @@ fn the_smallest_clearance_is_marked_where_it_occurs() {
     let t = c.time_s.expect("a time");
     let (w0, w1) = (&s.waypoints[c.move_index], &s.waypoints[c.move_index + 1]);
     assert!(t >= w0.time_s - 1e-9 && t <= w1.time_s + 1e-9);
+}
+
+/// With a fly-by zone the least may be a zoned corner's, which no move has: the page still
+/// marks it, on the half moves through that corner's waypoint, and names the waypoint.
+#[test]
+fn a_zoned_corners_clearance_is_marked_at_its_waypoint() {
+    let job = job();
+    let out = pipeline::run(&job, &Options::new(Method::Extensile, 5.0)).expect("plans");
+    let mut plan = out.plan.clone();
+    assert!(plan.route.moves() >= 2, "the post makes a via");
+    let least = plan.least.clone().expect("obstacles");
+    // As `refine::zones::fold_corners` leaves it: the via flown by, its corner 0.3 mm closer
+    // than any move (the same part and obstacle).
+    plan.moves[0].motion.zone = "z50".into();
+    plan.least = Some(crate::plan::Clearance {
+        mm: least.mm - 0.3,
+        ..least.clone()
+    });
+    let s = scene(
+        &job.cell,
+        &job.robot,
+        &out.placed,
+        &plan,
+        &out.rendered.names,
+    );
+    let c = s.clearance.expect("marked");
+    assert_eq!(c.corner_waypoint, Some(1));
+    assert!(c.move_index <= 1, "{}", c.move_index);
+    assert_eq!(
+        c.distance_mm,
+        crate::precision::round(least.mm - 0.3, crate::precision::LENGTH_DECIMALS)
+    );
+    assert_eq!(
+        (c.shape.as_str(), c.obstacle.as_str()),
+        (
+            crate::output::clearance_part(&least).1,
+            least.obstacle.as_str()
+        )
+    );
+    // On the second half of the move into the via or the first half of the move out.
+    let t = c.time_s.expect("a time");
+    let (w0, w1, w2) = (&s.waypoints[0], &s.waypoints[1], &s.waypoints[2]);
+    let (a, b) = (0.5 * (w0.time_s + w1.time_s), 0.5 * (w1.time_s + w2.time_s));
+    assert!(t >= a - 1e-9 && t <= b + 1e-9, "{t} outside {a} .. {b}");
+    // Without the fly-by zone no corner holds it: nothing is marked rather than a wrong move.
+    plan.moves[0].motion.zone = "fine".into();
+    let s = scene(
+        &job.cell,
+        &job.robot,
+        &out.placed,
+        &plan,
+        &out.rendered.names,
+    );
+    assert!(s.clearance.is_none());
 }
 
 #[test]

@@ -22,7 +22,8 @@ pub struct Pose {
 /// A `CONST robtarget` written beside a cell point's jointtarget.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RobTarget {
-    /// The TCP pose in the work object (as the cell gives it, normalised).
+    /// The TCP pose in the work object (as the cell gives it, normalised; in wobj0 with
+    /// `robot.frame: base`, in the robot's base frame).
     pub pose: Pose,
     /// `[cf1, cf4, cf6, cfx]` of the jointtarget beside it.
     pub conf: [i32; 4],
@@ -44,7 +45,8 @@ pub struct ToolData {
 #[derive(Debug, Clone, PartialEq)]
 pub struct WobjData {
     pub name: String,
-    /// The user frame in the world frame (the cell frame).
+    /// The user frame in the world frame (the cell frame, or the robot's base frame with
+    /// `robot.frame: base`).
     pub uframe: Pose,
 }
 

@@ -7,7 +7,7 @@
 //! template `templates/module.mod.j2` (embedded at compile time, rendered with
 //! minijinja in strict-undefined mode, no auto-escaping, trailing newline kept),
 //! or the user's template (`--template FILE`, [`ModuleTemplate`]), which sees the
-//! same context (README, "Your own module template": `module`, `proc`, `header`,
+//! same context (docs/outputs.md, "Your own module template": `module`, `proc`, `header`,
 //! `facts`, `tool`, `wobj`, `wobj_arg`, `targets`, `moves`). A template holds no
 //! logic beyond loops and variable output; every number is formatted here with
 //! [`format_fixed`]. An error of the user's template is an input error at its
@@ -364,7 +364,7 @@ impl TemplateError {
 }
 
 /// A module template: the embedded `templates/module.mod.j2`, or the user's (`--template FILE`).
-/// Both see the same context, which README lists for template writers.
+/// Both see the same context, which docs/outputs.md lists for template writers.
 #[derive(Clone, Debug)]
 pub struct ModuleTemplate {
     /// The user's file; `None` for the embedded template.
@@ -572,7 +572,7 @@ impl std::io::Write for Capped {
 /// string repeated) stops before it has made 1 GiB of them.
 pub const TEMPLATE_FUEL: u64 = 16_000_000;
 
-/// The template context (README, "Your own module template"): every value already formatted;
+/// The template context (docs/outputs.md, "Your own module template"): every value already formatted;
 /// templates hold no logic.
 #[derive(Serialize)]
 struct ModuleCtx {

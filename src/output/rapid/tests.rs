@@ -2,6 +2,7 @@
 //! names have their own).
 
 use super::*;
+use crate::cell::RobotFrame;
 use crate::names::check_identifier;
 
 fn point(name: &str, axes_deg: [f64; 6]) -> JointTarget {
@@ -63,6 +64,7 @@ fn header(moves: usize) -> Header {
         zoned_vias: (1, 2),
         via_zone: "z50".to_string(),
         paper: Some((moves + 1, 4.0)),
+        frame: RobotFrame::Cell,
     }
 }
 
@@ -157,6 +159,7 @@ fn awkward_program() -> Program {
             zoned_vias: (0, 1),
             via_zone: "fine".to_string(),
             paper: None,
+            frame: RobotFrame::Cell,
         },
         targets: targets
             .into_iter()

@@ -81,7 +81,7 @@ fn arm_radius_mm(robot: &Robot) -> f64 {
 const XYZ_TOL_MM: f64 = 0.05;
 
 /// The header states the min clearance to 0.1 mm, as a lower bound within 0.05 mm of the
-/// true minimum (README).
+/// true minimum (docs/outputs.md).
 const HEADER_ROUNDING_MM: f64 = 0.05;
 const HEADER_TOL_MM: f64 = 0.05;
 

@@ -15,7 +15,7 @@ pub mod tcp;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-/// The search methods as the cell format spells them (`planner.method`, `--planner`; README).
+/// The search methods as the cell format spells them (`planner.method`, `--planner`; docs/cell.md).
 /// `cli::help_teaches_the_format_examples_and_exit_statuses` holds them against `--help`.
 pub const METHODS: [&str; 3] = ["neighboring", "depth-first", "extensile"];
 

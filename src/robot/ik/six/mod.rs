@@ -93,6 +93,8 @@ mod bound;
 #[cfg(test)]
 mod boundary_tests;
 mod choose;
+#[cfg(test)]
+mod choose_tests;
 mod conf;
 mod error;
 mod solve;
