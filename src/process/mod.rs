@@ -336,7 +336,18 @@ pub fn follow(
                 motion: fine.clone(),
             });
             out.into.push(Reach::Air);
-            let m = process_move(s, model, p, kind, &app, &target, None, &app_joints, conf)?;
+            let m = process_move(
+                s,
+                model,
+                p,
+                &motion.speed,
+                kind,
+                &app,
+                &target,
+                None,
+                &app_joints,
+                conf,
+            )?;
             agree(p, &m, &at, p.approach_loc)?;
             warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
             out.stops.push(Stop {
@@ -355,7 +366,18 @@ pub fn follow(
                 }
                 _ => (MoveKind::Linear, None),
             };
-            let m = process_move(s, model, p, kind, &start, &target, via, &from, conf)?;
+            let m = process_move(
+                s,
+                model,
+                p,
+                &motion.speed,
+                kind,
+                &start,
+                &target,
+                via,
+                &from,
+                conf,
+            )?;
             agree(p, &m, &at, p.arrival_loc)?;
             warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
             // A corner next to a process move is not proven yet: `fine`.
@@ -386,7 +408,18 @@ pub fn follow(
         if let Some(d) = p.retract_mm {
             let kind = MoveKind::Retract { dz_mm: d };
             let ret = rel_tool(&target, 0.0, 0.0, -d);
-            let m = process_move(s, model, p, kind, &target, &ret, None, &at, conf)?;
+            let m = process_move(
+                s,
+                model,
+                p,
+                &motion.speed,
+                kind,
+                &target,
+                &ret,
+                None,
+                &at,
+                conf,
+            )?;
             warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
             out.stops.push(Stop {
                 kind: StopKind::Retract(i),
@@ -424,12 +457,14 @@ fn setting_of<'a>(
 }
 
 /// Follows, proves and times one process move of point `p` from `start` (joints `from`) to
-/// `end` (through `via` for an arc), ending in `conf`.
+/// `end` (through `via` for an arc), ending in `conf`, timed at `speed` (the speeddata it is
+/// written with: the point's own, else `motion.speed`).
 #[allow(clippy::too_many_arguments)]
 fn process_move(
     s: &Setting,
     model: &CollisionModel,
     p: &Point,
+    speed: &str,
     kind: MoveKind,
     start: &Isometry3<f64>,
     end: &Isometry3<f64>,
@@ -492,8 +527,7 @@ fn process_move(
             source: Box::new(source),
             loc,
         })?;
-    let speed = p.speed.as_deref().and_then(predefined_speed);
-    let time = process_move_time(&followed, &s.robot.controller.axes, speed);
+    let time = process_move_time(&followed, &s.robot.controller.axes, predefined_speed(speed));
     Ok(ProcessMove {
         kind,
         followed,

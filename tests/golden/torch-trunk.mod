@@ -13,9 +13,9 @@ MODULE TorchTrunk
     ! frames: robtargets and the user frame are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above
     ! moves: 19
     ! min clearance (mm): 10.0
-    ! estimated time (s): 32.93
+    ! estimated time (s): 32.99
     ! zoned vias: 0 of 10 (via zone fine)
-    ! the paper's method alone: 20 moves, 33.35 s
+    ! the paper's method alone: 20 moves, 33.42 s
 
     PERS tooldata tTorch := [TRUE,[[116.673,0.000,336.673],[0.923879539,0.000000000,0.382683416,0.000000000]],[2.500,[0.000,0.000,120.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjTrunk := [FALSE,TRUE,"",[[-830.000,-380.000,100.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];
