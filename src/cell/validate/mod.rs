@@ -544,6 +544,18 @@ fn one_name_space(d: &Declared, points: &[Point], motion: &Motion) -> Result<(),
                 loc: p.loc,
             });
         }
+        // A MoveC's circle point is written as CONST robtarget <point>_via.
+        if let super::Arrival::Circular { via_loc, .. } = p.arrival {
+            declared.push(Named {
+                name: format!("{}_via", p.name),
+                kind: "circle point name",
+                what: format!(
+                    "the circle point of point '{}' (line {})",
+                    p.name, p.loc.line
+                ),
+                loc: via_loc,
+            });
+        }
     }
     // The routine last: `motion:` follows the points in a cell file, and `--proc` has no line
     // there, so a clash is told about the routine's name.
@@ -578,6 +590,15 @@ fn one_name_space(d: &Declared, points: &[Point], motion: &Motion) -> Result<(),
                 )
             })?;
         }
+        if d.kind == "circle point name" {
+            check_identifier(&d.name).map_err(|e| {
+                invalid_help(
+                    d.loc,
+                    format!("the circle point of this move would be named '{}', not a valid RAPID name: {e}", d.name),
+                    "a `move: circular` point's circle point is written as a CONST robtarget named <name>_via; shorten the point's name".to_string(),
+                )
+            })?;
+        }
         let key = d.name.to_ascii_lowercase();
         if let Some(what) = taken.get(&key) {
             let rename = d.kind.trim_end_matches(" name");
@@ -589,7 +610,7 @@ fn one_name_space(d: &Declared, points: &[Point], motion: &Motion) -> Result<(),
                 ),
                 _ => format!("{} '{}' is already the name of {what}", d.kind, d.name),
             };
-            let rename = if rename == "robtarget" {
+            let rename = if rename == "robtarget" || rename == "circle point" {
                 "point"
             } else {
                 rename
