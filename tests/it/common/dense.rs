@@ -20,8 +20,13 @@
 //! counts: a box reaching above the mounting plane, or a base cylinder that dips below the top
 //! of what it would stand on. Links 2 and 3 are measured against every box.
 
+use super::controller::{self, Run, Setup};
+use super::library::RobotFrame;
 use super::library::{Base, Cell, Robot, Target, Tool, ToolGeometry};
 use super::module::Module;
+use super::opw::Ik;
+use super::program::{check_program, point_as_written, ProgramReport};
+use super::sweep::sweep;
 use super::tcp::{check_tcp, TcpReport};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use parry3d::math::{Pose, Vector};
@@ -35,27 +40,14 @@ const STAND_TOL_MM: f64 = 1e-6;
 /// the wrist; radius and offsets stay well below 2 m), mm.
 const ARM_RADIUS_MM: f64 = 2000.0;
 
-/// A cell-frame xyz point's written joints must give it back within this, mm (the module's
-/// 0.001 deg moves the wrist centre by less than 0.05 mm).
-const XYZ_TOL_MM: f64 = 0.05;
-
 /// The header states the min clearance to 0.1 mm, as a lower bound within 0.05 mm of the
 /// true minimum (README).
 const HEADER_ROUNDING_MM: f64 = 0.05;
 const HEADER_TOL_MM: f64 = 0.05;
 
-/// Most motion of any point of the arm or tool between neighbouring samples of a corner
-/// triangle, mm (a triangle is sampled over an area, so more coarsely than a move).
-const CORNER_STEP_MM: f64 = 4.0;
-
 /// Most steps along a corner triangle's edge (a wide corner is sampled more coarsely than
-/// [`CORNER_STEP_MM`]; the header's bound is then held to the step reached).
+/// `sweep::CORNER_STEP_MM`; the header's bound is then held to the step reached).
 const MAX_CORNER_STEPS: usize = 150;
-
-/// The midpoint of two six-axis configurations.
-fn mid(a: &[f64; 6], b: &[f64; 6]) -> [f64; 6] {
-    std::array::from_fn(|k| 0.5 * (a[k] + b[k]))
-}
 
 struct Block {
     name: String,
@@ -289,10 +281,7 @@ impl<'a> Scene<'a> {
     /// between samples, so the true minimum lies at most 0.5 mm below it), with the number of
     /// samples.
     pub fn nearest_along(&self, a: &[f64; 6], b: &[f64; 6]) -> (Nearest, usize) {
-        let qa = self.robot.urdf_joints_deg(a);
-        let qb = self.robot.urdf_joints_deg(b);
-        let turn_rad: f64 = (0..6).map(|k| (qb[k] - qa[k]).abs().to_radians()).sum();
-        let n = (self.radius_mm() * turn_rad).ceil().max(1.0) as usize;
+        let n = self.steps_along(a, b);
         let mut best = Nearest {
             mm: f64::INFINITY,
             link: String::new(),
@@ -306,6 +295,17 @@ impl<'a> Scene<'a> {
             }
         }
         (best, n + 1)
+    }
+
+    /// How many steps the straight six-axis move `a -> b` is sampled in so that no point of the
+    /// arm or the tool moves more than 1 mm between samples: every point lies within
+    /// [`radius_mm`](Self::radius_mm) of every joint axis, so it moves at most that much per
+    /// radian of each URDF joint.
+    pub fn steps_along(&self, a: &[f64; 6], b: &[f64; 6]) -> usize {
+        let qa = self.robot.urdf_joints_deg(a);
+        let qb = self.robot.urdf_joints_deg(b);
+        let turn_rad: f64 = (0..6).map(|k| (qb[k] - qa[k]).abs().to_radians()).sum();
+        (self.radius_mm() * turn_rad).ceil().max(1.0) as usize
     }
 
     /// The nearest approach over the triangle `tri` of controller values, sampled on a
@@ -418,8 +418,73 @@ pub struct Report {
     pub smallest: Nearest,
     /// Cell points given as `xyz` whose written joints were held against them.
     pub xyz_points: usize,
-    /// The robtarget points, tooldata, wobjdata and moves (`tcp.rs`).
+    /// The robtarget points, tooldata, wobjdata and moves of a module of `MoveAbsJ` alone
+    /// (`tcp.rs`).
     pub tcp: TcpReport,
+    /// The routine as the controller ran it (`controller.rs`).
+    pub run: Run,
+    /// The program of a module that moves to robtargets or runs actions (`program.rs`).
+    pub program: ProgramReport,
+}
+
+/// The points of a module of `MoveAbsJ` alone, and the header's count of moves: the moves name
+/// the targets one to one, in order, from the first cell point to the last; every cell point
+/// appears, in order: joint points exactly as given, xyz points at their wrist centre by forward
+/// kinematics from the header's placement; every target in range; every via's wrist on the
+/// leg's schedule. The number of xyz points held, and the failures.
+fn joint_module_points(
+    cell: &Cell,
+    robot: &Robot,
+    scene: &Scene,
+    module: &Module,
+) -> (usize, Vec<String>) {
+    let mut failures = Vec::new();
+    let mut fail = |m: String| failures.push(m);
+    if module.header_moves + 1 != module.moves.len() {
+        fail(format!(
+            "header says {} moves, PROC main has {} MoveAbsJ",
+            module.header_moves,
+            module.moves.len()
+        ));
+    }
+    let names: Vec<&str> = module.targets.iter().map(|t| t.0.as_str()).collect();
+    if names != module.moves.iter().map(String::as_str).collect::<Vec<_>>() {
+        fail(format!(
+            "moves {:?} do not name the targets {names:?} in order",
+            module.moves
+        ));
+    }
+    if names.first().copied() != cell.points.first().map(|p| p.name.as_str())
+        || names.last().copied() != cell.points.last().map(|p| p.name.as_str())
+    {
+        fail("the first and last targets are not the first and last cell points".into());
+    }
+    let mut k = 0;
+    let mut xyz_points = 0;
+    for p in &cell.points {
+        let Some(at) = module.targets[k..].iter().position(|t| t.0 == p.name) else {
+            fail(format!("point {} missing or out of order", p.name));
+            continue;
+        };
+        k += at;
+        let axes = module.targets[k].1;
+        if matches!(p.target, Target::Xyz { .. }) {
+            xyz_points += 1;
+        }
+        // A robtarget point is reached by its jointtarget: `tcp::check_tcp`.
+        if let Some(e) = point_as_written(cell, robot, &scene.cell_from_robot, p, &axes) {
+            fail(e);
+        }
+    }
+    for (name, axes) in &module.targets {
+        if let Err(e) = robot.check_range6(axes) {
+            fail(format!("target {name} out of range: {e}"));
+        }
+    }
+    for m in wrist_schedule_errors(cell, module) {
+        fail(m);
+    }
+    (xyz_points, failures)
 }
 
 /// Checks a module written for `cell` by `robot` (see the module doc); `label` names it in
@@ -459,155 +524,45 @@ pub fn check_module(
             module.yaw_deg, cell.robot.yaw_deg
         ));
     }
-    if module.header_moves + 1 != module.moves.len() {
-        fail(format!(
-            "header says {} moves, PROC main has {} MoveAbsJ",
-            module.header_moves,
-            module.moves.len()
-        ));
-    }
-    // Moves name the targets one to one, in order.
-    let names: Vec<&str> = module.targets.iter().map(|t| t.0.as_str()).collect();
-    if names != module.moves.iter().map(String::as_str).collect::<Vec<_>>() {
-        fail(format!(
-            "moves {:?} do not name the targets {names:?} in order",
-            module.moves
-        ));
-    }
-    if names.first().copied() != cell.points.first().map(|p| p.name.as_str())
-        || names.last().copied() != cell.points.last().map(|p| p.name.as_str())
-    {
-        fail("the first and last targets are not the first and last cell points".into());
-    }
 
     let scene = Scene::new(robot, module.base_mm, module.yaw_deg, cell);
-    // Every cell point appears, in order: joint points exactly as given, xyz points at their
-    // wrist centre by forward kinematics from the header's placement.
-    let mut k = 0;
+    // What the module says of the cell: a module of `MoveAbsJ` alone (robtarget points reached
+    // by their jointtargets) target by target, with `tcp.rs`; a module that moves to robtargets
+    // or runs actions as the contract's program (`program.rs`).
+    let joint_moves = module.joint_moves_only();
     let mut xyz_points = 0;
-    for p in &cell.points {
-        let Some(at) = module.targets[k..].iter().position(|t| t.0 == p.name) else {
-            fail(format!("point {} missing or out of order", p.name));
-            continue;
-        };
-        k += at;
-        let axes = module.targets[k].1;
-        match &p.target {
-            Target::Joints {
-                axes_deg,
-                wrist_deg,
-            } => {
-                let w = wrist_deg.unwrap_or(cell.robot.wrist_deg);
-                if axes[..3] != axes_deg[..] || axes[3..] != w[..] {
-                    fail(format!(
-                        "point {} written as {axes:?}, given as {axes_deg:?} wrist {w:?}",
-                        p.name
-                    ));
-                }
-            }
-            Target::Xyz {
-                wrist_centre_mm, ..
-            } => {
-                xyz_points += 1;
-                let back = scene.wrist_centre(&axes);
-                let off = (back - Point3::from(*wrist_centre_mm)).norm();
-                if off > XYZ_TOL_MM {
-                    fail(format!(
-                        "point {}: its written joints {axes:?} reach {back:?}, {off:.3} mm from the given {wrist_centre_mm:?}",
-                        p.name
-                    ));
-                }
-            }
-            // Reached by its jointtarget: `tcp::check_tcp` below.
-            Target::Robtarget { .. } => {}
+    let mut program = ProgramReport::default();
+    if joint_moves {
+        let (n, f) = joint_module_points(cell, robot, &scene, &module);
+        xyz_points = n;
+        f.into_iter().for_each(&mut fail);
+    } else {
+        match check_program(cell, robot, &module, &scene.cell_from_robot) {
+            Ok(r) => program = r,
+            Err(f) => f.into_iter().for_each(&mut fail),
         }
-    }
-    for (name, axes) in &module.targets {
-        if let Err(e) = robot.check_range6(axes) {
-            fail(format!("target {name} out of range: {e}"));
-        }
-    }
-    for m in wrist_schedule_errors(cell, &module) {
-        fail(m);
     }
 
-    let mut samples = 0;
-    let mut smallest = Nearest {
-        mm: f64::INFINITY,
-        link: String::new(),
-        obstacle: String::new(),
+    // The routine as the controller runs it, and the clearance along all of it.
+    let setup = Setup {
+        robot,
+        ik: Ik::new(robot),
+        world_from_base: match cell.robot.frame {
+            RobotFrame::Base => Isometry3::identity(),
+            RobotFrame::Cell => scene.cell_from_robot,
+        },
+        radius_mm: scene.radius_mm(),
     };
-    for w in module.targets.windows(2) {
-        let (a, b) = (w[0].1, w[1].1);
-        let qa = robot.urdf_joints_deg(&a);
-        let qb = robot.urdf_joints_deg(&b);
-        // Every point lies within `radius_mm` of every joint axis, so it moves at most that much
-        // per radian of each joint (the wrist axes move only the tool and the wrist).
-        let turn_rad: f64 = (0..6).map(|k| (qb[k] - qa[k]).abs().to_radians()).sum();
-        let n = (scene.radius_mm() * turn_rad).ceil().max(1.0) as usize;
-        for i in 0..=n {
-            let t = i as f64 / n as f64;
-            let axes: [f64; 6] = std::array::from_fn(|k| a[k] + t * (b[k] - a[k]));
-            let near = scene.nearest(axes);
-            samples += 1;
-            let below = near.mm < cell.planner.clearance_mm - 1e-6;
-            if below {
-                fail(format!(
-                    "move {} -> {} at t = {t:.4} ({axes:?}): {} is {:.3} mm from {}, below the clearance {} mm",
-                    w[0].0, w[1].0, near.link, near.mm, near.obstacle, cell.planner.clearance_mm
-                ));
-            }
-            if near.mm < smallest.mm {
-                smallest = near;
-            }
-            if below {
-                break; // one message per move
-            }
-        }
-    }
-
-    // Every corner written with a fly-by zone (issue 10): the triangle of the midpoint of the
-    // move into the target, the target and the midpoint of the move out, sampled on a
-    // barycentric grid with at most CORNER_STEP_MM of motion of any point between neighbours.
-    // The route starts and ends at a stop: the first and last moves are `fine`.
-    let last = module.targets.len().saturating_sub(1);
-    for k in [0, last] {
-        if let Some(m) = module.move_args.get(k) {
-            if !m.zone.eq_ignore_ascii_case("fine") {
-                fail(format!(
-                    "the move to {} is {}, not fine",
-                    module.targets[k].0, m.zone
-                ));
-            }
-        }
-    }
-    let mut corners = 0;
-    let mut corner_smallest = f64::INFINITY;
-    for k in 1..module.targets.len().saturating_sub(1) {
-        let zone = module.move_args.get(k).map_or("fine", |m| m.zone.as_str());
-        if zone.eq_ignore_ascii_case("fine") {
-            continue;
-        }
-        corners += 1;
-        let (p, v, n) = (
-            module.targets[k - 1].1,
-            module.targets[k].1,
-            module.targets[k + 1].1,
-        );
-        let tri = [mid(&p, &v), v, mid(&v, &n)];
-        let (near, count, step) = scene.nearest_over_triangle(&tri, CORNER_STEP_MM);
-        samples += count;
-        if near.mm < cell.planner.clearance_mm - 1e-6 {
-            fail(format!(
-                "corner at {} ({zone}): {} is {:.3} mm from {}, below the clearance {} mm",
-                module.targets[k].0, near.link, near.mm, near.obstacle, cell.planner.clearance_mm
-            ));
-        }
-        corner_smallest = corner_smallest.min(near.mm - step);
-        if near.mm < smallest.mm {
-            smallest = near;
-        }
-    }
+    let (run, f) = controller::run(&module, &setup);
+    f.into_iter().for_each(&mut fail);
+    let swept = sweep(&scene, &run, cell.planner.clearance_mm);
+    swept.failures.iter().cloned().for_each(&mut fail);
+    let (samples, corners, smallest, corner_smallest) = (
+        swept.samples,
+        swept.corners,
+        swept.smallest,
+        swept.corner_smallest,
+    );
 
     // The header's min clearance is a lower bound within 0.05 mm of the true minimum, which lies
     // at most 0.5 mm below the smallest sample of a move (1 mm of motion between samples), at
@@ -632,12 +587,15 @@ pub fn check_module(
         )),
     }
 
-    let tcp = match check_tcp(cell, robot, &module, &scene.cell_from_robot) {
-        Ok(r) => r,
-        Err(f) => {
-            failures.extend(f.into_iter().map(|m| format!("{label}: {m}")));
-            TcpReport::default()
-        }
+    let tcp = match joint_moves {
+        true => match check_tcp(cell, robot, &module, &scene.cell_from_robot) {
+            Ok(r) => r,
+            Err(f) => {
+                failures.extend(f.into_iter().map(|m| format!("{label}: {m}")));
+                TcpReport::default()
+            }
+        },
+        false => TcpReport::default(),
     };
     if failures.is_empty() {
         Ok(Report {
@@ -647,6 +605,8 @@ pub fn check_module(
             smallest,
             xyz_points,
             tcp,
+            run,
+            program,
         })
     } else {
         Err(failures)
