@@ -25,6 +25,7 @@ use super::library::Robot;
 use super::module::Module;
 use super::opw::{conf_admits, max_diff, Ik};
 use super::paths::TcpPath;
+use super::reach::Reach;
 use super::routine::{Instruction, MoveKind, ToPoint};
 use super::tcp::confdata;
 use nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
@@ -41,8 +42,10 @@ pub struct Setup<'a> {
     pub ik: Result<Ik<'a>, String>,
     /// The robot base in the controller's world frame.
     pub world_from_base: Isometry3<f64>,
-    /// The most any point of the arm or tool moves per radian of any joint, mm (`Scene`).
-    pub radius_mm: f64,
+    /// How far points move per radian of each joint, and the most any point may move between
+    /// samples, mm (`reach.rs`).
+    pub reach: Reach,
+    pub step_mm: f64,
 }
 
 /// How a move's joints go.
@@ -286,7 +289,7 @@ pub fn run(module: &Module, setup: &Setup) -> (Run, Vec<String>) {
                     }
                 };
                 let tool0_at = |s: f64| tcp.at(s) * tframe.inverse();
-                let samples = match follow(ik, &tool0_at, start, setup.radius_mm) {
+                let samples = match follow(ik, &tool0_at, start, &setup.reach, setup.step_mm) {
                     Ok(samples) => samples,
                     Err(stop) => {
                         let wobj = m.wobj.as_deref().unwrap_or("wobj0");

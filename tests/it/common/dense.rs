@@ -1,9 +1,10 @@
 //! The independent whole-move check: read a `.mod` as written (targets, moves, the header's base
-//! and yaw), place the robot's link cylinders and the cell's tool shapes (`Cell::tool`, carried
-//! by the flange: the robot's `tool0`) with the URDF kinematics, and sample every straight
-//! six-axis move so densely that no point of the arm or the tool moves more than 1 mm between
-//! samples, measuring the exact distance to every box with parry3d's own shapes. It shares no
-//! code with `collision` or `geometry`: only the cell types and parser and the robot's
+//! and yaw), place every collision shape the robot's URDF gives (`links.rs`, read here, any
+//! link) and the cell's tool shapes (`Cell::tool`, carried by the flange: the robot's `tool0`)
+//! with the URDF kinematics, and sample every move so densely that no point of the arm or the
+//! tool moves more than a tenth of the clearance (at most 1 mm) between samples (`reach.rs`),
+//! measuring the exact distance to every box with parry3d's own shapes. It shares no code with
+//! `collision` or `geometry`: only the cell types and parser and the robot's forward
 //! kinematics (which `robot`'s tests hold against RobotStudio). It also holds every via's wrist
 //! to the wrist schedule (the leg's wrists in proportion to the via's projection onto the leg's
 //! line in axes 1..3, clamped, rounded to 0.001 deg), computed here again. Robtarget points, the
@@ -16,16 +17,19 @@
 //! geometry it computes itself, pose by pose: a box is not measured against a link-1 cylinder
 //! only when the box lies wholly at or below the mounting plane (the header's base z) *and* the
 //! cylinder, placed by this check's forward kinematics, lies wholly on or above the box's top
-//! (its lowest point, `min(end z) - r sin(tilt)`, is not below the top). Any other contact
-//! counts: a box reaching above the mounting plane, or a base cylinder that dips below the top
-//! of what it would stand on. Links 2 and 3 are measured against every box.
+//! (its lowest point, the bottom of its exact bounding box, is not below the top). Any other
+//! contact counts: a box reaching above the mounting plane, or a base cylinder that dips below
+//! the top of what it would stand on. A shape on the base (above every joint) is read the same
+//! way; every other link is measured against every box.
 
 use super::controller::{self, Run, Setup};
 use super::library::RobotFrame;
 use super::library::{Base, Cell, Robot, Target, Tool, ToolGeometry};
+use super::links::{self, to_pose, LinkShape};
 use super::module::Module;
 use super::opw::Ik;
 use super::program::{check_program, point_as_written, ProgramReport};
+use super::reach::{sample_step_mm, Reach};
 use super::sweep::sweep;
 use super::tcp::{check_tcp, TcpReport};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
@@ -35,10 +39,6 @@ use parry3d::shape::{Ball, Cuboid, Cylinder, Shape};
 /// Heights closer than this count as equal (mm): the box top and the mounting plane, the
 /// cylinder's lowest point and the box top.
 const STAND_TOL_MM: f64 = 1e-6;
-
-/// No point of the arm is farther than this from any joint axis (IRB 1400: reach 1.44 m plus
-/// the wrist; radius and offsets stay well below 2 m), mm.
-const ARM_RADIUS_MM: f64 = 2000.0;
 
 /// The header states the min clearance to 0.1 mm, as a lower bound within 0.05 mm of the
 /// true minimum (README).
@@ -69,9 +69,14 @@ pub struct Scene<'a> {
     robot: &'a Robot,
     cell_from_robot: Isometry3<f64>,
     blocks: Vec<Block>,
+    /// The robot's collision shapes, read from its URDF here.
+    links: Vec<LinkShape>,
     tool: Vec<ToolPiece>,
     /// How far any point of the tool lies from the tool0 origin, mm.
     tool_extent_mm: f64,
+    /// How far points move per radian of each joint, and the sampling step (`reach.rs`), mm.
+    reach: Reach,
+    step_mm: f64,
 }
 
 /// The nearest link and box at one pose.
@@ -97,7 +102,10 @@ impl<'a> Scene<'a> {
                 )
             })
             .collect();
-        Scene::from_boxes(robot, base_mm, yaw_deg, &boxes).with_tool(cell.tool.as_ref())
+        let mut scene =
+            Scene::from_boxes(robot, base_mm, yaw_deg, &boxes).with_tool(cell.tool.as_ref());
+        scene.step_mm = sample_step_mm(cell.planner.clearance_mm);
+        scene
     }
 
     /// The same scene carrying `tool`'s shapes on the flange (none: no tool volume).
@@ -154,6 +162,7 @@ impl<'a> Scene<'a> {
                 shape,
             });
         }
+        self.reach = Reach::new(self.robot, &self.links, self.tool_extent_mm);
         self
     }
 
@@ -181,19 +190,34 @@ impl<'a> Scene<'a> {
                 }
             })
             .collect();
+        let links = links::read(robot).unwrap_or_else(|e| panic!("the dense check: {e}"));
+        let reach = Reach::new(robot, &links, 0.0);
         Scene {
             robot,
             cell_from_robot,
             blocks,
+            links,
             tool: Vec::new(),
             tool_extent_mm: 0.0,
+            reach,
+            step_mm: sample_step_mm(0.0),
         }
     }
 
-    /// The most any point of the arm or the tool can move per radian of any joint, mm: the arm
-    /// radius plus the tool's extent beyond the flange.
-    pub fn radius_mm(&self) -> f64 {
-        ARM_RADIUS_MM + self.tool_extent_mm
+    /// How far points move per radian of each joint (`reach.rs`).
+    pub fn reach(&self) -> Reach {
+        self.reach
+    }
+
+    /// The sampling step: the most any point moves between neighbouring samples, mm.
+    pub fn step_mm(&self) -> f64 {
+        self.step_mm
+    }
+
+    /// The most any point of the arm or the tool moves along the straight joint move `a -> b`,
+    /// mm.
+    pub fn motion_mm(&self, a: &[f64; 6], b: &[f64; 6]) -> f64 {
+        self.reach.motion_mm(self.robot, a, b)
     }
 
     /// Height of the mounting plane (the base frame's origin), cell frame, mm.
@@ -201,44 +225,35 @@ impl<'a> Scene<'a> {
         self.cell_from_robot.translation.vector.z
     }
 
-    /// The smallest distance from the link cylinders and the tool's shapes to the boxes at
-    /// controller axes 1..6, and where (a link by name, a tool shape as `tool shape 'name'`);
-    /// `mm` is infinite when nothing is measured.
+    /// The smallest distance from the robot's collision shapes and the tool's shapes to the
+    /// boxes at controller axes 1..6, and where (a link by name, a tool shape as
+    /// `tool shape 'name'`); `mm` is infinite when nothing is measured.
     pub fn nearest(&self, axes: [f64; 6]) -> Nearest {
-        let poses = self.robot.arm_link_poses(&[axes[0], axes[1], axes[2]]);
+        let poses = self.robot.link_poses(&axes);
         let mut best = Nearest {
             mm: f64::INFINITY,
             link: String::new(),
             obstacle: String::new(),
         };
-        for c in &self.robot.cylinders {
-            let frame = self.cell_from_robot * poses[c.joint_index];
-            let (a, b) = (frame * c.a, frame * c.b);
-            let axis = b - a;
-            let len = axis.norm();
-            let dir = axis / len;
-            let rot = UnitQuaternion::rotation_between(&Vector3::y(), &dir).unwrap_or_else(|| {
-                UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI)
-            });
-            let q = rot.quaternion();
-            let mid = nalgebra::center(&a, &b);
-            let pose = Pose::from_parts(
-                Vector::new(mid.x, mid.y, mid.z),
-                parry3d::math::Rotation::from_xyzw(q.i, q.j, q.k, q.w),
-            );
-            let cyl = Cylinder::new(len / 2.0, c.radius_mm);
-            let lowest_z = lowest_point_z(a, b, dir, c.radius_mm);
+        for l in &self.links {
+            let frame = match l.carrier {
+                Some(k) => self.cell_from_robot * poses[k],
+                None => self.cell_from_robot,
+            };
+            let pose = to_pose(&(frame * l.in_frame));
+            let lowest_z = l.shape.compute_aabb(&pose).mins.z;
             for block in &self.blocks {
-                if c.joint_index == 0 && self.stands_on(lowest_z, block) {
+                if l.carrier.is_none_or(|k| k == 0) && self.stands_on(lowest_z, block) {
                     continue;
                 }
-                let d = parry3d::query::distance(&pose, &cyl, &block.pose, &block.cuboid)
-                    .expect("convex shapes")
-                    .distance;
+                let d =
+                    parry3d::query::distance(&pose, l.shape.as_ref(), &block.pose, &block.cuboid)
+                        .expect("convex shapes")
+                        .distance;
                 if d < best.mm {
                     best = Nearest {
                         mm: d,
-                        link: c.link.clone(),
+                        link: l.link.clone(),
                         obstacle: block.name.clone(),
                     };
                 }
@@ -277,9 +292,9 @@ impl<'a> Scene<'a> {
     }
 
     /// The nearest approach (links and tool shapes) along the straight six-axis move `a -> b`,
-    /// sampled as [`check_module`] does (no point of the arm or the tool moves more than 1 mm
-    /// between samples, so the true minimum lies at most 0.5 mm below it), with the number of
-    /// samples.
+    /// sampled as [`check_module`] does (no point of the arm or the tool moves more than
+    /// [`step_mm`](Self::step_mm) between samples, so the true minimum lies at most half that
+    /// below it), with the number of samples.
     pub fn nearest_along(&self, a: &[f64; 6], b: &[f64; 6]) -> (Nearest, usize) {
         let n = self.steps_along(a, b);
         let mut best = Nearest {
@@ -298,19 +313,15 @@ impl<'a> Scene<'a> {
     }
 
     /// How many steps the straight six-axis move `a -> b` is sampled in so that no point of the
-    /// arm or the tool moves more than 1 mm between samples: every point lies within
-    /// [`radius_mm`](Self::radius_mm) of every joint axis, so it moves at most that much per
-    /// radian of each URDF joint.
+    /// arm or the tool moves more than [`step_mm`](Self::step_mm) between samples (the bound of
+    /// `reach.rs`).
     pub fn steps_along(&self, a: &[f64; 6], b: &[f64; 6]) -> usize {
-        let qa = self.robot.urdf_joints_deg(a);
-        let qb = self.robot.urdf_joints_deg(b);
-        let turn_rad: f64 = (0..6).map(|k| (qb[k] - qa[k]).abs().to_radians()).sum();
-        (self.radius_mm() * turn_rad).ceil().max(1.0) as usize
+        (self.motion_mm(a, b) / self.step_mm).ceil().max(1.0) as usize
     }
 
     /// The nearest approach over the triangle `tri` of controller values, sampled on a
     /// barycentric grid with at most `step_mm` of motion of any point between neighbouring
-    /// samples (each edge's joint turn, times the radius), but at most [`MAX_CORNER_STEPS`]
+    /// samples (each edge's motion bound, `reach.rs`), but at most [`MAX_CORNER_STEPS`]
     /// steps along an edge, with the number of samples and the motion between neighbouring
     /// samples it reached, mm.
     pub fn nearest_over_triangle(
@@ -318,12 +329,9 @@ impl<'a> Scene<'a> {
         tri: &[[f64; 6]; 3],
         step_mm: f64,
     ) -> (Nearest, usize, f64) {
-        let q: Vec<[f64; 6]> = tri.iter().map(|t| self.robot.urdf_joints_deg(t)).collect();
-        let turn = |a: usize, b: usize| -> f64 {
-            (0..6).map(|k| (q[b][k] - q[a][k]).abs().to_radians()).sum()
-        };
-        let widest = turn(0, 1).max(turn(1, 2)).max(turn(2, 0));
-        let n = ((self.radius_mm() * widest / step_mm).ceil() as usize).clamp(1, MAX_CORNER_STEPS);
+        let edge = |a: usize, b: usize| self.motion_mm(&tri[a], &tri[b]);
+        let widest = edge(0, 1).max(edge(1, 2)).max(edge(2, 0));
+        let n = ((widest / step_mm).ceil() as usize).clamp(1, MAX_CORNER_STEPS);
         let mut best = Nearest {
             mm: f64::INFINITY,
             link: String::new(),
@@ -343,10 +351,10 @@ impl<'a> Scene<'a> {
                 }
             }
         }
-        (best, count, self.radius_mm() * widest / n as f64)
+        (best, count, widest / n as f64)
     }
 
-    /// Whether a link-1 cylinder whose lowest point is at `lowest_z` stands on `block` (module
+    /// Whether a base or link-1 shape whose lowest point is at `lowest_z` stands on `block` (module
     /// doc): the block wholly at or below the mounting plane, the cylinder wholly on or above
     /// the block's top.
     fn stands_on(&self, lowest_z: f64, block: &Block) -> bool {
@@ -400,16 +408,12 @@ pub fn wrist_schedule_errors(cell: &Cell, module: &Module) -> Vec<String> {
     out
 }
 
-/// Height of the lowest point of a cylinder with axis ends `a`, `b` (unit direction `dir`) and
-/// radius `r`: each end disc reaches `r sin(tilt)` below its centre.
-fn lowest_point_z(a: Point3<f64>, b: Point3<f64>, dir: Vector3<f64>, r: f64) -> f64 {
-    a.z.min(b.z) - r * (1.0 - dir.z * dir.z).max(0.0).sqrt()
-}
-
 /// What [`check_module`] measured.
 #[derive(Debug)]
 pub struct Report {
     pub module: Module,
+    /// The sampling step: the most any point moved between neighbouring samples, mm.
+    pub step_mm: f64,
     /// Poses measured along the moves and over the zoned corners.
     pub samples: usize,
     /// Corners written with a fly-by zone, each sampled over its triangle.
@@ -551,7 +555,8 @@ pub fn check_module(
             RobotFrame::Base => Isometry3::identity(),
             RobotFrame::Cell => scene.cell_from_robot,
         },
-        radius_mm: scene.radius_mm(),
+        reach: scene.reach(),
+        step_mm: scene.step_mm(),
     };
     let (run, f) = controller::run(&module, &setup);
     f.into_iter().for_each(&mut fail);
@@ -565,12 +570,15 @@ pub fn check_module(
     );
 
     // The header's min clearance is a lower bound within 0.05 mm of the true minimum, which lies
-    // at most 0.5 mm below the smallest sample of a move (1 mm of motion between samples), at
-    // most the step reached below that of a corner, and not above either.
+    // at most half the sampling step below the smallest sample of a move (`reach.rs`), at most
+    // the step reached below that of a corner, and not above either.
+    let step_mm = scene.step_mm();
     match (module.min_clearance_mm, smallest.mm.is_finite()) {
         (Some(h), true) => {
             let (lo, hi) = (
-                (smallest.mm - 0.5).min(corner_smallest) - HEADER_TOL_MM - HEADER_ROUNDING_MM,
+                (smallest.mm - step_mm / 2.0).min(corner_smallest)
+                    - HEADER_TOL_MM
+                    - HEADER_ROUNDING_MM,
                 smallest.mm + HEADER_ROUNDING_MM,
             );
             if !(lo - 1e-9..=hi + 1e-9).contains(&h) {
@@ -600,6 +608,7 @@ pub fn check_module(
     if failures.is_empty() {
         Ok(Report {
             module,
+            step_mm,
             samples,
             corners,
             smallest,

@@ -2,8 +2,8 @@
 //! from the joints where the move starts. At each step the solution of the path's pose nearest
 //! the previous joints (`Ik::nearest`: every branch, its axes turned by whole turns nearest the
 //! previous ones) is taken; a step is accepted only when no axis moves more than [`STEP_DEG`]
-//! and no point of the arm or tool more than [`STEP_MM`] (the scene's radius times the URDF
-//! joints' summed turn, as the dense check bounds a straight move), else it is halved. A step
+//! and no point of the arm or tool more than the dense check's sampling step (by the bound of
+//! `reach.rs`, as the dense check bounds a straight move), else it is halved. A step
 //! that cannot be made small enough (the nearest solution stays far from the previous one at a
 //! progress step of [`MIN_STEP`]) is a jump: a configuration change or a singularity the
 //! controller cannot follow. Every accepted sample must lie in the axis ranges (the coupled
@@ -11,12 +11,11 @@
 //! moves more than [`STEP_DEG`], so those hold within that much everywhere.
 
 use super::opw::{max_diff, Ik};
+use super::reach::Reach;
 use nalgebra::Isometry3;
 
 /// The most any axis moves between accepted samples, deg.
 pub const STEP_DEG: f64 = 0.05;
-/// The most any point of the arm or tool moves between accepted samples (by the bound), mm.
-pub const STEP_MM: f64 = 1.0;
 /// The smallest progress step tried before a step is called a jump.
 pub const MIN_STEP: f64 = 1e-9;
 /// The largest progress step, so a path whose joints hardly move is still sampled.
@@ -42,21 +41,16 @@ pub struct Stop {
 }
 
 /// Follows `tool0_at` (tool0's pose in the robot base frame at progress 0 .. 1) from `start`,
-/// with `radius_mm` the most any point of the arm or tool moves per radian of any joint.
+/// no point of the arm or tool moving more than `step_mm` between samples by `reach`'s bound.
 pub fn follow(
     ik: &Ik,
     tool0_at: &dyn Fn(f64) -> Isometry3<f64>,
     start: [f64; 6],
-    radius_mm: f64,
+    reach: &Reach,
+    step_mm: f64,
 ) -> Result<Vec<Sample>, Stop> {
     let robot = ik.robot;
-    let motion_mm = |a: &[f64; 6], b: &[f64; 6]| {
-        let (qa, qb) = (robot.urdf_joints_deg(a), robot.urdf_joints_deg(b));
-        radius_mm
-            * (0..6)
-                .map(|k| (qb[k] - qa[k]).abs().to_radians())
-                .sum::<f64>()
-    };
+    let motion_mm = |a: &[f64; 6], b: &[f64; 6]| reach.motion_mm(robot, a, b);
     let admissible = |s: f64, axes: &[f64; 6]| -> Result<(), Stop> {
         let stop = |why: String| Stop {
             s,
@@ -83,7 +77,7 @@ pub fn follow(
     while s < 1.0 {
         let t = (s + ds).min(1.0);
         match ik.nearest(&tool0_at(t), &q) {
-            Some(n) if max_diff(&n, &q) <= STEP_DEG && motion_mm(&q, &n) <= STEP_MM => {
+            Some(n) if max_diff(&n, &q) <= STEP_DEG && motion_mm(&q, &n) <= step_mm => {
                 admissible(t, &n)?;
                 samples.push(Sample { s: t, axes: n });
                 (s, q) = (t, n);

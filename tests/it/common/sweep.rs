@@ -1,10 +1,13 @@
 //! The clearance along everything the controller runs (`controller.rs`'s [`Run`]), every move
 //! but the first (which reaches the start from wherever the robot is): a straight joint move
-//! (`MoveAbsJ`, `MoveJ`) sampled so that no point of the arm or the tool moves more than 1 mm
-//! between samples, a followed `MoveL` or `MoveC` at the samples `follow.rs` took (no point
-//! moves more than 1 mm between them either), each sample measured with parry3d
-//! (`Scene::nearest`: every link cylinder the robot carries and the cell's tool shapes, against
-//! every box). So the true minimum along a move lies at most 0.5 mm below the smallest sample.
+//! (`MoveAbsJ`, `MoveJ`) sampled so that no point of the arm or the tool moves more than the
+//! sampling step between samples (`reach.rs`: a tenth of the clearance, at most 1 mm), a
+//! followed `MoveL` or `MoveC` at the samples `follow.rs` took (no point moves more than the
+//! step between them either, by the same bound), each sample measured with parry3d
+//! (`Scene::nearest`: every collision shape of the robot's URDF and the cell's tool shapes,
+//! against every box). So the true minimum along a move lies at most half a step below the
+//! smallest sample (along a followed move, between two samples the joints follow the IK, not a
+//! straight line; with steps of at most 0.05 deg per axis the two differ far less than that).
 //!
 //! A corner written with a fly-by zone between two joint moves is sampled over its triangle in
 //! joint space (the midpoint of the move in, the waypoint, the midpoint of the move out), as the

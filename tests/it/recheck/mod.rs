@@ -3,3 +3,4 @@
 //! forward kinematics, and hand-written modules with process moves that it must pass or refuse.
 
 mod opw;
+mod process;

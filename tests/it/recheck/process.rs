@@ -1,0 +1,243 @@
+//! Hand-written modules with process moves through the controller-like re-check
+//! (`common/dense.rs`'s `check_module`), their expected results worked out by hand below.
+//!
+//! # The cell
+//!
+//! The IRB 1400 at the origin, yaw 0. A pen tool: TCP 300 mm along the flange's z axis, one
+//! collision shape, a ball of radius 20 mm centred on the TCP. A table (box) under the pen:
+//! x 600 .. 1100, y -300 .. 300, z 0 .. 350. Three robtargets, all at z = 400, the same
+//! orientation `R = Ry(180 deg) Rz(30 deg)` (the tool's z axis straight down, turned 30 deg about
+//! it), quaternion `[0, sin 15, cos 15, 0] = [0, 0.258819045, 0.965925826, 0]`:
+//!
+//! - `S1` (700, 0, 400), reached by `MoveJ` (the first instruction, not checked for clearance);
+//! - `S2` (1000, 0, 400), `move: linear` (`MoveL`, 300 mm along x), actions `SetDO doPen, 1;
+//!   WaitTime 0.500;`;
+//! - `S3` (700, 0, 400), `move: circular` through `via` (850, 150, 400): the circle of centre
+//!   (850, 0, 400) and radius 150 mm in the plane z = 400, half of it (180 deg), through y > 0.
+//!
+//! # What the check must find, by hand
+//!
+//! - Clearance: the ball's lowest point is at z = 400 - 20 = 380 everywhere on both paths, and
+//!   the whole path lies over the table (x 700 .. 1000, |y| <= 150), so the ball keeps exactly
+//!   380 - 350 = 30 mm from the table all along. The arm is much farther: the flange is 300 mm
+//!   above the TCP, the wrist centre 85 mm above that (z 785), and the base cylinder (radius
+//!   350 mm) ends 250 mm short of the table's x = 600. So the smallest distance is 30 mm, from
+//!   the tool's ball to the table.
+//! - Joints: on the IRB 1400 (parallelogram) tool0's orientation at axes (a1, a2, a3, a4, a5, a6)
+//!   with a4 = 0 is `Rz(a1) Ry(90 + a3 + a5) Rz(a6)` (tool0 points along x at zero, axes 3 and 5
+//!   tilt it down about y, axis 6 turns it about its own z). With `Rz(a1) Ry(180) =
+//!   Ry(180) Rz(-a1)` the pose R needs a3 + a5 = 90, a4 = 0 and a6 = 30 + a1: along both paths
+//!   a6 - a1 = 30 deg and a4 = 0. Axis 1 points at the TCP (the wrist is straight above it):
+//!   a1 = atan2(y, x), 0 on the line; on the arc it peaks where the line from the origin touches
+//!   the circle: asin(150 / 850) = 10.164 deg (not at the via, atan2(150, 850) = 10.008 deg).
+//! - Confdata: every point in front of axis 1, elbow up, a5 > 0 (cfx 0); a1 in 0 .. 10 deg,
+//!   a4 = 0, a6 in 30 .. 40 deg: `[0, 0, 0, 0]` everywhere (a4 = 0 lies on a quadrant bound, which
+//!   the check admits either way). The flipped wrist (a4 - 180, -a5, a6 - 180) of the same pose
+//!   is `[0, -2, -2, 1]` (a4 = -180, a6 = -150, a5 < 0): another branch, which `ConfL \On` must
+//!   refuse at the end of a `MoveL` that starts in the first.
+//!
+//! # What makes each case fail
+//!
+//! - a post on the line (x 830 .. 870, |y| <= 20, z 350 .. 450): the ball's centre passes through
+//!   it at x = 850 (distance 0 < 10 mm); the arc stays 130 - 20 - 20 = 90 mm from it at least;
+//! - a post on the arc (x 830 .. 870, y 130 .. 170, z 350 .. 450): the arc passes through its
+//!   middle (850, 150); the line (y = 0) stays 130 - 20 = 110 mm from it;
+//! - `S2_rt` written with the flipped wrist's confdata `[0, -2, -2, 1]`;
+//! - the actions written in the other order.
+
+use crate::common::controller::JointPath;
+use crate::common::dense::{check_module, Report};
+use crate::common::library::{load_cell, load_robot};
+use crate::common::temp_cell;
+
+/// The orientation R of every robtarget, `[w, x, y, z]` with the module's 9 decimals.
+const R: &str = "[0.000000000,0.258819045,0.965925826,0.000000000]";
+
+/// A box as the cell file writes it.
+type Post = ([f64; 3], [f64; 3]);
+
+/// The post on the line and the post on the arc (module doc).
+const ON_LINE: Post = ([830.0, -20.0, 350.0], [870.0, 20.0, 450.0]);
+const ON_ARC: Post = ([830.0, 130.0, 350.0], [870.0, 170.0, 450.0]);
+
+/// The confdata of every point, and of the flipped wrist (module doc).
+const UPRIGHT: [i32; 4] = [0, 0, 0, 0];
+const FLIPPED: [i32; 4] = [0, -2, -2, 1];
+
+/// The cell (module doc), with `post` as a second box.
+fn cell_text(post: Option<Post>) -> String {
+    let post = post.map_or(String::new(), |(lo, hi)| {
+        format!(
+            "  - {{ name: post, box: {{ min: [{}, {}, {}], max: [{}, {}, {}] }} }}\n",
+            lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]
+        )
+    });
+    let q = "[0, 0.258819045, 0.965925826, 0]";
+    format!(
+        "module: Pen\n\
+         robot: {{ urdf: URDF, base: [0, 0, 0] }}\n\
+         tool:\n  name: tPen\n  tframe: [[0, 0, 300], [1, 0, 0, 0]]\n  mass: 1\n  cog: [0, 0, 150]\n\
+         \x20 shapes:\n    - {{ name: tip, sphere: {{ centre: [0, 0, 300], radius: 20 }} }}\n\
+         obstacles:\n  - {{ name: table, box: {{ min: [600, -300, 0], max: [1100, 300, 350] }} }}\n{post}\
+         points:\n\
+         \x20 - {{ name: S1, robtarget: [[700, 0, 400], {q}] }}\n\
+         \x20 - {{ name: S2, robtarget: [[1000, 0, 400], {q}], move: linear, do: [{{ set_do: [doPen, 1] }}, {{ wait_time: 0.5 }}] }}\n\
+         \x20 - {{ name: S3, robtarget: [[700, 0, 400], {q}], move: circular, via: [850, 150, 400] }}\n\
+         planner: {{ clearance: 10 }}\n\
+         motion: {{ speed: v100, zone: fine }}\n"
+    )
+}
+
+fn robtarget(name: &str, xyz: [f64; 3], conf: [i32; 4]) -> String {
+    format!(
+        "    CONST robtarget {name} := [[{:.3},{:.3},{:.3}],{R},[{},{},{},{}],[9E9,9E9,9E9,9E9,9E9,9E9]];\n",
+        xyz[0], xyz[1], xyz[2], conf[0], conf[1], conf[2], conf[3]
+    )
+}
+
+/// The module the contract writes for the cell, with `S2_rt`'s confdata `s2_conf`, the actions
+/// `actions` (RAPID lines) and the header's min clearance `min_mm`.
+fn module_text(s2_conf: [i32; 4], actions: &[&str], min_mm: f64) -> String {
+    let mut body = String::new();
+    for a in actions {
+        body += &format!("        {a}\n");
+    }
+    format!(
+        "MODULE Pen\n\
+         \x20   ! planner: extensile\n\
+         \x20   ! clearance (mm): 10.0\n\
+         \x20   ! base: [0.0, 0.0, 0.0] yaw: 0.000\n\
+         \x20   ! tool: tPen (declared below; collision shapes: tip)\n\
+         \x20   ! frames: robtargets are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above\n\
+         \x20   ! moves: 2\n\
+         \x20   ! min clearance (mm): {min_mm:.1}\n\n\
+         \x20   PERS tooldata tPen := [TRUE,[[0.000,0.000,300.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[1.000,[0.000,0.000,150.000],[1,0,0,0],0,0,0]];\n\n\
+         {}{}{}{}\n\
+         \x20   PROC main()\n\
+         \x20       ConfJ \\On;\n\
+         \x20       ConfL \\On;\n\
+         \x20       MoveJ S1_rt, v100, fine, tPen;\n\
+         \x20       MoveL S2_rt, v100, fine, tPen;\n\
+         {body}\
+         \x20       MoveC S3_via, S3_rt, v100, fine, tPen;\n\
+         \x20   ENDPROC\n\
+         ENDMODULE\n",
+        robtarget("S1_rt", [700.0, 0.0, 400.0], UPRIGHT),
+        robtarget("S2_rt", [1000.0, 0.0, 400.0], s2_conf),
+        robtarget("S3_via", [850.0, 150.0, 400.0], UPRIGHT),
+        robtarget("S3_rt", [700.0, 0.0, 400.0], UPRIGHT),
+    )
+}
+
+const ACTIONS: [&str; 2] = ["SetDO doPen, 1;", "WaitTime 0.500;"];
+
+/// Runs the check on the cell with `post` and the module.
+fn check(post: Option<Post>, module: &str) -> Result<Report, Vec<String>> {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = temp_cell(dir.path(), "pen.yaml", &cell_text(post));
+    let cell = load_cell(&path);
+    let robot = load_robot(&cell);
+    check_module(&cell, &robot, module, "pen")
+}
+
+#[test]
+fn a_line_and_an_arc_over_the_table_keep_the_clearance_worked_out_by_hand() {
+    let r = check(None, &module_text(UPRIGHT, &ACTIONS, 30.0))
+        .unwrap_or_else(|f| panic!("{}", f.join("\n")));
+    // The smallest distance: the ball to the table, 30 mm, everywhere on both paths.
+    assert_eq!(r.smallest.link, "tool shape 'tip'");
+    assert_eq!(r.smallest.obstacle, "table");
+    assert!((r.smallest.mm - 30.0).abs() < 0.01, "{:?}", r.smallest);
+    assert_eq!(
+        (r.run.followed, r.program.lines_and_arcs, r.program.actions),
+        (2, 2, 2)
+    );
+    // The arc: radius 150 mm, half a turn.
+    let arcs: Vec<_> = r
+        .run
+        .moves
+        .iter()
+        .filter_map(|m| match &m.path {
+            JointPath::Followed { tcp, samples, .. } => Some((tcp.radius_and_angle(), samples)),
+            JointPath::Straight => None,
+        })
+        .collect();
+    assert_eq!(arcs.len(), 2);
+    assert!(arcs[0].0.is_none(), "the MoveL is a line");
+    let (radius, angle) = arcs[1].0.expect("the MoveC is an arc");
+    assert!((radius - 150.0).abs() < 1e-6 && (angle - 180.0).abs() < 1e-6);
+    // The joints: a4 = 0, a6 - a1 = 30, a1 = atan2(y, x) of the TCP; on the line a1 = 0, on the
+    // arc at most asin(150 / 850), where the line from the origin touches the circle.
+    let mut top = 0.0f64;
+    for (k, (_, samples)) in arcs.iter().enumerate() {
+        for s in samples.iter() {
+            let a = s.axes;
+            assert!(
+                a[3].abs() < 1e-6 && (a[5] - a[0] - 30.0).abs() < 1e-6,
+                "{a:?}"
+            );
+            if k == 0 {
+                assert!(a[0].abs() < 1e-6, "{a:?}");
+            }
+            top = top.max(a[0]);
+        }
+    }
+    let want = (150.0f64 / 850.0).asin().to_degrees();
+    assert!(
+        (top - want).abs() < 0.01,
+        "axis 1 peaks at {top}, by hand {want}"
+    );
+}
+
+#[test]
+fn a_line_through_a_post_fails() {
+    let f = check(Some(ON_LINE), &module_text(UPRIGHT, &ACTIONS, 0.0))
+        .expect_err("the line crosses the post");
+    assert!(
+        f.iter().any(|m| m.contains("MoveL S2_rt")
+            && m.contains("tool shape 'tip'")
+            && m.contains("from post")),
+        "{f:#?}"
+    );
+    assert!(
+        !f.iter().any(|m| m.contains("MoveC")),
+        "the arc misses the post: {f:#?}"
+    );
+}
+
+#[test]
+fn an_arc_through_a_post_fails() {
+    let f = check(Some(ON_ARC), &module_text(UPRIGHT, &ACTIONS, 0.0))
+        .expect_err("the arc crosses the post");
+    assert!(
+        f.iter().any(|m| m.contains("MoveC S3_via, S3_rt")
+            && m.contains("tool shape 'tip'")
+            && m.contains("from post")),
+        "{f:#?}"
+    );
+    assert!(
+        !f.iter().any(|m| m.contains("MoveL")),
+        "the line misses the post: {f:#?}"
+    );
+}
+
+#[test]
+fn a_line_ending_in_another_branchs_confdata_fails() {
+    let f =
+        check(None, &module_text(FLIPPED, &ACTIONS, 30.0)).expect_err("ConfL stops the controller");
+    assert!(
+        f.iter()
+            .any(|m| m.contains("MoveL S2_rt") && m.contains("ConfL would stop the controller")),
+        "{f:#?}"
+    );
+}
+
+#[test]
+fn actions_out_of_the_cells_order_fail() {
+    let f = check(None, &module_text(UPRIGHT, &[ACTIONS[1], ACTIONS[0]], 30.0))
+        .expect_err("the actions' order");
+    assert!(
+        f.iter().any(|m| m.contains("its actions are written")),
+        "{f:#?}"
+    );
+}
