@@ -35,15 +35,17 @@ fn every_move_of_every_module_on_file_keeps_the_clearance() {
                 }
                 let smallest = match r.smallest.mm.is_finite() {
                     true => format!(
-                        "smallest distance {:.2} mm ({} to {})",
+                        "smallest distance {:.3} mm ({} to {})",
                         r.smallest.mm, r.smallest.link, r.smallest.obstacle
                     ),
                     false => "no boxes".into(),
                 };
                 eprintln!(
-                    "{}: {} samples, {smallest}, {} xyz points, {} robtarget points (TCP within {:.4} mm, {:.5} deg)",
+                    "{}: {} samples (step {} mm), {smallest}, header {:?} mm, {} xyz points, {} robtarget points (TCP within {:.4} mm, {:.5} deg)",
                     case.expected,
                     r.samples,
+                    r.step_mm,
+                    r.module.min_clearance_mm,
                     r.xyz_points,
                     r.tcp.points,
                     r.tcp.worst_mm,

@@ -13,13 +13,19 @@
 //! - `S2` (1000, 0, 400), `move: linear` (`MoveL`, 300 mm along x), actions `SetDO doPen, 1;
 //!   WaitTime 0.500;`;
 //! - `S3` (700, 0, 400), `move: circular` through `via` (850, 150, 400): the circle of centre
-//!   (850, 0, 400) and radius 150 mm in the plane z = 400, half of it (180 deg), through y > 0.
+//!   (850, 0, 400) and radius 150 mm in the plane z = 400, half of it (180 deg), through y > 0;
+//!   `retract: 40`: `MoveL RelTool(S3_rt,0,0,-40.000)`, 40 mm back along the tool's z axis
+//!   (down), so up: the TCP ends at (700, 0, 440);
+//! - `S4` (1000, 100, 400), reached by joint with `approach: 50`: `MoveJ RelTool(S4_rt,0,0,
+//!   -50.000)` (the TCP at (1000, 100, 450)), then the approach line `MoveL S4_rt`.
 //!
 //! # What the check must find, by hand
 //!
-//! - Clearance: the ball's lowest point is at z = 400 - 20 = 380 everywhere on both paths, and
-//!   the whole path lies over the table (x 700 .. 1000, |y| <= 150), so the ball keeps exactly
-//!   380 - 350 = 30 mm from the table all along. The arm is much farther: the flange is 300 mm
+//! - Clearance: the ball's lowest point is at z = 400 - 20 = 380 everywhere on the line and the
+//!   arc, and the whole path lies over the table (x 700 .. 1000, |y| <= 150), so the ball keeps
+//!   exactly 380 - 350 = 30 mm from the table there; the retract, the joint move (both ends at
+//!   least 40 mm higher, between two nearby configurations) and the approach line (coming down
+//!   to z = 400) stay at least that far. The arm is much farther: the flange is 300 mm
 //!   above the TCP, the wrist centre 85 mm above that (z 785), and the base cylinder (radius
 //!   350 mm) ends 250 mm short of the table's x = 600. So the smallest distance is 30 mm, from
 //!   the tool's ball to the table.
@@ -43,12 +49,15 @@
 //! - a post on the arc (x 830 .. 870, y 130 .. 170, z 350 .. 450): the arc passes through its
 //!   middle (850, 150); the line (y = 0) stays 130 - 20 = 110 mm from it;
 //! - `S2_rt` written with the flipped wrist's confdata `[0, -2, -2, 1]`;
-//! - the actions written in the other order.
+//! - the actions written in the other order;
+//! - the retract written `RelTool(S3_rt,0,0,40.000)`: 40 mm down, the ball's lowest point at
+//!   z = 340, inside the table (and not the cell's retract).
 
 use crate::common::controller::JointPath;
 use crate::common::dense::{check_module, Report};
-use crate::common::library::{load_cell, load_robot};
+use crate::common::library::{irb1400, load_cell, load_robot};
 use crate::common::temp_cell;
+use nalgebra::Point3;
 
 /// The orientation R of every robtarget, `[w, x, y, z]` with the module's 9 decimals.
 const R: &str = "[0.000000000,0.258819045,0.965925826,0.000000000]";
@@ -82,7 +91,8 @@ fn cell_text(post: Option<Post>) -> String {
          points:\n\
          \x20 - {{ name: S1, robtarget: [[700, 0, 400], {q}] }}\n\
          \x20 - {{ name: S2, robtarget: [[1000, 0, 400], {q}], move: linear, do: [{{ set_do: [doPen, 1] }}, {{ wait_time: 0.5 }}] }}\n\
-         \x20 - {{ name: S3, robtarget: [[700, 0, 400], {q}], move: circular, via: [850, 150, 400] }}\n\
+         \x20 - {{ name: S3, robtarget: [[700, 0, 400], {q}], move: circular, via: [850, 150, 400], retract: 40 }}\n\
+         \x20 - {{ name: S4, robtarget: [[1000, 100, 400], {q}], approach: 50 }}\n\
          planner: {{ clearance: 10 }}\n\
          motion: {{ speed: v100, zone: fine }}\n"
     )
@@ -96,8 +106,8 @@ fn robtarget(name: &str, xyz: [f64; 3], conf: [i32; 4]) -> String {
 }
 
 /// The module the contract writes for the cell, with `S2_rt`'s confdata `s2_conf`, the actions
-/// `actions` (RAPID lines) and the header's min clearance `min_mm`.
-fn module_text(s2_conf: [i32; 4], actions: &[&str], min_mm: f64) -> String {
+/// `actions` (RAPID lines), the retract's `dz` and the header's min clearance `min_mm`.
+fn module_text(s2_conf: [i32; 4], actions: &[&str], retract_dz: f64, min_mm: f64) -> String {
     let mut body = String::new();
     for a in actions {
         body += &format!("        {a}\n");
@@ -109,10 +119,10 @@ fn module_text(s2_conf: [i32; 4], actions: &[&str], min_mm: f64) -> String {
          \x20   ! base: [0.0, 0.0, 0.0] yaw: 0.000\n\
          \x20   ! tool: tPen (declared below; collision shapes: tip)\n\
          \x20   ! frames: robtargets are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above\n\
-         \x20   ! moves: 2\n\
+         \x20   ! moves: 5\n\
          \x20   ! min clearance (mm): {min_mm:.1}\n\n\
          \x20   PERS tooldata tPen := [TRUE,[[0.000,0.000,300.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[1.000,[0.000,0.000,150.000],[1,0,0,0],0,0,0]];\n\n\
-         {}{}{}{}\n\
+         {}{}{}{}{}\n\
          \x20   PROC main()\n\
          \x20       ConfJ \\On;\n\
          \x20       ConfL \\On;\n\
@@ -120,12 +130,16 @@ fn module_text(s2_conf: [i32; 4], actions: &[&str], min_mm: f64) -> String {
          \x20       MoveL S2_rt, v100, fine, tPen;\n\
          {body}\
          \x20       MoveC S3_via, S3_rt, v100, fine, tPen;\n\
+         \x20       MoveL RelTool(S3_rt,0,0,{retract_dz:.3}), v100, fine, tPen;\n\
+         \x20       MoveJ RelTool(S4_rt,0,0,-50.000), v100, fine, tPen;\n\
+         \x20       MoveL S4_rt, v100, fine, tPen;\n\
          \x20   ENDPROC\n\
          ENDMODULE\n",
         robtarget("S1_rt", [700.0, 0.0, 400.0], UPRIGHT),
         robtarget("S2_rt", [1000.0, 0.0, 400.0], s2_conf),
         robtarget("S3_via", [850.0, 150.0, 400.0], UPRIGHT),
         robtarget("S3_rt", [700.0, 0.0, 400.0], UPRIGHT),
+        robtarget("S4_rt", [1000.0, 100.0, 400.0], UPRIGHT),
     )
 }
 
@@ -142,16 +156,43 @@ fn check(post: Option<Post>, module: &str) -> Result<Report, Vec<String>> {
 
 #[test]
 fn a_line_and_an_arc_over_the_table_keep_the_clearance_worked_out_by_hand() {
-    let r = check(None, &module_text(UPRIGHT, &ACTIONS, 30.0))
+    let r = check(None, &module_text(UPRIGHT, &ACTIONS, -40.0, 30.0))
         .unwrap_or_else(|f| panic!("{}", f.join("\n")));
-    // The smallest distance: the ball to the table, 30 mm, everywhere on both paths.
+    // The smallest distance: the ball to the table, 30 mm, on the line and the arc.
     assert_eq!(r.smallest.link, "tool shape 'tip'");
     assert_eq!(r.smallest.obstacle, "table");
     assert!((r.smallest.mm - 30.0).abs() < 0.01, "{:?}", r.smallest);
     assert_eq!(
         (r.run.followed, r.program.lines_and_arcs, r.program.actions),
-        (2, 2, 2)
+        (4, 4, 2)
     );
+    // Where each move ends: the TCP by forward kinematics of the joints the controller reached.
+    let robot = irb1400();
+    let ends: Vec<[f64; 3]> = r
+        .run
+        .moves
+        .iter()
+        .map(|m| {
+            (robot.tool0(&m.to) * Point3::new(0.0, 0.0, 300.0))
+                .coords
+                .into()
+        })
+        .collect();
+    let by_hand = [
+        [700.0, 0.0, 400.0],    // S1
+        [1000.0, 0.0, 400.0],   // S2
+        [700.0, 0.0, 400.0],    // S3
+        [700.0, 0.0, 440.0],    // S3's retract, 40 mm up
+        [1000.0, 100.0, 450.0], // S4's approach pose, 50 mm up
+        [1000.0, 100.0, 400.0], // S4
+    ];
+    assert_eq!(ends.len(), by_hand.len());
+    for (e, h) in ends.iter().zip(&by_hand) {
+        assert!(
+            (0..3).all(|k| (e[k] - h[k]).abs() < 0.01),
+            "a move ends at {e:?}, by hand {h:?}"
+        );
+    }
     // The arc: radius 150 mm, half a turn.
     let arcs: Vec<_> = r
         .run
@@ -162,12 +203,16 @@ fn a_line_and_an_arc_over_the_table_keep_the_clearance_worked_out_by_hand() {
             JointPath::Straight => None,
         })
         .collect();
-    assert_eq!(arcs.len(), 2);
-    assert!(arcs[0].0.is_none(), "the MoveL is a line");
+    assert_eq!(arcs.len(), 4);
+    assert!(
+        [0, 2, 3].iter().all(|&k| arcs[k].0.is_none()),
+        "the MoveLs are lines"
+    );
     let (radius, angle) = arcs[1].0.expect("the MoveC is an arc");
     assert!((radius - 150.0).abs() < 1e-6 && (angle - 180.0).abs() < 1e-6);
-    // The joints: a4 = 0, a6 - a1 = 30, a1 = atan2(y, x) of the TCP; on the line a1 = 0, on the
-    // arc at most asin(150 / 850), where the line from the origin touches the circle.
+    // The joints: a4 = 0, a6 - a1 = 30, a1 = atan2(y, x) of the TCP; on the line and the
+    // retract a1 = 0, on the approach line atan2(100, 1000), on the arc at most asin(150 / 850),
+    // where the line from the origin touches the circle.
     let mut top = 0.0f64;
     for (k, (_, samples)) in arcs.iter().enumerate() {
         for s in samples.iter() {
@@ -176,10 +221,11 @@ fn a_line_and_an_arc_over_the_table_keep_the_clearance_worked_out_by_hand() {
                 a[3].abs() < 1e-6 && (a[5] - a[0] - 30.0).abs() < 1e-6,
                 "{a:?}"
             );
-            if k == 0 {
-                assert!(a[0].abs() < 1e-6, "{a:?}");
+            match k {
+                1 => top = top.max(a[0]),
+                3 => assert!((a[0] - 0.1f64.atan().to_degrees()).abs() < 1e-6, "{a:?}"),
+                _ => assert!(a[0].abs() < 1e-6, "{a:?}"),
             }
-            top = top.max(a[0]);
         }
     }
     let want = (150.0f64 / 850.0).asin().to_degrees();
@@ -191,7 +237,7 @@ fn a_line_and_an_arc_over_the_table_keep_the_clearance_worked_out_by_hand() {
 
 #[test]
 fn a_line_through_a_post_fails() {
-    let f = check(Some(ON_LINE), &module_text(UPRIGHT, &ACTIONS, 0.0))
+    let f = check(Some(ON_LINE), &module_text(UPRIGHT, &ACTIONS, -40.0, 0.0))
         .expect_err("the line crosses the post");
     assert!(
         f.iter().any(|m| m.contains("MoveL S2_rt")
@@ -207,7 +253,7 @@ fn a_line_through_a_post_fails() {
 
 #[test]
 fn an_arc_through_a_post_fails() {
-    let f = check(Some(ON_ARC), &module_text(UPRIGHT, &ACTIONS, 0.0))
+    let f = check(Some(ON_ARC), &module_text(UPRIGHT, &ACTIONS, -40.0, 0.0))
         .expect_err("the arc crosses the post");
     assert!(
         f.iter().any(|m| m.contains("MoveC S3_via, S3_rt")
@@ -223,8 +269,8 @@ fn an_arc_through_a_post_fails() {
 
 #[test]
 fn a_line_ending_in_another_branchs_confdata_fails() {
-    let f =
-        check(None, &module_text(FLIPPED, &ACTIONS, 30.0)).expect_err("ConfL stops the controller");
+    let f = check(None, &module_text(FLIPPED, &ACTIONS, -40.0, 30.0))
+        .expect_err("ConfL stops the controller");
     assert!(
         f.iter()
             .any(|m| m.contains("MoveL S2_rt") && m.contains("ConfL would stop the controller")),
@@ -234,10 +280,29 @@ fn a_line_ending_in_another_branchs_confdata_fails() {
 
 #[test]
 fn actions_out_of_the_cells_order_fail() {
-    let f = check(None, &module_text(UPRIGHT, &[ACTIONS[1], ACTIONS[0]], 30.0))
-        .expect_err("the actions' order");
+    let f = check(
+        None,
+        &module_text(UPRIGHT, &[ACTIONS[1], ACTIONS[0]], -40.0, 30.0),
+    )
+    .expect_err("the actions' order");
     assert!(
         f.iter().any(|m| m.contains("its actions are written")),
+        "{f:#?}"
+    );
+}
+
+#[test]
+fn a_retract_written_the_wrong_way_fails() {
+    let f =
+        check(None, &module_text(UPRIGHT, &ACTIONS, 40.0, 30.0)).expect_err("down into the table");
+    assert!(
+        f.iter()
+            .any(|m| m.contains("its target must be RelTool(S3_rt,0,0,-40.000)")),
+        "{f:#?}"
+    );
+    assert!(
+        f.iter()
+            .any(|m| m.contains("MoveL RelTool(S3_rt,0,0,40.000)") && m.contains("from table")),
         "{f:#?}"
     );
 }
