@@ -9,7 +9,8 @@
 //!   move's tooldata's tframe on tool0, the world frame the cell frame with the robot base at
 //!   the header's placement, or the robot base itself (`robot.frame: base`). A confdata that
 //!   matches no solution in range fails (quadrants admitted within `QUADRANT_TOL_DEG`).
-//! - `MoveL`, `MoveC`: the TCP path from the current TCP pose (`paths.rs`), followed by the IK
+//! - `MoveL`, `MoveC`: the TCP path from the current TCP pose (`paths.rs`; a circle point's
+//!   orientation must be the path's at its arc fraction), followed by the IK
 //!   branch that continues from the current joints (`follow.rs`: jumps, ranges and the wrist
 //!   singularity fail, located by progress and TCP position), ending in the target's written
 //!   confdata (ConfL on). Every sample's TCP (forward kinematics of its joints) must lie on the
@@ -33,6 +34,9 @@ use nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion, Vect
 /// A sample's TCP lies this close to the programmed path (mm, deg).
 pub const TCP_PATH_MM: f64 = 0.01;
 pub const TCP_PATH_DEG: f64 = 0.001;
+/// A `MoveC` circle point's orientation lies this close to the path's at its arc fraction, deg
+/// (it only tells the way the orientation turns; a start reached by rounded joints moves it).
+pub const CIRCLE_POINT_DEG: f64 = 0.01;
 
 /// What the controller needs besides the module.
 pub struct Setup<'a> {
@@ -165,6 +169,20 @@ fn target(module: &Module, to: &ToPoint) -> ([i32; 4], Isometry3<f64>) {
     (r.conf, pose)
 }
 
+/// Why the circle point `circle` (its pose in the robot base frame) of the arc `tcp` is not as
+/// the module's contract writes it: its orientation the path's at its arc fraction (the
+/// controller reads it to tell which way the orientation turns), within
+/// [`CIRCLE_POINT_DEG`]; `None` when it is.
+fn circle_point_fault(tcp: &TcpPath, circle: &Isometry3<f64>) -> Option<String> {
+    let s = tcp.progress_at(&Point3::from(circle.translation.vector))?;
+    let off = tcp.at(s).rotation.angle_to(&circle.rotation).to_degrees();
+    (off > CIRCLE_POINT_DEG).then(|| {
+        format!(
+            "the circle point's orientation lies {off:.4} deg from the path's at its arc fraction {s:.4} (at most {CIRCLE_POINT_DEG} deg)"
+        )
+    })
+}
+
 /// Runs every instruction of `module` (module doc): the moves run, and every failure. A move the
 /// controller cannot complete ends the run there.
 pub fn run(module: &Module, setup: &Setup) -> (Run, Vec<String>) {
@@ -274,12 +292,13 @@ pub fn run(module: &Module, setup: &Setup) -> (Run, Vec<String>) {
                 let (conf, pose) = target(module, &m.to);
                 let from = robot.tool0(&start) * tframe;
                 let to = wobj_in_base * pose;
-                let tcp = match &m.circle {
+                let circle = m
+                    .circle
+                    .as_ref()
+                    .map(|c| wobj_in_base * target(module, c).1);
+                let tcp = match &circle {
                     None => TcpPath::line(&from, &to),
-                    Some(c) => {
-                        let circle = wobj_in_base * target(module, c).1;
-                        TcpPath::arc(&from, &Point3::from(circle.translation.vector), &to)
-                    }
+                    Some(c) => TcpPath::arc(&from, &Point3::from(c.translation.vector), &to),
                 };
                 let tcp = match tcp {
                     Ok(t) => t,
@@ -288,6 +307,9 @@ pub fn run(module: &Module, setup: &Setup) -> (Run, Vec<String>) {
                         break;
                     }
                 };
+                if let Some(e) = circle.as_ref().and_then(|c| circle_point_fault(&tcp, c)) {
+                    fail(e);
+                }
                 let tool0_at = |s: f64| tcp.at(s) * tframe.inverse();
                 let samples = match follow(ik, &tool0_at, start, &setup.reach, setup.step_mm) {
                     Ok(samples) => samples,

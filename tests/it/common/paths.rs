@@ -167,6 +167,24 @@ impl TcpPath {
         Isometry3::from_parts(Translation3::from(p.coords), rot)
     }
 
+    /// The progress at which an arc passes `p` (a point of its circle: its angle from the start
+    /// about the centre over the arc's angle); `None` for a line or a point beyond the arc.
+    pub fn progress_at(&self, p: &Point3<f64>) -> Option<f64> {
+        let Shape::Arc {
+            centre,
+            u,
+            w,
+            angle,
+            ..
+        } = &self.shape
+        else {
+            return None;
+        };
+        let d = p - centre;
+        let t = d.dot(w).atan2(d.dot(u)).rem_euclid(std::f64::consts::TAU);
+        (t <= *angle).then_some(t / angle)
+    }
+
     /// The TCP's path length, mm.
     pub fn length_mm(&self) -> f64 {
         match &self.shape {

@@ -50,6 +50,9 @@
 //!   middle (850, 150); the line (y = 0) stays 130 - 20 = 110 mm from it;
 //! - `S2_rt` written with the flipped wrist's confdata `[0, -2, -2, 1]`;
 //! - the actions written in the other order;
+//! - `S3_via` written turned 90 deg further about the tool's z axis (`Ry(180) Rz(120)`,
+//!   `[0, sin 60, cos 60, 0]`): both ends have R, so the orientation at every arc fraction is R,
+//!   and a circle point 90 deg off tells the controller another way of turning;
 //! - the retract written `RelTool(S3_rt,0,0,40.000)`: 40 mm down, the ball's lowest point at
 //!   z = 340, inside the table (and not the cell's retract).
 
@@ -303,6 +306,26 @@ fn a_retract_written_the_wrong_way_fails() {
     assert!(
         f.iter()
             .any(|m| m.contains("MoveL RelTool(S3_rt,0,0,40.000)") && m.contains("from table")),
+        "{f:#?}"
+    );
+}
+
+#[test]
+fn a_circle_point_turned_off_the_path_fails() {
+    let module = module_text(UPRIGHT, &ACTIONS, -40.0, 30.0);
+    let turned = "[0.000000000,0.866025404,0.500000000,0.000000000]";
+    let module: String = module
+        .lines()
+        .map(|l| match l.contains("CONST robtarget S3_via") {
+            true => l.replace(R, turned),
+            false => l.to_string(),
+        } + "\n")
+        .collect();
+    assert!(module.contains(turned));
+    let f = check(None, &module).expect_err("the circle point's orientation");
+    assert!(
+        f.iter().any(|m| m.contains("MoveC S3_via")
+            && m.contains("lies 90.0000 deg from the path's at its arc fraction 0.5000")),
         "{f:#?}"
     );
 }
