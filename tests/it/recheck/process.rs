@@ -19,6 +19,10 @@
 //! - `S4` (1000, 100, 400), reached by joint with `approach: 50`: `MoveJ RelTool(S4_rt,0,0,
 //!   -50.000)` (the TCP at (1000, 100, 450)), then the approach line `MoveL S4_rt`.
 //!
+//! The same cell is also written with its robtargets in a work object `wPen` (uframe at
+//! (600, -300, 0) turned 90 deg about z), every move naming it: the poses in the cell frame, and
+//! so everything worked out below, are the same.
+//!
 //! # What the check must find, by hand
 //!
 //! - Clearance: the ball's lowest point is at z = 400 - 20 = 380 everywhere on the line and the
@@ -76,45 +80,114 @@ const ON_ARC: Post = ([830.0, 130.0, 350.0], [870.0, 170.0, 450.0]);
 const UPRIGHT: [i32; 4] = [0, 0, 0, 0];
 const FLIPPED: [i32; 4] = [0, -2, -2, 1];
 
-/// The cell (module doc), with `post` as a second box.
-fn cell_text(post: Option<Post>) -> String {
+/// A robtarget's position as the cell and module write it: in the cell frame, or (`wobj`) in the
+/// work object `wPen`, whose uframe is at (600, -300, 0) turned 90 deg about z (its x axis the
+/// cell's y): cell (x, y, z) is wobj (y + 300, 600 - x, z).
+fn written(p: [f64; 3], wobj: bool) -> [f64; 3] {
+    match wobj {
+        true => [p[1] + 300.0, 600.0 - p[0], p[2]],
+        false => p,
+    }
+}
+
+/// R as the cell writes it: in the cell frame, or in `wPen`: `Rz(-90) R = Ry(180) Rz(120)`
+/// (`Rz(a) Ry(180) = Ry(180) Rz(-a)`), `[0, sin 60, cos 60, 0]`.
+fn cell_q(wobj: bool) -> &'static str {
+    match wobj {
+        true => "[0, 0.866025404, 0.5, 0]",
+        false => "[0, 0.258819045, 0.965925826, 0]",
+    }
+}
+
+/// The same with the module's 9 decimals.
+fn module_q(wobj: bool) -> &'static str {
+    match wobj {
+        true => "[0.000000000,0.866025404,0.500000000,0.000000000]",
+        false => R,
+    }
+}
+
+/// `[x, y, z]` as the cell file writes it.
+fn xyz(p: [f64; 3]) -> String {
+    format!("[{}, {}, {}]", p[0], p[1], p[2])
+}
+
+/// The cell (module doc), with `post` as a second box, its robtargets in the work object `wPen`
+/// when `wobj`.
+fn cell_text(post: Option<Post>, wobj: bool) -> String {
     let post = post.map_or(String::new(), |(lo, hi)| {
         format!(
             "  - {{ name: post, box: {{ min: [{}, {}, {}], max: [{}, {}, {}] }} }}\n",
             lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]
         )
     });
-    let q = "[0, 0.258819045, 0.965925826, 0]";
+    let q = cell_q(wobj);
+    let w = |p: [f64; 3]| xyz(written(p, wobj));
+    let frame = match wobj {
+        true => "wobj: { name: wPen, uframe: [[600, -300, 0], { zyx: [90, 0, 0] }] }\n",
+        false => "",
+    };
     format!(
         "module: Pen\n\
          robot: {{ urdf: URDF, base: [0, 0, 0] }}\n\
          tool:\n  name: tPen\n  tframe: [[0, 0, 300], [1, 0, 0, 0]]\n  mass: 1\n  cog: [0, 0, 150]\n\
          \x20 shapes:\n    - {{ name: tip, sphere: {{ centre: [0, 0, 300], radius: 20 }} }}\n\
+         {frame}\
          obstacles:\n  - {{ name: table, box: {{ min: [600, -300, 0], max: [1100, 300, 350] }} }}\n{post}\
          points:\n\
-         \x20 - {{ name: S1, robtarget: [[700, 0, 400], {q}] }}\n\
-         \x20 - {{ name: S2, robtarget: [[1000, 0, 400], {q}], move: linear, do: [{{ set_do: [doPen, 1] }}, {{ wait_time: 0.5 }}] }}\n\
-         \x20 - {{ name: S3, robtarget: [[700, 0, 400], {q}], move: circular, via: [850, 150, 400], retract: 40 }}\n\
-         \x20 - {{ name: S4, robtarget: [[1000, 100, 400], {q}], approach: 50 }}\n\
+         \x20 - {{ name: S1, robtarget: [{}, {q}] }}\n\
+         \x20 - {{ name: S2, robtarget: [{}, {q}], move: linear, do: [{{ set_do: [doPen, 1] }}, {{ wait_time: 0.5 }}] }}\n\
+         \x20 - {{ name: S3, robtarget: [{}, {q}], move: circular, via: {}, retract: 40 }}\n\
+         \x20 - {{ name: S4, robtarget: [{}, {q}], approach: 50 }}\n\
          planner: {{ clearance: 10 }}\n\
-         motion: {{ speed: v100, zone: fine }}\n"
+         motion: {{ speed: v100, zone: fine }}\n",
+        w(S1),
+        w(S2),
+        w(S1),
+        w(VIA),
+        w(S4),
     )
 }
 
-fn robtarget(name: &str, xyz: [f64; 3], conf: [i32; 4]) -> String {
+/// The cell-frame positions of S1 (and S3), S2, the arc's via and S4 (module doc).
+const S1: [f64; 3] = [700.0, 0.0, 400.0];
+const S2: [f64; 3] = [1000.0, 0.0, 400.0];
+const VIA: [f64; 3] = [850.0, 150.0, 400.0];
+const S4: [f64; 3] = [1000.0, 100.0, 400.0];
+
+fn robtarget(name: &str, at: [f64; 3], conf: [i32; 4], wobj: bool) -> String {
+    let p = written(at, wobj);
     format!(
-        "    CONST robtarget {name} := [[{:.3},{:.3},{:.3}],{R},[{},{},{},{}],[9E9,9E9,9E9,9E9,9E9,9E9]];\n",
-        xyz[0], xyz[1], xyz[2], conf[0], conf[1], conf[2], conf[3]
+        "    CONST robtarget {name} := [[{:.3},{:.3},{:.3}],{},[{},{},{},{}],[9E9,9E9,9E9,9E9,9E9,9E9]];\n",
+        p[0], p[1], p[2], module_q(wobj), conf[0], conf[1], conf[2], conf[3]
     )
 }
 
 /// The module the contract writes for the cell, with `S2_rt`'s confdata `s2_conf`, the actions
 /// `actions` (RAPID lines), the retract's `dz` and the header's min clearance `min_mm`.
 fn module_text(s2_conf: [i32; 4], actions: &[&str], retract_dz: f64, min_mm: f64) -> String {
+    module_in(s2_conf, actions, retract_dz, min_mm, false)
+}
+
+/// The same with the robtargets in `wPen` when `wobj` (every move names it).
+fn module_in(
+    s2_conf: [i32; 4],
+    actions: &[&str],
+    retract_dz: f64,
+    min_mm: f64,
+    wobj: bool,
+) -> String {
     let mut body = String::new();
     for a in actions {
         body += &format!("        {a}\n");
     }
+    let (wobjdata, on) = match wobj {
+        true => (
+            "    PERS wobjdata wPen := [FALSE,TRUE,\"\",[[600.000,-300.000,0.000],[0.707106781,0.000000000,0.000000000,0.707106781]],[[0,0,0],[1,0,0,0]]];\n",
+            "\\WObj:=wPen",
+        ),
+        false => ("", ""),
+    };
     format!(
         "MODULE Pen\n\
          \x20   ! planner: extensile\n\
@@ -124,25 +197,26 @@ fn module_text(s2_conf: [i32; 4], actions: &[&str], retract_dz: f64, min_mm: f64
          \x20   ! frames: robtargets are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above\n\
          \x20   ! moves: 5\n\
          \x20   ! min clearance (mm): {min_mm:.1}\n\n\
-         \x20   PERS tooldata tPen := [TRUE,[[0.000,0.000,300.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[1.000,[0.000,0.000,150.000],[1,0,0,0],0,0,0]];\n\n\
+         \x20   PERS tooldata tPen := [TRUE,[[0.000,0.000,300.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[1.000,[0.000,0.000,150.000],[1,0,0,0],0,0,0]];\n\
+         {wobjdata}\n\
          {}{}{}{}{}\n\
          \x20   PROC main()\n\
          \x20       ConfJ \\On;\n\
          \x20       ConfL \\On;\n\
-         \x20       MoveJ S1_rt, v100, fine, tPen;\n\
-         \x20       MoveL S2_rt, v100, fine, tPen;\n\
+         \x20       MoveJ S1_rt, v100, fine, tPen{on};\n\
+         \x20       MoveL S2_rt, v100, fine, tPen{on};\n\
          {body}\
-         \x20       MoveC S3_via, S3_rt, v100, fine, tPen;\n\
-         \x20       MoveL RelTool(S3_rt,0,0,{retract_dz:.3}), v100, fine, tPen;\n\
-         \x20       MoveJ RelTool(S4_rt,0,0,-50.000), v100, fine, tPen;\n\
-         \x20       MoveL S4_rt, v100, fine, tPen;\n\
+         \x20       MoveC S3_via, S3_rt, v100, fine, tPen{on};\n\
+         \x20       MoveL RelTool(S3_rt,0,0,{retract_dz:.3}), v100, fine, tPen{on};\n\
+         \x20       MoveJ RelTool(S4_rt,0,0,-50.000), v100, fine, tPen{on};\n\
+         \x20       MoveL S4_rt, v100, fine, tPen{on};\n\
          \x20   ENDPROC\n\
          ENDMODULE\n",
-        robtarget("S1_rt", [700.0, 0.0, 400.0], UPRIGHT),
-        robtarget("S2_rt", [1000.0, 0.0, 400.0], s2_conf),
-        robtarget("S3_via", [850.0, 150.0, 400.0], UPRIGHT),
-        robtarget("S3_rt", [700.0, 0.0, 400.0], UPRIGHT),
-        robtarget("S4_rt", [1000.0, 100.0, 400.0], UPRIGHT),
+        robtarget("S1_rt", S1, UPRIGHT, wobj),
+        robtarget("S2_rt", S2, s2_conf, wobj),
+        robtarget("S3_via", VIA, UPRIGHT, wobj),
+        robtarget("S3_rt", S1, UPRIGHT, wobj),
+        robtarget("S4_rt", S4, UPRIGHT, wobj),
     )
 }
 
@@ -150,8 +224,13 @@ const ACTIONS: [&str; 2] = ["SetDO doPen, 1;", "WaitTime 0.500;"];
 
 /// Runs the check on the cell with `post` and the module.
 fn check(post: Option<Post>, module: &str) -> Result<Report, Vec<String>> {
+    check_in(post, module, false)
+}
+
+/// The same with the cell's robtargets in `wPen` when `wobj`.
+fn check_in(post: Option<Post>, module: &str, wobj: bool) -> Result<Report, Vec<String>> {
     let dir = tempfile::tempdir().expect("tempdir");
-    let path = temp_cell(dir.path(), "pen.yaml", &cell_text(post));
+    let path = temp_cell(dir.path(), "pen.yaml", &cell_text(post, wobj));
     let cell = load_cell(&path);
     let robot = load_robot(&cell);
     check_module(&cell, &robot, module, "pen")
@@ -159,8 +238,15 @@ fn check(post: Option<Post>, module: &str) -> Result<Report, Vec<String>> {
 
 #[test]
 fn a_line_and_an_arc_over_the_table_keep_the_clearance_worked_out_by_hand() {
-    let r = check(None, &module_text(UPRIGHT, &ACTIONS, -40.0, 30.0))
-        .unwrap_or_else(|f| panic!("{}", f.join("\n")));
+    for wobj in [false, true] {
+        let module = module_in(UPRIGHT, &ACTIONS, -40.0, 30.0, wobj);
+        let r = check_in(None, &module, wobj).unwrap_or_else(|f| panic!("{}", f.join("\n")));
+        worked_out_by_hand(&r);
+    }
+}
+
+/// What the module doc works out for the cell without posts, in either frame.
+fn worked_out_by_hand(r: &Report) {
     // The smallest distance: the ball to the table, 30 mm, on the line and the arc.
     assert_eq!(r.smallest.link, "tool shape 'tip'");
     assert_eq!(r.smallest.obstacle, "table");
