@@ -61,7 +61,7 @@ pub enum JointPath {
     Followed {
         samples: Vec<Sample>,
         /// The TCP path in the robot base frame.
-        tcp: TcpPath,
+        tcp: Box<TcpPath>,
         /// The move's work object frame in the robot base frame, and its name, for messages.
         wobj_in_base: Isometry3<f64>,
         wobj: String,
@@ -349,7 +349,7 @@ pub fn run(module: &Module, setup: &Setup) -> (Run, Vec<String>) {
                     end,
                     JointPath::Followed {
                         samples,
-                        tcp,
+                        tcp: Box::new(tcp),
                         wobj_in_base,
                         wobj: m.wobj.clone().unwrap_or_else(|| "wobj0".into()),
                     },

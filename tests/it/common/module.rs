@@ -353,10 +353,10 @@ impl Module {
                         }
                     }
                 }
-                Instruction::Action(Action::GripLoad { load }) => {
-                    if load != "load0" && !self.loaddata.iter().any(|(k, _)| k == load) {
-                        return bad(format!("GripLoad {load}: no declared loaddata"));
-                    }
+                Instruction::Action(Action::GripLoad { load })
+                    if load != "load0" && !self.loaddata.iter().any(|(k, _)| k == load) =>
+                {
+                    return bad(format!("GripLoad {load}: no declared loaddata"));
                 }
                 _ => {}
             }
