@@ -7,8 +7,11 @@
 //! `collision` or `geometry`: only the cell types and parser and the robot's forward
 //! kinematics (which `robot`'s tests hold against RobotStudio). It also holds every via's wrist
 //! to the wrist schedule (the leg's wrists in proportion to the via's projection onto the leg's
-//! line in axes 1..3, clamped, rounded to 0.001 deg), computed here again. Robtarget points, the
-//! TCP, the work object and each move's speed and zone are checked in `tcp.rs`.
+//! line in axes 1..3, clamped, rounded to 0.001 deg), computed here again. A module of
+//! `MoveAbsJ` alone has its robtarget points, TCP, work object, speeds and zones checked in
+//! `tcp.rs`; a module that moves to robtargets is held to the cell's program in `program.rs`.
+//! Either way the routine is run as the controller runs it (`controller.rs`) and the clearance
+//! measured along all of it (`sweep.rs`); `docs/recheck.md` has the whole picture.
 //!
 //! # What the robot stands on: this check's own reading
 //!
