@@ -229,8 +229,13 @@ fn check(post: Option<Post>, module: &str) -> Result<Report, Vec<String>> {
 
 /// The same with the cell's robtargets in `wPen` when `wobj`.
 fn check_in(post: Option<Post>, module: &str, wobj: bool) -> Result<Report, Vec<String>> {
+    check_text(&cell_text(post, wobj), module)
+}
+
+/// The check of `module` for the cell file `cell`.
+fn check_text(cell: &str, module: &str) -> Result<Report, Vec<String>> {
     let dir = tempfile::tempdir().expect("tempdir");
-    let path = temp_cell(dir.path(), "pen.yaml", &cell_text(post, wobj));
+    let path = temp_cell(dir.path(), "pen.yaml", cell);
     let cell = load_cell(&path);
     let robot = load_robot(&cell);
     check_module(&cell, &robot, module, "pen")
@@ -412,6 +417,51 @@ fn a_circle_point_turned_off_the_path_fails() {
     assert!(
         f.iter().any(|m| m.contains("MoveC S3_via")
             && m.contains("lies 90.0000 deg from the path's at its arc fraction 0.5000")),
+        "{f:#?}"
+    );
+}
+
+/// The cell with a revisit of `S2` by a line from `S4` (along -y at z = 400, over the table)
+/// and `motion.cycle`, and its module: `MoveL S2_rt` (the revisit), then the closing leg
+/// `MoveJ S1_rt` (with `closing`), seven moves after the first.
+fn cycle(closing: bool) -> (String, String) {
+    let cell = cell_text(None, false)
+        .replace("planner:", "  - { revisit: S2, move: linear }\nplanner:")
+        .replace("zone: fine }", "zone: fine, cycle: true }");
+    let close = match closing {
+        true => "        MoveJ S1_rt, v100, fine, tPen;\n",
+        false => "",
+    };
+    let module = module_text(UPRIGHT, &ACTIONS, -40.0, 30.0)
+        .replace(
+            "! moves: 5",
+            &format!("! moves: {}", 6 + usize::from(closing)),
+        )
+        .replace(
+            "    ENDPROC",
+            &format!("        MoveL S2_rt, v100, fine, tPen;\n{close}    ENDPROC"),
+        );
+    (cell, module)
+}
+
+#[test]
+fn a_revisit_and_the_closing_leg_are_run_and_held_to_the_cell() {
+    let (cell, module) = cycle(true);
+    let r = check_text(&cell, &module).unwrap_or_else(|f| panic!("{}", f.join("\n")));
+    // Eight motions: the revisit's line is followed, the closing leg is a joint move ending at
+    // S1 (700, 0, 400); the line keeps the ball 30 mm over the table, so nothing is farther.
+    assert_eq!((r.run.moves.len(), r.run.followed), (8, 5));
+    let robot = irb1400();
+    let tcp = |k: usize| robot.tool0(&r.run.moves[k].to) * Point3::new(0.0, 0.0, 300.0);
+    assert!((tcp(6) - Point3::new(1000.0, 0.0, 400.0)).norm() < 0.01);
+    assert!((tcp(7) - Point3::new(700.0, 0.0, 400.0)).norm() < 0.01);
+    assert!(r.smallest.mm <= 30.0 + 1e-6, "{:?}", r.smallest);
+    // Without the closing leg the routine ends away from the first point.
+    let (cell, module) = cycle(false);
+    let f = check_text(&cell, &module).expect_err("the cycle is not closed");
+    assert!(
+        f.iter().any(|m| m.contains("the closing leg to point 'S1'")
+            && m.contains("found the routine's end")),
         "{f:#?}"
     );
 }
