@@ -21,7 +21,10 @@
 //!
 //! The same cell is also written with its robtargets in a work object `wPen` (uframe at
 //! (600, -300, 0) turned 90 deg about z), every move naming it: the poses in the cell frame, and
-//! so everything worked out below, are the same.
+//! so everything worked out below, are the same. And once more with the robot standing at
+//! (100, 200, 0) turned 90 deg and `robot.frame: base`: every box and pose of the cell moved
+//! with it (cell (100 - y, 200 + x, z) for base (x, y, z), orientations `Rz(90) R = Ry(180)
+//! Rz(-60)`), so the module's robtargets, written in the base frame, are the first module's.
 //!
 //! # What the check must find, by hand
 //!
@@ -464,4 +467,43 @@ fn a_revisit_and_the_closing_leg_are_run_and_held_to_the_cell() {
             && m.contains("found the routine's end")),
         "{f:#?}"
     );
+}
+
+/// The cell moved with the robot to (100, 200, 0), yaw 90, `robot.frame: base` (module doc),
+/// and its module.
+fn in_base_frame() -> (String, String) {
+    let turned = |p: [f64; 3]| xyz([100.0 - p[1], 200.0 + p[0], p[2]]);
+    let mut cell = cell_text(None, false)
+        .replace(
+            "base: [0, 0, 0] }",
+            "base: [100, 200, 0], yaw: 90, frame: base }",
+        )
+        .replace(
+            "min: [600, -300, 0], max: [1100, 300, 350]",
+            "min: [-200, 800, 0], max: [400, 1300, 350]",
+        )
+        .replace(cell_q(false), "[0, -0.5, 0.866025404, 0]");
+    for p in [S1, S2, VIA, S4] {
+        cell = cell.replace(&xyz(p), &turned(p));
+    }
+    let module = module_text(UPRIGHT, &ACTIONS, -40.0, 30.0)
+        .replace(
+            "! base: [0.0, 0.0, 0.0] yaw: 0.000",
+            "! base: [100.0, 200.0, 0.0] yaw: 90.000",
+        )
+        .lines()
+        .map(|l| match l.trim_start().starts_with("! frames:") {
+            true => "    ! frames: robtargets are given in the robot's base frame\n".to_string(),
+            false => format!("{l}\n"),
+        })
+        .collect();
+    (cell, module)
+}
+
+#[test]
+fn the_same_cell_moved_with_the_robot_and_written_in_its_base_frame_gives_the_same_figures() {
+    let (cell, module) = in_base_frame();
+    assert!(cell.contains("[100, 900, 400]") && cell.contains("via: [-50, 1050, 400]"));
+    let r = check_text(&cell, &module).unwrap_or_else(|f| panic!("{}", f.join("\n")));
+    worked_out_by_hand(&r);
 }
