@@ -21,6 +21,7 @@
 //! reaches its target from wherever the robot is (a `MoveL` or `MoveC` cannot be first). The
 //! result, [`Run`], holds each move's joint path for the clearance check (`dense.rs`).
 
+use super::data::iso;
 use super::follow::{follow, Sample};
 use super::library::Robot;
 use super::module::Module;
@@ -29,7 +30,7 @@ use super::paths::TcpPath;
 use super::reach::Reach;
 use super::routine::{Instruction, MoveKind, ToPoint};
 use super::tcp::confdata;
-use nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
+use nalgebra::{Isometry3, Point3, Translation3, Vector3};
 
 /// A sample's TCP lies this close to the programmed path (mm, deg).
 pub const TCP_PATH_MM: f64 = 0.01;
@@ -123,13 +124,6 @@ pub struct Run {
     pub wrist_least_deg: f64,
 }
 
-fn iso(p: [f64; 3], q: [f64; 4]) -> Isometry3<f64> {
-    Isometry3::from_parts(
-        Translation3::new(p[0], p[1], p[2]),
-        UnitQuaternion::from_quaternion(Quaternion::new(q[0], q[1], q[2], q[3])),
-    )
-}
-
 /// The tframe of tooldata `tool` (tool0: the flange).
 fn tframe(module: &Module, tool: &str) -> Result<Isometry3<f64>, String> {
     if tool == "tool0" {
@@ -216,9 +210,10 @@ pub fn run(module: &Module, setup: &Setup) -> (Run, Vec<String>) {
             Instruction::Move(m) => m,
         };
         let mut fail = |why: String| failures.push(format!("{label}: {why}"));
-        let (to, path) = match m.kind {
-            MoveKind::AbsJ => (module.target(m.to.data()), JointPath::Straight),
-            MoveKind::J => {
+        // A move to a robtarget: this check's IK and the move's TCP on tool0.
+        let cartesian = match m.kind {
+            MoveKind::AbsJ => None,
+            _ => {
                 let ik = match &setup.ik {
                     Ok(ik) => ik,
                     Err(e) => {
@@ -228,16 +223,21 @@ pub fn run(module: &Module, setup: &Setup) -> (Run, Vec<String>) {
                         break;
                     }
                 };
-                if !conf_j {
-                    fail("MoveJ before ConfJ \\On".into());
-                }
-                let tframe = match tframe(module, &m.tool) {
-                    Ok(t) => t,
+                match tframe(module, &m.tool) {
+                    Ok(t) => Some((ik, t)),
                     Err(e) => {
                         fail(e);
                         break;
                     }
-                };
+                }
+            }
+        };
+        let (to, path) = match (m.kind, cartesian) {
+            (MoveKind::AbsJ, _) => (module.target(m.to.data()), JointPath::Straight),
+            (MoveKind::J, Some((ik, tframe))) => {
+                if !conf_j {
+                    fail("MoveJ before ConfJ \\On".into());
+                }
                 let (conf, pose) = target(module, &m.to);
                 let tcp = base_from_world * uframe(module, m.wobj.as_deref()) * pose;
                 let tool0 = tcp * tframe.inverse();
@@ -261,16 +261,7 @@ pub fn run(module: &Module, setup: &Setup) -> (Run, Vec<String>) {
                     .max(back.rotation.angle_to(&tcp.rotation).to_degrees());
                 (end, JointPath::Straight)
             }
-            MoveKind::L | MoveKind::C => {
-                let ik = match &setup.ik {
-                    Ok(ik) => ik,
-                    Err(e) => {
-                        fail(format!(
-                            "this check's inverse kinematics cannot solve the robot: {e}"
-                        ));
-                        break;
-                    }
-                };
+            (MoveKind::L | MoveKind::C, Some((ik, tframe))) => {
                 if !conf_l {
                     fail(format!("{} before ConfL \\On", m.kind.name()));
                 }
@@ -280,13 +271,6 @@ pub fn run(module: &Module, setup: &Setup) -> (Run, Vec<String>) {
                         m.kind.name()
                     ));
                     break;
-                };
-                let tframe = match tframe(module, &m.tool) {
-                    Ok(t) => t,
-                    Err(e) => {
-                        fail(e);
-                        break;
-                    }
                 };
                 let wobj_in_base = base_from_world * uframe(module, m.wobj.as_deref());
                 let (conf, pose) = target(module, &m.to);
@@ -355,6 +339,7 @@ pub fn run(module: &Module, setup: &Setup) -> (Run, Vec<String>) {
                     },
                 )
             }
+            (_, None) => unreachable!("a move to a robtarget has its IK and tframe"),
         };
         if let Err(e) = robot.check_range6(&to) {
             fail(format!("ends out of range: {e}"));
