@@ -136,6 +136,10 @@ impl Error {
                 use crate::robot::controller::MAX_AXIS_DEG as R;
                 Some(format!("the fault is in the URDF named above: gen-rapid reads one serial chain of six revolute joints up to tool0, finite numbers, lengths within {} km, ranges within -{R} .. {R} deg, cylinders on the links of joints 1..3 (README, \"The cell file\")", crate::input::MAX_MAGNITUDE / 1e6))
             }
+            Error::Robot {
+                source: RobotError::UnknownModel { .. },
+                ..
+            } => Some(format!("the robots built into gen-rapid are {} (`gen-rapid robots` lists them); any other robot is named by its URDF file with robot.urdf", crate::robot::models::names())),
             Error::Robot { .. } => Some("robot.urdf is resolved relative to the cell file".into()),
             Error::Place(PlaceError::Range { .. }) => Some("joint values are controller values (what a jointtarget holds) and must lie in the robot's ranges, all six axes; a point without axes 4..6 takes robot.wrist".into()),
             Error::Place(PlaceError::Robtarget { .. }) => Some("a robtarget is the TCP pose [[x, y, z], [q1, q2, q3, q4]] in the work object's frame (mm, quaternion [w, x, y, z]) of the tool's TCP (tool.tframe); confdata [cf1, cf4, cf6, cfx] picks one of the arm's solutions, without it the one nearest the previous point is taken".into()),

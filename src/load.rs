@@ -61,7 +61,7 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
         Ok(c) => c,
         Err(e) => return Err(fail(e.into(), Some(text))),
     };
-    match Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref()) {
+    match robot_of(&cell) {
         Ok(robot) => Ok(Loaded { cell, text, robot }),
         Err(source) => {
             let loc = match source {
@@ -74,5 +74,14 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
             };
             Err(fail(Error::Robot { source, loc }, Some(text)))
         }
+    }
+}
+
+/// The cell's robot: the shipped model `robot.model` names (read from the text built into the
+/// binary), or the URDF `robot.urdf` names with its controller file (read from files).
+pub fn robot_of(cell: &Cell) -> Result<Robot, RobotError> {
+    match &cell.robot.model {
+        Some(name) => Robot::shipped(name),
+        None => Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref()),
     }
 }

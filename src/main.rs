@@ -4,6 +4,7 @@
 use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
 use gen_rapid::cli::compare::{compare, CompareOptions};
 use gen_rapid::cli::locate::{locate, LocateOptions};
+use gen_rapid::cli::robots::{list, RobotsOptions};
 use gen_rapid::cli::run::{run, RunOptions};
 use gen_rapid::plan::Method;
 use std::path::{Path, PathBuf};
@@ -22,6 +23,7 @@ Examples:
                                                   your own module template, routine Weld
   gen-rapid compare cells/trunk.yaml --svg all.svg      the three methods side by side
   gen-rapid locate cells/trunk-auto.yaml --svg r.svg    where the base may stand (region R)
+  gen-rapid robots                                      the robots built in (robot.model)
 
 A minimal cell (mm and degrees; joint values are the controller's, as in a jointtarget):
   module: Demo
@@ -125,6 +127,16 @@ enum Command {
     /// clear of the obstacles, its area and bounding box, and the base with the largest margin.
     /// For a fixed base, also whether that base lies in R.
     Locate(LocateArgs),
+    /// The robots built into gen-rapid (the names robot.model takes), each with its reach,
+    /// coupling, axis ranges and speeds.
+    Robots(RobotsArgs),
+}
+
+#[derive(Args)]
+struct RobotsArgs {
+    /// Print the list as JSON on stdout instead of text.
+    #[arg(long)]
+    json: bool,
 }
 
 #[derive(Args)]
@@ -240,6 +252,7 @@ fn main() -> ExitCode {
         Some(Command::Locate(a)) => {
             check_outputs(&[("CELL", Some(&a.cell))], &[("--svg", a.svg.as_deref())])
         }
+        Some(Command::Robots(_)) => {}
     }
     let quiet = cli.command.is_none() && cli.run.quiet;
     let result = match cli.command {
@@ -267,6 +280,7 @@ fn main() -> ExitCode {
             svg: a.svg,
             json: a.json,
         }),
+        Some(Command::Robots(a)) => list(&RobotsOptions { json: a.json }),
     };
     match result {
         Ok(summary) => {

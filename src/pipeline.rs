@@ -11,7 +11,7 @@
 
 use crate::collision::CollisionModel;
 use crate::error::{Error, Failure};
-pub use crate::load::{load, Loaded};
+pub use crate::load::{load, robot_of, Loaded};
 use crate::output::program::{self, RobotFacts};
 use crate::output::rapid::{self, ModuleTemplate, RapidError, TemplateError};
 use crate::place::{self, locate::Sketch, Placed, Survey};

@@ -71,9 +71,13 @@ pub const QUATERNION_NORM_TOL: f64 = 1e-3;
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct RobotSpec {
-    /// Resolved against the cell file's directory.
+    /// `robot.urdf`, resolved against the cell file's directory; empty with `robot.model`.
     pub urdf_path: PathBuf,
+    /// Where the robot is named: `robot.urdf`'s value, or `robot.model`'s.
     pub urdf_loc: Loc,
+    /// `robot.model`: a robot built into gen-rapid, by name (the load stage knows the names);
+    /// `None` with `robot.urdf`.
+    pub model: Option<String>,
     /// `robot.controller`: the controller file named explicitly, resolved against the cell
     /// file's directory. `None`: the `<stem>.controller.yaml` beside the URDF, if there is one.
     pub controller_path: Option<PathBuf>,

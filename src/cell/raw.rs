@@ -32,7 +32,11 @@ pub struct RawCell {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawRobot {
-    pub urdf: Spanned<String>,
+    /// A URDF file; or `model`, a shipped robot (exactly one of the two).
+    #[serde(default)]
+    pub urdf: Option<Spanned<String>>,
+    #[serde(default)]
+    pub model: Option<Spanned<String>>,
     pub base: Spanned<RawBase>,
     #[serde(default)]
     pub yaw: Option<Spanned<f64>>,

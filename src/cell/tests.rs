@@ -406,3 +406,40 @@ fn many_aliases_of_one_anchor_are_an_ordinary_cell() {
         .iter()
         .all(|p| p.target == cell.points[0].target));
 }
+
+/// `robot.model` names a robot instead of `robot.urdf`: one of the two, no controller file
+/// beside a model, each refusal at its line. The names themselves are the load stage's.
+#[test]
+fn robot_model_or_urdf_one_of_the_two() {
+    let model = MINIMAL.replace("urdf: ../robots/r.urdf", "model: irb120_3_58");
+    let c = parse_str(&model).expect("a model");
+    assert_eq!(c.robot.model.as_deref(), Some("irb120_3_58"));
+    assert_eq!(c.robot.urdf_path, Path::new(""));
+    assert_eq!((c.robot.urdf_loc.line, c.robot.urdf_loc.column), (3, 10));
+    assert_eq!(parse_str(MINIMAL).expect("a URDF").robot.model, None);
+    let refused = |text: &str, line: u64, needle: &str| {
+        let e = parse_str(text).expect_err(needle);
+        assert_eq!(e.loc().map(|l| l.line), Some(line), "{needle}: {e}");
+        assert!(e.to_string().contains(needle), "{needle}: {e}");
+    };
+    refused(
+        &MINIMAL.replace("  base:", "  model: irb1400\n  base:"),
+        4,
+        "robot.model and robot.urdf name the robot twice",
+    );
+    refused(
+        &MINIMAL.replace("  urdf: ../robots/r.urdf\n", ""),
+        3,
+        "names no robot",
+    );
+    refused(
+        &model.replace("  base:", "  controller: r.controller.yaml\n  base:"),
+        4,
+        "robot.controller goes with robot.urdf",
+    );
+    refused(
+        &model.replace("irb120_3_58", "''"),
+        3,
+        "robot.model must name a robot",
+    );
+}

@@ -6,6 +6,7 @@
 pub mod compare;
 pub mod locate;
 pub mod progress;
+pub mod robots;
 pub mod run;
 
 use crate::error::Error;
@@ -120,9 +121,13 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
 /// `compare`'s pictures).
 pub fn write_for(job: &crate::pipeline::Loaded, files: &[(&Path, &[u8])]) -> Result<(), Error> {
     let robot = &job.robot;
-    let read: Vec<&Path> = std::iter::once(robot.urdf_path.as_path())
-        .chain(robot.controller.source.as_deref())
-        .collect();
+    // A shipped model's files are built in: the run reads none.
+    let read: Vec<&Path> = match robot.model {
+        Some(_) => Vec::new(),
+        None => std::iter::once(robot.urdf_path.as_path())
+            .chain(robot.controller.source.as_deref())
+            .collect(),
+    };
     refuse_inputs(files, &read)?;
     write_all_atomically(files)
 }

@@ -133,8 +133,8 @@ fn shapes_called_far_are_clear_and_looks_from_link_1_are_the_looks() {
                         assert!(
                             distance_sq_point_aabb(&centre, &o.aabb) > reach * reach
                                 && solid_clear_of_box(&solid, &o.aabb, c),
-                            "'{}' called far but near '{}' at {six:?}",
-                            s.name,
+                            "{} called far but near '{}' at {six:?}",
+                            s.part,
                             o.name
                         );
                     }
@@ -215,8 +215,8 @@ fn a_tool_of_many_shapes_marks_only_far_shapes_and_answers_as_the_exact_test() {
                     for o in m.obstacles() {
                         assert!(
                             distance_sq_point_aabb(&centre, &o.aabb) > reach * reach,
-                            "'{}' called far but near '{}' at {six:?}",
-                            s.name,
+                            "{} called far but near '{}' at {six:?}",
+                            s.part,
                             o.name
                         );
                     }
@@ -353,8 +353,8 @@ fn a_tool_box_is_tested_as_its_distance_at_the_looks() {
                             assert_eq!(
                                 crate::geometry::obb_clear_of_aabb(ob, &o.aabb, cc),
                                 d > cc,
-                                "'{}' and '{}' at {cc} (distance {d}) at {six:?}",
-                                s.name,
+                                "{} and '{}' at {cc} (distance {d}) at {six:?}",
+                                s.part,
                                 o.name
                             );
                         }

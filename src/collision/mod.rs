@@ -5,12 +5,15 @@
 //! -> [`CollisionModel`], queried by the place stage (are a point's IK solutions usable?
 //! [`PoseCheck`]), by the configuration-space grid (node codes, `grid.rs`, `column.rs`) and by
 //! the planner (whole moves, `proof.rs`). The parts of the model ([`Part`]): the link
-//! cylinders of links 1..3 (the paper's lumped arm) and the tool's shapes (cylinder, box in the
-//! flange frame, ball; `parts.rs`), carried by axes 4..6 on the flange (the robot's `tool0`).
+//! cylinders on links 1..3 (the paper's lumped arm, with the cylinders that hold base_link's and
+//! link 4's: `Robot::cylinders`) and the flange's shapes, carried by axes 4..6 on the flange
+//! (the robot's `tool0`): the robot's own of links 5 and 6 (`Robot::flange_parts`) and the
+//! tool's (cylinder, box in the flange frame, ball), `parts.rs`.
 //! Every query takes all six axes, except the grid's node test of the arm. `clear.rs` holds the
 //! test of one part against one box, `look.rs` the tool looks of a leg's search. Tests in
 //! `tests.rs` (links, against parry3d and dense sampling), `tool_tests.rs` (the tool, the grid
-//! codes) and `look_tests.rs` (the looks against the exact test).
+//! codes), `look_tests.rs` (the looks against the exact test) and `robots_tests.rs` (every
+//! link of every shipped robot).
 //!
 //! # Node inspection (Ting & Jar 2006, section 3)
 //! The paper marks a configuration -1 when the arm hits an obstacle or is out of range, 0
@@ -71,6 +74,8 @@ mod near;
 mod parts;
 mod proof;
 #[cfg(test)]
+mod robots_tests;
+#[cfg(test)]
 mod tests;
 #[cfg(test)]
 pub(crate) mod tool_tests;
@@ -99,7 +104,8 @@ pub const CLIP_MARGIN_MM: f64 = 10_000.0;
 /// A part of the robot model, by name: a link cylinder or a tool shape.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Part {
-    /// The collision cylinder of a link (links 1..3), by link name.
+    /// A collision volume of a link (a cylinder of the lumped arm, or a link-5 or link-6 part
+    /// on the flange), by the name of the link whose geometry it holds.
     Link(String),
     /// A shape of the cell's tool, by its name in the `tool:` block.
     ToolShape(String),
@@ -227,7 +233,7 @@ impl CollisionModel {
         clearance_mm: f64,
         tool: Option<&Tool>,
     ) -> CollisionModel {
-        let tool = tool.and_then(|t| ToolData::new(robot, t));
+        let tool = ToolData::new(robot, tool);
         let obstacles = clip_to_workspace(
             robot,
             tool.as_ref(),
@@ -328,13 +334,14 @@ impl CollisionModel {
         self.placement
     }
 
-    /// Whether the model carries tool shapes (then axes 4..6 matter to every check).
+    /// Whether the model carries flange shapes, the tool's or the robot's own links 5 and 6
+    /// (then axes 4..6 matter to every check).
     pub fn has_tool(&self) -> bool {
         self.tool.is_some()
     }
 
-    /// The radius about the wrist centre of the ball that holds every tool shape for any wrist
-    /// angles, mm (`parts.rs`); `None` without a tool.
+    /// The radius about the wrist centre of the ball that holds every flange shape for any wrist
+    /// angles, mm (`parts.rs`); `None` without one.
     pub fn tool_radius_mm(&self) -> Option<f64> {
         self.tool.as_ref().map(|t| t.radius_mm)
     }
@@ -498,12 +505,11 @@ impl CollisionModel {
     fn part(&self, p: usize) -> Part {
         match p.checked_sub(self.cyl.len()) {
             None => Part::Link(self.robot.cylinders[p].link.clone()),
-            Some(s) => Part::ToolShape(
-                self.tool
-                    .as_ref()
-                    .map(|t| t.shapes[s].name.clone())
-                    .unwrap_or_default(),
-            ),
+            Some(s) => self
+                .tool
+                .as_ref()
+                .map(|t| t.shapes[s].part.clone())
+                .unwrap_or_else(|| Part::ToolShape(String::new())),
         }
     }
 

@@ -1,7 +1,10 @@
-//! The parts of the robot model besides the link cylinders: the tool's shapes, carried by link 6
-//! (the flange), and the bounds the proofs need for any part: `R[i][P]`, how far any point of
-//! part `P` can be from joint `i`'s axis (module doc of `proof.rs`), and the ball about the wrist
-//! centre that holds the whole tool for any wrist angles.
+//! The parts of the robot model besides the link cylinders: the shapes link 6 (the flange)
+//! carries, the robot's own (link 5's ball and link 6's cylinders, `Robot::flange_parts`) and the
+//! tool's, and the bounds the proofs need for any part: `R[i][P]`, how far any point of part `P`
+//! can be from joint `i`'s axis (module doc of `proof.rs`), and the ball about the wrist centre
+//! that holds every flange shape for any wrist angles. The checks treat the robot's flange
+//! shapes as the tool's (the same looks, proofs and bounds); only their names differ: a message
+//! names them as links (`link 'link_5' of the robot`).
 //!
 //! # The generic bound
 //!
@@ -37,9 +40,10 @@
 //! axes 1..3 only; for a spherical wrist (axes 4..6 meeting at `o5`, as on the IRB 1400) `C` is
 //! the wrist centre and `|o5 - C|` = 0.
 
+use super::Part;
 use crate::cell::{Tool, ToolGeometry};
 use crate::geometry::{Cylinder, Obb, Point, Solid, Sphere};
-use crate::robot::Robot;
+use crate::robot::{FlangeShape, Robot};
 use nalgebra::{Isometry3, Matrix3, Vector3};
 
 /// A tool shape in the link-6 frame, mm.
@@ -90,6 +94,21 @@ impl Local {
                     half: Vector3::from_fn(|k, _| 0.5 * (max_mm[k] - min_mm[k]).abs()),
                 }
             }
+        }
+    }
+
+    /// A robot's flange part (`Robot::flange_parts`), already in the link-6 frame.
+    fn from_flange(shape: &FlangeShape) -> Local {
+        match *shape {
+            FlangeShape::Cylinder { a, b, radius_mm } => Local::Cylinder {
+                a,
+                b,
+                radius: radius_mm.max(0.0),
+            },
+            FlangeShape::Ball { centre, radius_mm } => Local::Sphere {
+                centre,
+                radius: radius_mm.max(0.0),
+            },
         }
     }
 
@@ -160,10 +179,11 @@ impl Local {
     }
 }
 
-/// One tool shape: its name (for messages), its place on link 6, and `R[i][S]`.
+/// One flange shape: the part it is (a link's, or a tool shape, by name, for messages), its
+/// place on link 6, and `R[i][S]`.
 #[derive(Clone, Debug)]
 pub(super) struct ShapeData {
-    pub name: String,
+    pub part: Part,
     pub local: Local,
     /// A ball holding the shape: centre in the link-6 frame and radius, mm.
     pub ball: (Point, f64),
@@ -173,7 +193,8 @@ pub(super) struct ShapeData {
     pub reach_mm: [f64; 6],
 }
 
-/// The tool: its shapes and the ball about the wrist centre `C` that holds them all.
+/// What the flange carries: the robot's link-5 and link-6 parts, then the tool's shapes, and the
+/// ball about the wrist centre `C` that holds them all.
 #[derive(Clone, Debug)]
 pub(super) struct ToolData {
     pub shapes: Vec<ShapeData>,
@@ -186,10 +207,22 @@ pub(super) struct ToolData {
 }
 
 impl ToolData {
-    /// The tool's collision volumes; `None` when it has no shapes (then there is nothing to
-    /// check). The robot must have six joints (as [`Robot::load`] guarantees).
-    pub fn new(robot: &Robot, tool: &Tool) -> Option<ToolData> {
-        if tool.shapes.is_empty() {
+    /// The flange's collision volumes: the robot's flange parts, then the shapes of `tool` (if
+    /// any); `None` when there are none (then there is nothing to check). The robot must have
+    /// six joints (as [`Robot::load`] guarantees).
+    pub fn new(robot: &Robot, tool: Option<&Tool>) -> Option<ToolData> {
+        let locals: Vec<(Part, Local)> = robot
+            .flange_parts
+            .iter()
+            .map(|p| (Part::Link(p.link.clone()), Local::from_flange(&p.shape)))
+            .chain(tool.into_iter().flat_map(|t| &t.shapes).map(|s| {
+                (
+                    Part::ToolShape(s.name.clone()),
+                    Local::from_tool(&s.geometry, &robot.flange_to_tool0),
+                )
+            }))
+            .collect();
+        if locals.is_empty() {
             return None;
         }
         let j = &robot.joints;
@@ -208,11 +241,9 @@ impl ToolData {
             (t_par + h_par).hypot(t_perp + h_perp)
         };
         let mut radius_mm: f64 = 0.0;
-        let shapes = tool
-            .shapes
-            .iter()
-            .map(|s| {
-                let local = Local::from_tool(&s.geometry, &robot.flange_to_tool0);
+        let shapes = locals
+            .into_iter()
+            .map(|(part, local)| {
                 let (hull, grow) = local.hull();
                 let mut reach_mm = reach(robot, 5, &hull, grow);
                 let about_o5 = hull.iter().map(wrist).fold(0.0, f64::max) + grow;
@@ -220,7 +251,7 @@ impl ToolData {
                 reach_mm[3] = reach_mm[3].min(off_axis + about_o5);
                 radius_mm = radius_mm.max(off_axis + about_o5);
                 ShapeData {
-                    name: s.name.clone(),
+                    part,
                     ball: local.ball(),
                     inner_mm: local.inner_radius(),
                     local,

@@ -11,6 +11,7 @@
 //! - [`comparison`]: the three searches side by side (paper section 6);
 //! - [`preview`]: the self-contained 3D preview page (HTML + WebGL) of the cell and the motion;
 //! - [`report`]: the run's results as JSON (`--report`);
+//! - [`robots`]: the robots built into gen-rapid, listed (`gen-rapid robots`);
 //! - [`poses`]: the robot's frames in the cell (forward kinematics of the load stage's robot
 //!   model, for the preview and the report; kinematics is not collision).
 
@@ -22,6 +23,7 @@ pub mod preview;
 pub mod program;
 pub mod rapid;
 pub mod report;
+pub mod robots;
 pub mod topview_svg;
 
 use crate::plan::{Clearance, Part};

@@ -25,6 +25,11 @@ impl<'a> Poser<'a> {
         }
     }
 
+    /// The robot's base (base_link) in the cell frame.
+    pub fn base(&self) -> Isometry3<f64> {
+        self.cell_from_robot
+    }
+
     /// Links 1..6 (the children of joints 1..6) in the cell frame.
     pub fn links(&self, axes_deg: &[f64; 6]) -> [Isometry3<f64>; 6] {
         self.robot

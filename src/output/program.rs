@@ -20,6 +20,8 @@ use std::path::Path;
 /// What the module states about the robot and checks against it, from the robot files.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RobotFacts {
+    /// The shipped robot the cell names, as the header states it (`None`: a URDF file).
+    pub model: Option<String>,
     /// The URDF's file name.
     pub urdf: String,
     /// The controller file's name, `None` when there is none (serial arm, URDF limits).
@@ -40,7 +42,16 @@ impl RobotFacts {
                 .unwrap_or_default()
         };
         let c = &robot.controller;
+        // A shipped model by its name and ABB's name of the variant.
+        let model = robot
+            .model
+            .as_deref()
+            .map(|name| match crate::robot::models::find(name) {
+                Some(m) => format!("{name} ({}, built into gen-rapid)", m.title),
+                None => format!("{name} (built into gen-rapid)"),
+            });
         RobotFacts {
+            model,
             urdf: shown(&robot.urdf_path),
             controller: c.source.as_deref().map(shown),
             parallelogram: c.coupling == Coupling::Parallelogram,
@@ -107,6 +118,7 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
         header: Header {
             generator: format!("gen-rapid {}", env!("CARGO_PKG_VERSION")),
             cell_file,
+            model: robot.model.clone(),
             urdf: robot.urdf.clone(),
             controller: robot.controller.clone(),
             parallelogram: robot.parallelogram,

@@ -1,9 +1,14 @@
 //! The robot model: a serial chain of six revolute joints read from a URDF, the collision
-//! cylinders of its first three links, and the controller's joint convention.
+//! cylinders of its links, and the controller's joint convention.
 //!
 //! Stage: URDF (+ controller file) -> [`Robot`]. Paper: Ting & Jar (2006) section 3 and 6 lump
 //! the arm into its first three links, each a cylinder; this module holds those cylinders and the
-//! forward kinematics that places them.
+//! forward kinematics that places them. Beyond the paper, every link from the base to the flange
+//! may carry cylinders ([`Robot::collision`], as the URDF gives them); `lumped.rs` carries them
+//! the way the checks do: the base's and link 4's as cylinders about axis 1 and axis 4 that ride
+//! on links 1 and 3 ([`Robot::cylinders`]), link 5's and link 6's on the flange
+//! ([`Robot::flange_parts`]). `models.rs` holds the robots built into the binary
+//! ([`Robot::shipped`], `robot.model`).
 //!
 //! Units: the URDF speaks metres and radians; [`urdf`] converts once, at load, to millimetres
 //! and degrees. Every joint value that crosses this module's API is a **controller value** in
@@ -15,6 +20,10 @@
 mod chain;
 pub mod controller;
 pub mod ik;
+mod lumped;
+pub mod models;
+#[cfg(test)]
+mod models_tests;
 pub mod urdf;
 
 use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
@@ -40,29 +49,84 @@ pub struct RevoluteJoint {
     pub axis: Unit<Vector3<f64>>,
 }
 
-/// A collision cylinder attached to the child link of `joints[joint_index]` (0, 1 or 2).
+/// A collision cylinder of the lumped arm, carried by the child link of `joints[joint_index]`
+/// (0, 1 or 2): that link's own cylinder, or one that encloses the cylinder of `link` for every
+/// angle of the axis between them (`lumped.rs`: base_link's on link 1, link 4's on link 3).
 #[derive(Clone, Debug)]
 pub struct LinkCylinder {
+    /// The link whose collision geometry it holds (messages name it).
     pub link: String,
     pub joint_index: usize,
-    /// Axis end points in the link frame, mm.
+    /// Axis end points in the carrying link's frame, mm.
     pub a: Point3<f64>,
     pub b: Point3<f64>,
     pub radius_mm: f64,
+}
+
+/// The frame a collision cylinder of the URDF is fixed in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LinkFrame {
+    /// The root link (base_link): fixed to the robot base.
+    Base,
+    /// The child link of `joints[i]` (`i` 0..5: link_1 .. link_6).
+    Child(usize),
+}
+
+/// A collision cylinder as the URDF gives it, on its own link.
+#[derive(Clone, Debug)]
+pub struct OwnCylinder {
+    pub link: String,
+    pub frame: LinkFrame,
+    /// Axis end points in the link's frame, mm.
+    pub a: Point3<f64>,
+    pub b: Point3<f64>,
+    pub radius_mm: f64,
+}
+
+/// A part of the robot the flange (link 6) carries besides the tool: link 6's own cylinders,
+/// and a ball about axis 6 that holds a link-5 cylinder for every angle of axis 6 (`lumped.rs`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FlangePart {
+    /// The link whose collision geometry it holds.
+    pub link: String,
+    pub shape: FlangeShape,
+}
+
+/// A flange part's shape in link 6's frame, mm.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FlangeShape {
+    Cylinder {
+        a: Point3<f64>,
+        b: Point3<f64>,
+        radius_mm: f64,
+    },
+    Ball {
+        centre: Point3<f64>,
+        radius_mm: f64,
+    },
 }
 
 /// A robot ready for kinematics and collision checks.
 #[derive(Clone, Debug)]
 pub struct Robot {
     pub name: String,
-    /// The URDF file it came from, for messages.
+    /// The URDF file it came from, for messages (a shipped model's: `<model>.urdf`, built in).
     pub urdf_path: PathBuf,
+    /// The shipped model it is (`robot.model`; its files are built into the binary), or `None`
+    /// for a URDF read from a file.
+    pub model: Option<String>,
     /// Exactly six revolute joints, base to flange.
     pub joints: Vec<RevoluteJoint>,
     /// Pose of `tool0` in the last joint's child link frame (identity if the URDF has no tool0).
     pub flange_to_tool0: Isometry3<f64>,
-    /// Collision cylinders of links 1..3, in chain order.
+    /// The lumped arm's collision cylinders on links 1..3, in chain order (`lumped.rs`): per
+    /// link of base_link .. link_4 in turn, its cylinders in the URDF's order.
     pub cylinders: Vec<LinkCylinder>,
+    /// Link 5's and link 6's collision volumes on the flange, in that order (`lumped.rs`).
+    pub flange_parts: Vec<FlangePart>,
+    /// Every collision cylinder of the URDF on its own link, base_link to link_6 (what the
+    /// preview draws; the lumped ones above enclose them).
+    pub collision: Vec<OwnCylinder>,
     pub controller: Controller,
 }
 
@@ -85,6 +149,8 @@ pub enum RobotError {
     },
     #[error("controller file {path}: {message}")]
     Controller { path: PathBuf, message: String },
+    #[error("unknown robot model '{name}'")]
+    UnknownModel { name: String },
 }
 
 /// Which limit a pose breaks.
@@ -160,18 +226,35 @@ impl Robot {
         )
     }
 
+    /// The shipped model `name` (`robot.model`): its URDF and controller file as built into
+    /// the binary ([`models`]), "read" here from their text. Its `urdf_path` and controller
+    /// source are the file names (`<name>.urdf`, `<name>.controller.yaml`), for the module
+    /// header; no file is read.
+    pub fn shipped(name: &str) -> Result<Robot, RobotError> {
+        let Some(m) = models::find(name) else {
+            return Err(RobotError::UnknownModel {
+                name: name.to_string(),
+            });
+        };
+        let urdf = PathBuf::from(format!("{}.urdf", m.name));
+        let controller = PathBuf::from(format!("{}.controller.yaml", m.name));
+        let mut robot =
+            urdf::robot_from_urdf(&urdf, m.urdf, Some((controller.as_path(), m.controller)))?;
+        robot.model = Some(m.name.to_string());
+        Ok(robot)
+    }
+
     /// The bundled IRB 1400 (URDF and controller file compiled in); for tests and benchmarks.
+    /// Its paths are the repository's (`robots/irb1400.urdf`), as a cell naming the files would
+    /// give them, and it is not marked a shipped model (a cell's `robot.model: irb1400` is).
     pub fn irb1400() -> Robot {
         let path = Path::new("robots/irb1400.urdf");
         let controller = Path::new("robots/irb1400.controller.yaml");
-        match urdf::robot_from_urdf(
-            path,
-            include_str!("../../robots/irb1400.urdf"),
-            Some((
-                controller,
-                include_str!("../../robots/irb1400.controller.yaml"),
-            )),
-        ) {
+        let Some(m) = models::find("irb1400") else {
+            // The table is a constant of the build; reaching this is a build defect.
+            panic!("the IRB 1400 is not among the shipped models");
+        };
+        match urdf::robot_from_urdf(path, m.urdf, Some((controller, m.controller))) {
             Ok(r) => r,
             // The bundled files are tested; reaching this is a build defect, not user input.
             Err(e) => panic!("bundled IRB 1400 model is invalid: {e}"),

@@ -6,12 +6,13 @@
 //! a fixed child named `tool0` after joint 6 gives the tool0 frame and ends the chain (joints
 //! below tool0 belong to a tool and are ignored; a 7th revolute joint before it is refused:
 //! gen-rapid plans six-axis arms). Each child link of joints 1..3 must carry
-//! collision geometry, cylinders only (the paper's lumped model); collision geometry of links
-//! 4..6 is ignored (the forearm cylinder covers the wrist, paper section 6). Every number the
-//! chain uses must be finite, lengths within 1 km, axis ranges within two turns each way.
+//! collision geometry (the paper's lumped model); the root link (base_link) and links 4..6 may
+//! (beyond the paper: `lumped.rs` carries them); every collision geometry is a cylinder. Every
+//! number the chain uses must be finite, lengths within 1 km, axis ranges within two turns each
+//! way.
 
 use super::controller::{self, AxisSpec, Controller, Coupling};
-use super::{LinkCylinder, RevoluteJoint, Robot, RobotError};
+use super::{LinkFrame, OwnCylinder, RevoluteJoint, Robot, RobotError};
 use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
 use std::path::Path;
 
@@ -85,6 +86,7 @@ pub fn robot_from_urdf(
     let mut joints = Vec::new();
     let mut pending = Isometry3::identity(); // fixed joints since the last revolute one
     let mut flange_to_tool0 = Isometry3::identity();
+    let root_name = root.clone();
     let mut link = root;
     let mut visited = std::collections::HashSet::new();
     loop {
@@ -171,55 +173,20 @@ pub fn robot_from_urdf(
         )));
     }
 
-    let mut cylinders = Vec::new();
-    for (index, (joint, _, _)) in joints.iter().enumerate().take(3) {
-        let Some(l) = urdf.links.iter().find(|l| l.name == joint.child.link) else {
-            return Err(model_err(format!(
-                "link '{}' is not defined",
-                joint.child.link
-            )));
-        };
-        if l.collision.is_empty() {
+    // The root's cylinders (optional), then each child link's: links 1..3 must carry some.
+    let mut collision = cylinders_of(&urdf, &root_name, LinkFrame::Base).map_err(model_err)?;
+    for (index, (joint, _, _)) in joints.iter().enumerate() {
+        let own =
+            cylinders_of(&urdf, &joint.child.link, LinkFrame::Child(index)).map_err(model_err)?;
+        if own.is_empty() && index < 3 {
             return Err(model_err(format!(
                 "link '{}' (moved by joint {}, '{}') carries no <collision> cylinder: gen-rapid could not check its moves (the paper's model lumps the arm into its first three links, each a cylinder)",
-                l.name,
+                joint.child.link,
                 index + 1,
                 joint.name
             )));
         }
-        for c in &l.collision {
-            let urdf_rs::Geometry::Cylinder { radius, length } = c.geometry else {
-                return Err(model_err(format!(
-                    "link '{}': collision geometry must be a cylinder (gen-rapid lumps links 1..3 into cylinders)",
-                    l.name
-                )));
-            };
-            if !(radius > 0.0 && length > 0.0) {
-                return Err(model_err(format!(
-                    "link '{}': cylinder radius and length must be positive",
-                    l.name
-                )));
-            }
-            if radius > MAX_LENGTH_M || length > MAX_LENGTH_M {
-                return Err(model_err(format!(
-                    "link '{}': cylinder radius and length must be at most {MAX_LENGTH_M} m",
-                    l.name
-                )));
-            }
-            if let Some(fault) = pose_fault(&c.origin) {
-                return Err(model_err(format!("link '{}' <collision>: {fault}", l.name)));
-            }
-            // URDF cylinders are centred on their origin, axis along local z.
-            let pose = pose_mm(&c.origin);
-            let half = length * MM_PER_M / 2.0;
-            cylinders.push(LinkCylinder {
-                link: l.name.clone(),
-                joint_index: index,
-                a: pose * Point3::new(0.0, 0.0, -half),
-                b: pose * Point3::new(0.0, 0.0, half),
-                radius_mm: radius * MM_PER_M,
-            });
-        }
+        collision.extend(own);
     }
 
     let controller = match controller_file {
@@ -235,22 +202,74 @@ pub fn robot_from_urdf(
             .map_err(model_err)?,
     };
 
+    let joints: Vec<RevoluteJoint> = joints
+        .into_iter()
+        .map(|(j, origin, axis)| RevoluteJoint {
+            name: j.name.clone(),
+            child_link: j.child.link.clone(),
+            origin,
+            axis,
+        })
+        .collect();
+    let (cylinders, flange_parts) = super::lumped::lump(&joints, &collision);
     Ok(Robot {
         name: urdf.name.clone(),
         urdf_path: path.to_path_buf(),
-        joints: joints
-            .into_iter()
-            .map(|(j, origin, axis)| RevoluteJoint {
-                name: j.name.clone(),
-                child_link: j.child.link.clone(),
-                origin,
-                axis,
-            })
-            .collect(),
+        model: None,
+        joints,
         flange_to_tool0,
         cylinders,
+        flange_parts,
+        collision,
         controller,
     })
+}
+
+/// The collision cylinders of the link named `name` (none when it has no `<collision>`), in
+/// the link's frame, mm; the message says what is wrong with one that cannot be used.
+fn cylinders_of(
+    urdf: &urdf_rs::Robot,
+    name: &str,
+    frame: LinkFrame,
+) -> Result<Vec<OwnCylinder>, String> {
+    let Some(l) = urdf.links.iter().find(|l| l.name == name) else {
+        return Err(format!("link '{name}' is not defined"));
+    };
+    let mut out = Vec::new();
+    for c in &l.collision {
+        let urdf_rs::Geometry::Cylinder { radius, length } = c.geometry else {
+            return Err(format!(
+                "link '{}': collision geometry must be a cylinder (gen-rapid carries every link as cylinders)",
+                l.name
+            ));
+        };
+        if !(radius > 0.0 && length > 0.0) {
+            return Err(format!(
+                "link '{}': cylinder radius and length must be positive",
+                l.name
+            ));
+        }
+        if radius > MAX_LENGTH_M || length > MAX_LENGTH_M {
+            return Err(format!(
+                "link '{}': cylinder radius and length must be at most {MAX_LENGTH_M} m",
+                l.name
+            ));
+        }
+        if let Some(fault) = pose_fault(&c.origin) {
+            return Err(format!("link '{}' <collision>: {fault}", l.name));
+        }
+        // URDF cylinders are centred on their origin, axis along local z.
+        let pose = pose_mm(&c.origin);
+        let half = length * MM_PER_M / 2.0;
+        out.push(OwnCylinder {
+            link: l.name.clone(),
+            frame,
+            a: pose * Point3::new(0.0, 0.0, -half),
+            b: pose * Point3::new(0.0, 0.0, half),
+            radius_mm: radius * MM_PER_M,
+        });
+    }
+    Ok(out)
 }
 
 /// A serial convention from the URDF's own limits and velocities.

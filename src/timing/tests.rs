@@ -437,6 +437,29 @@ fn fly_by_is_never_slower_strictly_faster_and_continuous() {
     assert_eq!(total(&plan, "z50"), total(&plan, "fine"));
 }
 
+/// Every shipped robot's controller file states its accelerations as its speeds x 4.6875
+/// /s (full speed in 0.4 s on the quintic ramp, as the IRB 1400's: docs/robots.md), so a
+/// move of each axis over one second's worth of its own speed takes 1.4 s in the estimate.
+/// Fails with an axis that reaches its speed faster or slower, or a speed the estimate does
+/// not take from the robot's own file.
+#[test]
+fn every_shipped_robot_reaches_full_speed_in_0_4_s() {
+    for m in crate::robot::models::MODELS {
+        let robot = crate::robot::Robot::shipped(m.name).expect("shipped");
+        for (k, a) in robot.controller.axes.iter().enumerate() {
+            let v = a.speed_deg_s;
+            assert!(
+                close(a.acceleration(), v * 4.6875, 1e-9),
+                "{} axis {}: {} deg/s^2 for {v} deg/s",
+                m.name,
+                k + 1,
+                a.acceleration()
+            );
+            assert!(close(axis_time_s(v, v, a.acceleration()), 1.4, 1e-12));
+        }
+    }
+}
+
 #[test]
 fn missing_acceleration_defaults_to_a_0_4_s_ramp() {
     let a = AxisSpec {

@@ -573,3 +573,53 @@ fn an_output_that_is_a_link_writes_the_file_it_leads_to() {
     let written = std::fs::read_to_string(&file).expect("file");
     assert!(written.starts_with("MODULE "), "{written}");
 }
+
+#[test]
+fn robots_lists_the_shipped_models_as_text_and_json() {
+    let names = [
+        "irb1400",
+        "irb120_3_58",
+        "irb1200_5_90",
+        "irb1600_8_145",
+        "irb2400_12_155",
+        "irb2600_12_165",
+        "irb4600_60_205",
+    ];
+    let o = gen_rapid(&["robots"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    for n in names {
+        assert!(
+            text.contains(&format!("\n{n}: ")) || text.starts_with(&format!("{n}: ")),
+            "{n}:\n{text}"
+        );
+    }
+    assert!(
+        text.contains("irb2400_12_155: ABB IRB 2400-12/1.55, reach 1550.0 mm, parallelogram"),
+        "{text}"
+    );
+    assert!(
+        text.contains("  axis 3 - axis 2: -60 .. 65 deg (the coupled range)"),
+        "{text}"
+    );
+    assert_eq!(stderr(&o).lines().count(), 1, "{}", stderr(&o));
+    let o = gen_rapid(&["robots", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let list: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON on stdout");
+    let list = list.as_array().expect("an array");
+    assert_eq!(
+        list.iter()
+            .map(|r| r["model"].as_str().unwrap_or(""))
+            .collect::<Vec<_>>(),
+        names
+    );
+    for r in list {
+        assert_eq!(r["axes"].as_array().map(Vec::len), Some(6), "{r}");
+        assert!(r["reach_mm"].as_f64().is_some_and(|x| x > 500.0), "{r}");
+    }
+    assert_eq!(list[6]["reach_mm"].as_f64(), Some(2050.8));
+    assert_eq!(list[6]["axes"][4]["min_deg"].as_f64(), Some(-120.0));
+    // A subcommand reads no cell: a stray argument is a usage error.
+    let o = gen_rapid(&["robots", "cells/trunk.yaml"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+}

@@ -239,7 +239,7 @@ fn report_facts_agree_with_the_module_and_independent_kinematics() {
             // The part named: a link cylinder of the robot, or a shape of the cell's tool.
             let named = &m["min_clearance"]["name"];
             match m["min_clearance"]["part"].as_str() {
-                Some("link") => assert!(robot.cylinders.iter().any(|l| named == l.link.as_str())),
+                Some("link") => assert!(robot.collision.iter().any(|l| named == l.link.as_str())),
                 Some("tool") => assert!(cell
                     .tool
                     .as_ref()

@@ -291,3 +291,65 @@ fn the_tcp_check_sees_a_robtarget_its_jointtarget_misses() {
         assert!(f.iter().any(|m| m.contains(needle)), "{needle}: {f:#?}");
     }
 }
+
+/// `robots/irb1600_8_145.urdf` without the collision cylinders of links 4..6 (the lumped arm of
+/// links 1..3 alone, as gen-rapid checked a URDF before it carried every link).
+fn without_the_wrist(urdf: &str) -> String {
+    let mut out = urdf.to_string();
+    for link in ["link_4", "link_5", "link_6"] {
+        let open = format!(r#"<collision name="{link}">"#);
+        let start = out
+            .find(&open)
+            .unwrap_or_else(|| panic!("{link}'s collision"));
+        let end =
+            start + out[start..].find("</collision>").expect("its end") + "</collision>".len();
+        out.replace_range(start..end, "");
+    }
+    out
+}
+
+#[test]
+fn the_dense_check_carries_every_link_and_a_route_for_links_1_to_3_alone_fails_it() {
+    // tests/ok/irb1600_link4_detour.yaml: a sensor box only link 4 can reach on the direct
+    // swing. Planned for the same robot with links 4..6 stripped from its URDF, the route goes
+    // straight through it; the dense check, carrying every link of the shipped robot, says
+    // which link hits, and holds the stripped robot's route clear for links 1..3.
+    let case = root().join("tests/ok/irb1600_link4_detour.yaml");
+    let text = std::fs::read_to_string(&case).expect("cell");
+    let dir = tempfile::tempdir().expect("tempdir");
+    let urdf = std::fs::read_to_string(root().join("robots/irb1600_8_145.urdf")).expect("urdf");
+    std::fs::write(dir.path().join("bare.urdf"), without_the_wrist(&urdf)).expect("write urdf");
+    std::fs::copy(
+        root().join("robots/irb1600_8_145.controller.yaml"),
+        dir.path().join("bare.controller.yaml"),
+    )
+    .expect("copy controller");
+    let bare_text = text.replace("model: irb1600_8_145", "urdf: bare.urdf");
+    assert_ne!(bare_text, text);
+    let bare_path = dir.path().join("bare.yaml");
+    std::fs::write(&bare_path, &bare_text).expect("write cell");
+    let o = gen_rapid(&[arg(&bare_path), "-q"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let module = String::from_utf8(o.stdout).expect("utf-8");
+    assert!(
+        !module.contains("via01_01"),
+        "links 1..3 alone swing straight:\n{module}"
+    );
+
+    let bare_cell = load_cell(&bare_path);
+    let bare_robot = load_robot(&bare_cell);
+    check_module(&bare_cell, &bare_robot, &module, "links 1..3")
+        .unwrap_or_else(|f| panic!("{f:#?}"));
+    let cell = load_cell(&case);
+    let robot = load_robot(&cell);
+    let f = check_module(&cell, &robot, &module, "every link").expect_err("link 4 hits the sensor");
+    assert!(
+        f.iter()
+            .any(|m| m.contains("link_4 is") && m.contains("from sensor")),
+        "{f:#?}"
+    );
+    // And the module on file, planned with every link, passes.
+    let golden =
+        std::fs::read_to_string(root().join("tests/ok/irb1600_link4_detour.mod")).expect("module");
+    check_module(&cell, &robot, &golden, "on file").unwrap_or_else(|f| panic!("{f:#?}"));
+}

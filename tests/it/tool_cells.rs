@@ -6,7 +6,7 @@
 //! within the clearance of a box.
 
 use crate::common::dense::check_module;
-use crate::common::library::{load_cell, parse_cell, plan_every_method, Cell, Planned, Robot};
+use crate::common::library::{load_cell, load_robot, parse_cell, plan_every_method, Cell, Planned};
 use crate::common::root;
 
 fn modules(cell: &Cell, grid_deg: f64, what: &str) -> Vec<(String, String)> {
@@ -53,8 +53,7 @@ fn the_tool_cells_plan_with_every_method_and_the_dense_check_holds_arm_and_tool(
             cell.tool.as_ref().is_some_and(|t| !t.shapes.is_empty()),
             "{stem} has a tool with shapes"
         );
-        let robot = Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref())
-            .expect("robot");
+        let robot = load_robot(&cell);
         let planned = modules(&cell, grid_deg, stem);
         assert!(
             planned.iter().any(|(m, _)| m == "extensile") && planned.len() >= 2,
@@ -82,8 +81,7 @@ fn the_torch_without_its_volume_plans_a_route_that_drags_it_through_a_box() {
     assert_ne!(bare_text, text);
     let bare = parse_cell(&path, &bare_text).unwrap_or_else(|e| panic!("{e}\n{bare_text}"));
     assert!(bare.tool.as_ref().is_some_and(|t| t.shapes.is_empty()));
-    let robot =
-        Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref()).expect("robot");
+    let robot = load_robot(&cell);
     let with = modules(&cell, 2.0, "torch-trunk");
     let without = modules(&bare, 2.0, "torch-trunk without shapes");
     // The routes planned without the torch's volume, checked with it: the forearm's cylinder

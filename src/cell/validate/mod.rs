@@ -34,7 +34,7 @@ use crate::precision::{LENGTH_DECIMALS, YAW_DECIMALS};
 use nalgebra::Point3;
 use serde_saphyr::Spanned;
 use std::collections::{BTreeMap, HashMap};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use values::{
     bounded, data_name, decimals, identifier, invalid, invalid_help, joint_value, loc, triple,
 };
@@ -90,14 +90,53 @@ pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
 
 // ---- sections ----
 
+/// The help line of a `robot:` that names no robot.
+const MODEL_HELP: &str = "`model: irb2600_12_165` names a robot built into gen-rapid (`gen-rapid robots` lists them), `urdf: FILE` a URDF file (relative to the cell file)";
+
 /// `robot:`.
 fn robot(path: &Path, r: &Spanned<RawRobot>) -> Result<RobotSpec, CellError> {
+    let whole = loc(r);
     let r = &r.value;
-    if r.urdf.value.trim().is_empty() {
-        return Err(invalid(loc(&r.urdf), "robot.urdf must name a URDF file"));
-    }
     let dir = path.parent().unwrap_or(Path::new(""));
-    let urdf_path = dir.join(&r.urdf.value);
+    let (urdf_path, urdf_loc, model) = match (&r.urdf, &r.model) {
+        (Some(u), None) => {
+            if u.value.trim().is_empty() {
+                return Err(invalid(loc(u), "robot.urdf must name a URDF file"));
+            }
+            (dir.join(&u.value), loc(u), None)
+        }
+        (None, Some(m)) => {
+            if m.value.trim().is_empty() {
+                return Err(invalid_help(
+                    loc(m),
+                    "robot.model must name a robot",
+                    MODEL_HELP,
+                ));
+            }
+            if let Some(c) = &r.controller {
+                return Err(invalid_help(
+                    loc(c),
+                    "robot.controller goes with robot.urdf, not with robot.model",
+                    "a shipped model brings its own controller file; to use another, name the URDF with robot.urdf and the controller file with robot.controller",
+                ));
+            }
+            (PathBuf::new(), loc(m), Some(m.value.clone()))
+        }
+        (Some(_), Some(m)) => {
+            return Err(invalid_help(
+                loc(m),
+                "robot.model and robot.urdf name the robot twice",
+                "give one of them: robot.model names a robot built into gen-rapid (`gen-rapid robots` lists them), robot.urdf a URDF file",
+            ))
+        }
+        (None, None) => {
+            return Err(invalid_help(
+                whole,
+                "the robot section names no robot: give robot.model or robot.urdf",
+                MODEL_HELP,
+            ))
+        }
+    };
     let base = match &r.base.value {
         RawBase::Auto => Base::Auto,
         RawBase::Xyz(v) => {
@@ -158,7 +197,8 @@ fn robot(path: &Path, r: &Spanned<RawRobot>) -> Result<RobotSpec, CellError> {
     };
     Ok(RobotSpec {
         urdf_path,
-        urdf_loc: loc(&r.urdf),
+        urdf_loc,
+        model,
         controller_path,
         controller_loc: r.controller.as_ref().map(loc).unwrap_or_default(),
         base,

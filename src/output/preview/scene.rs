@@ -30,7 +30,7 @@ use crate::output::poses::Poser;
 use crate::place::{Placed, PlacedPoint, Placement};
 use crate::plan::motion::Profile;
 use crate::refine::Plan;
-use crate::robot::Robot;
+use crate::robot::{LinkFrame, Robot};
 use nalgebra::{Isometry3, Point3, Vector3};
 
 /// Keyframes at least this often along a move, s.
@@ -42,17 +42,21 @@ pub const CLEARANCE_SAMPLES: usize = 400;
 
 /// One shape of the robot model and the frame it hangs on.
 enum Carrier {
+    /// The robot's base (base_link).
+    Base,
     /// Link `k` (0-based: the child of joint `k + 1`).
     Link(usize),
     /// The flange (tool0), which carries the tool's shapes.
     Flange,
 }
 
-/// The robot's link cylinders, then the tool's shapes, each with the frame it hangs on.
+/// The robot's link cylinders as the URDF gives them (every link's, on its own link: what the
+/// checks' enclosures hold, `robot/lumped.rs`), then the tool's shapes, each with the frame it
+/// hangs on.
 fn shapes(robot: &Robot, cell: &Cell) -> (Vec<ShapeDef>, Vec<Carrier>) {
     let mut defs = Vec::new();
     let mut carriers = Vec::new();
-    for c in &robot.cylinders {
+    for c in &robot.collision {
         defs.push(ShapeDef {
             name: c.link.clone(),
             kind: ShapeKind::Link,
@@ -62,7 +66,10 @@ fn shapes(robot: &Robot, cell: &Cell) -> (Vec<ShapeDef>, Vec<Carrier>) {
                 to_mm: c.b.coords.into(),
             },
         });
-        carriers.push(Carrier::Link(c.joint_index));
+        carriers.push(match c.frame {
+            LinkFrame::Base => Carrier::Base,
+            LinkFrame::Child(k) => Carrier::Link(k),
+        });
     }
     for s in cell.tool.iter().flat_map(|t| &t.shapes) {
         let geometry = match s.geometry {
@@ -123,6 +130,7 @@ fn keyframe(poser: &Poser, carriers: &[Carrier], time_s: f64, axes: &[f64; 6]) -
         poses: carriers
             .iter()
             .map(|c| match c {
+                Carrier::Base => scene_pose(&poser.base()),
                 Carrier::Link(k) => scene_pose(&links[*k]),
                 Carrier::Flange => scene_pose(&flange),
             })
@@ -291,6 +299,7 @@ fn clearance(
         let t = duration * u;
         let axes = lerp6(from, to, profile.progress(t, duration));
         let frame = match carriers[s] {
+            Carrier::Base => poser.base(),
             Carrier::Link(k) => poser.links(&axes)[k],
             Carrier::Flange => poser.tool0(&axes),
         };
@@ -613,6 +622,54 @@ planner: { grid: 5 }
             worst < 1.0,
             "the page's TCP is {worst:.3} mm off between keyframes"
         );
+    }
+
+    /// A shipped robot with cylinders on every link: the page draws each where its own link is
+    /// (base_link at the base, links 4..6 by the six-axis kinematics), the URDF's cylinders, not
+    /// the enclosures the checks carry them by. Fails with links 4..6 left out or drawn on link 3.
+    #[test]
+    fn every_link_of_a_shipped_robot_is_drawn_on_its_own_link() {
+        let text = CELL.replace("urdf: irb1400.urdf,", "model: irb2600_12_165,");
+        let cell = crate::cell::parse(Path::new("demo.yaml"), &text).expect("the cell");
+        let job = Loaded {
+            cell,
+            text,
+            robot: Robot::shipped("irb2600_12_165").expect("shipped"),
+        };
+        let out = pipeline::run(&job, &Options::new(Method::Extensile, 5.0)).expect("plans");
+        let s = scene(
+            &job.cell,
+            &job.robot,
+            &out.placed,
+            &out.plan,
+            &out.rendered.names,
+        );
+        let links: Vec<String> = s.shapes.iter().take(7).map(|d| d.name.clone()).collect();
+        let want: Vec<String> = (0..7).map(|k| format!("link_{k}")).collect();
+        assert_eq!(links[1..], want[1..]);
+        assert_eq!(links[0], "base_link");
+        assert!(s.shapes[..7].iter().all(|d| d.kind == ShapeKind::Link));
+        let poser = Poser::new(&job.robot, out.placed.placement, job.cell.tool.as_ref());
+        let at = &out.plan.route.waypoints[1].joints_deg;
+        let frame = s
+            .keyframes
+            .iter()
+            .find(|k| (k.time_s - s.waypoints[1].time_s).abs() < 1e-9)
+            .expect("a keyframe at the second waypoint");
+        let links = poser.links(at);
+        for (i, own) in job.robot.collision.iter().enumerate() {
+            let want = match own.frame {
+                crate::robot::LinkFrame::Base => poser.base(),
+                crate::robot::LinkFrame::Child(k) => links[k],
+            };
+            let got = frame.poses[i].position_mm;
+            let t = want.translation.vector;
+            assert!(
+                close(got, [t.x, t.y, t.z], 1e-6),
+                "{}: {got:?} vs {t:?}",
+                own.link
+            );
+        }
     }
 
     #[test]

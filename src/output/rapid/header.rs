@@ -20,6 +20,9 @@ pub struct Header {
     pub generator: String,
     /// Cell file name only (no directory), e.g. `"trunk.yaml"`.
     pub cell_file: String,
+    /// The shipped robot the cell names (`robot.model`), as the header states it (its name and
+    /// ABB's name of the variant); `None` for a robot read from a URDF file.
+    pub model: Option<String>,
     /// The URDF's file name, e.g. `"irb1400.urdf"`.
     pub urdf: String,
     /// The controller file's name, or `None` without one.
@@ -72,6 +75,8 @@ pub(super) fn comment_text(text: &str) -> String {
 pub struct Facts {
     pub generator: String,
     pub cell: String,
+    /// The shipped robot (`robot.model`), or none for a URDF read from a file.
+    pub model: Option<String>,
     pub urdf: String,
     /// The controller file's name, or `none: serial arm, the URDF's limits`.
     pub controller: String,
@@ -109,6 +114,11 @@ impl Facts {
         let mut lines = vec![
             format!("generator: {}", self.generator),
             format!("cell: {}", self.cell),
+        ];
+        if let Some(m) = &self.model {
+            lines.push(format!("model: {m}"));
+        }
+        lines.extend([
             format!("urdf: {}", self.urdf),
             format!("controller: {}", self.controller),
             format!("coupling: {}", self.coupling),
@@ -116,7 +126,7 @@ impl Facts {
             format!("grid (deg): {}", self.grid_deg),
             format!("clearance (mm): {}", self.clearance_mm),
             format!("base: [{x}, {y}, {z}] yaw: {}", self.yaw_deg),
-        ];
+        ]);
         for line in [&self.tool, &self.wobj, &self.frames].into_iter().flatten() {
             lines.push(line.clone());
         }
@@ -183,6 +193,7 @@ pub(super) fn facts(p: &Program) -> Result<Facts, RapidError> {
     Ok(Facts {
         generator: comment_text(&h.generator),
         cell: comment_text(&h.cell_file),
+        model: h.model.as_deref().map(comment_text),
         urdf: comment_text(&h.urdf),
         controller: comment_text(h.controller.as_deref().unwrap_or(NO_CONTROLLER)),
         coupling: coupling.to_string(),

@@ -41,6 +41,7 @@ fn header(moves: usize) -> Header {
     Header {
         generator: "gen-rapid 0.1.0".to_string(),
         cell_file: "trunk.yaml".to_string(),
+        model: None,
         urdf: "irb1400.urdf".to_string(),
         controller: Some("irb1400.controller.yaml".to_string()),
         parallelogram: true,
@@ -133,6 +134,7 @@ fn awkward_program() -> Program {
         header: Header {
             generator: "gen-rapid 0.1.0".to_string(),
             cell_file: "c\u{e9}ll\tfile.yaml ".to_string(),
+            model: None,
             urdf: "robot.urdf".to_string(),
             controller: None,
             parallelogram: false,
@@ -240,6 +242,22 @@ fn assert_properties(text: &str) {
 fn render_small_program_matches_hand_written_text() {
     let text = render(&small_program()).unwrap();
     assert_eq!(text, SMALL_EXPECTED);
+}
+
+/// A shipped robot (`robot.model`): its own header line between the cell and the URDF, the
+/// rest as for a URDF file; without one, no such line.
+#[test]
+fn a_shipped_robot_is_named_on_its_own_header_line() {
+    let mut program = small_program();
+    program.header.model = Some("irb1400 (ABB IRB 1400, built into gen-rapid)".into());
+    let text = render(&program).unwrap();
+    let want = SMALL_EXPECTED.replace(
+        "    ! cell: trunk.yaml\n",
+        "    ! cell: trunk.yaml\n    ! model: irb1400 (ABB IRB 1400, built into gen-rapid)\n",
+    );
+    assert_ne!(want, SMALL_EXPECTED);
+    assert_eq!(text, want);
+    assert!(!SMALL_EXPECTED.contains("! model:"));
 }
 
 #[test]

@@ -62,7 +62,8 @@ pub struct ArmGeometry {
     pub a2_mm: f64,
     /// Forearm offset, axis 3 -> axis-4 line (up at the zero pose).
     pub a3_mm: f64,
-    /// Along axis 4 from that offset to the wrist centre.
+    /// Along axis 4 from that offset to the wrist centre (joint 4's own offset along axis 4
+    /// and joint 5's, summed: the IRB 1600 splits it 300 + 300).
     pub d4_mm: f64,
     /// How controller axis 3 relates to the URDF joint 3.
     pub coupling: Coupling,
@@ -74,9 +75,10 @@ pub struct ArmGeometry {
 
 impl ArmGeometry {
     /// Reads the lengths from the robot's joint origins: `joints[1]` gives a1 (x) and d1 (z,
-    /// plus `joints[0]`'s z), `joints[2]` z gives a2, `joints[3]` z gives a3, `joints[4]` x gives
-    /// d4. Refuses any other structure: axes must be +z, +y, +y, +x, +y, origins unrotated, every
-    /// other offset zero within 1e-6 mm, a2 > 0 and the forearm of non-zero length.
+    /// plus `joints[0]`'s z), `joints[2]` z gives a2, `joints[3]` z gives a3, `joints[3]` x plus
+    /// `joints[4]` x gives d4 (both lie along axis 4). Refuses any other structure: axes must be
+    /// +z, +y, +y, +x, +y, origins unrotated, every other offset zero within 1e-6 mm, a2 > 0 and
+    /// the forearm of non-zero length.
     pub fn from_robot(robot: &Robot) -> Result<ArmGeometry, IkError> {
         let refuse = |message: String| IkError::Structure {
             robot: robot.name.clone(),
@@ -100,7 +102,7 @@ impl ArmGeometry {
             [false, false, true],
             [true, false, true],
             [false, false, true],
-            [false, false, true],
+            [true, false, true],
             [true, false, false],
         ];
         for (i, ((name, axis), free)) in want.iter().zip(free).enumerate() {
@@ -133,8 +135,8 @@ impl ArmGeometry {
                 if !free[k] && t[k].abs() > OFFSET_TOL_MM {
                     return Err(refuse(format!(
                         "joint {} ({}) origin has {} = {:.6} mm; the closed form needs it 0 \
-                         (only joint 1 z, joint 2 x and z, joint 3 z, joint 4 z and joint 5 x \
-                         may be non-zero)",
+                         (only joint 1 z, joint 2 x and z, joint 3 z, joint 4 x and z and joint \
+                         5 x may be non-zero)",
                         i + 1,
                         j.name,
                         c,
@@ -149,7 +151,7 @@ impl ArmGeometry {
             a1_mm: t(1).x,
             a2_mm: t(2).z,
             a3_mm: t(3).z,
-            d4_mm: t(4).x,
+            d4_mm: t(3).x + t(4).x,
             coupling: robot.controller.coupling,
             q3_range_deg: None,
         };
@@ -271,6 +273,49 @@ pub fn reach_interval_mm(geom: &ArmGeometry) -> (f64, f64) {
             (rho(cmin), rho(cmax))
         }
     }
+}
+
+/// How far from axis 1 the wrist centre reaches horizontally, mm, within the controller's ranges
+/// of axes 2 and 3 (the coupled axis-3 range included): the "reach" of ABB's data sheets
+/// (IRB 1400: 1443.7 mm at axis 2 = 70, axis 3 = 9.46). With `r = a1 + a2 sin(rax2) +
+/// L cos(phi - b)` (`L`, `b = atan2(a3, d4)` the forearm's length and angle, `phi` the forearm's
+/// angle to the horizontal), for each axis-2 value the best `phi` is `b` clamped into the
+/// interval the ranges leave it (a cosine is unimodal about its peak), and axis 2 is searched
+/// on a 0.001 deg raster between its limits (both included): within a micrometre of the true
+/// maximum for any arm of a few metres.
+pub fn horizontal_reach_mm(robot: &Robot, geom: &ArmGeometry) -> f64 {
+    let ax = &robot.controller.axes;
+    let (lo2, hi2) = (ax[1].min_deg, ax[1].max_deg);
+    let (lo3, hi3) = (ax[2].min_deg, ax[2].max_deg);
+    let l = geom.forearm_mm();
+    let b = geom.a3_mm.atan2(geom.d4_mm).to_degrees();
+    let steps = ((hi2 - lo2) * 1000.0).ceil().max(1.0) as usize;
+    let mut best = f64::NEG_INFINITY;
+    for k in 0..=steps {
+        let a2 = if k == steps {
+            hi2
+        } else {
+            lo2 + k as f64 * (hi2 - lo2) / steps as f64
+        };
+        // The forearm's angle to the horizontal the ranges leave at this axis 2.
+        let (mut lo, mut hi) = match geom.coupling {
+            Coupling::Parallelogram => (lo3, hi3),
+            Coupling::Serial => (a2 + lo3, a2 + hi3),
+        };
+        if let (Coupling::Parallelogram, Some([clo, chi])) =
+            (geom.coupling, robot.controller.coupled_axis3_deg)
+        {
+            lo = lo.max(a2 + clo);
+            hi = hi.min(a2 + chi);
+        }
+        if lo > hi {
+            continue;
+        }
+        let phi = b.clamp(lo, hi);
+        let r = geom.a1_mm + geom.a2_mm * a2.to_radians().sin() + l * (phi - b).to_radians().cos();
+        best = best.max(r);
+    }
+    best
 }
 
 /// All real solutions for a wrist centre (robot base frame, mm), in the order of

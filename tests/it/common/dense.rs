@@ -15,15 +15,24 @@
 //!
 //! # What the robot stands on: this check's own reading
 //!
-//! The base cylinder (link 1) starts at the mounting plane, so a floor under the robot touches
-//! it. This check does not take the collision model's rule for that; it reads it from the
-//! geometry it computes itself, pose by pose: a box is not measured against a link-1 cylinder
+//! The base cylinder (base_link's, or link 1's on a robot whose base_link carries none, as the
+//! IRB 1400's) starts at the mounting plane, so a floor under the robot touches it. This check
+//! does not take the collision model's rule for that; it reads it from the geometry it computes
+//! itself, pose by pose: a box is not measured against a base_link or link-1 shape
 //! only when the box lies wholly at or below the mounting plane (the header's base z) *and* the
 //! cylinder, placed by this check's forward kinematics, lies wholly on or above the box's top
 //! (its lowest point, the bottom of its exact bounding box, is not below the top). Any other
 //! contact counts: a box reaching above the mounting plane, or a base cylinder that dips below
-//! the top of what it would stand on. A shape on the base (above every joint) is read the same
-//! way; every other link is measured against every box.
+//! the top of what it would stand on. Links 2..6 are measured against every box.
+//!
+//! # The header's smallest clearance
+//!
+//! The collision model certifies its smallest clearance for what it checks. Where that is the
+//! URDF's cylinders themselves (links 1..3 alone, the IRB 1400), the header is held to within
+//! 0.05 mm (and half a sampling step) of the minimum measured here; where the model checks
+//! enclosures of some links (base_link about axis 1, link 4 about axis 4, link 5 as a ball:
+//! `robot/lumped.rs`), its figure may lie further below, and the header is held to be a lower
+//! bound of the minimum measured here (within the rounding) and never negative.
 
 use super::controller::{self, Run, Setup};
 use super::library::RobotFrame;
@@ -574,14 +583,22 @@ pub fn check_module(
 
     // The header's min clearance is a lower bound within 0.05 mm of the true minimum, which lies
     // at most half the sampling step below the smallest sample of a move (`reach.rs`), at most
-    // the step reached below that of a corner, and not above either.
+    // the step reached below that of a corner, and not above either. Where the model checks
+    // enclosures of some links (module doc: a shape on the base or on links 4..6), a lower
+    // bound, not below 0.
     let step_mm = scene.step_mm();
+    let enclosed = scene.links.iter().any(|l| l.carrier.is_none_or(|k| k >= 3));
     match (module.min_clearance_mm, smallest.mm.is_finite()) {
         (Some(h), true) => {
             let (lo, hi) = (
-                (smallest.mm - step_mm / 2.0).min(corner_smallest)
-                    - HEADER_TOL_MM
-                    - HEADER_ROUNDING_MM,
+                match enclosed {
+                    false => {
+                        (smallest.mm - step_mm / 2.0).min(corner_smallest)
+                            - HEADER_TOL_MM
+                            - HEADER_ROUNDING_MM
+                    }
+                    true => 0.0,
+                },
                 smallest.mm + HEADER_ROUNDING_MM,
             );
             if !(lo - 1e-9..=hi + 1e-9).contains(&h) {

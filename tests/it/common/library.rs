@@ -3,7 +3,7 @@
 
 pub use gen_rapid::cell::{Base, Cell, Target, Tool, ToolGeometry};
 pub use gen_rapid::place::Survey;
-pub use gen_rapid::robot::Robot;
+pub use gen_rapid::robot::{LinkFrame, Robot};
 
 use gen_rapid::cell;
 use gen_rapid::error::Error;
@@ -100,10 +100,10 @@ pub fn parse_cell(path: &Path, text: &str) -> Result<Cell, String> {
     cell::parse(path, text).map_err(|e| e.to_string())
 }
 
-/// The cell's robot (its URDF and controller file).
+/// The cell's robot (its URDF and controller file, or the shipped model it names), as the
+/// load stage reads it.
 pub fn load_robot(cell: &Cell) -> Robot {
-    Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref())
-        .unwrap_or_else(|e| panic!("{}: {e}", cell.robot.urdf_path.display()))
+    pipeline::robot_of(cell).unwrap_or_else(|e| panic!("{}: {e}", cell.path.display()))
 }
 
 /// The feasible region of the base for a `base: auto` cell (paper section 2), with its
@@ -126,8 +126,7 @@ fn placed_and_inspected(
     cell: &Cell,
     grid_deg: f64,
 ) -> Result<(pipeline::Loaded, Placed, pipeline::Inspected), String> {
-    let robot = Robot::load(&cell.robot.urdf_path, cell.robot.controller_path.as_deref())
-        .map_err(|e| e.to_string())?;
+    let robot = pipeline::robot_of(cell).map_err(|e| e.to_string())?;
     let job = pipeline::Loaded {
         cell: cell.clone(),
         text: String::new(),

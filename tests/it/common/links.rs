@@ -49,9 +49,15 @@ fn pose(p: &urdf_rs::Pose) -> Isometry3<f64> {
     )
 }
 
-/// The collision shapes of `robot`'s URDF (module doc), or why they cannot be read.
+/// The collision shapes of `robot`'s URDF (module doc), or why they cannot be read. A robot of
+/// `robot.model` is built into the binary from its file in the repository's `robots/`, and names
+/// only the file: it is read there.
 pub fn read(robot: &Robot) -> Result<Vec<LinkShape>, String> {
-    read_file(&robot.urdf_path, robot)
+    let path = &robot.urdf_path;
+    match (path.exists(), path.file_name()) {
+        (false, Some(name)) => read_file(&super::root().join("robots").join(name), robot),
+        _ => read_file(path, robot),
+    }
 }
 
 /// The same from the URDF at `path`, carried by `robot`'s revolute joints.
