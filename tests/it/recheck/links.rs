@@ -1,13 +1,13 @@
 //! The dense check's own reading of the robot (`common/links.rs`, `common/reach.rs`): the URDF's
-//! collision shapes read here agree with the library's arm cylinders where both read them, a
+//! collision shapes read here agree with the library's own cylinders on every shipped robot, a
 //! shape the library ignores (one on `tool0`, below a fixed joint) is measured all the same, and
 //! the motion bound the sampling stands on holds for every shape and the tool.
 
 use crate::common::dense::Scene;
-use crate::common::library::{irb1400, load_cell, Robot};
+use crate::common::library::{irb1400, load_cell, LinkFrame, Robot};
 use crate::common::links;
 use crate::common::reach::Reach;
-use crate::common::{root, temp_cell};
+use crate::common::{file_names, root, temp_cell};
 use nalgebra::{Point3, Vector3};
 use std::path::{Path, PathBuf};
 
@@ -25,29 +25,41 @@ fn with_pen(dir: &Path) -> (PathBuf, Robot) {
 }
 
 #[test]
-fn the_urdf_read_here_gives_the_librarys_arm_cylinders() {
-    let robot = irb1400();
-    let shapes = links::read(&robot).unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(shapes.len(), robot.cylinders.len());
-    for (s, c) in shapes.iter().zip(&robot.cylinders) {
-        assert_eq!(
-            (s.link.as_str(), s.carrier),
-            (c.link.as_str(), Some(c.joint_index))
-        );
-        // A parry cylinder lies along its local y axis: its bounding box's half extents are
-        // (radius, half length, radius).
-        let h = s.shape.compute_local_aabb().half_extents();
-        let ends = [-h.y, h.y].map(|y| s.in_frame * Point3::new(0.0, y, 0.0));
-        let same = |p: &Point3<f64>, q: &Point3<f64>| (p - q).norm() < 1e-9;
-        assert!(
-            (same(&ends[0], &c.a) && same(&ends[1], &c.b))
-                || (same(&ends[0], &c.b) && same(&ends[1], &c.a)),
-            "{}: ends {ends:?}, the library's {:?} {:?}",
-            s.link,
-            c.a,
-            c.b
-        );
-        assert!((h.x - c.radius_mm).abs() < 1e-9 && (h.z - c.radius_mm).abs() < 1e-9);
+fn the_urdf_read_here_gives_the_librarys_cylinders_on_every_shipped_robot() {
+    let names: Vec<String> = file_names(&root().join("robots"))
+        .into_iter()
+        .filter_map(|f| f.strip_suffix(".urdf").map(str::to_string))
+        .collect();
+    assert!(names.len() >= 7, "{names:?}");
+    for name in &names {
+        let robot = Robot::shipped(name).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let shapes = links::read(&robot).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(shapes.len(), robot.collision.len(), "{name}");
+        for (s, c) in shapes.iter().zip(&robot.collision) {
+            let frame = match c.frame {
+                LinkFrame::Base => None,
+                LinkFrame::Child(k) => Some(k),
+            };
+            assert_eq!(
+                (s.link.as_str(), s.carrier),
+                (c.link.as_str(), frame),
+                "{name}"
+            );
+            // A parry cylinder lies along its local y axis: its bounding box's half extents are
+            // (radius, half length, radius).
+            let h = s.shape.compute_local_aabb().half_extents();
+            let ends = [-h.y, h.y].map(|y| s.in_frame * Point3::new(0.0, y, 0.0));
+            let same = |p: &Point3<f64>, q: &Point3<f64>| (p - q).norm() < 1e-9;
+            assert!(
+                (same(&ends[0], &c.a) && same(&ends[1], &c.b))
+                    || (same(&ends[0], &c.b) && same(&ends[1], &c.a)),
+                "{name} {}: ends {ends:?}, the library's {:?} {:?}",
+                s.link,
+                c.a,
+                c.b
+            );
+            assert!((h.x - c.radius_mm).abs() < 1e-9 && (h.z - c.radius_mm).abs() < 1e-9);
+        }
     }
 }
 
@@ -103,10 +115,21 @@ fn a_shape_the_library_ignores_is_measured() {
 #[test]
 fn no_point_of_any_shape_or_the_tool_moves_more_than_the_bound() {
     let dir = tempfile::tempdir().expect("tempdir");
-    let (_, robot) = with_pen(dir.path());
-    let shapes = links::read(&robot).unwrap_or_else(|e| panic!("{e}"));
+    let (_, pen) = with_pen(dir.path());
+    bound_holds(&pen);
+    for f in file_names(&root().join("robots")) {
+        if let Some(name) = f.strip_suffix(".urdf") {
+            bound_holds(&Robot::shipped(name).unwrap_or_else(|e| panic!("{name}: {e}")));
+        }
+    }
+}
+
+/// Random joint moves of `robot` with a tool reaching 350 mm from tool0: no point of a shape or
+/// the tool moves farther than the bound, and some come within half of it.
+fn bound_holds(robot: &Robot) {
+    let shapes = links::read(robot).unwrap_or_else(|e| panic!("{e}"));
     let tool_mm = 350.0;
-    let reach = Reach::new(&robot, &shapes, tool_mm);
+    let reach = Reach::new(robot, &shapes, tool_mm);
     // Points on each shape's bounding sphere, in its link frame, and on the tool's.
     let dirs = [
         Vector3::x(),
@@ -136,7 +159,7 @@ fn no_point_of_any_shape_or_the_tool_moves_more_than_the_bound() {
             s.min_deg + rng.f64() * (s.max_deg - s.min_deg)
         });
         let b: [f64; 6] = std::array::from_fn(|k| a[k] + 20.0 * (rng.f64() - 0.5));
-        let bound = reach.motion_mm(&robot, &a, &b);
+        let bound = reach.motion_mm(robot, &a, &b);
         let (la, lb) = (robot.link_poses(&a), robot.link_poses(&b));
         let mut moved: Vec<f64> = points
             .iter()
@@ -152,7 +175,8 @@ fn no_point_of_any_shape_or_the_tool_moves_more_than_the_bound() {
         for m in moved {
             assert!(
                 m <= bound + 1e-9,
-                "a point moves {m} mm from {a:?} to {b:?}, the bound says {bound}"
+                "{}: a point moves {m} mm from {a:?} to {b:?}, the bound says {bound}",
+                robot.name
             );
             tightest = tightest.max(m / bound);
         }
@@ -160,6 +184,7 @@ fn no_point_of_any_shape_or_the_tool_moves_more_than_the_bound() {
     // The bound is a bound, not a guess: some point comes within a few tens of percent of it.
     assert!(
         tightest > 0.5,
-        "the bound is loose everywhere: at most {tightest} of it"
+        "{}: the bound is loose everywhere: at most {tightest} of it",
+        robot.name
     );
 }
