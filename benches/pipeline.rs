@@ -5,7 +5,6 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use gen_rapid::pipeline::{self, Options};
-use gen_rapid::progress::Silent;
 use std::hint::black_box;
 use std::path::Path;
 use std::time::Duration;
@@ -31,11 +30,8 @@ fn whole(c: &mut Criterion) {
         let placed = pipeline::place(&job).expect("place");
         g.bench_function(format!("grid_inspection_{grid}deg"), |b| {
             b.iter(|| {
-                black_box(
-                    pipeline::inspect(&job, &placed, grid, &Silent)
-                        .cspace
-                        .free_count(),
-                )
+                let inspected = pipeline::inspect(&job, &placed, grid);
+                black_box(inspected.cspace.free_count())
             })
         });
     }

@@ -20,7 +20,7 @@ fn waves(c: &mut Criterion) {
         Err(f) => panic!("{}", f.render()),
     };
     let placed = pipeline::place(&job).expect("place");
-    let inspected = pipeline::inspect(&job, &placed, 1.0, &gen_rapid::progress::Silent);
+    let inspected = pipeline::inspect(&job, &placed, 1.0);
     let cs = &inspected.cspace;
     let node = |k: usize| {
         cs.grid

@@ -20,7 +20,7 @@ fn main() {
     let mut best = f64::INFINITY;
     for _ in 0..reps {
         let t = Instant::now();
-        let inspected = pipeline::inspect(&job, &placed, grid, &gen_rapid::progress::Silent);
+        let inspected = pipeline::inspect(&job, &placed, grid);
         let n = inspected.cspace.free_count();
         let e = t.elapsed().as_secs_f64();
         best = best.min(e);

@@ -3,7 +3,6 @@ use gen_rapid::output::rapid::ModuleTemplate;
 use gen_rapid::pipeline;
 use gen_rapid::plan::leg::{LegGraph, ToolMemo, WristSchedule};
 use gen_rapid::plan::{wave, Method};
-use gen_rapid::progress::Silent;
 use std::time::Instant;
 fn main() {
     let path = std::env::args().nth(1).unwrap_or("cells/trunk.yaml".into());
@@ -21,7 +20,7 @@ fn main() {
     let placed = pipeline::place(&job).expect("place");
     eprintln!("place {:?}", t.elapsed());
     let t = Instant::now();
-    let inspected = pipeline::inspect(&job, &placed, grid, &Silent);
+    let inspected = pipeline::inspect(&job, &placed, grid);
     let cs = &inspected.cspace;
     eprintln!(
         "inspect {:?} ({} nodes, {} free)",

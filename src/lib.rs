@@ -8,6 +8,8 @@
 //! ```
 
 // Leaves, used by any stage.
+/// The first YAML key given no value (the cell's and the controller file's refusal).
+pub mod blank_key;
 pub mod excerpt;
 pub mod geometry;
 pub mod input;
@@ -27,6 +29,8 @@ pub mod zeroed;
 pub mod robot;
 
 // load: the cell file
+/// The budgets of a run (memory and time), checked before the work.
+pub mod budget;
 pub mod cell;
 
 // place: where the robot stands, every point on six axes
@@ -43,6 +47,10 @@ pub mod timing;
 
 // refine: the shortcut pass, the certified zones at waypoints, the plan the module writes
 pub mod refine;
+
+// follow: the process moves followed and proven, the stops the air route runs between, the
+// plans spliced into one
+pub mod process;
 
 // render: the RAPID module, pictures, reports
 pub mod output;

@@ -4,8 +4,10 @@
 use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
 use gen_rapid::cli::compare::{compare, CompareOptions};
 use gen_rapid::cli::locate::{locate, LocateOptions};
+use gen_rapid::cli::outputs;
 use gen_rapid::cli::robots::{list, RobotsOptions};
 use gen_rapid::cli::run::{run, RunOptions};
+use gen_rapid::error::{Error, Failure};
 use gen_rapid::plan::Method;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -52,7 +54,7 @@ A tool, a work object and points as TCP poses (robtargets; quaternions [w, x, y,
     - { name: W1, robtarget: [[600, -100, 300], [0, 0, 1, 0]] }     # TCP pose in the wobj
     - { name: W2, robtarget: [[600, 100, 300], [0, 0, 1, 0], [0, -1, 0, 0]], speed: v100 }
 A robtarget point may give its confdata [cf1, cf4, cf6, cfx]; speed and zone set the move into
-a point. With a tool block, leave out motion.tool. README.md describes every key.
+a point. With a tool block, leave out motion.tool. docs/cell.md describes every key.
 
 The module goes to stdout (or -o FILE); one summary line goes to stderr. On error nothing is
 written to stdout and no module FILE is made; when planning fails, --svg FILE draws why (the
@@ -101,7 +103,7 @@ struct RunArgs {
     #[arg(long, value_name = "FILE")]
     report: Option<PathBuf>,
     /// Render the module through this minijinja template instead of the embedded one
-    /// (templates/module.mod.j2 is the default; README lists the names a template may use).
+    /// (templates/module.mod.j2 is the default; docs/outputs.md lists the names a template may use).
     #[arg(long, value_name = "FILE")]
     template: Option<PathBuf>,
     /// Name the routine that makes the moves (default: the cell's motion.proc, else main).
@@ -196,41 +198,141 @@ fn parse_grid(s: &str) -> Result<f64, String> {
 }
 
 /// Refuses (exit 2) a command whose output files name the same file twice, or a file it reads
-/// (the cell, the template): one would overwrite the other (`--svg out --report out`,
-/// `-o cell.yaml`, `locate cell.yaml --svg cell.yaml`). The robot's URDF and controller file,
-/// named in the cell, are checked once it is read (`cli::write_for`).
+/// (the cell, the template), or the file stdout goes to while stdout takes the module or the
+/// report: one would overwrite the other (`--svg out --report out`, `--svg d/../a.svg --report
+/// ./a.svg`, `-o cell.yaml`, `locate cell.yaml --svg cell.yaml`, `--svg /dev/stdout` with the
+/// module on stdout). Outputs are compared by what they will be (`cli::same_file`: resolved
+/// links and `..`, existing or not). The robot's URDF and controller file, named in the cell,
+/// are checked once it is read (`cli::write_for`). Then an output that cannot be written
+/// whatever the run makes (a directory, a missing directory) fails before any work (exit 4).
 fn check_outputs(
     inputs: &[(&'static str, Option<&Path>)],
     outputs: &[(&'static str, Option<&Path>)],
-) {
+    stdout_used: bool,
+) -> Result<(), ExitCode> {
     let named = |list: &[(&'static str, Option<&Path>)]| -> Vec<(&'static str, PathBuf)> {
         list.iter()
             .filter_map(|(flag, p)| p.map(|p| (*flag, p.to_path_buf())))
             .collect()
     };
     let (inputs, outputs) = (named(inputs), named(outputs));
+    let usage = |message: String| {
+        let e = Cli::command().error(clap::error::ErrorKind::ArgumentConflict, message);
+        // clap prints to stderr and ignores a failed write; the status says it all then.
+        let _ = e.print();
+        ExitCode::from(gen_rapid::error::exit::USAGE)
+    };
+    // An input read from the pipe or file the run writes to (`--template /dev/stdout`) would
+    // wait on itself for ever, or read what it writes.
+    for (flag, path) in &inputs {
+        if gen_rapid::cli::is_stdout(path) || gen_rapid::cli::is_stderr(path) {
+            return Err(usage(format!(
+                "{flag} {} names the file stdout or stderr goes to, which the run writes; give it a file to read",
+                path.display()
+            )));
+        }
+    }
     for (i, (flag, path)) in outputs.iter().enumerate() {
         let clash = outputs[..i]
             .iter()
             .chain(inputs.iter())
             .find(|(_, other)| gen_rapid::cli::same_file(path, other));
         if let Some((other, _)) = clash {
-            Cli::command()
-                .error(
-                    clap::error::ErrorKind::ArgumentConflict,
-                    format!(
-                        "{flag} {} names the same file as {other}; give each output its own file, apart from the files read",
-                        path.display()
-                    ),
-                )
-                .exit();
+            return Err(usage(format!(
+                "{flag} {} names the same file as {other}; give each output its own file, apart from the files read",
+                path.display()
+            )));
+        }
+        if stdout_used && gen_rapid::cli::is_stdout(path) {
+            return Err(usage(format!(
+                "{flag} {} names the file stdout goes to, which takes the module (or the report); give it another file, or write the module with -o FILE",
+                path.display()
+            )));
+        }
+    }
+    for (_, path) in &outputs {
+        if let Some(e) = gen_rapid::cli::unwritable(path) {
+            return Err(report(&Failure {
+                error: Box::new(e),
+                file: String::new(),
+                text: None,
+                notes: Vec::new(),
+            }));
+        }
+    }
+    Ok(())
+}
+
+/// Prints a failure to stderr (never panicking: a failed write leaves the status to say it) and
+/// returns its exit status.
+fn report(failure: &Failure) -> ExitCode {
+    gen_rapid::cli::outputs::say(&failure.render());
+    ExitCode::from(failure.error.exit_code())
+}
+
+/// Whether stdout was closed when the process started (`>&-`), which the Rust runtime then
+/// opens on `/dev/null` before `main` (so a write "succeeds" and the module is lost): recorded
+/// before the runtime starts, by [`STDOUT_CLOSED_AT_START`]. Linux only (`/proc`); elsewhere
+/// `false`.
+static STDOUT_CLOSED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Runs before `main` and before the Rust runtime's own start, as the C runtime's constructors
+/// do: notes whether file descriptor 1 is open (`/proc/self/fd/1` names it when it is).
+#[cfg(target_os = "linux")]
+#[used]
+#[link_section = ".init_array"]
+static STDOUT_CLOSED_AT_START: extern "C" fn() = {
+    extern "C" fn note() {
+        if std::fs::symlink_metadata("/proc/self").is_ok()
+            && std::fs::read_link("/proc/self/fd/1").is_err()
+        {
+            STDOUT_CLOSED.store(true, std::sync::atomic::Ordering::SeqCst);
+        }
+    }
+    note
+};
+
+/// The command line, or the exit status of a command line that is not one to run: `--help` and
+/// `--version` printed (exit 4 when stdout cannot take them), a usage error printed to stderr
+/// (exit 2; a failed write there leaves the status to say it).
+fn parse() -> Result<Cli, ExitCode> {
+    use clap::error::ErrorKind;
+    use std::io::{IsTerminal, Write};
+    match Cli::try_parse() {
+        Ok(cli) => Ok(cli),
+        Err(e) if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) => {
+            let text = if std::io::stdout().is_terminal() {
+                e.render().ansi().to_string()
+            } else {
+                e.render().to_string()
+            };
+            let mut out = std::io::stdout().lock();
+            match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
+                Ok(()) if !STDOUT_CLOSED.load(std::sync::atomic::Ordering::SeqCst) => {
+                    Err(ExitCode::SUCCESS)
+                }
+                _ => Err(ExitCode::from(gen_rapid::error::exit::OUTPUT)),
+            }
+        }
+        Err(e) => {
+            let _ = e.print();
+            Err(ExitCode::from(e.exit_code().clamp(0, 255) as u8))
         }
     }
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    match &cli.command {
+    let cli = match parse() {
+        Ok(cli) => cli,
+        Err(status) => return status,
+    };
+    // Where stdout takes the command's result: the module without -o, compare's table and
+    // locate's report always.
+    let stdout_used = match &cli.command {
+        None => cli.run.output.is_none(),
+        Some(_) => true,
+    };
+    let checked = match &cli.command {
         None => {
             let a = &cli.run;
             check_outputs(
@@ -244,15 +346,36 @@ fn main() -> ExitCode {
                     ("--html", a.html.as_deref()),
                     ("--report", a.report.as_deref()),
                 ],
+                stdout_used,
             )
         }
-        Some(Command::Compare(a)) => {
-            check_outputs(&[("CELL", Some(&a.cell))], &[("--svg", a.svg.as_deref())])
-        }
-        Some(Command::Locate(a)) => {
-            check_outputs(&[("CELL", Some(&a.cell))], &[("--svg", a.svg.as_deref())])
-        }
-        Some(Command::Robots(_)) => {}
+        Some(Command::Compare(a)) => check_outputs(
+            &[("CELL", Some(&a.cell))],
+            &[("--svg", a.svg.as_deref())],
+            stdout_used,
+        ),
+        Some(Command::Locate(a)) => check_outputs(
+            &[("CELL", Some(&a.cell))],
+            &[("--svg", a.svg.as_deref())],
+            stdout_used,
+        ),
+        Some(Command::Robots(_)) => Ok(()),
+    };
+    if let Err(status) = checked {
+        return status;
+    }
+    if stdout_used && STDOUT_CLOSED.load(std::sync::atomic::Ordering::SeqCst) {
+        return report(&Failure {
+            error: Box::new(Error::Write {
+                path: "<stdout>".into(),
+                source: std::io::Error::other(
+                    "stdout is closed, so the result would go nowhere; give it a file (`> FILE`) or write the module with -o FILE",
+                ),
+            }),
+            file: String::new(),
+            text: None,
+            notes: Vec::new(),
+        });
     }
     let quiet = cli.command.is_none() && cli.run.quiet;
     let result = match cli.command {
@@ -282,16 +405,25 @@ fn main() -> ExitCode {
         }),
         Some(Command::Robots(a)) => list(&RobotsOptions { json: a.json }),
     };
+    // What the command made goes out now (cli::outputs: stdout, the summary line, the files).
     match result {
         Ok(summary) => {
-            if !quiet {
-                eprintln!("{summary}");
+            let line = (!quiet).then_some(summary.as_str());
+            match outputs::commit(line, false) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => report(&Failure {
+                    error: Box::new(e),
+                    file: String::new(),
+                    text: None,
+                    notes: Vec::new(),
+                }),
             }
-            ExitCode::SUCCESS
         }
         Err(failure) => {
-            eprint!("{}", failure.render());
-            ExitCode::from(failure.error.exit_code())
+            // The pictures of a failure and compare's table are committed; a failure to do so
+            // is not said over the failure itself (one error a run).
+            let _ = outputs::commit(None, true);
+            report(&failure)
         }
     }
 }

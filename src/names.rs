@@ -1,8 +1,13 @@
-//! The RAPID identifier rule, one for the whole program: what a module, point, speed, zone,
+//! The RAPID identifier rule, one for the whole program (long: RAPID's tables of reserved words
+//! and predefined names are half of it): what a module, point, speed, zone,
 //! tool, work-object, load or signal name may be, and the one name the module derives from a cell name (the
 //! `CONST robtarget` of a robtarget point, [`robtarget_name`]). The cell validation applies it to
 //! the names a cell gives (an input error at their line) and the renderer applies it again, as a
-//! last guard, to every name it writes. A leaf: it knows nothing of cells or modules.
+//! last guard, to every name it writes. Beside it, the types of the predefined names
+//! ([`predefined_kind`]): a move's speed must be speeddata, its zone zonedata, its tool tooldata
+//! ([`check_data_type`]: `speed: z50` or `zone: tool0` is refused, as the controller would
+//! refuse the module at load), and the system modules every task holds ([`SYSTEM_MODULES`]),
+//! which a module may not be named like. A leaf: it knows nothing of cells or modules.
 
 /// Longest identifier RAPID accepts, in characters.
 pub const MAX_IDENTIFIER_LEN: usize = 32;
@@ -139,6 +144,283 @@ pub const PREDEFINED_NAMES: &[&str] = &[
     "ConfL",
 ];
 
+/// RAPID's built-in routines a name may not take (compared case-insensitively): a data name
+/// that is one is not data of any type, and a declared name that is one hides the routine. The
+/// motion instructions are in [`PREDEFINED_NAMES`]; these are the other instructions and the
+/// functions a motion program most often calls (ABB, *Technical reference manual - RAPID
+/// Instructions, Functions and Data types*). Not every routine of RobotWare: the controller
+/// still refuses a module that hides one not listed here.
+pub const PREDEFINED_ROUTINES: &[&str] = &[
+    // instructions
+    "AccSet",
+    "ConfJ",
+    "ConfL",
+    "SingArea",
+    "VelSet",
+    "PathResol",
+    "SoftAct",
+    "SoftDeact",
+    "WaitTime",
+    "WaitUntil",
+    "WaitDI",
+    "WaitDO",
+    "WaitAI",
+    "WaitAO",
+    "WaitGI",
+    "WaitGO",
+    "Set",
+    "Reset",
+    "SetDO",
+    "SetAO",
+    "SetGO",
+    "PulseDO",
+    "InvertDO",
+    "TPWrite",
+    "TPErase",
+    "TPReadFK",
+    "TPReadNum",
+    "ErrWrite",
+    "Stop",
+    "StopMove",
+    "StartMove",
+    "Break",
+    "Add",
+    "Incr",
+    "Decr",
+    "Clear",
+    "Load",
+    "UnLoad",
+    "Save",
+    "EraseModule",
+    "ProcCall",
+    "SearchL",
+    "SearchC",
+    "SearchJ",
+    "TriggJ",
+    "TriggL",
+    "TriggC",
+    "MoveJDO",
+    "MoveLDO",
+    "MoveCDO",
+    "MoveJSync",
+    "MoveLSync",
+    "MoveCSync",
+    "MoveAbsJSync",
+    "IDelete",
+    "ISignalDI",
+    "CONNECT",
+    "IWatch",
+    "ISleep",
+    "IEnable",
+    "IDisable",
+    "GripLoad",
+    "MechUnitLoad",
+    "ActUnit",
+    "DeactUnit",
+    "EOffsOn",
+    "EOffsOff",
+    "EOffsSet",
+    "PDispOn",
+    "PDispOff",
+    "PDispSet",
+    "CorrCon",
+    "CorrDiscon",
+    "WorldAccLim",
+    "SpeedLimAxis",
+    "SpeedLimCheckPoint",
+    // functions
+    "Offs",
+    "RelTool",
+    "CRobT",
+    "CJointT",
+    "CPos",
+    "CTool",
+    "CWObj",
+    "CalcRobT",
+    "CalcJointT",
+    "Abs",
+    "Sqrt",
+    "Sin",
+    "Cos",
+    "Tan",
+    "ASin",
+    "ACos",
+    "ATan",
+    "ATan2",
+    "Exp",
+    "Pow",
+    "Round",
+    "Trunc",
+    "NumToStr",
+    "StrToVal",
+    "ValToStr",
+    "StrLen",
+    "StrPart",
+    "StrFind",
+    "Dim",
+    "Present",
+    "DOutput",
+    "DInput",
+    "AOutput",
+    "GOutput",
+    "ClkRead",
+    "CDate",
+    "CTime",
+    "GetTime",
+    "OrientZYX",
+    "EulerZYX",
+    "PoseInv",
+    "PoseMult",
+    "PoseVect",
+    "Distance",
+    "DotProd",
+    "NOrient",
+    "MaxRobSpeed",
+    "IsPers",
+    "IsVar",
+    "Type",
+    "RunMode",
+    "OpMode",
+    "IsStopMoveAct",
+    "TestDI",
+];
+
+/// The system modules every task of an IRC5 controller holds from a cold start (ABB, *Technical
+/// reference manual - RAPID overview*, "System modules": `BASE`, which declares `tool0`,
+/// `wobj0` and `load0`, and `user`; docs/rapid.md). A program module named like one cannot be
+/// loaded beside it (names are case-insensitive).
+pub const SYSTEM_MODULES: &[&str] = &["BASE", "user"];
+
+/// The RAPID data types of the data a move names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DataType {
+    Speed,
+    Zone,
+    Tool,
+    Wobj,
+    Load,
+}
+
+impl DataType {
+    /// The type's RAPID name.
+    pub fn rapid(self) -> &'static str {
+        match self {
+            DataType::Speed => "speeddata",
+            DataType::Zone => "zonedata",
+            DataType::Tool => "tooldata",
+            DataType::Wobj => "wobjdata",
+            DataType::Load => "loaddata",
+        }
+    }
+}
+
+/// What a predefined RAPID name is (any case), as a message says it: `"a speeddata"` (`v100`,
+/// `vmax`, any `v<digits>`, `vrot<digits>`, `vlin<digits>`), `"a zonedata"` (`fine`,
+/// `z<digits>`), `"a tooldata"` (`tool0`), `"a wobjdata"`, `"a loaddata"`, `"a num"` (`pi`, ...),
+/// `"a data type"`, `"an instruction or function"`; `None` for a name RAPID does not predefine.
+pub fn predefined_kind(name: &str) -> Option<&'static str> {
+    let is = |list: &[&str]| list.iter().any(|n| n.eq_ignore_ascii_case(name));
+    // Every predefined speeddata is `vmax` or `v<digits>` (rapid_data's table), every
+    // predefined zonedata `fine` or `z<digits>`: the shapes alone decide, so this leaf reads
+    // no other module.
+    if name.eq_ignore_ascii_case("vmax")
+        || ["vrot", "vlin", "v"]
+            .iter()
+            .any(|p| name.is_ascii() && is_prefix_digits(name, p))
+    {
+        return Some("a speeddata");
+    }
+    if name.eq_ignore_ascii_case("fine") || (name.is_ascii() && is_prefix_digits(name, "z")) {
+        return Some("a zonedata");
+    }
+    let kinds: [(&[&str], &'static str); 9] = [
+        (&["tool0"], "a tooldata"),
+        (&["wobj0"], "a wobjdata"),
+        (&["load0"], "a loaddata"),
+        (&["pi", "EOF_BIN", "EOF_NUM", "END_OF_LIST"], "a num"),
+        (&["ERRNO"], "an errnum"),
+        (&["INTNO"], "an intnum"),
+        (
+            &[
+                "num",
+                "dnum",
+                "bool",
+                "string",
+                "byte",
+                "jointtarget",
+                "robtarget",
+                "tooldata",
+                "wobjdata",
+                "speeddata",
+                "zonedata",
+                "stoppointdata",
+                "pos",
+                "orient",
+                "pose",
+                "confdata",
+                "extjoint",
+                "robjoint",
+                "loaddata",
+            ],
+            "a data type",
+        ),
+        (
+            &["MoveAbsJ", "MoveJ", "MoveL", "MoveC", "MoveExtJ"],
+            "an instruction or function",
+        ),
+        (PREDEFINED_ROUTINES, "an instruction or function"),
+    ];
+    kinds
+        .iter()
+        .find(|(list, _)| is(list))
+        .map(|(_, kind)| *kind)
+}
+
+/// A data name of the wrong type: what it is and what it had to be.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("'{name}' is {is} in RAPID, not a {}", .wanted.rapid())]
+pub struct TypeError {
+    pub name: String,
+    pub is: &'static str,
+    pub wanted: DataType,
+}
+
+/// Checks that `name`, used where a move needs data of type `wanted`, is not a predefined name
+/// of another type (or a data type, an instruction, a function): `speed: z50`, `speed: tool0`,
+/// `zone: tool0`, `tool: wobj0`, `speed: MoveL` would make a module the controller refuses at
+/// load. A name RAPID does not predefine is taken as data declared on the controller.
+pub fn check_data_type(name: &str, wanted: DataType) -> Result<(), TypeError> {
+    let Some(is) = predefined_kind(name) else {
+        return Ok(());
+    };
+    let ok = matches!(
+        (wanted, is),
+        (DataType::Speed, "a speeddata")
+            | (DataType::Zone, "a zonedata")
+            | (DataType::Tool, "a tooldata")
+            | (DataType::Wobj, "a wobjdata")
+            | (DataType::Load, "a loaddata")
+    );
+    if ok {
+        return Ok(());
+    }
+    Err(TypeError {
+        name: name.to_string(),
+        is,
+        wanted,
+    })
+}
+
+/// Checks a module's name: a RAPID identifier ([`check_identifier`]) and not the name of a
+/// system module every task holds ([`SYSTEM_MODULES`]).
+pub fn check_module_name(name: &str) -> Result<(), IdentifierError> {
+    check_identifier(name)?;
+    match SYSTEM_MODULES.iter().find(|m| m.eq_ignore_ascii_case(name)) {
+        Some(m) => Err(IdentifierError::SystemModule { name: m }),
+        None => Ok(()),
+    }
+}
+
 /// What the module appends to a robtarget point's name for its `CONST robtarget` (the point's
 /// own name stays its `CONST jointtarget`, the target of the move).
 pub const ROBTARGET_SUFFIX: &str = "_rt";
@@ -192,6 +474,14 @@ pub enum IdentifierError {
         /// The predefined name it clashes with, as RAPID spells it.
         name: String,
     },
+    /// The name of a system module every task holds (a module's name only).
+    #[error(
+        "{name:?} is a system module every controller task holds (names are case-insensitive)"
+    )]
+    SystemModule {
+        /// The system module, as RAPID spells it.
+        name: &'static str,
+    },
 }
 
 /// Checks a name that refers to RAPID data the module uses but does not declare (the speed,
@@ -242,6 +532,7 @@ pub fn check_identifier(name: &str) -> Result<(), IdentifierError> {
     check_data_name(name)?;
     if let Some(p) = PREDEFINED_NAMES
         .iter()
+        .chain(PREDEFINED_ROUTINES)
         .find(|p| p.eq_ignore_ascii_case(name))
     {
         return Err(IdentifierError::Predefined {
@@ -471,6 +762,67 @@ mod tests {
             check_data_name("9"),
             Err(IdentifierError::BadFirstChar { found: '9' })
         );
+    }
+
+    #[test]
+    fn a_data_name_must_have_the_type_of_its_use() {
+        use DataType::*;
+        for (name, ty) in [
+            ("v300", Speed),
+            ("VMAX", Speed),
+            ("vrot10", Speed),
+            ("fine", Zone),
+            ("Z50", Zone),
+            ("tool0", Tool),
+            ("wobj0", Wobj),
+            ("load0", Load),
+            // Not predefined: declared on the controller, of whatever type it must be.
+            ("vFast", Speed),
+            ("zWeld", Zone),
+            ("tTorch", Tool),
+            ("main", Speed),
+        ] {
+            assert_eq!(check_data_type(name, ty), Ok(()), "{name}");
+        }
+        for (name, ty, is) in [
+            ("z50", Speed, "a zonedata"),
+            ("fine", Speed, "a zonedata"),
+            ("tool0", Speed, "a tooldata"),
+            ("tool0", Zone, "a tooldata"),
+            ("v300", Zone, "a speeddata"),
+            ("wobj0", Tool, "a wobjdata"),
+            ("load0", Tool, "a loaddata"),
+            ("MoveL", Speed, "an instruction or function"),
+            ("offs", Zone, "an instruction or function"),
+            ("pi", Speed, "a num"),
+            ("num", Tool, "a data type"),
+            ("v300", Tool, "a speeddata"),
+        ] {
+            let e = check_data_type(name, ty).expect_err(name);
+            assert_eq!(e.is, is, "{name}");
+            assert!(e.to_string().contains(ty.rapid()), "{e}");
+        }
+    }
+
+    #[test]
+    fn a_module_may_not_be_named_like_a_system_module_or_a_routine() {
+        assert_eq!(
+            check_module_name("user"),
+            Err(IdentifierError::SystemModule { name: "user" })
+        );
+        assert_eq!(
+            check_module_name("Base"),
+            Err(IdentifierError::SystemModule { name: "BASE" })
+        );
+        assert_eq!(check_module_name("TrunkWeld"), Ok(()));
+        assert!(matches!(
+            check_identifier("Offs"),
+            Err(IdentifierError::Predefined { .. })
+        ));
+        assert!(matches!(
+            check_identifier("WaitTime"),
+            Err(IdentifierError::Predefined { .. })
+        ));
     }
 
     #[test]

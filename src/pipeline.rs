@@ -9,18 +9,21 @@
 //! everything after them is a pure function of their results. Errors are the stages' own,
 //! wrapped in [`Error`] with the place in the cell file they point at.
 
-use crate::collision::CollisionModel;
+use crate::collision::{CollisionModel, GridCheck};
 use crate::error::{Error, Failure};
-pub use crate::load::{load, robot_of, Loaded};
+pub use crate::load::{check_budgets, load, robot_of, Loaded};
 use crate::output::program::{self, RobotFacts};
 use crate::output::rapid::{self, ModuleTemplate, RapidError, TemplateError};
+use crate::place::near_limit::{near_limits, NearLimit};
 use crate::place::{self, locate::Sketch, Placed, Survey};
 use crate::plan::cspace::{CSpace, Grid};
-use crate::plan::{self, Method, Route};
+use crate::plan::{self, Legs, Method, Route};
+use crate::process;
 use crate::progress::{Progress, Silent};
 use crate::refine::{self, Plan, Refined};
 use crate::timing;
 use std::path::Path;
+use std::sync::Arc;
 
 /// The warnings for stderr right after loading: the robot's convention when it has no
 /// controller file, and the speeddata the time stage cannot estimate.
@@ -64,32 +67,47 @@ pub fn sketch(job: &Loaded) -> Result<Sketch, Error> {
 }
 
 /// The inspect stage's result: the collision model of the placed robot and the grid over axes
-/// 1..3 with every node inspected (paper section 3).
+/// 1..3 (paper section 3), its nodes inspected as the plan stage's waves reach them
+/// (`plan::cspace`: the same codes as inspecting every node first).
 pub struct Inspected {
-    pub model: CollisionModel,
+    pub model: Arc<CollisionModel>,
     pub cspace: CSpace,
 }
 
 /// Inspect: the model at the placement and the grid at `grid_deg` over the ranges of axes 1..3,
-/// reporting the grid fill to `progress` (one unit per axis-1 slice).
-pub fn inspect(job: &Loaded, placed: &Placed, grid_deg: f64, progress: &dyn Progress) -> Inspected {
+/// each node inspected when a wave first reads it (nothing inspected yet:
+/// `CSpace::inspect_all` inspects the whole grid).
+pub fn inspect(job: &Loaded, placed: &Placed, grid_deg: f64) -> Inspected {
     let model = CollisionModel::of_cell(&job.cell, &job.robot, placed.placement);
+    let model = Arc::new(model);
     let a = &job.robot.controller.axes;
     let grid = Grid::over([0, 1, 2].map(|k| [a[k].min_deg, a[k].max_deg]), grid_deg);
-    progress.stage("inspecting the grid", grid.dims[0] as u64);
-    let cspace = CSpace::build_observed(grid, &model.grid_check(grid_deg), progress);
+    let check = GridCheck::new(Arc::clone(&model), grid_deg);
+    let cspace = CSpace::lazy(grid, Arc::new(check));
     Inspected { model, cspace }
 }
 
-/// Plan: the route through the points with `method`, every move proven; a failure points at the
-/// point it is about.
+/// Plan: the route through the points with `method` (the paper's method: every leg on the
+/// grid), every move proven; a failure points at the point it is about.
 pub fn route(
     job: &Loaded,
     placed: &Placed,
     got: &Inspected,
     method: Method,
 ) -> Result<Route, Error> {
-    plan::route(&got.cspace, &got.model, &placed.points, method).map_err(|source| {
+    route_with(job, placed, got, method, Legs::GridOnly)
+}
+
+/// [`route`] with `legs` saying which legs the grid plans (`plan::direct`).
+pub fn route_with(
+    job: &Loaded,
+    placed: &Placed,
+    got: &Inspected,
+    method: Method,
+    legs: Legs,
+) -> Result<Route, Error> {
+    let (cs, model, points) = (&got.cspace, &got.model, &placed.points);
+    plan::route_with(cs, model, points, method, legs).map_err(|source| {
         let loc = job.cell.points.get(source.point()).map(|p| p.loc);
         Error::Plan {
             source,
@@ -115,6 +133,67 @@ pub fn refine(
     let model = timing::TimeModel::new(&job.robot, job.cell.tool.as_ref());
     let time = |r: &Route, m: &[place::MoveMotion]| timing::estimate(r, m, &model);
     refine::refine(route, &got.model, &placed.points, &settings, &time)
+}
+
+/// Follow, plan and refine: the process moves followed and proven (`process::follow`), the air
+/// route planned (`plan::route`) and refined (`refine::refine`) over each run of stops joined
+/// through the air, and the whole spliced into one plan (`process::splice`). A cell without
+/// process keys is one run of its points: the plan as `route` and `refine` make it.
+pub fn plan_all(
+    job: &Loaded,
+    placed: &Placed,
+    got: &Inspected,
+    method: Method,
+    legs: Legs,
+) -> Result<Refined, Error> {
+    let shortcut = job.cell.planner.shortcut;
+    let cell = &job.cell;
+    let followed =
+        process::follow(cell, &job.robot, placed, &got.model).map_err(|e| Error::Process {
+            source: Box::new(e),
+        })?;
+    let model = timing::TimeModel::new(&job.robot, cell.tool.as_ref());
+    let time = |r: &Route, m: &[place::MoveMotion]| timing::estimate(r, m, &model);
+    let mut warnings = followed.warnings.clone();
+    let mut plans = Vec::new();
+    for run in followed.air_runs() {
+        let points = followed.points_of(&run, placed);
+        let route = plan::route_with(&got.cspace, &got.model, &points, method, legs);
+        let route = route.map_err(|source| {
+            let entry = followed.entry_of(&run, source.point());
+            let loc = cell.points.get(entry).map(|p| p.loc);
+            Error::Plan {
+                source,
+                loc: loc.unwrap_or_default(),
+            }
+        })?;
+        let settings = refine::Settings {
+            shortcut,
+            via_zone: &cell.motion.via_zone,
+            explicit_zone: followed.stops[run.clone()]
+                .iter()
+                .map(|s| match s.kind {
+                    process::StopKind::Entry(i) => {
+                        cell.points.get(i).is_some_and(|p| p.zone.is_some())
+                    }
+                    _ => false,
+                })
+                .collect(),
+        };
+        let refined = refine::refine(route, &got.model, &points, &settings, &time);
+        warnings.extend(refined.warnings);
+        plans.push((run, refined.plan));
+    }
+    let waits_s: f64 = (cell.points.iter())
+        .flat_map(|p| &p.actions)
+        .map(|a| match a.kind {
+            crate::cell::ActionKind::WaitTime { time_s } => time_s,
+            _ => 0.0,
+        })
+        .sum();
+    let grid_deg = got.cspace.grid.step_deg;
+    let plan = process::splice(&followed, plans, method, grid_deg, waits_s);
+    Ok(Refined { plan, warnings })
 }
 
 /// The render stage's result: the module's content, its text and its names of the waypoints.
@@ -208,24 +287,35 @@ impl std::fmt::Debug for Halted {
 /// Place, inspect, plan, refine and render, in that order, reporting each stage to
 /// `opts.progress`; the shortcut pass as `planner.shortcut` says.
 pub fn run(job: &Loaded, opts: &Options) -> Result<Outcome, Halted> {
+    check_budgets(job, opts.grid_deg, 1)?;
     let progress = opts.progress;
     progress.stage("placing the robot", 0);
     let placed = place(job)?;
-    let inspected = inspect(job, &placed, opts.grid_deg, progress);
+    let inspected = inspect(job, &placed, opts.grid_deg);
     progress.stage("planning and proving the moves", 0);
-    let route = match route(job, &placed, &inspected, opts.method) {
-        Ok(route) => route,
+    let legs = Legs::of(&job.cell.planner);
+    let Refined {
+        plan,
+        warnings: refined,
+    } = match plan_all(job, &placed, &inspected, opts.method, legs) {
+        Ok(r) => r,
         Err(error) => {
-            let searched = Some(Box::new(Searched { placed, inspected }));
+            let searched = match error {
+                Error::Plan { .. } => Some(Box::new(Searched { placed, inspected })),
+                _ => None,
+            };
             return Err(Halted {
                 error: Box::new(error),
                 searched,
             });
         }
     };
-    progress.stage("shortening the route and proving the zones", 0);
-    let shortcut = job.cell.planner.shortcut;
-    let Refined { plan, warnings } = refine(job, &placed, &inspected, route, shortcut);
+    // The place stage's warnings (axes 4 and 6 near a limit), then the refine stage's.
+    let mut warnings: Vec<String> = near_limits(&placed, &job.robot)
+        .iter()
+        .map(NearLimit::warning)
+        .collect();
+    warnings.extend(refined);
     progress.stage("writing the module", 0);
     let rendered = render(job, &placed, &plan, &opts.template)?;
     Ok(Outcome {

@@ -102,6 +102,11 @@
 //! routes, not a cycle time: the real controller blends, limits torques and plans its own
 //! profiles (`docs/rapid.md`, "What the controller does that gen-rapid's time estimate does
 //! not").
+//!
+//! A process move (a `MoveL` line or `MoveC` arc the controller runs along its path) has its own
+//! time, [`process::process_move_time`], by the same three limits ([`limits`]).
+
+pub mod process;
 
 use crate::cell::{Cell, Tool};
 use crate::excerpt;
@@ -263,20 +268,20 @@ pub struct MoveTime {
 /// most at a speed and an acceleration (an axis: degrees; the TCP path: mm; the reorientation:
 /// degrees), with the paper's profiles.
 #[derive(Clone, Copy, Debug)]
-struct Course {
-    d: f64,
-    v: f64,
-    a: f64,
+pub(crate) struct Course {
+    pub(crate) d: f64,
+    pub(crate) v: f64,
+    pub(crate) a: f64,
 }
 
 impl Course {
-    fn time_s(&self) -> f64 {
+    pub(crate) fn time_s(&self) -> f64 {
         axis_time_s(self.d, self.v, self.a)
     }
 
     /// The ramp of its ramp-cruise-ramp profile where that profile is the faster, else `None`
     /// (one quintic).
-    fn cruise_ramp_s(&self) -> Option<f64> {
+    pub(crate) fn cruise_ramp_s(&self) -> Option<f64> {
         match cruise_profile_s(self.d, self.v, self.a) {
             Some(t) if self.d > 0.0 && t <= quintic_profile_s(self.d, self.v, self.a) => {
                 Some(ramp_time_s(self.v, self.a))
@@ -286,29 +291,33 @@ impl Course {
     }
 }
 
-/// The time of the move `from` -> `to` from rest to rest under `speed` (`None`: a speeddata
-/// that is not predefined; the axes alone): the longest of the axis-limited profile, the TCP
-/// path at `v_tcp` and the reorientation at `v_ori`, each of the last two with the ramps the
-/// axes allow it (module doc, "The speeddata").
-pub fn move_time(
-    from: &[f64; 6],
-    to: &[f64; 6],
-    model: &TimeModel,
+/// What the three limits of a move give (module doc, "The speeddata"): each one's time, the
+/// longest, which led and its profile, and the fly-by saving at one end.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Limits {
+    pub(crate) axis_s: f64,
+    pub(crate) tcp_s: f64,
+    pub(crate) reorientation_s: f64,
+    pub(crate) stop_s: f64,
+    pub(crate) limit: Limit,
+    pub(crate) profile: Profile,
+    pub(crate) end_saving_s: f64,
+}
+
+/// The longest of the axes (`axes`: each axis's course, those that move; `axis_s` their
+/// longest time and `axis_profile` its profile), the TCP path of `length_mm` at `v_tcp` and the
+/// reorientation of `turn_deg` at `v_ori` under `speed` (`None`: the axes alone), each of the
+/// last two with the ramps the axes allow it; ties to the axes (module doc, "The speeddata";
+/// the fly-by saving, "Fly-by"). Shared with the process moves' time (`process_time`), whose
+/// axes' distances are their travel summed along the path.
+pub(crate) fn limits(
+    axes: &[Course],
+    axis_s: f64,
+    axis_profile: Profile,
+    length_mm: f64,
+    turn_deg: f64,
     speed: Option<SpeedData>,
-) -> MoveTime {
-    let axis_s = move_time_s(from, to, model.axes);
-    let path = match speed {
-        Some(_) => tcp_path(from, to, |q| model.tcp(q)),
-        None => TcpPath::default(),
-    };
-    let axes: Vec<Course> = (0..6)
-        .map(|k| Course {
-            d: (to[k] - from[k]).abs(),
-            v: model.axes[k].speed_deg_s,
-            a: model.axes[k].acceleration(),
-        })
-        .filter(|l| l.d > 0.0)
-        .collect();
+) -> Limits {
     // The least acceleration of the move's progress (share of the move per s^2) any axis allows.
     let progress_acceleration = axes.iter().map(|l| l.a / l.d).fold(f64::INFINITY, f64::min);
     // And the highest speed of the progress every axis allows: a TCP or turn course never runs
@@ -321,8 +330,8 @@ pub fn move_time(
     };
     let (tcp, reorientation) = match speed {
         Some(s) if s.v_tcp_mm_s > 0.0 && s.v_ori_deg_s > 0.0 && !axes.is_empty() => (
-            (path.length_mm > 0.0).then(|| along(path.length_mm, s.v_tcp_mm_s)),
-            (path.angle_deg > 0.0).then(|| along(path.angle_deg, s.v_ori_deg_s)),
+            (length_mm > 0.0).then(|| along(length_mm, s.v_tcp_mm_s)),
+            (turn_deg > 0.0).then(|| along(turn_deg, s.v_ori_deg_s)),
         ),
         _ => (None, None),
     };
@@ -348,7 +357,7 @@ pub fn move_time(
         _ => (
             axis_s.max(tcp_s).max(reorientation_s),
             Limit::Axis,
-            move_profile(from, to, model.axes),
+            axis_profile,
         ),
     };
     // What flying through one end saves: the least over the limits (module doc, "Fly-by").
@@ -358,7 +367,7 @@ pub fn move_time(
             end_saving_s = end_saving_s.min(ramp_s * stop_s / (2.0 * course.time_s()));
         }
     }
-    MoveTime {
+    Limits {
         axis_s,
         tcp_s,
         reorientation_s,
@@ -366,6 +375,47 @@ pub fn move_time(
         limit,
         profile,
         end_saving_s,
+    }
+}
+
+/// The time of the move `from` -> `to` from rest to rest under `speed` (`None`: a speeddata
+/// that is not predefined; the axes alone): the longest of the axis-limited profile, the TCP
+/// path at `v_tcp` and the reorientation at `v_ori`, each of the last two with the ramps the
+/// axes allow it (module doc, "The speeddata").
+pub fn move_time(
+    from: &[f64; 6],
+    to: &[f64; 6],
+    model: &TimeModel,
+    speed: Option<SpeedData>,
+) -> MoveTime {
+    let path = match speed {
+        Some(_) => tcp_path(from, to, |q| model.tcp(q)),
+        None => TcpPath::default(),
+    };
+    let axes: Vec<Course> = (0..6)
+        .map(|k| Course {
+            d: (to[k] - from[k]).abs(),
+            v: model.axes[k].speed_deg_s,
+            a: model.axes[k].acceleration(),
+        })
+        .filter(|l| l.d > 0.0)
+        .collect();
+    let l = limits(
+        &axes,
+        move_time_s(from, to, model.axes),
+        move_profile(from, to, model.axes),
+        path.length_mm,
+        path.angle_deg,
+        speed,
+    );
+    MoveTime {
+        axis_s: l.axis_s,
+        tcp_s: l.tcp_s,
+        reorientation_s: l.reorientation_s,
+        stop_s: l.stop_s,
+        limit: l.limit,
+        profile: l.profile,
+        end_saving_s: l.end_saving_s,
         path,
     }
 }

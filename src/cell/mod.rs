@@ -28,6 +28,7 @@
 //! later stages do not use all of these yet: [`unsupported`] says which, and the pipeline
 //! refuses a cell that uses them.
 
+mod present;
 mod raw;
 mod syntax;
 mod unsupported;
@@ -145,6 +146,20 @@ impl Frame {
         pos_mm: [0.0, 0.0, 0.0],
         quat_wxyz: [1.0, 0.0, 0.0, 0.0],
     };
+
+    /// The frame as the module writes it (positions to [`POSITION_DECIMALS`], quaternion
+    /// components to [`QUATERNION_DECIMALS`]): what the controller reads. Its
+    /// [`isometry`](Self::isometry) normalises the quaternion, as the controller does.
+    ///
+    /// [`POSITION_DECIMALS`]: crate::precision::POSITION_DECIMALS
+    /// [`QUATERNION_DECIMALS`]: crate::precision::QUATERNION_DECIMALS
+    pub fn written(&self) -> Frame {
+        use crate::precision::{round, POSITION_DECIMALS, QUATERNION_DECIMALS};
+        Frame {
+            pos_mm: self.pos_mm.map(|v| round(v, POSITION_DECIMALS)),
+            quat_wxyz: self.quat_wxyz.map(|v| round(v, QUATERNION_DECIMALS)),
+        }
+    }
 
     /// The frame as a rigid transform (mm).
     pub fn isometry(&self) -> nalgebra::Isometry3<f64> {
@@ -401,6 +416,8 @@ pub struct Planner {
     /// `planner.shortcut`: after the paper's method, the continuous shortcut pass (`refine`).
     /// `false` keeps the paper's method alone.
     pub shortcut: bool,
+    /// Where `planner.grid` is given (`None`: the default), for a budget the grid passes.
+    pub grid_loc: Option<Loc>,
 }
 
 /// The cell's `motion:` defaults.
@@ -535,7 +552,7 @@ impl CellError {
         match self {
             CellError::Syntax { help, .. } | CellError::Invalid { help, .. } => Some(
                 help.as_deref()
-                    .unwrap_or("README.md, \"The cell file\", describes every key and the values it takes"),
+                    .unwrap_or("docs/cell.md describes every key and the values it takes"),
             ),
             CellError::Read { .. } => Some(
                 "CELL is the path of a cell file (YAML text); `gen-rapid --help` shows a minimal cell",
@@ -574,8 +591,11 @@ pub fn parse(path: &Path, text: &str) -> Result<Cell, CellError> {
     budget.enforce_alias_anchor_ratio = false;
     let mut options = serde_saphyr::Options::default();
     options.budget = Some(budget);
-    let raw: raw::RawCell = serde_saphyr::from_str_with_options(text, options)
+    let raw: raw::RawCell = serde_saphyr::from_str_with_options(text, options.clone())
         .map_err(|e| syntax::refusal(text, &e))?;
+    if let Some(e) = present::first_key_without_value(text, options) {
+        return Err(e);
+    }
     validate::cell(path, raw)
 }
 

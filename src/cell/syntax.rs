@@ -205,7 +205,7 @@ fn describe(e: &Error, text: &Text) -> Said {
         } => {
             let help = suggestion(field, expected)
                 .map(|k| format!("did you mean `{k}`?"))
-                .or_else(|| Some("remove the key, or check its spelling and indentation (README.md, \"The cell file\", lists every key)".into()));
+                .or_else(|| Some("remove the key, or check its spelling and indentation (docs/cell.md lists every key)".into()));
             said(
                 format!(
                     "unknown field `{}`, expected one of {}",
@@ -263,18 +263,59 @@ fn describe(e: &Error, text: &Text) -> Said {
             format!("the cell file repeats its anchors too often ({aliases} aliases `*name`)"),
             Some("write the repeated values out (or give them anchors of their own); the YAML reader bounds how far aliases may expand a file".into()),
         ),
-        Error::Budget { .. } => said(
-            "the cell file is too large or too deeply nested to be a cell".into(),
-            Some(format!("the YAML reader's limit: {}", reader_text(e))),
-        ),
+        Error::Budget { breach, .. } => {
+            let (what, limit) = budget_breach(breach);
+            said(
+                format!("the cell file passes the YAML reader's budget: {what}"),
+                Some(format!("{limit}; a cell of the largest size a run takes (docs/limits.md: 2 000 points, 5 000 obstacles, 64 tool shapes) stays well within it; split a larger job into several cells")),
+            )
+        }
         _ => said(reader_text(e), None),
     }
 }
 
-const FORM_HELP: &str =
-    "README.md, \"The cell file\" and \"For robot programmers\", shows the form of every key";
+/// What a breach of the YAML reader's budget counts, and the limit, in words.
+fn budget_breach(breach: &BudgetBreach) -> (String, String) {
+    let b = serde_saphyr::Budget::default();
+    match breach {
+        BudgetBreach::Nodes { nodes } => (
+            format!("more than {} YAML nodes (values, lists and mappings; {nodes} read when it stopped)", b.max_nodes),
+            format!("a cell file holds at most {} YAML nodes", b.max_nodes),
+        ),
+        BudgetBreach::Events { events } => (
+            format!("more than {} YAML events ({events} read when it stopped)", b.max_events),
+            format!("a cell file holds at most {} YAML events", b.max_events),
+        ),
+        BudgetBreach::Depth { depth } => (
+            format!("lists and mappings nested {depth} deep"),
+            format!("a cell file nests at most {} levels", b.max_depth),
+        ),
+        BudgetBreach::ScalarBytes { total_scalar_bytes } => (
+            format!("{total_scalar_bytes} bytes of values"),
+            format!("a cell file's values hold at most {} bytes", b.max_total_scalar_bytes),
+        ),
+        BudgetBreach::Documents { documents } => (
+            format!("{documents} YAML documents"),
+            "a cell file is one YAML document".into(),
+        ),
+        BudgetBreach::Anchors { anchors } => (
+            format!("{anchors} anchors"),
+            format!("a cell file defines at most {} anchors", b.max_anchors),
+        ),
+        BudgetBreach::MergeKeys { merge_keys } => (
+            format!("{merge_keys} merge keys"),
+            format!("a cell file has at most {} merge keys", b.max_merge_keys),
+        ),
+        other => (
+            excerpt::value(&format!("{other:?}")).into_owned(),
+            "the YAML reader bounds the size of a file it reads".into(),
+        ),
+    }
+}
 
-const KEYS_HELP: &str = "a cell gives `module: Name`, `robot:` (with `urdf:` and `base:`) and `points:` (at least two), and may give `obstacles:`, `planner:`, `motion:`, `tool:`, `wobj:` or `wobjs:`, and `loads:` (README.md, \"The cell file\"; docs/cell.md)";
+const FORM_HELP: &str = "docs/cell.md and docs/guide.md show the form of every key";
+
+const KEYS_HELP: &str = "a cell gives `module: Name`, `robot:` (with `urdf:` and `base:`) and `points:` (at least two), and may give `obstacles:`, `planner:`, `motion:`, `tool:`, `wobj:` or `wobjs:`, and `loads:` (docs/cell.md)";
 
 /// The parser's refusals (module docs).
 fn scan(kind: &ErrorKind, loc: Loc, text: &Text, reader: String) -> Said {

@@ -21,6 +21,7 @@ fn defaults_fill_what_a_cell_leaves_out() {
             grid_deg: 1.0,
             clearance_mm: 10.0,
             shortcut: true,
+            grid_loc: None,
         }
     );
     assert_eq!(
@@ -180,8 +181,25 @@ fn refusals_name_the_key_and_its_place() {
             10,
         ),
         (
+            format!("{MINIMAL}motion:\n  speed: vFast\n  zone: VFAST\n"),
+            "motion.zone 'VFAST' is already the name of motion.speed",
+            10,
+        ),
+        (
+            format!("{MINIMAL}motion:\n  zone: mine\n").replace("module: M", "module: Mine"),
+            "module name 'Mine' is already the name of motion.zone",
+            1,
+        ),
+        // A predefined name of another type: the type says it (`zone: v300` is a speeddata).
+        (
             format!("{MINIMAL}motion:\n  zone: v300\n"),
-            "motion.zone 'v300' is already the name of motion.speed (its default)",
+            "motion.zone 'v300' is a speeddata in RAPID, not a zonedata",
+            9,
+        ),
+        // Data named like the default routine: refused at the datum's line.
+        (
+            format!("{MINIMAL}motion:\n  speed: MAIN\n"),
+            "motion.speed 'MAIN' is already the name of the module's PROC main",
             9,
         ),
         // `base: auto` needs positions, not joint values.

@@ -171,7 +171,7 @@ fn every_refusal_of_the_daily_keys_points_at_its_line() {
         (pick_with("{ revisit: HOME, speed: v1000 }", "{ revisit: HOME, move: linear }"), "the revisit of 'home' is reached `linear`, which needs a robtarget, but 'home' gives joint values", "revisit: HOME"),
         (pick_with("{ revisit: HOME, speed: v1000 }", "{ revisit: HOME, speed: 'v 1000' }"), "the revisit of 'home' speed 'v 1000' is not a valid RAPID name", "revisit: HOME"),
         (pick_with("{ revisit: HOME, speed: v1000 }", "{ revisit: HOME, speed: home }"), "point name 'home' is already the name of the speed of the revisit of 'home' (line 15)", "name: home"),
-        (pick_with("{ revisit: HOME, speed: v1000 }", "{ revisit: HOME, speed: z10 }"), "the revisit of 'home' speed 'z10' is already the name of the zone of the revisit of 'pick'", "revisit: HOME"),
+        (pick_with("{ revisit: HOME, speed: v1000 }", "{ revisit: HOME, speed: z10 }"), "the revisit of 'home' speed 'z10' is a zonedata in RAPID, not a speeddata", "revisit: HOME"),
         // the second `pick` is a duplicate, not a revisit: the help says how to revisit.
         (pick_with("{ revisit: pick, move: linear", "{ name: PICK, move: linear"), "point name 'PICK' is used twice (first at line 11)", "name: PICK"),
         // robot.frame

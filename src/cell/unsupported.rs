@@ -1,12 +1,12 @@
 //! The guard between the cell file and the later stages: the keys the cell validation reads but
-//! the place, plan and render stages do not carry out yet (process moves, approach and retract
-//! lines, actions, loads, revisits, the closed cycle, the base frame, several work objects). A
+//! the place, plan and render stages do not carry out yet (revisits, the closed cycle, several
+//! work objects, the base frame together with process moves). A
 //! cell that uses one is refused at its line, so no module is written that leaves out what the
 //! cell asks for. Orientations given as `zyx` need no guard: they are read into the same
 //! quaternions. Once the later stages carry out a key, its line here goes; once they carry out
 //! all, this file goes.
 
-use super::{Arrival, Cell, CellError, Loc, RobotFrame};
+use super::{Cell, CellError, Loc};
 
 /// Refuses a cell that uses a key the later stages do not carry out yet (module docs): the first
 /// such key in the file.
@@ -14,37 +14,27 @@ pub fn unsupported(cell: &Cell) -> Result<(), CellError> {
     let mut uses: Vec<(Loc, String)> = Vec::new();
     for p in &cell.points {
         let who = p.label();
-        match p.arrival {
-            Arrival::Joint => {}
-            Arrival::Linear => uses.push((p.arrival_loc, format!("{who}: `move: linear`"))),
-            Arrival::Circular { .. } => {
-                uses.push((p.arrival_loc, format!("{who}: `move: circular`")))
-            }
-        }
-        if p.approach_mm.is_some() {
-            uses.push((p.approach_loc, format!("{who}: `approach`")));
-        }
-        if p.retract_mm.is_some() {
-            uses.push((p.retract_loc, format!("{who}: `retract`")));
-        }
-        if let Some(a) = p.actions.first() {
-            uses.push((a.loc, format!("{who}: actions (`do`)")));
-        }
         if p.revisit_of.is_some() {
             uses.push((p.loc, format!("{who}: `revisit`")));
         }
     }
-    if let Some(l) = cell.loads.first() {
-        uses.push((l.loc, "`loads:`".into()));
-    }
     if let Some(w) = cell.wobjs.get(1) {
         uses.push((w.loc, "a second work object".into()));
     }
+    // The base frame with process moves: the follow stage works from the cell-frame poses, not
+    // yet from the data as the base frame writes them.
+    let process = |p: &super::Point| {
+        p.approach_mm.is_some() || p.retract_mm.is_some() || p.arrival != super::Arrival::Joint
+    };
+    if cell.robot.frame == super::RobotFrame::Base && cell.points.iter().any(process) {
+        uses.push((
+            cell.robot.frame_loc,
+            "`robot.frame: base` with process moves (approach, retract, `move: linear | circular`)"
+                .into(),
+        ));
+    }
     if cell.motion.cycle {
         uses.push((cell.motion.cycle_loc, "`motion.cycle: true`".into()));
-    }
-    if cell.robot.frame == RobotFrame::Base {
-        uses.push((cell.robot.frame_loc, "`robot.frame: base`".into()));
     }
     match uses.into_iter().min_by_key(|(l, _)| (l.line, l.column)) {
         None => Ok(()),

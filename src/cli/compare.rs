@@ -41,6 +41,8 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
     let job = pipeline::load(&opts.cell)?;
     super::warn(&job);
     let grid_deg = opts.grid_deg.unwrap_or(job.cell.planner.grid_deg);
+    // Three searches and the shortcut row on every leg.
+    pipeline::check_budgets(&job, grid_deg, 4).map_err(|e| job.fail(e))?;
     let placed = pipeline::place(&job).map_err(|e| {
         let mut failure = job.fail(e);
         if let Some(path) = &opts.svg {
@@ -51,7 +53,9 @@ pub fn compare(opts: &CompareOptions) -> Result<String, Failure> {
         }
         failure
     })?;
-    let inspected = pipeline::inspect(&job, &placed, grid_deg, &Silent);
+    let inspected = pipeline::inspect(&job, &placed, grid_deg);
+    // The whole grid inspected first, as the paper does: no method's planning time holds it.
+    inspected.cspace.inspect_all(&Silent);
     let attempts = attempts(&job, &placed, &inspected);
     let mut rows: Vec<Row> = attempts
         .iter()

@@ -5,118 +5,151 @@
 
 pub mod compare;
 pub mod locate;
+pub mod outputs;
 pub mod progress;
 pub mod robots;
 pub mod run;
+pub mod warnings;
 
 use crate::error::Error;
 use crate::pipeline::Loaded;
-use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
-/// Prints the job's warnings (a robot without a controller file, ...) to stderr, one per line,
-/// right after loading: before the summary line on success, before the error on failure.
-/// Never on stdout.
+/// Prints the job's warnings (a robot without a controller file, ...) to stderr, grouped by
+/// kind ([`warnings::grouped`]), right after loading: before the summary line on success,
+/// before the error on failure. Never on stdout.
 pub fn warn(job: &Loaded) {
-    for w in crate::pipeline::warnings(job) {
-        eprintln!("{w}");
+    warn_lines(&crate::pipeline::warnings(job));
+}
+
+/// Prints warnings to stderr, grouped by kind ([`warnings::grouped`]).
+pub fn warn_lines(lines: &[String]) {
+    for line in warnings::grouped(lines) {
+        outputs::say(&format!("{line}\n"));
     }
 }
 
-/// Writes every file atomically and, as far as the file system allows, all or none: each goes
-/// to a temporary file beside its place first (a path that is a directory, or a directory that
-/// is missing or read-only, fails here, before any file is in place), and only when all of them
-/// are written are they renamed into place, in order. On a failure every temporary file left is
-/// removed, so a run that cannot write its module leaves no picture, page or report of it
-/// either (a rename failing after others succeeded, which needs the file system to change under
-/// the run, is the one way to keep some). A path that names something other than a file or a
-/// directory (a device such as `/dev/null` or `/dev/stdout`, a pipe) is written in place,
-/// after every file is in place: a rename would replace the device with a file. A path that is
-/// a link to a file (`/dev/stdout` redirected to a file) replaces the file it leads to, not the
-/// link.
-fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), Error> {
-    use std::path::PathBuf;
-    let err = |path: &Path| {
-        let path = path.to_path_buf();
-        move |source| Error::Write { path, source }
-    };
-    // (temporary file, where it goes, the path as named)
-    let mut written: Vec<(PathBuf, PathBuf, &Path)> = Vec::new();
-    let mut in_place: Vec<(&Path, &[u8])> = Vec::new();
-    let clean = |temps: &[(PathBuf, PathBuf, &Path)]| {
-        for (tmp, _, _) in temps {
-            let _ = std::fs::remove_file(tmp);
+/// Whether two paths name the same file: the same destination ([`destination`]: resolved links
+/// and `..`, whether the file exists or not), or the same file on the disk (a hard link, or
+/// `/dev/stdout` and the file stdout goes to).
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    if a == b {
+        return true;
+    }
+    if let (Some(x), Some(y)) = (destination(a), destination(b)) {
+        if x == y {
+            return true;
         }
-    };
-    for (i, &(named, bytes)) in files.iter().enumerate() {
-        if std::fs::metadata(named).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
-            in_place.push((named, bytes));
-            continue;
+    }
+    matches!((identity(a), identity(b)), (Some(x), Some(y)) if x == y)
+}
+
+/// The file a path will be once written, as an absolute path with no link and no `.` or `..`
+/// left: a link followed as the writer follows it ([`outputs::target_of`], also a link to a
+/// file not yet written), the longest part of it that exists resolved by the file system, the
+/// rest, which does not exist yet, taken as written (`d/../a.svg` and `./a.svg` are one file
+/// when `d` is a directory). `None` when the path cannot be resolved
+/// (a `..` after a part that does not exist: such a path cannot be written at all).
+pub fn destination(path: &Path) -> Option<PathBuf> {
+    use std::path::Component;
+    let absolute = std::path::absolute(outputs::target_of(path)).ok()?;
+    let mut resolved = PathBuf::new();
+    let mut missing = false;
+    for part in absolute.components() {
+        match part {
+            Component::Prefix(_) | Component::RootDir => resolved.push(part.as_os_str()),
+            Component::CurDir => {}
+            Component::ParentDir if missing => return None,
+            Component::ParentDir => {
+                resolved.pop();
+            }
+            Component::Normal(name) => {
+                resolved.push(name);
+                if !missing {
+                    match std::fs::canonicalize(&resolved) {
+                        Ok(real) => resolved = real,
+                        Err(_) => missing = true,
+                    }
+                }
+            }
         }
-        let link = std::fs::symlink_metadata(named).is_ok_and(|m| m.file_type().is_symlink());
-        let path = if link {
-            std::fs::canonicalize(named).unwrap_or_else(|_| named.to_path_buf())
-        } else {
-            named.to_path_buf()
-        };
+    }
+    Some(resolved)
+}
+
+/// The device and inode of the file a path names, following links, if it exists.
+fn identity(path: &Path) -> Option<(u64, u64)> {
+    use std::os::unix::fs::MetadataExt;
+    std::fs::metadata(path).ok().map(|m| (m.dev(), m.ino()))
+}
+
+/// The device and inode of the file stdout writes (a file, a pipe, a terminal), if it is open.
+pub fn stdout_identity() -> Option<(u64, u64)> {
+    use std::os::fd::AsFd;
+    use std::os::unix::fs::MetadataExt;
+    let fd = std::io::stdout().as_fd().try_clone_to_owned().ok()?;
+    let m = std::fs::File::from(fd).metadata().ok()?;
+    Some((m.dev(), m.ino()))
+}
+
+/// Whether the path names the file stderr writes (`/dev/stderr`, or the file stderr goes to);
+/// `/dev/null` never counts.
+pub fn is_stderr(path: &Path) -> bool {
+    use std::os::fd::AsFd;
+    use std::os::unix::fs::MetadataExt;
+    let err = std::io::stderr()
+        .as_fd()
+        .try_clone_to_owned()
+        .ok()
+        .and_then(|fd| std::fs::File::from(fd).metadata().ok())
+        .map(|m| (m.dev(), m.ino()));
+    let null = identity(Path::new("/dev/null"));
+    match (identity(path), err) {
+        (Some(x), Some(y)) => x == y && Some(x) != null,
+        _ => false,
+    }
+}
+
+/// Whether the path names the file stdout writes (`/dev/stdout`, `/proc/self/fd/1`, or the
+/// file stdout is redirected to); `/dev/null` never counts (discarding twice loses nothing).
+pub fn is_stdout(path: &Path) -> bool {
+    let null = identity(Path::new("/dev/null"));
+    match (identity(path), stdout_identity()) {
+        (Some(x), Some(y)) => x == y && Some(x) != null,
+        _ => false,
+    }
+}
+
+/// An output that cannot be written whatever the run makes, found before the run: a directory,
+/// or a file in a directory that does not exist. (The write itself still checks, and all the
+/// rest: a read-only directory, a full disk.)
+pub fn unwritable(path: &Path) -> Option<Error> {
+    let why = if path.is_dir() {
+        "it is a directory"
+    } else {
         let dir = path
             .parent()
             .filter(|d| !d.as_os_str().is_empty())
             .unwrap_or(Path::new("."));
-        let name = path
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        let tmp = dir.join(format!(".{name}.{}.{i}.tmp", std::process::id()));
-        let result = (|| {
-            if path.is_dir() {
-                return Err(std::io::Error::new(
-                    std::io::ErrorKind::IsADirectory,
-                    "it is a directory",
-                ));
-            }
-            let mut f = std::fs::File::create(&tmp)?;
-            written.push((tmp.clone(), path.clone(), named));
-            f.write_all(bytes)?;
-            f.sync_all()
-        })();
-        if let Err(e) = result {
-            clean(&written);
-            return Err(err(named)(e));
+        if target_of_exists(path) || dir.is_dir() {
+            return None;
         }
-    }
-    for (k, (tmp, path, named)) in written.iter().enumerate() {
-        if let Err(e) = std::fs::rename(tmp, path) {
-            clean(&written[k..]);
-            return Err(err(named)(e));
-        }
-    }
-    for (path, bytes) in in_place {
-        std::fs::OpenOptions::new()
-            .write(true)
-            .open(path)
-            .and_then(|mut f| f.write_all(bytes))
-            .map_err(err(path))?;
-    }
-    Ok(())
+        "its directory does not exist"
+    };
+    Some(Error::Write {
+        path: path.to_path_buf(),
+        source: std::io::Error::new(std::io::ErrorKind::NotFound, why),
+    })
 }
 
-/// Whether two paths name the same file: equal, equal made absolute, or equal resolved (links
-/// and `..` of paths that exist).
-pub fn same_file(a: &Path, b: &Path) -> bool {
-    a == b
-        || matches!(
-            (std::path::absolute(a), std::path::absolute(b)),
-            (Ok(x), Ok(y)) if x == y
-        )
-        || matches!(
-            (std::fs::canonicalize(a), std::fs::canonicalize(b)),
-            (Ok(x), Ok(y)) if x == y
-        )
+/// Whether the path (followed through links) names something that exists.
+fn target_of_exists(path: &Path) -> bool {
+    std::fs::metadata(path).is_ok()
 }
 
-/// [`write_all_atomically`] for a command on a loaded cell: refused, before anything is
-/// written, where an output names the robot's URDF or controller file ([`refuse_inputs`]).
+/// Stages a command's files ([`outputs::stage`]: each in a temporary file now, renamed into
+/// place when the command is over): refused, before anything is written, where an output names
+/// the robot's URDF or controller file ([`refuse_inputs`]).
 /// Every command's files go through here (a run's, its failure's pictures, `locate`'s and
 /// `compare`'s pictures).
 pub fn write_for(job: &crate::pipeline::Loaded, files: &[(&Path, &[u8])]) -> Result<(), Error> {
@@ -129,7 +162,7 @@ pub fn write_for(job: &crate::pipeline::Loaded, files: &[(&Path, &[u8])]) -> Res
             .collect(),
     };
     refuse_inputs(files, &read)?;
-    write_all_atomically(files)
+    outputs::stage(files)
 }
 
 /// Refuses to write over a file the run reads (the robot's URDF or controller file, known
@@ -156,14 +189,9 @@ pub fn to_json<T: serde::Serialize>(value: &T) -> Result<String, Error> {
     Ok(text)
 }
 
-/// Writes to stdout (the module, `compare`'s table, `locate`'s report); stdout only ever
-/// receives a complete result.
+/// Keeps the bytes for stdout (the module, `compare`'s table, `locate`'s report), written when
+/// the command is over ([`outputs::commit`]): stdout only ever receives a complete result.
 pub fn emit(bytes: &[u8]) -> Result<(), Error> {
-    let mut out = std::io::stdout().lock();
-    out.write_all(bytes)
-        .and_then(|_| out.flush())
-        .map_err(|source| Error::Write {
-            path: "<stdout>".into(),
-            source,
-        })
+    outputs::print(bytes);
+    Ok(())
 }

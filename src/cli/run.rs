@@ -99,9 +99,7 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
     if opts.output.is_none() {
         emit(out.rendered.text.as_bytes()).map_err(|e| job.fail(e))?;
     }
-    for w in &out.warnings {
-        eprintln!("{w}");
-    }
+    super::warn_lines(&out.warnings);
     let clearance = match &out.plan.least {
         Some(c) => format!("smallest clearance {:.1} mm", c.mm),
         None => "no obstacles".to_string(),
@@ -112,13 +110,16 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
         ", zoned vias: {zoned} of {vias} (via zone {})",
         out.rendered.program.header.via_zone
     );
-    let p = out.plan.paper;
-    let paper = format!(
-        ", the paper's method alone: {} move{}, {:.2} s",
-        p.moves,
-        if p.moves == 1 { "" } else { "s" },
-        p.time_s
-    );
+    let paper = match out.plan.paper {
+        Some(p) => format!(
+            ", the paper's method alone: {} move{}, {:.2} s",
+            p.moves,
+            if p.moves == 1 { "" } else { "s" },
+            p.time_s
+        ),
+        // A leg went straight without the grid: the paper's method did not run.
+        None => String::new(),
+    };
     let moves = out.plan.route.moves();
     Ok(format!(
         "gen-rapid: {}: {} move{}{time}{zoned}{paper}, {}, {} on a {} deg grid, {:.2} s",

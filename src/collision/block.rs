@@ -285,7 +285,7 @@ pub(super) fn motion(reach: f64, h: f64) -> f64 {
     (reach * h) * (1.0 + 1e-9) + 1e-9
 }
 
-impl GridCheck<'_> {
+impl GridCheck {
     /// The codes of nodes `lo..hi` of a column for cylinder `s` against the boxes `set` (indices
     /// into `s.boxes`): the run's proofs (module doc), else its halves, else node by node.
     /// `a.deg` must be ascending.

@@ -256,7 +256,7 @@ fn a_grid_built_on_threads_equals_a_column_by_column_fill() {
 /// Every column of `grid` inspected alone (`inspect_column`: a fresh slice and memo) gives the
 /// codes and column bytes of `built`, and `at_node` sees every node with its axes.
 fn each_column_alone(
-    check: &GridCheck<'_>,
+    check: &GridCheck,
     grid: &Grid,
     built: &CSpace,
     mut at_node: impl FnMut([i32; 3], [f64; 3]),

@@ -68,7 +68,7 @@ pub(crate) struct FixedMemo(Vec<(f64, f64)>, Vec<(f64, f64)>);
 /// Obstacles per chunk of the per-column culling (the kept indices live on the stack).
 const CULL_CHUNK: usize = SET;
 
-impl GridCheck<'_> {
+impl GridCheck {
     /// The hot path of the grid build: the node code (`grid.rs`) of `[a1, a2, a3[k]]` for one
     /// column into `out[k]`; 0 for a node that is not free.
     ///
@@ -132,7 +132,7 @@ impl GridCheck<'_> {
     /// byte: clear of every box), `Some(None)` (within the clearance: every node of the slice is
     /// blocked) or `None` (a link-2 cylinder, which each column checks itself).
     pub fn slice_bytes(&self, a1_deg: f64) -> SliceBytes {
-        let model = self.model;
+        let model = &*self.model;
         let poses = model.cell_link_poses(&[a1_deg, 0.0, 0.0]);
         let mut bytes = [None; MAX_FIXED];
         for (l, &i) in self.fixed.iter().enumerate().take(MAX_FIXED) {
@@ -160,7 +160,7 @@ impl GridCheck<'_> {
         cyl: &Cylinder,
         mut memo: Option<(&mut [(f64, f64)], f64)>,
     ) -> Option<u8> {
-        let model = self.model;
+        let model = &*self.model;
         let c = model.clearance_mm;
         let span = self.fixed_span[l];
         let deep = self.deep_mm(span);
@@ -196,7 +196,7 @@ impl GridCheck<'_> {
         slice: &Slice<'_>,
         memo: &mut FixedMemo,
     ) {
-        let model = self.model;
+        let model = &*self.model;
         let (a1_deg, ang) = (slice.a1_deg, &*slice.angles);
         let a3_deg = &ang.deg[..];
         column.fill(0);
@@ -367,7 +367,7 @@ impl GridCheck<'_> {
     /// and from it the near bit and the tool's depth; by runs where `runs` (`block.rs`), else
     /// node by node. The nodes' sines and cosines are the slice's (`ang`).
     fn tool_codes(&self, ang: &Angles, out: &mut [u8], origin: &Point, split: Split, runs: bool) {
-        let model = self.model;
+        let model = &*self.model;
         let Some(tool) = &model.tool else {
             return;
         };

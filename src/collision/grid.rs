@@ -51,7 +51,7 @@ use super::proof::lowered;
 use super::CollisionModel;
 use crate::robot::SinCosChain;
 use nalgebra::{Point3, Vector3};
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 /// The node-code bit of a free node (the paper's node test of the arm); the grid
 /// (`plan::cspace`) reads only this bit.
@@ -75,10 +75,12 @@ fn offset_index(o: [i32; 3]) -> usize {
     ((o[0] + 1) * 9 + (o[1] + 1) * 3 + (o[2] + 1)) as usize
 }
 
-/// The collision model on a grid of spacing `step_deg`: writes node codes and checks steps.
+/// The collision model on a grid of spacing `step_deg`: writes node codes and checks steps. It
+/// shares the model (an `Arc`), so a grid inspected as its waves ask (`plan::cspace`) can keep
+/// its check beside the model it checks.
 #[derive(Clone, Debug)]
-pub struct GridCheck<'a> {
-    pub(super) model: &'a CollisionModel,
+pub struct GridCheck {
+    pub(super) model: Arc<CollisionModel>,
     /// The link cylinders axis 3 does not move (joint 1 or 2), in order: one column byte each.
     pub(super) fixed: Vec<usize>,
     /// Their `S_L`, mm.
@@ -110,9 +112,10 @@ pub struct GridCheck<'a> {
 }
 
 impl CollisionModel {
-    /// The model on a grid of spacing `step_deg` (deg): node codes and the step check.
-    pub fn grid_check(&self, step_deg: f64) -> GridCheck<'_> {
-        GridCheck::new(self, step_deg)
+    /// The model on a grid of spacing `step_deg` (deg): node codes and the step check, on a copy
+    /// of the model ([`GridCheck::new`] shares one).
+    pub fn grid_check(&self, step_deg: f64) -> GridCheck {
+        GridCheck::new(Arc::new(self.clone()), step_deg)
     }
 }
 
@@ -151,8 +154,9 @@ fn need(k: u8, m: f64, s: f64) -> u8 {
     }
 }
 
-impl<'a> GridCheck<'a> {
-    fn new(model: &'a CollisionModel, step_deg: f64) -> GridCheck<'a> {
+impl GridCheck {
+    /// `model` on a grid of spacing `step_deg` (deg): node codes and the step check.
+    pub fn new(model: Arc<CollisionModel>, step_deg: f64) -> GridCheck {
         let mut moves = Vec::with_capacity(27);
         for i in 0..27 {
             let o = [i / 9, i / 3 % 3, i % 3].map(|v| (v as f64 - 1.0) * step_deg);
@@ -207,7 +211,7 @@ impl<'a> GridCheck<'a> {
                         j3.rotation * cross,
                     ]
                 };
-                (i, model.cyl[i].split.map(turn), shift3(model, i))
+                (i, model.cyl[i].split.map(turn), shift3(&model, i))
             })
             .collect();
         let need_tool = std::array::from_fn(|o| need(DEPTH_LEVELS, centre[o], centre_span));
@@ -226,7 +230,7 @@ impl<'a> GridCheck<'a> {
         });
         let centre_sweep = centre_parts.map_or(0.0, |(par, perp, _)| par.norm() + perp.norm());
         GridCheck {
-            model,
+            model: Arc::clone(&model),
             fixed,
             fixed_span,
             arm_span,
@@ -247,8 +251,8 @@ impl<'a> GridCheck<'a> {
     }
 
     /// The collision model.
-    pub fn model(&self) -> &'a CollisionModel {
-        self.model
+    pub fn model(&self) -> &CollisionModel {
+        &self.model
     }
 
     /// Whether a node's code says the tool might come within the clearance there (then the

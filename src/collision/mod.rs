@@ -32,6 +32,9 @@
 //! The whole-move proof (`proof.rs`) is the guarantee the paper lacks: every straight six-axis
 //! move written is proven to keep the clearance at every instant, links and tool, not only at
 //! grid nodes.
+//! `path.rs` extends it to process moves: along the path a `MoveL` or `MoveC` runs, followed
+//! by the continuing inverse kinematics, each chord between two samples proven with the
+//! clearance raised by how far the true joint path may stray from it.
 //!
 //! Frames: the robot base frame sits in the cell frame at [`Placement`] (translation, then yaw
 //! about z); obstacles are axis-aligned boxes of the cell frame; tool shapes are given in the
@@ -72,6 +75,9 @@ mod look;
 mod look_tests;
 mod near;
 mod parts;
+mod path;
+#[cfg(test)]
+mod path_tests;
 mod proof;
 #[cfg(test)]
 mod robots_tests;
@@ -81,6 +87,7 @@ mod tests;
 pub(crate) mod tool_tests;
 
 pub use grid::{Ends, GridCheck, CODE_FREE};
+pub use path::{PathBlocked, PathClearance, PATH_CLEARANCE_TOL_MM};
 pub use proof::{Clearance, DISTANCE_SLACK_REL, MOVE_FLOOR_MM};
 
 pub use crate::cell::Obstacle;

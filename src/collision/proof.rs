@@ -104,26 +104,41 @@ impl CollisionModel {
     pub fn move_is_safe(&self, from: &[f64; 6], to: &[f64; 6]) -> bool {
         self.robot.check_range6(from).is_ok()
             && self.robot.check_range6(to).is_ok()
-            && self.parts_are_safe(from, to, 0..self.part_count())
+            && self.parts_are_safe(from, to, 0..self.part_count(), self.clearance_mm)
+    }
+
+    /// The geometry of [`move_is_safe`](Self::move_is_safe) at another clearance: `true` only if
+    /// every configuration on the straight six-axis segment `from -> to` keeps every link
+    /// cylinder and tool shape at least `clearance_mm` from every box. The boxes are clipped
+    /// [`CLIP_MARGIN_MM`](super::CLIP_MARGIN_MM) beyond the model's own clearance, so a
+    /// clearance up to that much larger is measured as on the whole boxes (the proof along a
+    /// path asks a fraction of a millimetre more). The range is not checked.
+    pub fn move_keeps(&self, from: &[f64; 6], to: &[f64; 6], clearance_mm: f64) -> bool {
+        self.parts_are_safe(from, to, 0..self.part_count(), clearance_mm)
     }
 
     /// The whole-move proof for the link cylinders alone (they depend on axes 1..3 only). The
     /// range is not checked: the caller knows both ends are in range.
     pub(crate) fn links_move_is_safe(&self, from: &[f64; 6], to: &[f64; 6]) -> bool {
-        self.parts_are_safe(from, to, 0..self.cyl.len())
+        self.parts_are_safe(from, to, 0..self.cyl.len(), self.clearance_mm)
     }
 
     /// The whole-move proof for the tool shapes alone; `true` without a tool. The range is not
     /// checked.
     pub(crate) fn tool_move_is_safe(&self, from: &[f64; 6], to: &[f64; 6]) -> bool {
-        self.parts_are_safe(from, to, self.cyl.len()..self.part_count())
+        self.parts_are_safe(
+            from,
+            to,
+            self.cyl.len()..self.part_count(),
+            self.clearance_mm,
+        )
     }
 
-    /// Every (part, box) pair of `parts` certified along the move. A pair whose cheap lower
+    /// Every (part, box) pair of `parts` certified along the move at clearance `c`. A pair whose cheap lower
     /// bounds at the ends already prove it (the interval bound of the module doc on lower
     /// bounds: the distance is at least a lower bound) costs no exact distance; the others go
     /// through the bisection on exact distances, which gives the same verdict it always gave.
-    fn parts_are_safe(&self, from: &[f64; 6], to: &[f64; 6], parts: Range<usize>) -> bool {
+    fn parts_are_safe(&self, from: &[f64; 6], to: &[f64; 6], parts: Range<usize>, c: f64) -> bool {
         if parts.is_empty() {
             return true;
         }
@@ -140,21 +155,21 @@ impl CollisionModel {
                 // do too, and the pair is passed as it would be below.
                 if matches!(s0, Solid::Box(_)) {
                     let (g0, g1) = (s0.coarse_lower_bound_aabb(b), s1.coarse_lower_bound_aabb(b));
-                    if interval_bound(g0, g1, m) >= self.clearance_mm {
+                    if interval_bound(g0, g1, m) >= c {
                         continue;
                     }
                 }
                 let (l0, l1) = (s0.lower_bound_aabb(b), s1.lower_bound_aabb(b));
-                if interval_bound(l0, l1, m) >= self.clearance_mm {
+                if interval_bound(l0, l1, m) >= c {
                     continue;
                 }
                 let (l0, l1) = (tight_lower_bound(&s0, b, l0), tight_lower_bound(&s1, b, l1));
-                if self.certify_pair_on_bounds(p, k, from, to, m, l0, l1) {
+                if self.certify_pair_on_bounds(p, k, from, to, m, (l0, l1), c) {
                     continue;
                 }
                 let (d0, d1) = (s0.distance_aabb(b), s1.distance_aabb(b));
                 if let PairVerdict::Fails { .. } =
-                    self.certify_pair(p, k, from, to, m, d0, d1, false)
+                    self.certify_pair(p, k, from, to, m, (d0, d1), c, false)
                 {
                     return false;
                 }
@@ -175,10 +190,9 @@ impl CollisionModel {
         from: &[f64; 6],
         to: &[f64; 6],
         m: f64,
-        l0: f64,
-        l1: f64,
+        (l0, l1): (f64, f64),
+        c: f64,
     ) -> bool {
-        let c = self.clearance_mm;
         if lowered(l0) < c || lowered(l1) < c {
             return false;
         }
@@ -286,6 +300,14 @@ impl CollisionModel {
         if let Err(v) = self.robot.check_range6(to) {
             return Some((1.0, Blocked::Range(v)));
         }
+        self.first_contact(from, to, self.clearance_mm)
+    }
+
+    /// The geometry of [`why_move_unsafe`](Self::why_move_unsafe) at clearance `c` (the range
+    /// is not checked): the earliest `(t, Contact)` where a pair comes closer than `c` or
+    /// cannot be proven to keep it; `None` exactly when [`move_keeps`](Self::move_keeps)
+    /// holds at `c`.
+    pub fn first_contact(&self, from: &[f64; 6], to: &[f64; 6], c: f64) -> Option<(f64, Blocked)> {
         let speeds = self.part_speeds(from, to);
         let mut first: Option<(f64, usize, usize, f64)> = None;
         for (p, &m) in speeds.iter().enumerate() {
@@ -293,7 +315,7 @@ impl CollisionModel {
             let d1 = self.pair_distances(p, to);
             for (k, _) in self.part_boxes(p) {
                 if let PairVerdict::Fails { t, d } =
-                    self.certify_pair(p, k, from, to, m, d0[k], d1[k], true)
+                    self.certify_pair(p, k, from, to, m, (d0[k], d1[k]), c, true)
                 {
                     if first.is_none_or(|(tf, _, _, df)| t < tf || (t == tf && d < df)) {
                         first = Some((t, p, k, d));
@@ -349,7 +371,7 @@ impl CollisionModel {
         solid.distance_aabb(&self.obstacles[k].aabb)
     }
 
-    /// Bisection proof that part `p` keeps the clearance from box `k` along the move; `m` is
+    /// Bisection proof that part `p` keeps clearance `c` from box `k` along the move; `m` is
     /// its `M_P`, `d0`, `d1` the distances at the ends. Left-first depth-first bisection: when an
     /// interval is examined, everything left of it is certified. Without `earliest` the first
     /// failure found is returned; with it, the search goes on left of each witness, so the
@@ -362,11 +384,10 @@ impl CollisionModel {
         from: &[f64; 6],
         to: &[f64; 6],
         m: f64,
-        d0: f64,
-        d1: f64,
+        (d0, d1): (f64, f64),
+        c: f64,
         earliest: bool,
     ) -> PairVerdict {
-        let c = self.clearance_mm;
         if lowered(d0) < c {
             return PairVerdict::Fails { t: 0.0, d: d0 };
         }

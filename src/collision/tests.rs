@@ -53,7 +53,7 @@ fn trunk_model(clearance: f64) -> CollisionModel {
 }
 
 /// Cylinders in the cell frame computed independently of the model (robot FK + placement).
-fn reference_cylinders(robot: &Robot, pl: Placement, axes: &[f64; 3]) -> Vec<Cylinder> {
+pub(super) fn reference_cylinders(robot: &Robot, pl: Placement, axes: &[f64; 3]) -> Vec<Cylinder> {
     let yaw = pl.yaw_deg.to_radians();
     let to_cell = |p: Point3<f64>| {
         Point3::new(
@@ -75,7 +75,7 @@ fn reference_cylinders(robot: &Robot, pl: Placement, axes: &[f64; 3]) -> Vec<Cyl
 }
 
 /// Exact cylinder-box distance straight from parry3d-f64 (its own shapes, GJK).
-fn parry_distance(c: &Cylinder, b: &Aabb) -> f64 {
+pub(super) fn parry_distance(c: &Cylinder, b: &Aabb) -> f64 {
     let centre = nalgebra::center(&b.min, &b.max);
     let h = (b.max - b.min) * 0.5;
     let cuboid = parry3d::shape::Cuboid::new(Vector::new(h.x, h.y, h.z));

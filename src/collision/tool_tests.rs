@@ -107,7 +107,7 @@ fn random_six(rng: &mut Rng, robot: &Robot) -> [f64; 6] {
 
 /// The tool's shapes placed independently of the model: the robot's own tool0 pose, then
 /// parry3d's shapes, each with its pose in the cell frame.
-fn parry_tool(
+pub(super) fn parry_tool(
     robot: &Robot,
     placement: Placement,
     tool: &Tool,
@@ -172,7 +172,7 @@ fn parry_tool(
         .collect()
 }
 
-fn parry_box(b: &Aabb) -> (Pose, parry3d::shape::Cuboid) {
+pub(super) fn parry_box(b: &Aabb) -> (Pose, parry3d::shape::Cuboid) {
     let c = nalgebra::center(&b.min, &b.max);
     let h = (b.max - b.min) * 0.5;
     (
@@ -182,7 +182,11 @@ fn parry_box(b: &Aabb) -> (Pose, parry3d::shape::Cuboid) {
 }
 
 /// The smallest parry distance of any tool shape to any box at `axes`, and the shape's name.
-fn parry_tool_min(model: &CollisionModel, tool: &Tool, axes: &[f64; 6]) -> (f64, String) {
+pub(super) fn parry_tool_min(
+    model: &CollisionModel,
+    tool: &Tool,
+    axes: &[f64; 6],
+) -> (f64, String) {
     let mut best = (f64::INFINITY, String::new());
     for (name, pose, shape) in parry_tool(model.robot(), model.placement(), tool, axes) {
         for o in model.obstacles() {

@@ -17,6 +17,7 @@
 //!
 //! The tool's shapes add a ball and an oriented box (`solids.rs`: exact closed forms, held
 //! against parry3d there), and [`Solid`], the one type for any placed part of the robot model.
+//! [`path`] holds the TCP paths of process moves (`MoveL` lines, `MoveC` arcs, `RelTool`).
 //!
 //! Inputs are assumed finite (validated upstream): no function panics on
 //! finite input, and behaviour for NaN is out of scope (it may return NaN or
@@ -25,6 +26,7 @@
 use nalgebra::{Point3, Vector3};
 
 mod certify;
+pub mod path;
 mod solids;
 pub use certify::{bracket_by_projection, clamp_to_box, clear_by_projection, Bracket};
 pub use solids::{

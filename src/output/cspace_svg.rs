@@ -20,7 +20,7 @@
 //! deterministic for the same grid and plans.
 
 use crate::place::PlacedPoint;
-use crate::plan::cspace::CSpace;
+use crate::plan::cspace::{CSpace, FREE};
 use crate::plan::{Method, Route};
 use plotters::prelude::*;
 
@@ -137,12 +137,14 @@ fn draw(
     let mut c01 = vec![[0u32; 2]; d[0] * d[1]];
     let mut c02 = vec![[0u32; 2]; d[0] * d[2]];
     let mut c12 = vec![[0u32; 2]; d[1] * d[2]];
+    // The picture shows every node: the nodes no wave reached are inspected now, on all cores.
+    cs.inspect_all(&crate::progress::Silent);
     for i in 0..grid.len() {
         let n = grid.node(i);
         if !in_range(&grid.axes_deg(n)) {
             continue;
         }
-        let blocked = u32::from(!cs.is_free_index(i));
+        let blocked = u32::from(cs.row(i / d[2]).code[n[2] as usize] & FREE == 0);
         let (a, b, c) = (n[0] as usize, n[1] as usize, n[2] as usize);
         for cell in [
             &mut c01[a * d[1] + b],
@@ -353,6 +355,7 @@ mod tests {
                 from: 0,
                 to: 1,
                 grid_path: Vec::new(),
+                straight: false,
                 waypoints: 0..4,
             }],
         };

@@ -8,12 +8,13 @@
 //! [`RobotFacts`] of the robot files; no text is produced here (`rapid` does).
 
 use super::rapid::{
-    AxisRanges, Header, JointTarget, Pose, Program, RobTarget, TargetKind, ToolData, WobjData,
+    Action, AxisRanges, Header, JointTarget, LoadData, MoveHow, Pose, Program, RobTarget,
+    TargetKind, ToolData, WobjData,
 };
-use crate::cell::{Cell, Frame};
+use crate::cell::{ActionKind, Cell, Frame};
 use crate::place::{Origin, Placed};
 use crate::plan::WaypointKind;
-use crate::refine::Plan;
+use crate::refine::{MoveKind, Plan};
 use crate::robot::{Coupling, Robot};
 use std::path::Path;
 
@@ -72,26 +73,69 @@ fn pose(f: &Frame) -> Pose {
 
 /// The module's content for a plan of `cell`, placed as `placed`, on the robot of `robot`.
 pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> Program {
+    // `robot.frame`: a robtarget in wobj0 and a uframe as the module writes them.
+    let frame = cell.robot.frame;
+    let robtarget_as_written = |f: &Frame| match cell.wobjs.is_empty() {
+        true => placed.placement.written(frame, f),
+        false => *f,
+    };
+    let robtarget_of = |i: usize| match placed.points.get(i).map(|p| &p.origin) {
+        Some(Origin::Robtarget { pose: f, conf }) => Some(RobTarget {
+            pose: pose(&robtarget_as_written(f)),
+            conf: conf.to_array(),
+        }),
+        _ => None,
+    };
+    let name_of = |i: usize| {
+        placed
+            .points
+            .get(i)
+            .map(|p| p.name.clone())
+            .unwrap_or_default()
+    };
+    let kinds = std::iter::once(MoveKind::Joint).chain(plan.moves.iter().map(|m| m.kind));
     let targets = plan
         .route
         .waypoints
         .iter()
         .zip(plan.motions())
-        .map(|(w, motion)| {
-            let (kind, robtarget) = match w.kind {
-                WaypointKind::CellPoint(i) => {
-                    let p = placed.points.get(i);
-                    let robtarget = match p.map(|p| &p.origin) {
-                        Some(Origin::Robtarget { pose: f, conf }) => Some(RobTarget {
-                            pose: pose(f),
-                            conf: conf.to_array(),
-                        }),
-                        _ => None,
-                    };
-                    let name = p.map(|p| p.name.clone()).unwrap_or_default();
-                    (TargetKind::CellPoint { name }, robtarget)
+        .zip(kinds)
+        .map(|((w, motion), move_kind)| {
+            let (kind, robtarget, actions) = match w.kind {
+                WaypointKind::CellPoint(i) => (
+                    TargetKind::CellPoint { name: name_of(i) },
+                    robtarget_of(i),
+                    actions(cell, i),
+                ),
+                WaypointKind::Via { leg, index } => {
+                    (TargetKind::Via { leg, index }, None, Vec::new())
                 }
-                WaypointKind::Via { leg, index } => (TargetKind::Via { leg, index }, None),
+                WaypointKind::Approach(i) => {
+                    (TargetKind::Approach { point: name_of(i) }, None, Vec::new())
+                }
+                WaypointKind::Retract(i) => {
+                    (TargetKind::Retract { point: name_of(i) }, None, Vec::new())
+                }
+            };
+            let (how, offset_mm) = match move_kind {
+                MoveKind::Joint => (MoveHow::Joint, None),
+                MoveKind::Linear => (MoveHow::Linear, None),
+                MoveKind::Approach { dz_mm } => (MoveHow::Linear, Some(dz_mm)),
+                MoveKind::Retract { dz_mm } => (MoveHow::Linear, Some(dz_mm)),
+                MoveKind::Circular { via, via_conf } => (
+                    MoveHow::Circular {
+                        via: RobTarget {
+                            pose: pose(&robtarget_as_written(&via)),
+                            conf: via_conf.to_array(),
+                        },
+                    },
+                    None,
+                ),
+            };
+            // The move into an approach pose: its point's approach length.
+            let offset_mm = match w.kind {
+                WaypointKind::Approach(i) => cell.points.get(i).and_then(|p| p.approach_mm),
+                _ => offset_mm,
             };
             JointTarget {
                 kind,
@@ -99,6 +143,9 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
                 speed: motion.speed.clone(),
                 zone: motion.zone.clone(),
                 robtarget,
+                how,
+                offset_mm,
+                actions,
             }
         })
         .collect();
@@ -133,7 +180,8 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             zoned_vias: plan.zoned_vias(),
             // The zone a via gets where its corner is proven (`motion.via_zone`).
             via_zone: cell.motion.via_zone.clone(),
-            paper: Some((plan.paper.moves, plan.paper.time_s)),
+            paper: plan.paper.map(|p| (p.moves, p.time_s)),
+            frame,
         },
         targets,
         // The tool block's name when there is one (the cell validation sees to it).
@@ -142,9 +190,48 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
         // One work object at most (`cell::unsupported` refuses several).
         wobj: cell.wobjs.first().map(|w| WobjData {
             name: w.name.clone(),
-            uframe: pose(&w.uframe),
+            uframe: pose(&placed.placement.written(frame, &w.uframe)),
         }),
         ranges: robot.ranges,
         proc_name: cell.motion.proc.clone(),
+        loads: cell
+            .loads
+            .iter()
+            .map(|l| LoadData {
+                name: l.name.clone(),
+                mass_kg: l.mass_kg,
+                cog_mm: l.cog_mm,
+            })
+            .collect(),
     }
+}
+
+/// The actions of cell entry `i`, as the module writes them (a `grip_load` names its loaddata,
+/// or `load0`).
+fn actions(cell: &Cell, i: usize) -> Vec<Action> {
+    let Some(p) = cell.points.get(i) else {
+        return Vec::new();
+    };
+    p.actions
+        .iter()
+        .map(|a| match &a.kind {
+            ActionKind::SetDo { signal, value } => Action::SetDo {
+                signal: signal.clone(),
+                value: *value,
+            },
+            ActionKind::PulseDo { signal } => Action::PulseDo {
+                signal: signal.clone(),
+            },
+            ActionKind::WaitDi { signal, value } => Action::WaitDi {
+                signal: signal.clone(),
+                value: *value,
+            },
+            ActionKind::WaitTime { time_s } => Action::WaitTime { time_s: *time_s },
+            ActionKind::GripLoad { load } => Action::GripLoad {
+                load: load
+                    .and_then(|k| cell.loads.get(k))
+                    .map_or_else(|| "load0".to_string(), |l| l.name.clone()),
+            },
+        })
+        .collect()
 }

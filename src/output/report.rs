@@ -5,7 +5,8 @@
 //! method, the totals (with the zoned vias and the paper's method alone) and the tool and work
 //! object. `docs/report.schema.json` is its JSON Schema (draft 2020-12); `format` names the
 //! version of that layout (version 2 added each move's `limit`, `totals.zoned_vias` and
-//! `totals.paper_method`; later versions add keys and change the name).
+//! `totals.paper_method`, version 3 `near_limits`, the cell points whose axis 4 or 6 lies near a
+//! limit; later versions add keys and change the name).
 //!
 //! Goes beyond the paper (a script's view of a run). Made from the run's results only: the cell,
 //! the placed job, the plan and the module's content ([`Program`]: the names, speeds and zones
@@ -20,6 +21,7 @@ use super::clearance_part;
 use super::poses::Poser;
 use super::rapid::{format_fixed, Program, TargetKind};
 use crate::cell::{Base, Cell};
+use crate::place::near_limit::near_limits;
 use crate::place::Placed;
 use crate::plan::WaypointKind;
 use crate::precision::{
@@ -31,7 +33,7 @@ use crate::robot::Robot;
 use serde::{Serialize, Serializer};
 
 /// The layout's name and version (the `format` key).
-pub const FORMAT: &str = "gen-rapid report 2";
+pub const FORMAT: &str = "gen-rapid report 3";
 
 /// Why a report could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -81,6 +83,21 @@ pub struct Report {
     pub totals: Totals,
     pub waypoints: Vec<WaypointInfo>,
     pub moves: Vec<MoveInfo>,
+    /// The cell points whose axis 4 or 6 lies near a limit (the warnings of
+    /// [`near_limit`](crate::place::near_limit)).
+    pub near_limits: Vec<NearLimitInfo>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct NearLimitInfo {
+    /// The cell point.
+    pub point: String,
+    /// 4 or 6.
+    pub axis: usize,
+    /// Its written value, the limit it is near and the room left, deg.
+    pub value_deg: Fixed,
+    pub limit_deg: Fixed,
+    pub room_deg: Fixed,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -238,6 +255,8 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
             kind: match w.kind {
                 WaypointKind::CellPoint(_) => "cell",
                 WaypointKind::Via { .. } => "via",
+                WaypointKind::Approach(_) => "approach",
+                WaypointKind::Retract(_) => "retract",
             },
             joints_deg: fixed_n(|| what("an axis"), w.joints_deg, REPORT_JOINT_DECIMALS)?,
             tcp_mm: fixed_n(
@@ -271,6 +290,17 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
             limit: m.estimate.limit.name(),
             speed: target.map(|t| t.speed.clone()).unwrap_or_default(),
             zone: target.map(|t| t.zone.clone()).unwrap_or_default(),
+        });
+    }
+    let mut near = Vec::new();
+    for n in near_limits(placed, robot) {
+        let what = || format!("axis {} of point '{}'", n.axis, n.point);
+        near.push(NearLimitInfo {
+            value_deg: fixed(what, n.value_deg, REPORT_JOINT_DECIMALS)?,
+            limit_deg: fixed(what, n.limit_deg, REPORT_JOINT_DECIMALS)?,
+            room_deg: fixed(what, n.room_deg, REPORT_JOINT_DECIMALS)?,
+            point: n.point,
+            axis: n.axis,
         });
     }
     let cell_points = program
@@ -347,6 +377,7 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
         },
         waypoints,
         moves,
+        near_limits: near,
     })
 }
 

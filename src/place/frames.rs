@@ -1,6 +1,9 @@
 //! Where the robot stands, and the two frames that meet there: the cell frame (the cell file's
-//! positions and boxes) and the robot base frame (kinematics, inverse kinematics).
+//! positions and boxes) and the robot base frame (kinematics, inverse kinematics); and the frame
+//! the module writes a pose in (`robot.frame`, [`Placement::written`]).
 
+use crate::cell::{Frame, RobotFrame};
+use crate::precision::{round, POSITION_DECIMALS, QUATERNION_DECIMALS};
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 
 /// Where the robot stands: its base frame in the cell frame (a translation, then a turn about
@@ -43,6 +46,33 @@ impl Placement {
             UnitQuaternion::from_axis_angle(&Vector3::z_axis(), self.yaw_deg.to_radians()),
         )
     }
+
+    /// A pose the cell gives in the cell frame (a work object's uframe, a robtarget in wobj0) as
+    /// the module writes it under `robot.frame`: as given with `cell`; with `base`, in the
+    /// robot's base frame (`placement^-1 * pose`), its position rounded to the module's 3
+    /// decimals and its quaternion to 9, of its two signs the one whose first non-zero
+    /// component is positive (as `zyx` orientations are read). The rounded pose is the one the
+    /// place stage solves, so the joints proven are those the controller computes from what is
+    /// written.
+    pub fn written(&self, frame: RobotFrame, pose: &Frame) -> Frame {
+        if frame == RobotFrame::Cell {
+            return *pose;
+        }
+        let b = self.cell_from_robot().inverse() * pose.isometry();
+        let t = b.translation.vector;
+        let q = b.rotation.into_inner();
+        // `+ 0.0` turns a rounded `-0.0` into `0.0`.
+        let r = |v: f64, d: usize| round(v, d) + 0.0;
+        let quat = [q.w, q.i, q.j, q.k].map(|v| r(v, QUATERNION_DECIMALS));
+        let sign = match quat.iter().find(|v| **v != 0.0) {
+            Some(v) if *v < 0.0 => -1.0,
+            _ => 1.0,
+        };
+        Frame {
+            pos_mm: [t.x, t.y, t.z].map(|v| r(v, POSITION_DECIMALS)),
+            quat_wxyz: quat.map(|v| sign * v + 0.0),
+        }
+    }
 }
 
 #[cfg(test)]
@@ -63,5 +93,50 @@ mod tests {
         assert!((back[0] - 870.0).abs() < 1e-9 && back[1].abs() < 1e-9);
         let iso = pl.cell_from_robot() * Point3::new(870.0, 0.0, 1195.0);
         assert!((iso.coords - Point3::from(c).coords).norm() < 1e-9);
+    }
+
+    /// By hand: the base at (0, -850, 0) turned 90 deg about z. A cell point (x, y, z) is, from
+    /// the base, d = (x, y + 850, z) turned back by 90 deg: (d_y, -d_x, d_z). A frame turned 90
+    /// deg about z in the cell (q = [c45, 0, 0, s45]) is not turned at all from the base; one
+    /// pointing down (q = [0, 0, 1, 0], Ry(180)) becomes Rz(-90) Ry(180) =
+    /// [0, s45, c45, 0] (q1 = 0: the sign makes q2 positive).
+    #[test]
+    fn written_in_the_base_frame_by_hand() {
+        let pl = Placement {
+            base_mm: [0.0, -850.0, 0.0],
+            yaw_deg: 90.0,
+        };
+        let s45 = 0.5_f64.sqrt();
+        let uframe = Frame {
+            pos_mm: [-830.0, -380.0, 100.0],
+            quat_wxyz: [s45, 0.0, 0.0, s45],
+        };
+        assert_eq!(pl.written(RobotFrame::Cell, &uframe), uframe);
+        let w = pl.written(RobotFrame::Base, &uframe);
+        assert_eq!(w.pos_mm, [470.0, 830.0, 100.0]);
+        assert_eq!(w.quat_wxyz, [1.0, 0.0, 0.0, 0.0]);
+        let down = Frame {
+            pos_mm: [330.0, 280.5, 0.0],
+            quat_wxyz: [0.0, 0.0, 1.0, 0.0],
+        };
+        let w = pl.written(RobotFrame::Base, &down);
+        assert_eq!(w.pos_mm, [1130.5, -330.0, 0.0]);
+        let r = round(s45, QUATERNION_DECIMALS);
+        assert_eq!(w.quat_wxyz, [0.0, r, r, 0.0]);
+        // A yaw that is no multiple of 90 deg: the position is rounded to 0.001 mm.
+        let pl = Placement {
+            base_mm: [100.0, 0.0, 50.0],
+            yaw_deg: 30.0,
+        };
+        let p = Frame {
+            pos_mm: [200.0, 0.0, 50.0],
+            quat_wxyz: [1.0, 0.0, 0.0, 0.0],
+        };
+        let w = pl.written(RobotFrame::Base, &p);
+        // d = (100, 0, 0) turned back by 30 deg: (100 cos 30, -100 sin 30, 0) = (86.603, -50, 0).
+        assert_eq!(w.pos_mm, [86.603, -50.0, 0.0]);
+        // Rz(-30) = [cos 15, 0, 0, -sin 15].
+        let (s15, c15) = 15f64.to_radians().sin_cos();
+        assert_eq!(w.quat_wxyz, [round(c15, 9), 0.0, 0.0, round(-s15, 9)]);
     }
 }

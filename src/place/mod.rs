@@ -29,7 +29,9 @@
 //! stage knows what it asks, not how the answer is found (the model comes after it).
 
 pub mod frames;
+mod hints;
 pub mod locate;
+pub mod near_limit;
 mod points;
 
 pub use frames::Placement;
@@ -82,7 +84,8 @@ pub struct MoveMotion {
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlacedPoint {
     pub name: String,
-    /// Controller values of axes 1..6, deg, at the written precision.
+    /// Controller values of axes 1..6, deg: at the written precision, except a robtarget
+    /// point's, the exact inverse of its robtarget as written (`robtarget.rs`).
     pub joints_deg: [f64; 6],
     /// Where the cell file gives the point.
     pub loc: Loc,
@@ -148,6 +151,9 @@ pub enum PlaceError {
         yaw_deg: f64,
         source: Box<ChooseError<String>>,
         loc: Loc,
+        /// The help line when a turn of the tool or a move of the base makes it reachable
+        /// (`hints.rs`).
+        hint: Option<String>,
     },
 }
 
@@ -209,8 +215,9 @@ pub fn place<C: PoseCheck>(
                 true => Some(geometry(cell, robot)?),
                 false => None,
             };
-            let points =
-                points::resolve(cell, robot, geom.as_ref(), placement, &check_at(placement))?;
+            let check = check_at(placement);
+            let points = points::resolve(cell, robot, geom.as_ref(), placement, &check)
+                .map_err(|e| hints::with_hint(e, cell, robot, placement, &check, &check_at))?;
             Ok(Placed {
                 placement,
                 location: None,

@@ -5,13 +5,24 @@
 //! in the cell frame; without a `wobj:` block wobj0, whose frame is the cell frame). So
 //! `TCP (cell) = uframe * pose`, `TCP (robot base) = placement^-1 * TCP (cell)`, and the flange
 //! (tool0) pose the arm must reach is `TCP (robot base) * tframe^-1` (`tool.tframe`: the TCP in
-//! the flange frame; without a `tool:` block tool0, the identity).
+//! the flange frame; without a `tool:` block tool0, the identity). With `robot.frame: base` the
+//! uframe (or, in wobj0, the pose itself) is first taken as the module writes it in the base
+//! frame, rounded ([`Placement::written`]), so the joints solved are the controller's for the
+//! written data.
 //!
-//! **Choice.** With confdata, the solution of that configuration; without, the one nearest the
+//! **As written.** The module moves to a robtarget point by its `CONST robtarget` with ConfJ and
+//! ConfL on, so the controller's joints there are the inverse kinematics of the robtarget *as
+//! written* (positions to 0.001 mm, quaternions to 9 decimals, normalised; the tooldata and
+//! wobjdata likewise, [`Frame::written`]) on the written confdata. Those exact joints (not
+//! rounded to 0.001 deg: no jointtarget of them is written) are the point's placed joints, the
+//! ones the plan proves.
+//!
+//! **Choice.** With confdata, the solution of that configuration (a value on a quadrant boundary
+//! admitted for both quadrants, [`SixAxisIk::conf_admits`]); without, the one nearest the
 //! previous point under the IK's documented metric (time of the joint move at the controller's
 //! axis speeds, then the joint distance; the zero pose for the first point). Among those, the
-//! first whose values, *rounded to the written 0.001 deg*, are in range (all six axes and the
-//! coupled axis-3 range), keep the confdata asked for, still reach the pose within
+//! first whose values are in range (all six axes and the coupled axis-3 range), are admitted for
+//! the confdata written (the one asked for, else their own as rounded), reach the pose within
 //! [`POSITION_TOL_MM`] and [`ANGLE_TOL_DEG`] by the robot's forward kinematics, and pass the
 //! place stage's [`PoseCheck`] (collisions). Every refusal is kept, so a failure says why each
 //! solution was refused, or that the pose is out of reach by how much, or that axis 5 would have
@@ -22,9 +33,8 @@
 //! from the cell alone; the location stage takes it as an `xyz` point.
 
 use super::{PlaceError, Placement, PoseCheck};
-use crate::cell::{Cell, Frame, Point};
-use crate::precision::quantize_joints;
-use crate::robot::ik::six::{describe_violation, ConfData, SixAxisIk};
+use crate::cell::{Cell, Frame, Point, RobotFrame};
+use crate::robot::ik::six::{describe_violation, ChooseError, ConfData, SixAxisIk};
 use crate::robot::{Axes6, Robot};
 use nalgebra::{Isometry3, Point3};
 
@@ -38,8 +48,11 @@ pub(super) struct Tcp {
     ik: SixAxisIk,
     /// TCP in the flange frame.
     tframe: Isometry3<f64>,
-    /// Work object user frame in the cell frame.
+    /// Work object user frame in the cell frame (`None`: wobj0).
+    wobj: Option<Frame>,
     uframe: Isometry3<f64>,
+    /// The frame the module writes the uframe and wobj0 robtargets in.
+    written: RobotFrame,
 }
 
 impl Tcp {
@@ -50,18 +63,34 @@ impl Tcp {
             source,
             loc: cell.robot.urdf_loc,
         })?;
-        let frame = |f: Option<Frame>| f.unwrap_or(Frame::IDENTITY).isometry();
+        // The frames as written (tooldata, wobjdata): what the controller computes with.
+        let frame = |f: Option<Frame>| f.unwrap_or(Frame::IDENTITY).written().isometry();
+        // One work object at most (`cell::unsupported` refuses several): every robtarget's.
+        let wobj = cell.wobjs.first().map(|w| w.uframe);
         Ok(Tcp {
             ik,
             tframe: frame(cell.tool.as_ref().map(|t| t.tframe)),
-            // One work object at most (`cell::unsupported` refuses several): every robtarget's.
-            uframe: frame(cell.wobjs.first().map(|w| w.uframe)),
+            wobj,
+            uframe: frame(wobj),
+            written: cell.robot.frame,
         })
     }
 
-    /// The TCP pose of a robtarget in the cell frame.
+    /// The TCP pose of a robtarget in the cell frame, as written (module docs, "Choice").
     fn tcp_in_cell(&self, pose: &Frame) -> Isometry3<f64> {
-        self.uframe * pose.isometry()
+        self.uframe * pose.written().isometry()
+    }
+
+    /// The TCP pose of a robtarget in the robot base frame, from the data the module writes
+    /// (module docs).
+    fn tcp_in_base(&self, pose: &Frame, placement: Placement) -> Isometry3<f64> {
+        match (self.written, &self.wobj) {
+            (RobotFrame::Cell, _) => placement.cell_from_robot().inverse() * self.tcp_in_cell(pose),
+            (RobotFrame::Base, Some(u)) => {
+                placement.written(RobotFrame::Base, u).isometry() * pose.written().isometry()
+            }
+            (RobotFrame::Base, None) => placement.written(RobotFrame::Base, pose).isometry(),
+        }
     }
 
     /// The wrist centre of a robtarget, cell frame, mm (module docs).
@@ -69,6 +98,44 @@ impl Tcp {
         let w =
             self.tcp_in_cell(pose) * self.tframe.inverse() * Point3::from(self.ik.wrist_in_tool0());
         [w.x, w.y, w.z]
+    }
+
+    /// The joints of `pose` as written from `placement` (module docs): the solution the IK
+    /// chooses among those in range, admitted for the confdata `wanted`, reaching the pose and
+    /// accepted by `check`.
+    pub(super) fn choose(
+        &self,
+        pose: &Frame,
+        wanted: Option<ConfData>,
+        placement: Placement,
+        previous: Option<&Axes6>,
+        check: &impl PoseCheck,
+    ) -> Result<Axes6, ChooseError<String>> {
+        let tcp = self.tcp_in_base(pose, placement);
+        let robot = self.ik.robot();
+        let accept = |axes: &Axes6| -> Result<(), String> {
+            if let Err(v) = robot.check_range6(axes) {
+                return Err(describe_violation(&v));
+            }
+            // The confdata written is the one asked for, else that of the values rounded as
+            // the module would round them; the solution must be admitted for it.
+            let conf = wanted.unwrap_or_else(|| self.ik.conf(axes));
+            if !self.ik.conf_admits(axes, conf) {
+                return Err(format!("it is confdata {}, not {conf}", self.ik.conf(axes)));
+            }
+            let (mm, deg) = pose_error(&(robot.tool0(axes) * self.tframe), &tcp);
+            if mm > POSITION_TOL_MM || deg > ANGLE_TOL_DEG {
+                return Err(format!("it misses the pose by {mm:.3} mm and {deg:.4} deg"));
+            }
+            match check.why_blocked(axes) {
+                None => Ok(()),
+                Some(why) => Err(why),
+            }
+        };
+        let solution = self
+            .ik
+            .choose_tcp(&tcp, &self.tframe, wanted, previous, accept)?;
+        Ok(solution.axes_deg)
     }
 
     /// Solves robtarget point `p` from `placement` (module docs): the written joint values and
@@ -82,42 +149,19 @@ impl Tcp {
         previous: Option<&Axes6>,
         check: &impl PoseCheck,
     ) -> Result<(Axes6, ConfData), PlaceError> {
-        let tcp = placement.cell_from_robot().inverse() * self.tcp_in_cell(pose);
-        let robot = self.ik.robot();
-        let accept = |axes: &Axes6| -> Result<(), String> {
-            let q = quantize_joints(*axes);
-            if let Err(v) = robot.check_range6(&q) {
-                return Err(format!("rounded to 0.001 deg, {}", describe_violation(&v)));
-            }
-            if let Some(w) = wanted.filter(|w| *w != self.ik.conf(&q)) {
-                return Err(format!(
-                    "rounded to 0.001 deg it is confdata {}, not {w}",
-                    self.ik.conf(&q)
-                ));
-            }
-            let (mm, deg) = pose_error(&(robot.tool0(&q) * self.tframe), &tcp);
-            if mm > POSITION_TOL_MM || deg > ANGLE_TOL_DEG {
-                return Err(format!(
-                    "rounded to 0.001 deg it misses the pose by {mm:.3} mm and {deg:.4} deg"
-                ));
-            }
-            match check.why_blocked(&q) {
-                None => Ok(()),
-                Some(why) => Err(why),
-            }
-        };
-        let solution = self
-            .ik
-            .choose_tcp(&tcp, &self.tframe, wanted, previous, accept)
+        let q = self
+            .choose(pose, wanted, placement, previous, check)
             .map_err(|source| PlaceError::Robtarget {
                 point: p.name.clone(),
                 base_mm: placement.base_mm,
                 yaw_deg: placement.yaw_deg,
                 source: Box::new(source),
                 loc: p.loc,
+                hint: None,
             })?;
-        let q = quantize_joints(solution.axes_deg);
-        Ok((q, self.ik.conf(&q)))
+        // The confdata asked for is written as asked (the joints are admitted for it, also on a
+        // quadrant boundary); without one, the joints' own as written.
+        Ok((q, wanted.unwrap_or_else(|| self.ik.conf(&q))))
     }
 }
 

@@ -3,17 +3,28 @@
 //! Nodes sit at integer multiples of the spacing d (degrees) within the controller's axis
 //! ranges; a node is free (the paper's 0) or blocked (-1: out of range, coupled axis-3 range
 //! included, or a link cylinder within the clearance of a box). Which nodes are free is asked of
-//! an [`Inspector`]; this module knows no geometry. The grid is filled once per cell, in parallel
-//! over axis-1 slices; the result does not depend on the number of threads.
+//! an [`Inspector`]; this module knows no geometry.
 //!
 //! Each node holds one byte, its *code*: bit 7 ([`FREE`]) is the paper's free/blocked; the other
 //! bits belong to the inspector (the collision model keeps there how deep in free space the node
 //! lies, which its step check reads, `collision::grid`). A blocked node's code is 0. Each column
 //! (fixed axes 1 and 2) also holds a few bytes of the inspector's own ([`Inspector::column_bytes`]:
 //! what does not depend on axis 3).
+//!
+//! *Inspected as the route needs it* (beyond the paper, for speed only). The paper inspects
+//! every node before the first wave; a wave between two points reaches a small part of the
+//! grid. The grid is kept in *blocks* of [`BLOCK_COLUMNS`] columns (whole along axis 3), each
+//! inspected the first time anything reads one of its nodes ([`CSpace::lazy`]) and kept for
+//! the rest of the run (every wave and leg of the route, every method of a comparison). A row
+//! wave asks, before each level, for the blocks around its front ([`CSpace::inspect_around`]):
+//! those not yet inspected are inspected together, on all cores when there are several. A
+//! node's code is its column's alone (the inspector's contract), so every read gives the code
+//! the whole grid's inspection would: the same waves, the same plans; the work and the memory
+//! grow with the part of the grid the waves explore. [`CSpace::build`] inspects every block at
+//! once (the paper's order; tests, `compare`, the `--svg` picture).
 
 use crate::progress::{Progress, Silent};
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, OnceLock};
 
 /// A grid node: indices along axes 1..3 (0-based within the grid).
 pub type Node = [i32; 3];
@@ -27,8 +38,9 @@ pub struct Grid {
     pub dims: [usize; 3],
 }
 
-/// Largest grid accepted (nodes); 0.25 deg over the IRB 1400's ranges is ~420 M.
-pub const MAX_NODES: usize = 500_000_000;
+/// Largest grid a run makes (nodes; `budget::MAX_GRID_NODES`, checked before the grid is
+/// made); 0.25 deg over the IRB 1400's ranges is 413 M.
+pub const MAX_NODES: usize = crate::budget::MAX_GRID_NODES as usize;
 
 impl Grid {
     /// The nodes k*step inside `[lo, hi]` of each axis (deg).
@@ -142,16 +154,17 @@ pub const FREE: u8 = 0x80;
 
 /// Answers "is this node free?" (and whatever else it keeps in a node's code) for a whole column
 /// of axis-3 values at once, so an implementation can hoist the work that does not depend on
-/// axis 3. A blocked node's code must be 0; a free node's has [`FREE`] set.
+/// axis 3. A blocked node's code must be 0; a free node's has [`FREE`] set. A column's codes and
+/// bytes must be the column's alone, whichever columns were inspected before it and in what
+/// order (the grid inspects its blocks as its waves ask: [`CSpace::lazy`]).
 pub trait Inspector: Sync {
     /// How many bytes of its own the inspector keeps per column (0 by default).
     fn column_bytes(&self) -> usize {
         0
     }
-    /// The code bits whose row bit set ([`CSpace::row_bits`]) the planner asks for on every
-    /// leg: that set is then made with the codes, slice by slice while they are in cache,
-    /// instead of in a pass of its own over the whole grid before the first wave (`None` by
-    /// default: every set made on its first ask).
+    /// The code bits whose row bit set ([`Row::plain`]) the planner asks for on every leg: that
+    /// set is made with each block's codes (`None` by default: none is made, and a row wave
+    /// looks at every candidate).
     fn row_bits_ahead(&self) -> Option<u8> {
         None
     }
@@ -165,10 +178,10 @@ pub trait Inspector: Sync {
         code: &mut [u8],
         column: &mut [u8],
     );
-    /// The columns `[a1, a2[j], a3[k]]` of one slice of axis 1: column `j`'s codes into
+    /// The columns `[a1, a2[j], a3[k]]` of one value of axis 1: column `j`'s codes into
     /// `code[j * a3.len()..][..a3.len()]` and its own bytes into
     /// `column[j * column_bytes()..][..column_bytes()]`. By default column by column; an
-    /// inspector overrides it to do once what the whole slice shares.
+    /// inspector overrides it to do once what the columns of one axis-1 value share.
     fn inspect_slice(
         &self,
         a1_deg: f64,
@@ -204,245 +217,386 @@ pub fn each_column(
     }
 }
 
-/// The inspected grid.
-#[derive(Clone, Debug)]
+/// The columns of a block along axes 1 and 2 (the last blocks of an axis may hold fewer): at
+/// 1 deg over the IRB 1400's axis 3, 8 columns of 136 nodes. Smaller blocks inspect less past
+/// what the waves read, larger ones share more of a slice's work; whole runs at 1 deg took the
+/// fewest instructions from 1 x 4 to 2 x 4 columns, 3 % more at 4 x 4, 15 % more at 8 x 8
+/// (`benches/README.md`).
+pub const BLOCK_COLUMNS: [usize; 2] = [2, 4];
+
+/// Blocks inspected one after another on the asking thread below this many at once; from it on
+/// all cores (`crate::parallel`: handing work to threads costs about as much as inspecting a
+/// few blocks).
+const PARALLEL_BLOCKS: usize = 6;
+
+/// One block of the grid, inspected: its columns in order (axis 1, then axis 2), each with its
+/// codes (`dims[2]` bytes), its own bytes ([`Inspector::column_bytes`]) and its row words
+/// ([`Row::plain`], when the grid keeps them).
+#[derive(Clone)]
+struct Block {
+    code: Box<[u8]>,
+    column: Box<[u8]>,
+    plain: Box<[u64]>,
+}
+
+/// The grid, its nodes inspected as they are read (module doc).
+#[derive(Clone)]
 pub struct CSpace {
     pub grid: Grid,
-    code: Vec<u8>,
-    /// The inspector's bytes per column, `column_bytes` each, columns in index order.
-    column: Vec<u8>,
+    /// The inspector's bytes per column.
     column_bytes: usize,
-    /// The row bit sets made so far ([`CSpace::row_bits`]).
-    rows: RowCache,
+    /// The code bits of the row words the blocks keep ([`Row::plain`]), if any.
+    kept: Option<u8>,
+    /// Blocks along axes 1 and 2.
+    blocks_along: [usize; 2],
+    /// Every block, by `b0 * blocks_along[1] + b1`; filled once, when first read.
+    blocks: Vec<OnceLock<Block>>,
+    /// The controller values of axis 3's nodes.
+    a3_deg: Arc<[f64]>,
+    /// What inspects a block not inspected yet (`None`: every block was inspected when made).
+    inspector: Option<Arc<dyn Inspector + Send>>,
 }
 
-/// A per-row bit set of some of the grid's free nodes, for the row wave (`wave::rows`). A
-/// row holds the nodes of fixed axes 1 and 2, `words` words each, rows in index order; axis-3
-/// index `64 j + b` is bit `b` of the row's word `j`, and the bits past the row's last node are
-/// clear.
-#[derive(Debug, PartialEq, Eq)]
-pub struct RowBits {
-    /// Words per row: `dims[2]` bits rounded up to whole words.
-    pub words: usize,
-    /// The free nodes whose code has none of the bits asked for ([`CSpace::row_bits`]).
-    pub plain: Vec<u64>,
-}
-
-/// The chunks of rows a row bit set is made in ([`CSpace::row_bits`]), handed to the cores one
-/// at a time.
-const ROW_BITS_CHUNKS: usize = 16;
-
-/// The row bit sets made so far, one per set of code bits asked for; a copy of the grid starts
-/// with none.
-#[derive(Debug, Default)]
-struct RowCache(Mutex<Vec<(u8, Arc<RowBits>)>>);
-
-impl Clone for RowCache {
-    fn clone(&self) -> RowCache {
-        RowCache::default()
+impl std::fmt::Debug for CSpace {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("CSpace")
+            .field("grid", &self.grid)
+            .field("inspected_blocks", &self.inspected_blocks())
+            .field("blocks", &self.blocks.len())
+            .finish()
     }
+}
+
+/// One row of the grid (the nodes of fixed axes 1 and 2): its codes and its row words.
+#[derive(Clone, Copy, Debug)]
+pub struct Row<'a> {
+    /// The codes, `dims[2]` of them.
+    pub code: &'a [u8],
+    /// The free nodes whose code has none of the kept bits ([`CSpace::kept_bits`]), one bit a
+    /// node: axis-3 index `64 j + b` is bit `b` of word `j`, the bits past the row's last node
+    /// clear. Empty when the grid keeps none.
+    pub plain: &'a [u64],
 }
 
 impl CSpace {
-    /// Inspects every node, axis-1 slices spread over the available cores.
-    pub fn build(grid: Grid, inspector: &dyn Inspector) -> CSpace {
-        CSpace::build_observed(grid, inspector, &Silent)
+    /// The grid with nothing inspected yet: each block is inspected by `inspector` when first
+    /// read (module doc).
+    pub fn lazy(grid: Grid, inspector: Arc<dyn Inspector + Send>) -> CSpace {
+        let mut cs = CSpace::empty(grid, &*inspector);
+        cs.inspector = Some(inspector);
+        cs
     }
 
-    /// [`CSpace::build`], reporting one unit of `progress` per axis-1 slice inspected (the
-    /// caller announces the stage with `grid.dims[0]` units).
-    pub fn build_observed(
-        grid: Grid,
-        inspector: &dyn Inspector,
-        progress: &dyn Progress,
-    ) -> CSpace {
-        let mut code = vec![0u8; grid.len()];
-        let width = inspector.column_bytes();
-        let mut column = vec![0u8; grid.dims[0] * grid.dims[1] * width];
-        let slice = grid.dims[1] * grid.dims[2];
-        if slice == 0 {
-            return CSpace {
-                grid,
-                code,
-                column,
-                column_bytes: width,
-                rows: RowCache::default(),
-            };
-        }
-        let threads = std::thread::available_parallelism()
-            .map(|n| n.get())
-            .unwrap_or(1)
-            .min(grid.dims[0].max(1));
-        let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
-        let a2: Vec<f64> = (0..grid.dims[1] as i64).map(|i| grid.value(1, i)).collect();
-        // Per-column bytes in chunks that match the code chunks (never empty, for `zip`).
-        let col_slice = (grid.dims[1] * width).max(1);
-        let mut spare = vec![0u8; col_slice * grid.dims[0]];
-        let columns: &mut [u8] = if width > 0 { &mut column } else { &mut spare };
-        // The slices go to the threads one at a time, as each asks for the next: slices cost
-        // very different amounts (a side of axis 1 with the obstacles, one without), so fixed
-        // shares would leave a core idle. Each slice's codes are the same whoever inspects it.
-        // The row bit set made with the codes, a slice's rows at a time (one word a slice,
-        // never read, where it is not; a slice has rows of at least one word here).
-        let words = grid.dims[2].div_ceil(64);
-        let ahead = inspector
-            .row_bits_ahead()
-            .filter(|_| grid.dims[0] * grid.dims[1] * words * 8 <= ROW_BITS_MAX_BYTES);
-        let row_slice = if ahead.is_some() {
-            grid.dims[1] * words
-        } else {
-            1
-        };
-        let mut plain = vec![0u64; grid.dims[0] * row_slice];
-        let slices = Mutex::new(
-            code.chunks_mut(slice)
-                .zip(columns.chunks_mut(col_slice))
-                .zip(plain.chunks_mut(row_slice))
-                .enumerate(),
-        );
-        std::thread::scope(|s| {
-            for _ in 0..threads {
-                let (a2, a3, slices) = (&a2, &a3, &slices);
-                s.spawn(move || loop {
-                    // A poisoned lock only means another slice panicked; the scope re-raises it.
-                    let next = slices.lock().map(|mut it| it.next()).ok().flatten();
-                    let Some((i, ((slab, colslab), rowslab))) = next else {
-                        break;
-                    };
-                    inspector.inspect_slice(
-                        grid.value(0, i as i64),
-                        a2,
-                        a3,
-                        slab,
-                        &mut colslab[..grid.dims[1] * width],
-                    );
-                    if let Some(bits) = ahead {
-                        row_words(slab, grid.dims[2], bits, rowslab);
-                    }
-                    progress.advance(1);
-                });
-            }
+    /// Inspects every node at once, blocks spread over the available cores; the result does
+    /// not depend on the number of threads.
+    pub fn build(grid: Grid, inspector: &dyn Inspector) -> CSpace {
+        let cs = CSpace::empty(grid, inspector);
+        let all: Vec<usize> = (0..cs.blocks.len()).collect();
+        crate::parallel::map(&all, |&b| {
+            let _ = cs.blocks[b].set(cs.inspect_block(b, inspector));
         });
-        let rows = RowCache::default();
-        if let Some(bits) = ahead {
-            let made = Arc::new(RowBits { words, plain });
-            rows.0
-                .lock()
-                .unwrap_or_else(|p| p.into_inner())
-                .push((bits, made));
-        }
+        cs
+    }
+
+    /// The grid's layout with no block inspected and no inspector.
+    fn empty(grid: Grid, inspector: &dyn Inspector) -> CSpace {
+        let blocks_along = [0, 1].map(|k| grid.dims[k].div_ceil(BLOCK_COLUMNS[k]));
+        let n = if grid.dims[2] == 0 {
+            0
+        } else {
+            blocks_along[0] * blocks_along[1]
+        };
         CSpace {
             grid,
-            code,
-            column,
-            column_bytes: width,
-            rows,
+            column_bytes: inspector.column_bytes(),
+            kept: inspector.row_bits_ahead(),
+            blocks_along,
+            blocks: (0..n).map(|_| OnceLock::new()).collect(),
+            a3_deg: (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect(),
+            inspector: None,
         }
     }
 
     /// A grid from explicit node states (tests and hand-made examples): free nodes get the code
-    /// [`FREE`] alone (nothing else known about them).
+    /// [`FREE`] alone (nothing else known about them); the row words of every free node kept.
     pub fn from_fn(grid: Grid, is_free: impl Fn(Node) -> bool) -> CSpace {
-        let code = (0..grid.len())
-            .map(|i| if is_free(grid.node(i)) { FREE } else { 0 })
-            .collect();
-        CSpace {
-            grid,
-            code,
-            column: Vec::new(),
-            column_bytes: 0,
-            rows: RowCache::default(),
+        /// Keeps the row words of every free node.
+        struct Plain;
+        impl Inspector for Plain {
+            fn row_bits_ahead(&self) -> Option<u8> {
+                Some(0)
+            }
+            fn inspect_column(&self, _: f64, _: f64, _: &[f64], _: &mut [u8], _: &mut [u8]) {}
         }
+        let cs = CSpace::empty(grid, &Plain);
+        let d2 = grid.dims[2];
+        for (b, block) in cs.blocks.iter().enumerate() {
+            let r1 = cs.block_range(b)[1].clone();
+            let made = cs.make_block(b, |i0, code, _| {
+                for (j, i1) in r1.clone().enumerate() {
+                    for (z, c) in code[j * d2..][..d2].iter_mut().enumerate() {
+                        let n = [i0 as i32, i1 as i32, z as i32];
+                        *c = if is_free(n) { FREE } else { 0 };
+                    }
+                }
+            });
+            let _ = block.set(made);
+        }
+        cs
+    }
+
+    /// The code bits of the row words the grid keeps ([`Row::plain`]), if any.
+    pub fn kept_bits(&self) -> Option<u8> {
+        self.kept
+    }
+
+    /// The node ranges of block `b` along axes 1 and 2.
+    fn block_range(&self, b: usize) -> [std::ops::Range<usize>; 2] {
+        let at = [b / self.blocks_along[1], b % self.blocks_along[1]];
+        [0, 1].map(|k| {
+            let lo = at[k] * BLOCK_COLUMNS[k];
+            lo..(lo + BLOCK_COLUMNS[k]).min(self.grid.dims[k])
+        })
+    }
+
+    /// Inspects block `b` with `inspector`.
+    fn inspect_block(&self, b: usize, inspector: &dyn Inspector) -> Block {
+        let r1 = self.block_range(b)[1].clone();
+        let a2: Vec<f64> = r1.map(|i| self.grid.value(1, i as i64)).collect();
+        self.make_block(b, |i0, code, column| {
+            let a1 = self.grid.value(0, i0 as i64);
+            inspector.inspect_slice(a1, &a2, &self.a3_deg, code, column)
+        })
+    }
+
+    /// Block `b`, its columns of each value `i0` of axis 1 filled by `fill(i0, codes, bytes)`
+    /// (the layout of [`Inspector::inspect_slice`]), with its row words.
+    fn make_block(&self, b: usize, mut fill: impl FnMut(usize, &mut [u8], &mut [u8])) -> Block {
+        let [r0, r1] = self.block_range(b);
+        let (d2, width) = (self.grid.dims[2], self.column_bytes);
+        let columns = r0.len() * r1.len();
+        let mut code = vec![0u8; columns * d2];
+        let mut column = vec![0u8; columns * width];
+        let (slab, colslab) = (r1.len() * d2, r1.len() * width);
+        for (k, i0) in r0.enumerate() {
+            fill(
+                i0,
+                &mut code[k * slab..][..slab],
+                &mut column[k * colslab..][..colslab],
+            );
+        }
+        let plain = match self.kept {
+            Some(bits) => {
+                let mut plain = vec![0u64; columns * d2.div_ceil(64)];
+                row_words(&code, d2, bits, &mut plain);
+                plain
+            }
+            None => Vec::new(),
+        };
+        Block {
+            code: code.into(),
+            column: column.into(),
+            plain: plain.into(),
+        }
+    }
+
+    /// Block `b`, inspected now if it was not yet.
+    #[inline]
+    fn block(&self, b: usize) -> &Block {
+        match self.blocks[b].get() {
+            Some(block) => block,
+            None => self.fill(b),
+        }
+    }
+
+    /// Block `b`, inspected by the grid's inspector (once, whichever thread asks first; the
+    /// others wait for it).
+    #[cold]
+    #[inline(never)]
+    fn fill(&self, b: usize) -> &Block {
+        self.blocks[b].get_or_init(|| match &self.inspector {
+            Some(inspector) => self.inspect_block(b, &**inspector),
+            // Never: a grid without an inspector had every block inspected when made.
+            None => self.inspect_block(b, &Blocked),
+        })
+    }
+
+    /// The block of the column `(i0, i1)` and the column's place in it.
+    #[inline]
+    fn block_of(&self, i0: usize, i1: usize) -> (usize, usize) {
+        let [c0, c1] = BLOCK_COLUMNS;
+        let (b0, b1) = (i0 / c0, i1 / c1);
+        let width = (self.grid.dims[1] - b1 * c1).min(c1);
+        (
+            b0 * self.blocks_along[1] + b1,
+            (i0 - b0 * c0) * width + (i1 - b1 * c1),
+        )
+    }
+
+    /// Row `t` (axes 1 and 2 at `t / dims[1]`, `t % dims[1]`), inspected now if its block was
+    /// not yet.
+    #[inline]
+    pub fn row(&self, t: usize) -> Row<'_> {
+        let d1 = self.grid.dims[1] as u32;
+        let (i0, i1) = ((t as u32 / d1) as usize, (t as u32 % d1) as usize);
+        let (b, c) = self.block_of(i0, i1);
+        let block = self.block(b);
+        let (d2, words) = (self.grid.dims[2], self.grid.dims[2].div_ceil(64));
+        Row {
+            code: &block.code[c * d2..][..d2],
+            plain: block.plain.get(c * words..(c + 1) * words).unwrap_or(&[]),
+        }
+    }
+
+    /// Inspects, together (on all cores when there are several), the blocks not inspected yet
+    /// that hold a row next to one of `rows` (axes 1 and 2 at most one step away) and, with a
+    /// `bound` (`[i0, i1]` and `r`), lies within `r` of it on both axes: what a row wave's next
+    /// level reads.
+    pub fn inspect_around(
+        &self,
+        rows: impl Iterator<Item = usize>,
+        bound: Option<([i64; 2], i64)>,
+    ) {
+        let [d0, d1, _] = self.grid.dims;
+        let mut wanted: Vec<usize> = Vec::new();
+        let mut last = usize::MAX;
+        for t in rows {
+            if t == last {
+                continue;
+            }
+            last = t;
+            let (i0, i1) = ((t / d1) as i64, (t % d1) as i64);
+            let mut lo = [(i0 - 1).max(0), (i1 - 1).max(0)];
+            let mut hi = [(i0 + 1).min(d0 as i64 - 1), (i1 + 1).min(d1 as i64 - 1)];
+            if let Some((to, r)) = bound {
+                for k in 0..2 {
+                    lo[k] = lo[k].max(to[k] - r);
+                    hi[k] = hi[k].min(to[k] + r);
+                }
+            }
+            if lo[0] > hi[0] || lo[1] > hi[1] {
+                continue;
+            }
+            let [c0, c1] = BLOCK_COLUMNS.map(|c| c as i64);
+            for b0 in lo[0] / c0..=hi[0] / c0 {
+                for b1 in lo[1] / c1..=hi[1] / c1 {
+                    let b = (b0 * self.blocks_along[1] as i64 + b1) as usize;
+                    if self.blocks[b].get().is_none() {
+                        wanted.push(b);
+                    }
+                }
+            }
+        }
+        self.inspect_blocks(wanted);
+    }
+
+    /// Inspects the blocks of `wanted` not inspected yet: one after another here when they are
+    /// few, else on all cores.
+    fn inspect_blocks(&self, mut wanted: Vec<usize>) {
+        wanted.sort_unstable();
+        wanted.dedup();
+        wanted.retain(|&b| self.blocks[b].get().is_none());
+        if wanted.len() < PARALLEL_BLOCKS {
+            for &b in &wanted {
+                self.block(b);
+            }
+        } else {
+            crate::parallel::map(&wanted, |&b| {
+                self.block(b);
+            });
+        }
+    }
+
+    /// Inspects every block not inspected yet, on all cores, reporting one unit of `progress`
+    /// per block (the caller announces nothing: this announces the stage when there is work).
+    pub fn inspect_all(&self, progress: &dyn Progress) {
+        let wanted: Vec<usize> = (0..self.blocks.len())
+            .filter(|&b| self.blocks[b].get().is_none())
+            .collect();
+        if wanted.is_empty() {
+            return;
+        }
+        progress.stage("inspecting the grid", wanted.len() as u64);
+        crate::parallel::map(&wanted, |&b| {
+            self.block(b);
+            progress.advance(1);
+        });
+    }
+
+    /// How many blocks have been inspected so far, of [`block_count`](Self::block_count).
+    pub fn inspected_blocks(&self) -> usize {
+        self.blocks.iter().filter(|b| b.get().is_some()).count()
+    }
+
+    /// How many blocks the grid has.
+    pub fn block_count(&self) -> usize {
+        self.blocks.len()
     }
 
     /// The inspector's bytes of the column holding node `n` (empty when it keeps none).
     #[inline]
     pub fn column(&self, n: Node) -> &[u8] {
+        let (b, c) = self.block_of(n[0] as usize, n[1] as usize);
         let w = self.column_bytes;
-        let i = (n[0] as usize * self.grid.dims[1] + n[1] as usize) * w;
-        &self.column[i..i + w]
+        &self.block(b).column[c * w..][..w]
     }
 
     #[inline]
     pub fn is_free(&self, n: Node) -> bool {
-        self.grid.contains(n) && self.code[self.grid.index(n)] & FREE != 0
+        self.code(n) & FREE != 0
     }
 
     #[inline]
     pub fn is_free_index(&self, i: usize) -> bool {
-        self.code[i] & FREE != 0
+        self.code_index(i) & FREE != 0
     }
 
     /// The code of node `n` (0 outside the grid).
     #[inline]
     pub fn code(&self, n: Node) -> u8 {
         if self.grid.contains(n) {
-            self.code[self.grid.index(n)]
+            self.code_in(n)
         } else {
             0
         }
     }
 
+    /// The code of node `n`, which lies in the grid.
+    #[inline]
+    pub fn code_in(&self, n: Node) -> u8 {
+        let (b, c) = self.block_of(n[0] as usize, n[1] as usize);
+        self.block(b).code[c * self.grid.dims[2] + n[2] as usize]
+    }
+
     /// The code of the node with linear index `i`.
     #[inline]
     pub fn code_index(&self, i: usize) -> u8 {
-        self.code[i]
+        self.code_in(self.grid.node(i))
     }
 
+    /// The free nodes of the whole grid (every block inspected first).
     pub fn free_count(&self) -> usize {
-        self.code.iter().filter(|&&c| c & FREE != 0).count()
-    }
-
-    /// The grid's free nodes whose code has none of `bits` set, as a per-row bit set
-    /// ([`RowBits`], one bit a node). Made on the first ask for these `bits` and kept for the
-    /// next (every wave of every leg asks the same): one pass over the codes, 8 at a time.
-    pub fn row_bits(&self, bits: u8) -> Arc<RowBits> {
-        // A poisoned lock only means another thread panicked while making a set: the sets
-        // kept are whole (pushed after they were made).
-        let mut made = self.rows.0.lock().unwrap_or_else(|p| p.into_inner());
-        if let Some((_, r)) = made.iter().find(|(b, _)| *b == bits) {
-            return Arc::clone(r);
-        }
-        let r = Arc::new(self.make_row_bits(bits));
-        made.push((bits, Arc::clone(&r)));
-        r
-    }
-
-    /// [`row_bits`](Self::row_bits)' set, made in [`ROW_BITS_CHUNKS`] chunks of rows on all
-    /// cores: the first wave of a route waits for it (unless the inspector made it with the
-    /// codes: [`Inspector::row_bits_ahead`]).
-    fn make_row_bits(&self, bits: u8) -> RowBits {
-        let d2 = self.grid.dims[2];
-        let words = d2.div_ceil(64);
-        let rows = self.grid.dims[0] * self.grid.dims[1];
-        if d2 == 0 || rows == 0 {
-            return RowBits {
-                words,
-                plain: vec![0u64; rows * words],
-            };
-        }
-        // Rows in chunks on all cores (each word depends on its row's codes alone), put
-        // together in order.
-        let chunk = rows.div_ceil(ROW_BITS_CHUNKS);
-        let codes: Vec<&[u8]> = self.code.chunks(chunk * d2).collect();
-        let parts = crate::parallel::map(&codes, |codes| {
-            let mut plain = vec![0u64; codes.len() / d2 * words];
-            row_words(codes, d2, bits, &mut plain);
-            plain
-        });
-        let plain = parts.concat();
-        RowBits { words, plain }
+        self.inspect_all(&Silent);
+        (0..self.blocks.len())
+            .map(|b| {
+                let code = &self.block(b).code;
+                code.iter().filter(|&&c| c & FREE != 0).count()
+            })
+            .sum()
     }
 }
 
-/// The largest row bit set the row wave asks of the grid ([`CSpace::row_bits`]) and the
-/// inspection makes ahead ([`Inspector::row_bits_ahead`]), bytes: the set is kept for the rest
-/// of the run (52 MB at 0.25 deg over the IRB 1400's ranges); above it every candidate is
-/// looked at (the same numbers; `wave`). At 0.25 deg the set makes the trunk faster for a
-/// little more memory (`benches/README.md`).
-pub const ROW_BITS_MAX_BYTES: usize = 64 << 20;
+/// An inspector that finds every node blocked (what a block reads that no inspector can fill:
+/// never, see [`CSpace::fill`]).
+struct Blocked;
 
-/// The row words ([`RowBits`]) of whole rows of `d2` codes (`codes`) into `out`, `d2` bits
+impl Inspector for Blocked {
+    fn inspect_column(&self, _: f64, _: f64, _: &[f64], code: &mut [u8], _: &mut [u8]) {
+        code.fill(0);
+    }
+}
+
+/// The row words ([`Row::plain`]) of whole rows of `d2` codes (`codes`) into `out`, `d2` bits
 /// rounded up to whole words a row: the free nodes whose code has none of `bits`, 8 codes at a
 /// time.
 fn row_words(codes: &[u8], d2: usize, bits: u8, out: &mut [u64]) {
@@ -475,144 +629,5 @@ fn row_words(codes: &[u8], d2: usize, bits: u8, out: &mut [u64]) {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn lattice_covers_the_ranges_at_multiples_of_the_step() {
-        let g = Grid::over([[-170.0, 170.0], [-70.0, 70.0], [-65.0, 70.0]], 1.0);
-        assert_eq!(g.dims, [341, 141, 136]);
-        assert_eq!(g.axes_deg([0, 0, 0]), [-170.0, -70.0, -65.0]);
-        let g = Grid::over([[-170.0, 170.0], [-70.0, 70.0], [-65.0, 70.0]], 3.0);
-        // -168 .. 168, -69 .. 69, -63 .. 69
-        assert_eq!(g.dims, [113, 47, 45]);
-        assert_eq!(g.axes_deg([0, 0, 0]), [-168.0, -69.0, -63.0]);
-    }
-
-    #[test]
-    fn index_and_node_are_inverse() {
-        let g = Grid::over([[-10.0, 10.0], [-5.0, 5.0], [0.0, 3.0]], 1.0);
-        for i in 0..g.len() {
-            assert_eq!(g.index(g.node(i)), i);
-        }
-        assert_eq!(g.node_at(&[3.0, -2.0, 1.0]), Some([13, 3, 1]));
-        assert_eq!(g.node_at(&[3.5, -2.0, 1.0]), None);
-        assert_eq!(g.node_at(&[30.0, -2.0, 1.0]), None);
-    }
-
-    #[test]
-    fn nodes_near_are_sorted_by_distance() {
-        let g = Grid::over([[-10.0, 10.0], [-10.0, 10.0], [-10.0, 10.0]], 1.0);
-        let n = g.nodes_near(&[0.2, 0.7, 0.4], 1);
-        assert_eq!(n.len(), 8);
-        assert_eq!(g.axes_deg(n[0]), [0.0, 1.0, 0.0]);
-        assert_eq!(g.axes_deg(n[7]), [1.0, 0.0, 1.0]);
-    }
-
-    struct Ball;
-    impl Inspector for Ball {
-        fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], code: &mut [u8], _: &mut [u8]) {
-            for (f, &c) in code.iter_mut().zip(a3) {
-                *f = if a1 * a1 + a2 * a2 + c * c > 25.0 {
-                    FREE
-                } else {
-                    0
-                };
-            }
-        }
-    }
-
-    #[test]
-    fn parallel_build_matches_a_direct_fill() {
-        let g = Grid::over([[-9.0, 9.0], [-8.0, 8.0], [-7.0, 7.0]], 1.0);
-        let built = CSpace::build(g, &Ball);
-        let direct = CSpace::from_fn(g, |n| {
-            let v = g.axes_deg(n);
-            v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > 25.0
-        });
-        assert_eq!(built.code, direct.code);
-        assert!(built.free_count() < g.len());
-    }
-
-    /// Pseudo-random codes (free or not, any other bits) from the node's values.
-    struct Noise(Option<u8>);
-    impl Inspector for Noise {
-        fn row_bits_ahead(&self) -> Option<u8> {
-            self.0
-        }
-        fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], code: &mut [u8], _: &mut [u8]) {
-            for (f, &c) in code.iter_mut().zip(a3) {
-                let h = ((a1 * 7919.0 + a2 * 104_729.0 + c * 1_299_709.0) as i64)
-                    .wrapping_mul(0x2545_f491_4f6c_dd1d) as u64
-                    >> 40;
-                *f = if h & 3 == 0 {
-                    0
-                } else {
-                    FREE | (h >> 8) as u8 & 0x7f
-                };
-            }
-        }
-    }
-
-    /// The row bit set made with the codes, slice by slice, is the one made after them, on
-    /// rows of partly used, whole and several words; a set of other bits is still made on its
-    /// first ask.
-    #[test]
-    fn row_bits_made_ahead_are_the_ones_made_after() {
-        for last in [6.0, 63.0, 64.0, 69.0, 130.0] {
-            let g = Grid::over([[-4.0, 5.0], [-3.0, 3.0], [0.0, last]], 1.0);
-            let ahead = CSpace::build(g, &Noise(Some(0x40)));
-            let after = CSpace::build(g, &Noise(None));
-            assert_eq!(ahead.code, after.code);
-            assert!(ahead.code.iter().any(|&c| c & 0xc0 == 0xc0));
-            assert!(ahead.code.iter().any(|&c| c & 0xc0 == 0x80));
-            let kept = ahead.rows.0.lock().map(|r| r.len()).unwrap_or(0);
-            assert_eq!(kept, 1, "made with the codes");
-            assert_eq!(*ahead.row_bits(0x40), after.make_row_bits(0x40));
-            assert_eq!(*ahead.row_bits(0x08), after.make_row_bits(0x08));
-        }
-    }
-
-    /// The row bit set, made 8 codes at a time, against each node's code read alone: random
-    /// codes (free or not, any other bits), rows of 1 to 130 nodes (partly used last words,
-    /// whole words, several words), several sets of bits asked for; a second ask returns the
-    /// set kept.
-    #[test]
-    fn row_bits_match_each_nodes_code() {
-        let mut next = crate::plan::search::testing::xorshift(0x2545_f491_4f6c_dd1d);
-        for d2 in [1usize, 7, 63, 64, 65, 70, 128, 130] {
-            let g = Grid::over([[0.0, 2.0], [0.0, 3.0], [0.0, (d2 - 1) as f64]], 1.0);
-            let mut cs = CSpace::from_fn(g, |_| false);
-            for c in cs.code.iter_mut() {
-                let r = next();
-                // Blocked nodes have code 0; free ones any other bits.
-                *c = if r & 3 == 0 {
-                    0
-                } else {
-                    FREE | (r >> 8) as u8 & 0x7f
-                };
-            }
-            for bits in [0u8, 0x40, 0x41, 0x7f, 0x08] {
-                let r = cs.row_bits(bits);
-                assert_eq!(r.words, d2.div_ceil(64));
-                for i in 0..g.len() {
-                    let (row, z) = (i / d2, i % d2);
-                    let w = row * r.words + z / 64;
-                    let bit = |set: &[u64]| set[w] >> (z % 64) & 1 == 1;
-                    let code = cs.code[i];
-                    assert_eq!(
-                        bit(&r.plain),
-                        code & FREE != 0 && code & bits == 0,
-                        "d2 {d2} bits {bits:#x} node {i} code {code:#x}"
-                    );
-                }
-                for row in 0..g.dims[0] * g.dims[1] {
-                    let last = row * r.words + r.words - 1;
-                    let past = if d2 % 64 == 0 { 0 } else { !0u64 << (d2 % 64) };
-                    assert_eq!(r.plain[last] & past, 0);
-                }
-                assert!(Arc::ptr_eq(&r, &cs.row_bits(bits)));
-            }
-        }
-    }
-}
+#[path = "cspace_tests.rs"]
+mod tests;

@@ -198,7 +198,7 @@ struct NodeTables<'a> {
 
 impl ToolMemo {
     /// A memo for the leg of `schedule` on the grid of `cs`.
-    pub fn new(cs: &CSpace, check: &GridCheck<'_>, schedule: &WristSchedule) -> ToolMemo {
+    pub fn new(cs: &CSpace, check: &GridCheck, schedule: &WristSchedule) -> ToolMemo {
         let n = if check.model().has_tool() {
             cs.grid.len()
         } else {
@@ -280,7 +280,7 @@ impl ToolMemo {
 /// The leg's graph on the inspected grid (module doc).
 pub struct LegGraph<'a> {
     pub cs: &'a CSpace,
-    pub check: &'a GridCheck<'a>,
+    pub check: &'a GridCheck,
     pub schedule: &'a WristSchedule,
     /// Whether the wave numbers over accepted steps only (else over every step between usable
     /// nodes, the optimistic first try of [`search`]).
@@ -481,7 +481,7 @@ pub struct PlannedLeg {
 /// inspected grid `cs` (module doc for the steps).
 pub fn plan_leg(
     cs: &CSpace,
-    check: &GridCheck<'_>,
+    check: &GridCheck,
     from: &PlacedPoint,
     to: &PlacedPoint,
     method: Method,
@@ -521,10 +521,13 @@ pub fn plan_leg(
             _ => schedule.six(a),
         })
         .collect();
-    let mut waypoints: Vec<[f64; 6]> = merge::collinear_proven(&six, &mut prove)
-        .into_iter()
-        .map(quantize6)
-        .collect();
+    // The vias rounded as written; the two points as placed (a robtarget point's are the exact
+    // joints the controller computes from its robtarget).
+    let mut waypoints: Vec<[f64; 6]> = merge::collinear_proven(&six, &mut prove);
+    let inner = 1..waypoints.len().saturating_sub(1);
+    for w in &mut waypoints[inner] {
+        *w = quantize6(*w);
+    }
     waypoints.dedup();
     if waypoints.len() == 1 {
         // The two points coincide: one (empty) move keeps both in the program.

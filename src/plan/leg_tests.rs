@@ -60,7 +60,7 @@ fn point(name: &str, joints_deg: [f64; 6]) -> PlacedPoint {
 /// The leg's graph of `schedule` on `cs` with `memo`, numbering over every step.
 fn graph_of<'a>(
     cs: &'a CSpace,
-    check: &'a GridCheck<'a>,
+    check: &'a GridCheck,
     schedule: &'a WristSchedule,
     memo: &'a ToolMemo,
 ) -> LegGraph<'a> {
@@ -578,4 +578,80 @@ fn the_spread_marks_its_offsets_nodes_inside_and_at_the_faces() {
             assert!(!want.is_empty(), "node {n:?}, margin {margin}");
         }
     }
+}
+
+/// A leg planned on a grid inspected as its waves read it (`CSpace::lazy`) is the leg planned on
+/// the grid inspected whole, node for node of its grid path and bit for bit of its waypoints,
+/// with each method, with the torch and without; the lazy grid inspected part of its blocks
+/// only (the waves between the points, not the whole range of axis 1). Among the legs: one
+/// where the paper's wave offers only refused steps (the eager, node-by-node waves run too).
+#[test]
+fn a_leg_on_the_grid_inspected_as_read_is_the_leg_on_the_whole_grid() {
+    use std::sync::Arc;
+    let refusing = vec![
+        bx("b0", [641.0, 453.0, 0.0], [1041.0, 933.0, 199.0]),
+        bx("b1", [-137.0, 537.0, 0.0], [57.0, 1047.0, 1383.0]),
+        bx("b3", [623.0, 648.0, 0.0], [767.0, 980.0, 382.0]),
+        bx("b4", [-650.0, -1388.0, 0.0], [-56.0, -1060.0, 872.0]),
+        bx("b5", [581.0, 291.0, 319.0], [1075.0, 445.0, 775.0]),
+        bx("b6", [197.0, 526.0, 383.0], [631.0, 830.0, 635.0]),
+    ];
+    let robot = Robot::irb1400();
+    let placement = Placement {
+        base_mm: [0.0, 0.0, 0.0],
+        yaw_deg: 0.0,
+    };
+    let cases = [
+        (
+            model(true, false),
+            [-40.0, 10.0, 20.0, 0.0, 30.0, 0.0],
+            [40.0, 30.0, 10.0, 90.0, 60.0, 90.0],
+        ),
+        (
+            model(false, false),
+            [-40.0, 10.0, 20.0, 0.0, 30.0, 0.0],
+            [40.0, 30.0, 10.0, 90.0, 60.0, 90.0],
+        ),
+        (
+            CollisionModel::new(&robot, placement, refusing, 25.0, None),
+            [-34.0, 34.0, 36.0, 0.0, 0.0, 0.0],
+            [120.0, 30.0, 40.0, 0.0, 0.0, 0.0],
+        ),
+    ];
+    let a = &robot.controller.axes;
+    let g = Grid::over([0, 1, 2].map(|k| [a[k].min_deg, a[k].max_deg]), 2.0);
+    let mut planned = 0;
+    for (k, (m, from, to)) in cases.into_iter().enumerate() {
+        let m = Arc::new(m);
+        let check = GridCheck::new(Arc::clone(&m), g.step_deg);
+        let whole = CSpace::build(g, &check);
+        for method in Method::ALL {
+            let lazy = CSpace::lazy(g, Arc::new(GridCheck::new(Arc::clone(&m), g.step_deg)));
+            let (p, q) = (point("P", from), point("Q", to));
+            let on_whole = plan_leg(&whole, &check, &p, &q, method);
+            let on_lazy = plan_leg(&lazy, &check, &p, &q, method);
+            match (on_whole, on_lazy) {
+                (Ok(w), Ok(l)) => {
+                    assert_eq!(w.grid_path, l.grid_path, "{method}");
+                    assert_eq!(w.waypoints, l.waypoints, "{method}");
+                    planned += 1;
+                }
+                (Err(w), Err(l)) => assert_eq!(w, l, "{method}"),
+                (w, l) => panic!("{method}: {:?} against {:?}", w.err(), l.err()),
+            }
+            // The corridor waves of the first two legs read a small part of the grid; the
+            // depth-first one (unbounded, over axis steps) and the eager waves more.
+            let (done, all) = (lazy.inspected_blocks(), lazy.block_count());
+            let most = if k < 2 && method != Method::DepthFirst {
+                all / 8
+            } else {
+                all - all / 20
+            };
+            assert!(
+                done > 0 && done < most,
+                "{k} {method}: {done} of {all} blocks"
+            );
+        }
+    }
+    assert!(planned >= 7, "{planned} legs planned");
 }

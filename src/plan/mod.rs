@@ -8,8 +8,8 @@
 //! six-axis move is proven safe, and the walk back takes those steps only (on a wave numbered
 //! over every step between usable nodes first, else over those steps only: `leg`), so the
 //! search never runs out of steps (complete on its grid); for the extensile method shorten
-//! recursively ([`shorten`]); merge collinear moves ([`merge`]); round to the written precision
-//! (0.001 deg) and prove every move again. The route starts at the first point, visits every
+//! recursively ([`shorten`]); merge collinear moves ([`merge`]); round the vias to the written
+//! precision (0.001 deg; the cell points stay as placed) and prove every move again. The route starts at the first point, visits every
 //! point in the cell's order, and each cell point is a waypoint exactly as given ([`route`]).
 //! The smallest clearance along every move, and so along the whole route, is certified apart
 //! ([`certify`] into a [`Certified`] route): the refine stage certifies only the route it keeps,
@@ -32,6 +32,7 @@
 //! zone, and the shape of its time estimate); `tests.rs` the paper's figures through this layer.
 
 pub mod cspace;
+pub mod direct;
 pub mod leg;
 pub mod merge;
 pub mod motion;
@@ -39,6 +40,7 @@ pub mod search;
 pub mod shorten;
 pub mod wave;
 
+pub use direct::Legs;
 pub use search::Method;
 
 use crate::collision::{Blocked, CollisionModel, GridCheck};
@@ -66,13 +68,18 @@ pub enum WaypointKind {
     /// A via the planner inserted: the `index`-th (from 1) of leg `leg` (from 0; leg `i` runs
     /// from point `i` to point `i + 1`).
     Via { leg: usize, index: usize },
+    /// Point `i`'s approach pose (a stop of the follow stage, `process`).
+    Approach(usize),
+    /// Point `i`'s retract pose (a stop of the follow stage, `process`).
+    Retract(usize),
 }
 
 /// A waypoint of the route: where a move starts or ends.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Waypoint {
     pub kind: WaypointKind,
-    /// Controller values of axes 1..6, deg, at the written precision.
+    /// Controller values of axes 1..6, deg: a via's at the written precision, a cell point's as
+    /// placed (a robtarget point's exact, `PlacedPoint::joints_deg`).
     pub joints_deg: [f64; 6],
 }
 
@@ -90,6 +97,8 @@ pub struct Leg {
     pub to: usize,
     /// The grid path the search returned (before shortening and merging), for pictures.
     pub grid_path: Vec<Node>,
+    /// Planned as its straight move, proven without the grid (beyond the paper: [`direct`]).
+    pub straight: bool,
     /// Its waypoints in [`Route::waypoints`], both ends included (a leg shares its first
     /// waypoint with the previous leg's last).
     pub waypoints: Range<usize>,
@@ -219,7 +228,7 @@ impl PlanError {
 }
 
 /// The grid asks the collision model, on its spacing, which nodes are free and how deep.
-impl cspace::Inspector for GridCheck<'_> {
+impl cspace::Inspector for GridCheck {
     fn column_bytes(&self) -> usize {
         GridCheck::column_bytes(self)
     }
@@ -314,16 +323,30 @@ pub fn route(
     points: &[PlacedPoint],
     method: Method,
 ) -> Result<Route, PlanError> {
-    route_on(cs, model, points, method, legs_at_once(cs, model))
+    route_with(cs, model, points, method, Legs::GridOnly)
 }
 
-/// [`route`] planning up to `at_once` legs at once (1: leg by leg; for tests and benchmarks:
-/// the route is the same whatever `at_once`).
+/// [`route`], with `legs` saying which legs the grid plans: with [`Legs::StraightFirst`] a leg
+/// whose straight move is proven is that move ([`direct`]) and the grid plans the others (none
+/// of its nodes is read when every leg goes straight).
+pub fn route_with(
+    cs: &CSpace,
+    model: &CollisionModel,
+    points: &[PlacedPoint],
+    method: Method,
+    legs: Legs,
+) -> Result<Route, PlanError> {
+    route_on(cs, model, points, method, legs, legs_at_once(cs, model))
+}
+
+/// [`route_with`] planning up to `at_once` grid legs at once (1: leg by leg; for tests and
+/// benchmarks: the route is the same whatever `at_once`).
 pub fn route_on(
     cs: &CSpace,
     model: &CollisionModel,
     points: &[PlacedPoint],
     method: Method,
+    legs: Legs,
     at_once: usize,
 ) -> Result<Route, PlanError> {
     for (i, p) in points.iter().enumerate() {
@@ -335,23 +358,31 @@ pub fn route_on(
             });
         }
     }
+    let straight = match legs {
+        Legs::GridOnly => vec![false; points.len().saturating_sub(1)],
+        Legs::StraightFirst => direct::proven_straight(model, points),
+    };
     let grid = &cs.grid;
-    let check = model.grid_check(grid.step_deg);
-    let legs = if at_once > 1 {
+    // The grid's check only for a leg the grid plans (it copies the model).
+    let grid_check = std::sync::OnceLock::new();
+    let check = || grid_check.get_or_init(|| model.grid_check(grid.step_deg));
+    let on_grid = |i: usize| !straight[i];
+    let legs: Vec<usize> = if at_once > 1 {
         longest_first(points)
     } else {
         (0..points.len() - 1).collect()
     };
+    let legs: Vec<usize> = legs.into_iter().filter(|&i| on_grid(i)).collect();
     // The legs on up to `at_once` threads. A leg after a failed one is not started (every leg
     // before the first failure is planned, whatever the order they are handed out in): the
     // error is the first failing leg's, as leg by leg.
     let first_failed = AtomicUsize::new(usize::MAX);
-    let mut planned: Vec<Option<_>> = (0..legs.len()).map(|_| None).collect();
+    let mut planned: Vec<Option<_>> = (0..points.len() - 1).map(|_| None).collect();
     let done = crate::parallel::map_on(at_once, &legs, |&i| {
         if i > first_failed.load(Ordering::Relaxed) {
             return None;
         }
-        let leg = route_leg(cs, model, &check, points, i, method);
+        let leg = route_leg(cs, model, check(), points, i, method);
         if leg.is_err() {
             first_failed.fetch_min(i, Ordering::Relaxed);
         }
@@ -362,13 +393,18 @@ pub fn route_on(
     }
     let mut made = Joined::default();
     for (i, leg) in planned.into_iter().enumerate() {
+        if straight[i] {
+            let six = vec![points[i].joints_deg, points[i + 1].joints_deg];
+            made.add_leg(i, Vec::new(), six, true);
+            continue;
+        }
         // A leg not started follows a failed one, whose error returned first: planned here
         // only if that ever did not hold.
         let (grid_path, six) = match leg {
             Some(leg) => leg?,
-            None => route_leg(cs, model, &check, points, i, method)?,
+            None => route_leg(cs, model, check(), points, i, method)?,
         };
-        made.add_leg(i, grid_path, six);
+        made.add_leg(i, grid_path, six, false);
     }
     Ok(Route {
         method,
@@ -402,7 +438,7 @@ fn longest_first(points: &[PlacedPoint]) -> Vec<usize> {
 fn route_leg(
     cs: &CSpace,
     model: &CollisionModel,
-    check: &GridCheck<'_>,
+    check: &GridCheck,
     points: &[PlacedPoint],
     i: usize,
     method: Method,
@@ -517,8 +553,8 @@ struct Joined {
 
 impl Joined {
     /// Adds leg `i` (point `i` to point `i + 1`) with its six-axis waypoints (both ends
-    /// included, the ends the points as given).
-    fn add_leg(&mut self, i: usize, grid_path: Vec<Node>, six: Vec<[f64; 6]>) {
+    /// included, the ends the points as given); `straight`: planned without the grid.
+    fn add_leg(&mut self, i: usize, grid_path: Vec<Node>, six: Vec<[f64; 6]>, straight: bool) {
         let start = self.waypoints.len().saturating_sub(1);
         if self.waypoints.is_empty() {
             if let Some(&first) = six.first() {
@@ -541,6 +577,7 @@ impl Joined {
             from: i,
             to: i + 1,
             grid_path,
+            straight,
             waypoints: start..self.waypoints.len(),
         });
     }

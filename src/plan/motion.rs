@@ -38,7 +38,9 @@ pub fn planned(route: &Route, points: &[PlacedPoint]) -> Vec<MoveMotion> {
     (0..route.waypoints.len())
         .map(|k| {
             let zone = match route.waypoints[k].kind {
-                WaypointKind::CellPoint(i) => point(points, i).zone,
+                WaypointKind::CellPoint(i)
+                | WaypointKind::Approach(i)
+                | WaypointKind::Retract(i) => point(points, i).zone,
                 WaypointKind::Via { .. } => VIA_ZONE.to_string(),
             };
             MoveMotion {
@@ -64,7 +66,9 @@ pub fn motions(route: &Route, points: &[PlacedPoint], zones: &[String]) -> Vec<M
 /// end point.
 fn speed_into(route: &Route, points: &[PlacedPoint], k: usize) -> String {
     match route.waypoints[k].kind {
-        WaypointKind::CellPoint(i) => point(points, i).speed,
+        WaypointKind::CellPoint(i) | WaypointKind::Approach(i) | WaypointKind::Retract(i) => {
+            point(points, i).speed
+        }
         WaypointKind::Via { leg, .. } => point(points, leg + 1).speed,
     }
 }

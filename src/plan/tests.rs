@@ -196,8 +196,8 @@ fn legs_planned_at_once_give_the_route_leg_by_leg_and_the_first_failing_legs_err
     }
     for method in Method::ALL {
         let pts = [&a, &b, &c, &c2, &d, &b, &a].map(Clone::clone);
-        let one = route_on(&cs, &model, &pts, method, 1);
-        let two = route_on(&cs, &model, &pts, method, 2);
+        let one = route_on(&cs, &model, &pts, method, Legs::GridOnly, 1);
+        let two = route_on(&cs, &model, &pts, method, Legs::GridOnly, 2);
         let (one, two) = match (one, two) {
             (Ok(one), Ok(two)) => (one, two),
             // Depth-first may find no path (paper Fig. 8): then both alike.
@@ -216,7 +216,8 @@ fn legs_planned_at_once_give_the_route_leg_by_leg_and_the_first_failing_legs_err
         );
         // Each leg is the leg planned alone, in its place.
         for (i, leg) in one.legs.iter().enumerate() {
-            let alone = route_on(&cs, &model, &pts[i..i + 2], method, 1).expect("alone");
+            let alone =
+                route_on(&cs, &model, &pts[i..i + 2], method, Legs::GridOnly, 1).expect("alone");
             let six = |w: &[Waypoint]| w.iter().map(|w| w.joints_deg).collect::<Vec<_>>();
             assert_eq!(
                 six(&one.waypoints[leg.waypoints.clone()]),
@@ -229,11 +230,28 @@ fn legs_planned_at_once_give_the_route_leg_by_leg_and_the_first_failing_legs_err
     // legs are planned one at a time or two.
     let pts = [&a, &b, &e, &f, &c, &d].map(Clone::clone);
     let fails: Vec<usize> = (0..pts.len() - 1)
-        .filter(|&i| route_on(&cs, &model, &pts[i..i + 2], Method::Extensile, 1).is_err())
+        .filter(|&i| {
+            route_on(
+                &cs,
+                &model,
+                &pts[i..i + 2],
+                Method::Extensile,
+                Legs::GridOnly,
+                1,
+            )
+            .is_err()
+        })
         .collect();
     assert_eq!(fails, [1, 3], "the legs that cross the walls");
     for at_once in [1, 2] {
-        match route_on(&cs, &model, &pts, Method::Extensile, at_once) {
+        match route_on(
+            &cs,
+            &model,
+            &pts,
+            Method::Extensile,
+            Legs::GridOnly,
+            at_once,
+        ) {
             Err(e @ PlanError::NoPath { from: 1, to: 2, .. }) => {
                 assert!(e.to_string().contains("from 'B' to 'E'"), "{e}");
             }
@@ -242,13 +260,97 @@ fn legs_planned_at_once_give_the_route_leg_by_leg_and_the_first_failing_legs_err
     }
 }
 
+/// Legs first tried straight (`direct`): a leg whose straight move the whole-move proof
+/// proves (computed here apart) is its two points and nothing else; every other leg is the
+/// paper's leg on the grid, the same waypoints and grid path as with every leg on the grid.
+/// Legs all proven read no node of a grid inspected as it is read.
+#[test]
+fn proven_legs_go_straight_and_the_others_are_the_papers() {
+    let (model, built) = split_cell();
+    let lazy = || {
+        CSpace::lazy(
+            built.grid,
+            std::sync::Arc::new(model.grid_check(built.grid.step_deg)),
+        )
+    };
+    let a = point("A", [30.0, -6.0, -9.0], [0.0, 30.0, 0.0]);
+    let b = point("B", [39.0, 21.0, -21.0], [10.0, 35.0, 20.0]);
+    let c = point("C", [42.0, 21.0, 12.0], [0.0, 30.0, 0.0]);
+    let c2 = point("C2", [42.0, 21.0, 12.0], [0.0, 30.0, 30.0]);
+    let d = point("D", [39.0, -24.0, 0.0], [-10.0, 25.0, 0.0]);
+    let pts = [&a, &b, &c, &c2, &d, &b, &a].map(Clone::clone);
+    let proven: Vec<bool> = pts
+        .windows(2)
+        .map(|w| {
+            w[0].arm_deg() != w[1].arm_deg()
+                && model.move_is_safe(&w[0].joints_deg, &w[1].joints_deg)
+        })
+        .collect();
+    assert!(
+        proven.contains(&true) && proven.contains(&false),
+        "{proven:?}"
+    );
+    for method in [Method::Extensile, Method::Neighboring] {
+        let cs = lazy();
+        let first = route_with(&cs, &model, &pts, method, Legs::StraightFirst).expect("first");
+        let paper = route_with(&built, &model, &pts, method, Legs::GridOnly).expect("paper");
+        assert!(!first.paper_alone() && paper.paper_alone());
+        assert_eq!(first.legs.len(), pts.len() - 1);
+        for (i, leg) in first.legs.iter().enumerate() {
+            let six: Vec<[f64; 6]> = first.waypoints[leg.waypoints.clone()]
+                .iter()
+                .map(|w| w.joints_deg)
+                .collect();
+            assert_eq!(leg.straight, proven[i], "{method} leg {i}");
+            if proven[i] {
+                assert_eq!(six, [pts[i].joints_deg, pts[i + 1].joints_deg]);
+                assert!(leg.grid_path.is_empty());
+            } else {
+                let p = &paper.legs[i];
+                let want: Vec<[f64; 6]> = paper.waypoints[p.waypoints.clone()]
+                    .iter()
+                    .map(|w| w.joints_deg)
+                    .collect();
+                assert_eq!(six, want, "{method} leg {i}");
+                assert_eq!(leg.grid_path, p.grid_path);
+            }
+        }
+    }
+    // The legs proven in a row, alone: not one node read.
+    let run = (0..proven.len())
+        .find(|&i| proven[i])
+        .expect("a proven leg");
+    let end = (run..proven.len())
+        .find(|&i| !proven[i])
+        .unwrap_or(proven.len());
+    let cs = lazy();
+    let route = route_with(
+        &cs,
+        &model,
+        &pts[run..=end],
+        Method::Extensile,
+        Legs::StraightFirst,
+    )
+    .expect("straight");
+    assert!(route.legs.iter().all(|l| l.straight));
+    assert_eq!(cs.inspected_blocks(), 0);
+}
+
 #[test]
 fn a_route_proven_again_is_certified_as_by_certify_and_one_through_a_wall_is_not() {
     let (model, cs) = split_cell();
     let a = point("A", [30.0, -6.0, -9.0], [0.0, 30.0, 0.0]);
     let b = point("B", [39.0, 21.0, -21.0], [10.0, 35.0, 20.0]);
     let c = point("C", [42.0, 21.0, 12.0], [0.0, 30.0, 0.0]);
-    let route = route_on(&cs, &model, &[a, b, c], Method::Extensile, 1).expect("planned");
+    let route = route_on(
+        &cs,
+        &model,
+        &[a, b, c],
+        Method::Extensile,
+        Legs::GridOnly,
+        1,
+    )
+    .expect("planned");
     let once = certify(route.clone(), &model);
     let again = certify_proven(route.clone(), &model).expect("every move proven");
     assert!(once.least.is_some());

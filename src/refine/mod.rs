@@ -20,7 +20,7 @@
 //! the motion into each waypoint (the time stage, `timing`, lies to its left), called once per
 //! candidate; the winner's estimate is the plan's. A change inside the passes is kept only when
 //! that estimate does not grow. The paper's method alone is timed here too ([`paper_figure`]),
-//! the figure the plan is measured against.
+//! the figure the plan is measured against, when the route is the paper's (`Route::paper_alone`).
 //!
 //! A candidate route is certified only when it is proven again on the cell's model; the plan
 //! stage's route (proven as it was planned) is certified once, only if a candidate keeps it.
@@ -29,10 +29,12 @@ pub mod shortcut;
 pub mod split;
 pub mod zones;
 
+use crate::cell::Frame;
 use crate::collision::CollisionModel;
 use crate::place::{MoveMotion, PlacedPoint};
 use crate::plan::motion::{self, Estimate, MoveEstimate, VIA_ZONE};
 use crate::plan::{self, Certified, Clearance, Route, WaypointKind};
+use crate::robot::ik::six::ConfData;
 
 /// What the refine stage needs besides the route.
 pub struct Settings<'a> {
@@ -48,10 +50,43 @@ pub struct Settings<'a> {
 /// into each waypoint (`timing::estimate` with the robot's time model).
 pub type TimeFn<'a> = dyn Fn(&Route, &[MoveMotion]) -> Estimate + 'a;
 
+/// How a move runs: a straight joint move (planned through the air), or a process move the
+/// follow stage (`process`) followed and proved along its TCP path.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MoveKind {
+    /// Joint interpolation (`MoveAbsJ`, `MoveJ`).
+    Joint,
+    /// A `move: linear` line (`MoveL`).
+    Linear,
+    /// A `move: circular` arc (`MoveC`) through its circle point: `via` (the work object's
+    /// frame: the cell's via position, the orientation at its arc fraction) in configuration
+    /// `via_conf`.
+    Circular { via: Frame, via_conf: ConfData },
+    /// The approach line into a point, from `dz_mm` back along its tool's z axis (`MoveL`).
+    Approach { dz_mm: f64 },
+    /// The retract line out of a point, `dz_mm` back along its tool's z axis (`MoveL`).
+    Retract { dz_mm: f64 },
+}
+
+impl MoveKind {
+    /// The name the report and templates use.
+    pub fn name(&self) -> &'static str {
+        match self {
+            MoveKind::Joint => "joint",
+            MoveKind::Linear => "linear",
+            MoveKind::Circular { .. } => "circular",
+            MoveKind::Approach { .. } => "approach",
+            MoveKind::Retract { .. } => "retract",
+        }
+    }
+}
+
 /// One move of the plan, from waypoint `i` to waypoint `i + 1` of its route: everything the
 /// module, the report and the pictures say of it.
 #[derive(Clone, Debug)]
 pub struct Move {
+    /// How it runs.
+    pub kind: MoveKind,
     /// Its speeddata and zonedata (the zone: the one certified at the waypoint it ends at).
     pub motion: MoveMotion,
     /// The certified smallest clearance along it (within [`plan::MIN_CLEARANCE_TOL_MM`]), with
@@ -76,8 +111,9 @@ pub struct Plan {
     pub least: Option<Clearance>,
     /// The manipulation time, the sum of the moves', s.
     pub total_s: f64,
-    /// The paper's method alone on the same cell.
-    pub paper: PaperFigure,
+    /// The paper's method alone on the same cell; `None` when the route is not the paper's
+    /// (a leg gone straight without the grid: `plan::direct`), whose method then did not run.
+    pub paper: Option<PaperFigure>,
 }
 
 impl Plan {
@@ -125,7 +161,9 @@ pub fn refine(
     settings: &Settings,
     time: &TimeFn,
 ) -> Refined {
-    let paper = paper_figure(&route, model, points, time);
+    let paper = route
+        .paper_alone()
+        .then(|| paper_figure(&route, model, points, time));
     let all = match settings.shortcut {
         true => candidates(&route, model, points, settings.via_zone, time),
         false => vec![route.clone()],
@@ -238,7 +276,7 @@ fn finish(
     points: &[PlacedPoint],
     settings: &Settings,
     time: &TimeFn,
-    paper: PaperFigure,
+    paper: Option<PaperFigure>,
 ) -> Refined {
     let Certified {
         route,
@@ -264,6 +302,7 @@ fn finish(
         .zip(clearances)
         .zip(estimate.moves)
         .map(|((motion, clearance), estimate)| Move {
+            kind: MoveKind::Joint,
             motion,
             clearance,
             estimate,
@@ -289,7 +328,6 @@ mod tests {
     use super::*;
     use crate::pipeline;
     use crate::plan::Method;
-    use crate::progress::Silent;
     use crate::timing;
     use std::cell::Cell;
     use std::path::Path;
@@ -301,7 +339,7 @@ mod tests {
         // Fly-by vias where their corners are proven: zones differ from move to move.
         job.cell.motion.via_zone = "z50".into();
         let placed = pipeline::place(&job).expect("placed");
-        let inspected = pipeline::inspect(&job, &placed, 2.0, &Silent);
+        let inspected = pipeline::inspect(&job, &placed, 2.0);
         let route = pipeline::route(&job, &placed, &inspected, Method::Extensile).expect("route");
         let time_model = timing::TimeModel::new(&job.robot, job.cell.tool.as_ref());
         let calls = Cell::new(0);
@@ -343,7 +381,9 @@ mod tests {
                         let proven = zones::corner_is_proven(&plan.route, &inspected.model, k);
                         assert_eq!(fly_by, proven, "via {k}");
                     }
-                    WaypointKind::CellPoint(_) => assert!(!fly_by, "point {k}"),
+                    WaypointKind::CellPoint(_)
+                    | WaypointKind::Approach(_)
+                    | WaypointKind::Retract(_) => assert!(!fly_by, "point {k}"),
                 }
             }
             let (zoned, vias) = plan.zoned_vias();
@@ -361,8 +401,9 @@ mod tests {
             let (least, moves_least) = (plan.least.expect("obstacles"), certified.least);
             assert!(least.mm <= moves_least.expect("obstacles").mm);
             // Flying by never takes longer than the paper's route with its vias stopping.
-            assert!(plan.total_s <= plan.paper.time_s, "{shortcut}");
-            assert_eq!(plan.paper.moves, route.moves());
+            let paper = plan.paper.expect("the paper's route");
+            assert!(plan.total_s <= paper.time_s, "{shortcut}");
+            assert_eq!(paper.moves, route.moves());
         }
     }
 }

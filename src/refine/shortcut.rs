@@ -276,7 +276,6 @@ mod tests {
     use super::*;
     use crate::pipeline;
     use crate::plan::motion;
-    use crate::progress::Silent;
     use crate::timing;
     use std::path::Path;
 
@@ -370,7 +369,7 @@ mod tests {
                 timing::estimate(p, &motion::planned(p, &placed.points), &time_model).total_s
             };
             for &grid_deg in grids {
-                let inspected = pipeline::inspect(&job, &placed, grid_deg, &Silent);
+                let inspected = pipeline::inspect(&job, &placed, grid_deg);
                 let route = pipeline::route(&job, &placed, &inspected, job.cell.planner.method)
                     .expect("the example cell is planned");
                 let vias = route.waypoints.len();

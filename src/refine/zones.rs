@@ -42,6 +42,8 @@ pub fn wanted(route: &Route, points: &[PlacedPoint], via_zone: &str) -> Vec<Opti
             let zone = match w.kind {
                 WaypointKind::Via { .. } => via_zone,
                 WaypointKind::CellPoint(i) => points.get(i).map_or(FINE, |p| &p.motion.zone),
+                // The follow stage's stops: never a corner the plan stage sees.
+                WaypointKind::Approach(_) | WaypointKind::Retract(_) => FINE,
             };
             is_fly_by(zone).then(|| zone.to_string())
         })

@@ -12,6 +12,7 @@
 //! accelerations; see `robots/irb1400.controller.yaml` for where the 0.4 s comes from.
 
 use serde::Deserialize;
+use serde_saphyr::Spanned;
 use std::path::{Path, PathBuf};
 
 /// How controller axis values map to URDF joint values.
@@ -66,17 +67,48 @@ pub struct Controller {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawRange {
-    min: f64,
-    max: f64,
+    min: Spanned<f64>,
+    max: Spanned<f64>,
+}
+
+/// One axis as written, every value with its place (a fault is pointed at in the file).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawAxis {
+    min: Spanned<f64>,
+    max: Spanned<f64>,
+    speed: Spanned<f64>,
+    #[serde(default)]
+    acceleration: Option<Spanned<f64>>,
 }
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawController {
     coupling: Coupling,
-    axes: Vec<AxisSpec>,
+    axes: Spanned<Vec<Spanned<RawAxis>>>,
     #[serde(default)]
-    coupled_axis3: Option<RawRange>,
+    coupled_axis3: Option<Spanned<RawRange>>,
+}
+
+/// Why a controller file was refused, and where in it (1-based line and column; 0 when the
+/// reader gives no place).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{message}")]
+pub struct ControllerFault {
+    pub message: String,
+    pub line: u64,
+    pub column: u64,
+}
+
+impl ControllerFault {
+    fn at<T>(s: &Spanned<T>, message: String) -> ControllerFault {
+        ControllerFault {
+            message,
+            line: s.referenced.line(),
+            column: s.referenced.column(),
+        }
+    }
 }
 
 /// The widest axis range gen-rapid takes (deg, each side of zero): two turns. Wider than any
@@ -124,45 +156,94 @@ pub fn path_beside(urdf_path: &Path) -> PathBuf {
     urdf_path.with_extension("controller.yaml")
 }
 
-/// Parses a controller file; the message says what is wrong (with line:column when YAML is).
-pub fn parse(text: &str) -> Result<Controller, String> {
-    let raw: RawController = serde_saphyr::from_str(text).map_err(|e| match e.location() {
-        Some(loc) => format!(
-            "{}:{}: {}",
-            loc.line(),
-            loc.column(),
-            first_line(&e.to_string())
-        ),
-        None => e.to_string(),
+/// Parses a controller file; the fault says what is wrong and where in the file.
+pub fn parse(text: &str) -> Result<Controller, ControllerFault> {
+    let raw: RawController = serde_saphyr::from_str(text).map_err(|e| {
+        let (line, column) = e.location().map_or((0, 0), |l| (l.line(), l.column()));
+        ControllerFault {
+            message: crate::excerpt::message(first_line(
+                &serde_saphyr::MessageFormatter::format_message(
+                    &serde_saphyr::DefaultMessageFormatter,
+                    &e,
+                ),
+            ))
+            .into_owned(),
+            line,
+            column,
+        }
     })?;
-    let axes: [AxisSpec; 6] = raw
-        .axes
-        .try_into()
-        .map_err(|v: Vec<AxisSpec>| format!("`axes` must list 6 axes, found {}", v.len()))?;
-    for (i, a) in axes.iter().enumerate() {
-        if let Some(fault) = range_fault(a.min_deg, a.max_deg) {
-            return Err(format!("axis {}: {fault}", i + 1));
-        }
-        if !(a.speed_deg_s.is_finite() && a.speed_deg_s > 0.0) {
-            return Err(format!("axis {}: speed must be positive", i + 1));
-        }
-        if let Some(fault) = rate_fault(a.speed_deg_s, AXIS_SPEED_DEG_S, "speed", "deg/s") {
-            return Err(format!("axis {}: {fault}", i + 1));
-        }
-        if let Some(acc) = a.acceleration_deg_s2 {
-            if !(acc.is_finite() && acc > 0.0) {
-                return Err(format!("axis {}: acceleration must be positive", i + 1));
-            }
-            let fault = rate_fault(acc, AXIS_ACCELERATION_DEG_S2, "acceleration", "deg/s^2");
-            if let Some(fault) = fault {
-                return Err(format!("axis {}: {fault}", i + 1));
-            }
-        }
+    // A key given no value (`acceleration:` alone) is refused, never taken as left out.
+    if let Some(b) = crate::blank_key::first_blank_key(text, serde_saphyr::Options::default()) {
+        return Err(ControllerFault {
+            message: crate::blank_key::BlankKey::message(&crate::excerpt::value(&b.key)),
+            line: b.line,
+            column: b.column,
+        });
     }
-    let coupled_axis3_deg = match raw.coupled_axis3 {
-        Some(r) => match range_fault(r.min, r.max) {
-            None => Some([r.min, r.max]),
-            Some(fault) => return Err(format!("coupled_axis3: {fault}")),
+    if raw.axes.value.len() != 6 {
+        return Err(ControllerFault::at(
+            &raw.axes,
+            format!("`axes` must list 6 axes, found {}", raw.axes.value.len()),
+        ));
+    }
+    let mut axes = [AxisSpec {
+        min_deg: 0.0,
+        max_deg: 0.0,
+        speed_deg_s: 0.0,
+        acceleration_deg_s2: None,
+    }; 6];
+    for (i, (slot, a)) in axes.iter_mut().zip(&raw.axes.value).enumerate() {
+        let a = &a.value;
+        let axis = i + 1;
+        if let Some(fault) = range_fault(a.min.value, a.max.value) {
+            return Err(ControllerFault::at(&a.min, format!("axis {axis}: {fault}")));
+        }
+        let speed = a.speed.value;
+        if !(speed.is_finite() && speed > 0.0) {
+            return Err(ControllerFault::at(
+                &a.speed,
+                format!("axis {axis}: speed must be positive"),
+            ));
+        }
+        if let Some(fault) = rate_fault(speed, AXIS_SPEED_DEG_S, "speed", "deg/s") {
+            return Err(ControllerFault::at(
+                &a.speed,
+                format!("axis {axis}: {fault}"),
+            ));
+        }
+        if let Some(acc) = &a.acceleration {
+            if !(acc.value.is_finite() && acc.value > 0.0) {
+                return Err(ControllerFault::at(
+                    acc,
+                    format!("axis {axis}: acceleration must be positive"),
+                ));
+            }
+            let fault = rate_fault(
+                acc.value,
+                AXIS_ACCELERATION_DEG_S2,
+                "acceleration",
+                "deg/s^2",
+            );
+            if let Some(fault) = fault {
+                return Err(ControllerFault::at(acc, format!("axis {axis}: {fault}")));
+            }
+        }
+        *slot = AxisSpec {
+            min_deg: a.min.value,
+            max_deg: a.max.value,
+            speed_deg_s: speed,
+            acceleration_deg_s2: a.acceleration.as_ref().map(|x| x.value),
+        };
+    }
+    let coupled_axis3_deg = match &raw.coupled_axis3 {
+        Some(r) => match range_fault(r.value.min.value, r.value.max.value) {
+            None => Some([r.value.min.value, r.value.max.value]),
+            Some(fault) => {
+                return Err(ControllerFault::at(
+                    &r.value.min,
+                    format!("coupled_axis3: {fault}"),
+                ))
+            }
         },
         None => None,
     };

@@ -25,6 +25,7 @@ pub mod models;
 #[cfg(test)]
 mod models_tests;
 pub mod urdf;
+mod xml_depth;
 
 use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
 use std::path::{Path, PathBuf};
@@ -148,7 +149,14 @@ pub enum RobotError {
         source: std::io::Error,
     },
     #[error("controller file {path}: {message}")]
-    Controller { path: PathBuf, message: String },
+    Controller {
+        path: PathBuf,
+        message: String,
+        /// Where in the controller file (1-based; 0 when not known), and that line.
+        line: u64,
+        column: u64,
+        line_text: Option<String>,
+    },
     #[error("unknown robot model '{name}'")]
     UnknownModel { name: String },
 }
@@ -718,9 +726,17 @@ mod tests {
             .replace("{ min: -170, max: 170,", "{ min: -1e300, max: 170,");
         let err = controller::parse(&ctrl).unwrap_err();
         assert!(
-            err.contains("axis 1: the range -1e300 .. 170 deg reaches beyond"),
+            err.message
+                .contains("axis 1: the range -1e300 .. 170 deg reaches beyond"),
             "{err}"
         );
+        // Pointed at in the controller file: axis 1's line, its `min`.
+        let line = ctrl
+            .lines()
+            .position(|l| l.contains("min: -1e300"))
+            .expect("the line") as u64
+            + 1;
+        assert_eq!(err.line, line, "{err}");
         // Speeds and accelerations of 1e-300: accepted, they would write the header's estimated
         // time in over 300 digits.
         let ctrl = include_str!("../../robots/irb1400.controller.yaml");
@@ -737,7 +753,7 @@ mod tests {
             ),
         ] {
             let err = controller::parse(&ctrl.replacen(from, to, 1)).unwrap_err();
-            assert!(err.contains(needle), "{err}");
+            assert!(err.message.contains(needle), "{err}");
         }
         refused(
             text.replacen(r#"velocity="1.9198621772""#, r#"velocity="1e-300""#, 1),

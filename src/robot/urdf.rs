@@ -3,7 +3,8 @@
 //!
 //! What it accepts: one serial chain from the root link through exactly six revolute (or
 //! continuous) joints; fixed joints anywhere in the chain are folded into the next joint's origin;
-//! a fixed child named `tool0` after joint 6 gives the tool0 frame and ends the chain (joints
+//! a fixed child named `tool0` after joint 6 (required: the flange is never guessed) gives the
+//! tool0 frame and ends the chain (joints
 //! below tool0 belong to a tool and are ignored; a 7th revolute joint before it is refused:
 //! gen-rapid plans six-axis arms). Each child link of joints 1..3 must carry
 //! collision geometry (the paper's lumped model); the root link (base_link) and links 4..6 may
@@ -56,6 +57,15 @@ pub fn robot_from_urdf(
         path: path.to_path_buf(),
         message,
     };
+    if let Some(line) = super::xml_depth::too_deep(text) {
+        return Err(RobotError::ParseUrdf {
+            path: path.to_path_buf(),
+            message: format!(
+                "its elements nest more than {} deep (line {line}); a URDF nests a few levels",
+                super::xml_depth::MAX_DEPTH
+            ),
+        });
+    }
     let urdf = urdf_rs::read_from_string(text).map_err(|e| RobotError::ParseUrdf {
         path: path.to_path_buf(),
         message: e.to_string(),
@@ -86,6 +96,7 @@ pub fn robot_from_urdf(
     let mut joints = Vec::new();
     let mut pending = Isometry3::identity(); // fixed joints since the last revolute one
     let mut flange_to_tool0 = Isometry3::identity();
+    let mut found_tool0 = false;
     let root_name = root.clone();
     let mut link = root;
     let mut visited = std::collections::HashSet::new();
@@ -98,6 +109,7 @@ pub fn robot_from_urdf(
         }
         // Joint 6's own child named tool0 is the flange frame; what hangs below it is the tool's.
         if joints.len() == 6 && link == "tool0" {
+            found_tool0 = true;
             break;
         }
         let children: Vec<&urdf_rs::Joint> = urdf
@@ -144,6 +156,7 @@ pub fn robot_from_urdf(
                 pending *= pose_mm(&next.origin);
                 if joints.len() == 6 && next.child.link == "tool0" {
                     flange_to_tool0 = pending;
+                    found_tool0 = true;
                     // What hangs below tool0 (a spindle, a gripper's fingers) is the tool's,
                     // which the cell's `tool:` describes: the arm's chain ends here.
                     break;
@@ -172,6 +185,20 @@ pub fn robot_from_urdf(
             joints.len()
         )));
     }
+    // The flange is the link named tool0 (the ROS-Industrial convention; RAPID's tool0 is the
+    // flange): the last link is not taken in its stead, its frame may be turned or offset.
+    if !found_tool0 {
+        let elsewhere = if urdf.links.iter().any(|l| l.name == "tool0") {
+            "; a link named tool0 is in the URDF, but not fixed below joint 6"
+        } else {
+            ""
+        };
+        return Err(model_err(format!(
+            "no link named tool0 below joint 6 ('{}'): the chain ends at link '{}'{elsewhere}; gen-rapid takes the flange as the link tool0, fixed to joint 6's link, and would not guess it",
+            joints.last().map_or("", |(j, _, _)| j.name.as_str()),
+            crate::excerpt::value(&link)
+        )));
+    }
 
     // The root's cylinders (optional), then each child link's: links 1..3 must carry some.
     let mut collision = cylinders_of(&urdf, &root_name, LinkFrame::Base).map_err(model_err)?;
@@ -191,9 +218,12 @@ pub fn robot_from_urdf(
 
     let controller = match controller_file {
         Some((cpath, ctext)) => {
-            let mut c = controller::parse(ctext).map_err(|message| RobotError::Controller {
+            let mut c = controller::parse(ctext).map_err(|f| RobotError::Controller {
                 path: cpath.to_path_buf(),
-                message,
+                message: f.message,
+                line: f.line,
+                column: f.column,
+                line_text: crate::excerpt::nth_line(ctext, f.line).map(str::to_string),
             })?;
             c.source = Some(cpath.to_path_buf());
             c

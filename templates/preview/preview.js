@@ -18,8 +18,11 @@
  * - Draw order: opaque meshes, lines, then the translucent boxes back to front with depth
  *   writes off (back faces, then front faces).
  * - Text (waypoint and obstacle names, the clearance, failed points) is HTML laid over the
- *   canvas, at the projection of its 3D anchor, moved every frame.
- * - Orbit camera about the centre of everything drawn, first seen from the robot's right
+ *   canvas, at the projection of its 3D anchor, moved every frame; a point's label that would
+ *   cover another point's (points at the same place) moves down below it.
+ * - Orbit camera about the centre of the robot's shapes over the whole motion, the TCP trace and
+ *   the points (not the boxes: a large floor or fence may reach out of the view), first seen
+ *   from the robot's right
  *   (relative to its base yaw), a little behind and above it: drag rotates, wheel zooms,
  *   right- or shift-drag pans,
  *   double-click resets; space plays or pauses.
@@ -331,19 +334,43 @@
   // milliseconds past that rounded value).
   var shownEnd = scene.total_time_s != null ? scene.total_time_s : duration;
 
-  // Bounding box of everything drawn: sets the camera, the grid and the marker size.
-  var lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
-  function extend(p) {
-    for (var i = 0; i < 3; i++) { lo[i] = Math.min(lo[i], p[i]); hi[i] = Math.max(hi[i], p[i]); }
+  // Two bounding boxes: of everything drawn (the fallback), and of the robot, the tool, its
+  // trace and the points (the focus), which sets the camera, the grid and the marker size, so a
+  // large floor or fence does not make the cell tiny (boxes may then reach out of the view).
+  function bounds() { return { lo: [Infinity, Infinity, Infinity], hi: [-Infinity, -Infinity, -Infinity] }; }
+  function extendBox(b, p) {
+    for (var i = 0; i < 3; i++) { b.lo[i] = Math.min(b.lo[i], p[i]); b.hi[i] = Math.max(b.hi[i], p[i]); }
   }
-  scene.obstacles.forEach(function (o) { extend(o.min_mm); extend(o.max_mm); });
+  var all = bounds(), focus = bounds();
+  function extend(p) { extendBox(all, p); extendBox(focus, p); }
+  scene.obstacles.forEach(function (o) { extendBox(all, o.min_mm); extendBox(all, o.max_mm); });
   if (scene.base) extend(scene.base.position_mm);
+  // Each shape's bounding ball in its own frame, placed by every keyframe.
+  var balls = scene.shapes.map(function (s) {
+    var g = s.geometry;
+    if (g.type === "cylinder") {
+      var d = sub(g.to_mm, g.from_mm);
+      return { c: scale(add(g.from_mm, g.to_mm), 0.5), r: Math.hypot(d[0], d[1], d[2]) / 2 + g.radius_mm };
+    }
+    if (g.type === "box") {
+      var e = sub(g.max_mm, g.min_mm);
+      return { c: scale(add(g.min_mm, g.max_mm), 0.5), r: Math.hypot(e[0], e[1], e[2]) / 2 };
+    }
+    return { c: g.centre_mm, r: g.radius_mm };
+  });
   keys.forEach(function (k) {
     extend(k.tcp_mm);
-    k.poses.forEach(function (p) { extend(p.position_mm); });
+    k.poses.forEach(function (p, n) {
+      var m = compose(p.position_mm, p.quat_wxyz, [1, 1, 1]), c = balls[n].c, r = balls[n].r;
+      var w = [0, 1, 2].map(function (i) { return m[i] * c[0] + m[4 + i] * c[1] + m[8 + i] * c[2] + m[12 + i]; });
+      extend(sub(w, [r, r, r]));
+      extend(add(w, [r, r, r]));
+    });
   });
   scene.waypoints.forEach(function (w) { extend(w.tcp_mm); });
   if (scene.failure) scene.failure.points.forEach(function (p) { extend(p.position_mm); });
+  var framed = isFinite(focus.lo[0]) ? focus : all;
+  var lo = framed.lo, hi = framed.hi;
   if (!isFinite(lo[0])) { lo = [-500, -500, 0]; hi = [500, 500, 1000]; }
   var centre = scale(add(lo, hi), 0.5);
   var radius = Math.max(300, 0.5 * Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]));
@@ -407,14 +434,19 @@
   }
   var hitObstacle = clearance ? clearance.obstacle : null;
   obstacles.forEach(function (o) { label(o.name, o.top, "obstacle"); });
-  scene.waypoints.forEach(function (w) { label(w.name, w.tcp_mm, w.kind); });
-  failedPoints.forEach(function (p) { label(p.name + " (not joined)", p.position_mm, "failed"); });
+  scene.waypoints.forEach(function (w) { label(w.name, w.tcp_mm, w.kind).stack = true; });
+  failedPoints.forEach(function (p) {
+    label(p.name + " (not joined)", p.position_mm, "failed").stack = true;
+  });
   if (clearance) {
     var hit = obstacles.filter(function (o) { return o.name === hitObstacle; })[0];
     var cp = clearance.points_mm;
     var anchor = cp ? scale(add(cp[0], cp[1]), 0.5) : hit ? hit.top : centre;
+    // A zoned corner's clearance (a fly-by waypoint's blend) is named by its waypoint.
+    var corner = clearance.corner_waypoint != null ? scene.waypoints[clearance.corner_waypoint] : null;
+    var where = corner ? "the corner at " + corner.name + " (flown by)" : moveName(clearance.move_index);
     var text = "min clearance " + clearance.distance_mm.toFixed(1) + " mm: " + clearance.shape +
-      " \u2013 " + clearance.obstacle + ", " + moveName(clearance.move_index);
+      " \u2013 " + clearance.obstacle + ", " + where;
     var cl = label(text, anchor, "clearance");
     cl.el.title = "show the robot there";
     cl.el.addEventListener("click", function () {
@@ -560,6 +592,7 @@
 
   function placeLabels() {
     var w = canvas.clientWidth, h = canvas.clientHeight, m = viewProj;
+    var placed = [];
     labels.forEach(function (l) {
       var p = l.anchor;
       var x = m[0] * p[0] + m[4] * p[1] + m[8] * p[2] + m[12];
@@ -567,12 +600,29 @@
       var cw = m[3] * p[0] + m[7] * p[1] + m[11] * p[2] + m[15];
       if (cw <= 0) { l.el.style.display = "none"; return; }
       l.el.style.display = "";
-      var px = (x / cw + 1) / 2 * w;
-      l.el.style.left = px.toFixed(1) + "px";
-      l.el.style.top = ((1 - y / cw) / 2 * h).toFixed(1) + "px";
+      var px = (x / cw + 1) / 2 * w, py = (1 - y / cw) / 2 * h;
+      if (l.width === undefined) { l.width = l.el.offsetWidth; l.height = l.el.offsetHeight; }
       // A label that would run off the right edge goes to the left of its point.
-      if (l.width === undefined) l.width = l.el.offsetWidth;
-      l.el.classList.toggle("flip", px + l.width + 8 > w);
+      var flip = px + l.width + 8 > w;
+      // Labels of points at the same place (or close on the screen) are kept apart: a label
+      // that would cover one placed before it moves down below that one.
+      if (l.stack) {
+        var left = flip ? px - 6 - l.width : px + 6, right = left + l.width;
+        for (var moved = true, n = 0; moved && n <= placed.length; n++) {
+          moved = false;
+          placed.forEach(function (r) {
+            var top = py - l.height / 2;
+            if (left < r.right && r.left < right && top < r.bottom && r.top < top + l.height) {
+              py = r.bottom + l.height / 2 + 1;
+              moved = true;
+            }
+          });
+        }
+        placed.push({ left: left, right: right, top: py - l.height / 2, bottom: py + l.height / 2 });
+      }
+      l.el.style.left = px.toFixed(1) + "px";
+      l.el.style.top = py.toFixed(1) + "px";
+      l.el.classList.toggle("flip", flip);
     });
   }
 

@@ -12,7 +12,6 @@ MODULE ConveyorPick
     ! min clearance (mm): 25.1
     ! estimated time (s): 7.80
     ! zoned vias: 0 of 4 (via zone fine)
-    ! the paper's method alone: 16 moves, 10.91 s
 
     CONST jointtarget ready := [[-10.000,-10.000,-20.000,0.000,45.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[-10.000,-14.000,-20.000,0.000,45.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

@@ -13,40 +13,38 @@ MODULE GripperPick
     ! frames: robtargets and the user frame are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above
     ! moves: 9
     ! min clearance (mm): 10.3
-    ! estimated time (s): 10.10
+    ! estimated time (s): 19.73
     ! zoned vias: 0 of 2 (via zone fine)
-    ! the paper's method alone: 9 moves, 10.10 s
 
     PERS tooldata tGripper := [TRUE,[[0.000,0.000,180.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[3.200,[0.000,0.000,80.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjConveyor := [FALSE,TRUE,"",[[700.000,0.000,750.000],[0.707106781,0.000000000,0.000000000,0.707106781]],[[0,0,0],[1,0,0,0]]];
+    PERS loaddata loadPart := [1.200,[0.000,0.000,60.000],[1,0,0,0],0,0,0];
 
     CONST jointtarget home := [[0.000,0.000,0.000,0.000,45.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget above_pick := [[-18.435,11.508,30.997,0.000,59.003,71.565],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST robtarget above_pick_rt := [[-300.000,-200.000,180.000],[0.000000000,1.000000000,0.000000000,0.000000000],[-1,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget pick := [[-18.435,18.258,42.673,0.000,47.327,71.565],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget pick_rt := [[-300.000,-200.000,30.000],[0.000000000,1.000000000,0.000000000,0.000000000],[-1,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget lift := [[-18.435,11.508,30.997,0.000,59.003,71.565],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST robtarget lift_rt := [[-300.000,-200.000,180.000],[0.000000000,1.000000000,0.000000000,0.000000000],[-1,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via04_01 := [[54.000,26.000,10.000,0.000,55.938,142.609],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget above_place := [[90.000,9.123,35.675,0.000,54.325,180.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST robtarget above_place_rt := [[900.000,700.000,130.000],[0.000000000,1.000000000,0.000000000,0.000000000],[1,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget place := [[90.000,17.228,47.831,0.000,42.169,180.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via02_01 := [[54.000,26.000,10.000,0.000,55.938,142.609],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget place_rt := [[900.000,700.000,-20.000],[0.000000000,1.000000000,0.000000000,0.000000000],[1,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget leave := [[90.000,9.123,35.675,0.000,54.325,180.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST robtarget leave_rt := [[900.000,700.000,130.000],[0.000000000,1.000000000,0.000000000,0.000000000],[1,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via07_01 := [[4.000,0.000,0.000,0.000,45.355,6.853],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via03_01 := [[4.000,0.000,0.000,0.000,45.355,6.853],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget home2 := [[0.000,0.000,0.000,0.000,45.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
 
     PROC main()
+        ConfJ \On;
+        ConfL \On;
         MoveAbsJ home\NoEOffs, v1000, fine, tGripper\WObj:=wobjConveyor;
-        MoveAbsJ above_pick\NoEOffs, v1000, fine, tGripper\WObj:=wobjConveyor;
-        MoveAbsJ pick\NoEOffs, v100, fine, tGripper\WObj:=wobjConveyor;
-        MoveAbsJ lift\NoEOffs, v200, fine, tGripper\WObj:=wobjConveyor;
-        MoveAbsJ via04_01\NoEOffs, v1000, fine, tGripper\WObj:=wobjConveyor;
-        MoveAbsJ above_place\NoEOffs, v1000, fine, tGripper\WObj:=wobjConveyor;
-        MoveAbsJ place\NoEOffs, v100, fine, tGripper\WObj:=wobjConveyor;
-        MoveAbsJ leave\NoEOffs, v200, fine, tGripper\WObj:=wobjConveyor;
-        MoveAbsJ via07_01\NoEOffs, v1000, fine, tGripper\WObj:=wobjConveyor;
+        MoveJ RelTool(pick_rt,0,0,-150.000), v200, fine, tGripper\WObj:=wobjConveyor;
+        MoveL pick_rt, v200, fine, tGripper\WObj:=wobjConveyor;
+        SetDO doGrip, 1;
+        WaitDI diGripClosed, 1;
+        GripLoad loadPart;
+        MoveL RelTool(pick_rt,0,0,-150.000), v200, fine, tGripper\WObj:=wobjConveyor;
+        MoveAbsJ via02_01\NoEOffs, v200, fine, tGripper\WObj:=wobjConveyor;
+        MoveJ RelTool(place_rt,0,0,-150.000), v200, fine, tGripper\WObj:=wobjConveyor;
+        MoveL place_rt, v200, fine, tGripper\WObj:=wobjConveyor;
+        SetDO doGrip, 0;
+        WaitDI diGripOpen, 1;
+        GripLoad load0;
+        MoveL RelTool(place_rt,0,0,-150.000), v200, fine, tGripper\WObj:=wobjConveyor;
+        MoveAbsJ via03_01\NoEOffs, v1000, fine, tGripper\WObj:=wobjConveyor;
         MoveAbsJ home2\NoEOffs, v1000, fine, tGripper\WObj:=wobjConveyor;
     ENDPROC
 ENDMODULE

@@ -16,36 +16,31 @@ MODULE SmallAssembly
     ! min clearance (mm): 5.7
     ! estimated time (s): 6.04
     ! zoned vias: 0 of 1 (via zone fine)
-    ! the paper's method alone: 8 moves, 6.05 s
 
     PERS tooldata tGrip120 := [TRUE,[[0.000,0.000,110.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[0.800,[0.000,0.000,40.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjTable := [FALSE,TRUE,"",[[0.000,0.000,750.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];
 
     CONST jointtarget home := [[0.000,0.000,0.000,0.000,60.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget above_pick := [[-35.538,42.585,7.517,0.000,39.897,144.462],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget above_pick_rt := [[350.000,-250.000,120.000],[0.000000000,1.000000000,0.000000000,0.000000000],[-1,0,1,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget pick := [[-35.538,49.484,7.070,0.000,33.446,144.462],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget pick_rt := [[350.000,-250.000,70.000],[0.000000000,1.000000000,0.000000000,0.000000000],[-1,0,1,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget lift := [[-35.538,42.585,7.517,0.000,39.897,144.462],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget lift_rt := [[350.000,-250.000,120.000],[0.000000000,1.000000000,0.000000000,0.000000000],[-1,0,1,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via04_01 := [[3.920,16.371,-10.689,0.000,41.626,185.016],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget above_place := [[33.311,36.912,10.256,0.000,42.832,213.311],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget above_place_rt := [[350.000,230.000,150.000],[0.000000000,1.000000000,0.000000000,0.000000000],[0,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget place := [[33.311,42.709,10.857,0.000,36.434,213.311],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget place_rt := [[350.000,230.000,105.000],[0.000000000,1.000000000,0.000000000,0.000000000],[0,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget leave := [[33.311,36.912,10.256,0.000,42.832,213.311],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget leave_rt := [[350.000,230.000,150.000],[0.000000000,1.000000000,0.000000000,0.000000000],[0,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget home2 := [[0.000,0.000,0.000,0.000,60.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
 
     PROC main()
+        ConfJ \On;
+        ConfL \On;
         MoveAbsJ home\NoEOffs, v500, fine, tGrip120\WObj:=wobjTable;
-        MoveAbsJ above_pick\NoEOffs, v500, fine, tGrip120\WObj:=wobjTable;
-        MoveAbsJ pick\NoEOffs, v100, fine, tGrip120\WObj:=wobjTable;
-        MoveAbsJ lift\NoEOffs, v200, fine, tGrip120\WObj:=wobjTable;
+        MoveJ above_pick_rt, v500, fine, tGrip120\WObj:=wobjTable;
+        MoveJ pick_rt, v100, fine, tGrip120\WObj:=wobjTable;
+        MoveJ lift_rt, v200, fine, tGrip120\WObj:=wobjTable;
         MoveAbsJ via04_01\NoEOffs, v500, fine, tGrip120\WObj:=wobjTable;
-        MoveAbsJ above_place\NoEOffs, v500, fine, tGrip120\WObj:=wobjTable;
-        MoveAbsJ place\NoEOffs, v50, fine, tGrip120\WObj:=wobjTable;
-        MoveAbsJ leave\NoEOffs, v200, fine, tGrip120\WObj:=wobjTable;
+        MoveJ above_place_rt, v500, fine, tGrip120\WObj:=wobjTable;
+        MoveJ place_rt, v50, fine, tGrip120\WObj:=wobjTable;
+        MoveJ leave_rt, v200, fine, tGrip120\WObj:=wobjTable;
         MoveAbsJ home2\NoEOffs, v500, fine, tGrip120\WObj:=wobjTable;
     ENDPROC
 ENDMODULE

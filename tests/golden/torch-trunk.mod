@@ -11,49 +11,55 @@ MODULE TorchTrunk
     ! tool: tTorch (declared below; collision shapes: mount, neck, nozzle)
     ! wobj: wobjTrunk (declared below; robtargets are in its user frame)
     ! frames: robtargets and the user frame are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above
-    ! moves: 15
+    ! moves: 19
     ! min clearance (mm): 10.0
-    ! estimated time (s): 32.56
+    ! estimated time (s): 32.99
     ! zoned vias: 0 of 10 (via zone fine)
-    ! the paper's method alone: 17 moves, 33.13 s
+    ! the paper's method alone: 20 moves, 33.42 s
 
     PERS tooldata tTorch := [TRUE,[[116.673,0.000,336.673],[0.923879539,0.000000000,0.382683416,0.000000000]],[2.500,[0.000,0.000,120.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjTrunk := [FALSE,TRUE,"",[[-830.000,-380.000,100.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];
 
     CONST jointtarget home := [[90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_01 := [[62.000,-31.000,20.000,3.339,36.397,-47.847],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_02 := [[57.313,-31.844,18.234,3.598,36.894,-51.558],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_03 := [[56.000,-31.000,19.000,3.821,37.320,-54.751],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via01_04 := [[39.101,-10.146,23.444,6.562,42.573,-94.033],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget L1 := [[33.816,20.956,52.462,10.745,50.586,-153.966],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_01 := [[64.688,-28.219,20.250,3.482,37.473,-50.131],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_02 := [[59.980,-32.863,18.051,3.610,37.746,-51.963],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_03 := [[53.241,-28.044,20.098,4.619,39.912,-66.491],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via01_04 := [[40.623,-7.124,36.148,7.984,47.133,-114.932],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget L1_rt := [[330.000,280.000,0.000],[0.183012701,-0.683012702,-0.683012702,-0.183012701],[0,0,-2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget L2 := [[24.514,44.727,39.355,6.833,64.506,-159.180],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget L2_rt := [[330.000,630.000,0.000],[0.183012701,-0.683012702,-0.683012702,-0.183012701],[0,0,-2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via03_01 := [[14.957,23.053,12.097,4.169,64.506,-167.297],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via03_02 := [[0.000,8.000,-3.000,0.000,64.506,-180.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via03_03 := [[-24.602,32.793,21.881,-6.833,64.506,-200.820],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget R1 := [[-24.514,44.727,39.355,-6.833,64.506,-200.820],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via03_01 := [[13.000,14.000,11.000,3.591,65.501,-168.886],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via03_02 := [[0.000,1.000,-2.000,0.000,65.501,-180.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via03_03 := [[-25.000,26.000,23.000,-6.882,65.501,-201.299],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget R1_rt := [[1330.000,630.000,0.000],[0.183012701,-0.683012702,-0.683012702,-0.183012701],[-1,-1,-3,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget R2 := [[-33.816,20.956,52.462,-10.745,50.586,-206.034],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget R2_rt := [[1330.000,280.000,0.000],[0.183012701,-0.683012702,-0.683012702,-0.183012701],[-1,-1,-3,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via05_01 := [[-41.119,-24.876,20.046,-5.546,40.626,-106.349],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via05_02 := [[-52.000,-37.000,19.000,-3.989,37.642,-76.480],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget via05_03 := [[-67.313,-22.648,18.258,-2.975,35.701,-57.054],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via05_01 := [[-43.025,-26.299,20.460,-5.728,42.292,-111.742],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via05_02 := [[-52.000,-37.000,19.000,-4.365,39.366,-85.149],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget via05_03 := [[-68.355,-21.476,15.783,-2.922,36.271,-57.007],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget home2 := [[-90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
 
     PROC main()
+        ConfJ \On;
+        ConfL \On;
         MoveAbsJ home\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via01_01\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via01_02\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via01_03\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via01_04\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
-        MoveAbsJ L1\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
-        MoveAbsJ L2\NoEOffs, v50, fine, tTorch\WObj:=wobjTrunk;
+        MoveJ RelTool(L1_rt,0,0,-40.000), v300, fine, tTorch\WObj:=wobjTrunk;
+        MoveL L1_rt, v300, fine, tTorch\WObj:=wobjTrunk;
+        SetDO doWeld, 1;
+        MoveL L2_rt, v50, fine, tTorch\WObj:=wobjTrunk;
+        SetDO doWeld, 0;
+        MoveL RelTool(L2_rt,0,0,-40.000), v50, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via03_01\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via03_02\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via03_03\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
-        MoveAbsJ R1\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
-        MoveAbsJ R2\NoEOffs, v50, fine, tTorch\WObj:=wobjTrunk;
+        MoveJ RelTool(R1_rt,0,0,-40.000), v300, fine, tTorch\WObj:=wobjTrunk;
+        MoveL R1_rt, v300, fine, tTorch\WObj:=wobjTrunk;
+        SetDO doWeld, 1;
+        MoveL R2_rt, v50, fine, tTorch\WObj:=wobjTrunk;
+        SetDO doWeld, 0;
+        MoveL RelTool(R2_rt,0,0,-40.000), v50, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via05_01\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via05_02\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via05_03\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;

@@ -12,7 +12,6 @@ MODULE TrunkWeldAuto
     ! min clearance (mm): 10.0
     ! estimated time (s): 12.96
     ! zoned vias: 0 of 5 (via zone fine)
-    ! the paper's method alone: 10 moves, 13.34 s
 
     CONST jointtarget A := [[82.427,0.249,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[42.000,13.000,-13.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

@@ -12,7 +12,6 @@ MODULE TrunkWeld
     ! min clearance (mm): 10.0
     ! estimated time (s): 14.50
     ! zoned vias: 0 of 6 (via zone fine)
-    ! the paper's method alone: 17 moves, 16.34 s
 
     CONST jointtarget A := [[90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[88.594,-0.977,-7.813,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

@@ -12,7 +12,6 @@ MODULE TrunkWeld
     ! min clearance (mm): 10.0
     ! estimated time (s): 12.88
     ! zoned vias: 0 of 5 (via zone fine)
-    ! the paper's method alone: 10 moves, 12.93 s
 
     CONST jointtarget A := [[90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[49.000,-3.000,-12.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

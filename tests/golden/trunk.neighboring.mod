@@ -12,7 +12,6 @@ MODULE TrunkWeld
     ! min clearance (mm): 10.0
     ! estimated time (s): 13.01
     ! zoned vias: 0 of 12 (via zone fine)
-    ! the paper's method alone: 65 moves, 16.61 s
 
     CONST jointtarget A := [[90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[62.281,-0.031,-7.875,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

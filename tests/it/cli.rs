@@ -353,7 +353,7 @@ fn the_tool_example_in_help_plans_as_printed() {
     assert!(text.contains("PERS tooldata tTorch := [TRUE,"), "{text}");
     assert!(text.contains("CONST robtarget W2_rt := "), "{text}");
     assert!(
-        text.contains("MoveAbsJ W2\\NoEOffs, v100, fine, tTorch\\WObj:=wobjDoor;"),
+        text.contains("MoveJ W2_rt, v100, fine, tTorch\\WObj:=wobjDoor;"),
         "{text}"
     );
 }

@@ -56,7 +56,7 @@ fn trunk_moves_and_time_order_the_methods_as_in_the_paper() {
     assert!(moves(ex) <= moves(df) && moves(df) < moves(nb), "{j}");
     // Manipulation time: the extensile route is the fastest (the paper: 8.5, 9.7 and 18.8 s).
     // At the cell's v300 the TCP's speed leads most moves and depth-first and neighboring come
-    // close (their order swaps on a 2 deg grid, README); the paper's full order is held at
+    // close (their order swaps on a 2 deg grid, docs/planning.md); the paper's full order is held at
     // vmax below.
     let time = |r: &Value| num(r, "manipulation_time_s");
     assert!(time(ex) <= time(df) && time(ex) <= time(nb), "{j}");

@@ -115,7 +115,7 @@ fn a_renamed_urdf_warns_and_says_so_and_robot_controller_keeps_its_convention() 
 }
 
 #[test]
-fn a_controller_file_that_cannot_be_read_is_an_input_error_at_its_line() {
+fn a_controller_file_that_cannot_be_read_is_an_input_error_at_its_own_line() {
     let dir = tempfile::tempdir().expect("tempdir");
     let urdf = root().join("robots/irb1400.urdf");
     std::fs::write(
@@ -135,6 +135,9 @@ fn a_controller_file_that_cannot_be_read_is_an_input_error_at_its_line() {
         err.contains("controller file") && err.contains("bad.controller.yaml"),
         "{err}"
     );
-    assert!(err.contains("cell.yaml:7:15"), "{err}");
+    // Pointed at in the controller file, where the fault is: its line 1, the value at column 11
+    // (before: at the cell's robot.controller, 7:15).
+    assert!(err.contains("bad.controller.yaml:1:11\n"), "{err}");
+    assert!(err.contains("\n1 | coupling: sideways\n"), "{err}");
     assert!(stdout(&o).is_empty());
 }

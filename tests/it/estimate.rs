@@ -177,10 +177,29 @@ fn a_zoned_cell_point_is_flown_through() {
 
 #[test]
 fn header_summary_and_report_state_the_zoned_vias_and_the_papers_method() {
-    // With the shortcut (the default), the paper's figure is the route before it: the same
-    // figure the paper's method alone gives as its own time, and never less than the result.
-    let (alone, ..) = trunk(|t| t);
-    let (shortcut, short_report, _) = trunk_with(&[], |t| t);
+    // With the shortcut (the default), a leg whose straight move is proven goes straight
+    // without the grid (the trunk's B -> C and D -> E): the paper's method did not run, and
+    // neither the header, the summary nor the report states a figure for it.
+    let (shortcut, short_report, err) = trunk_with(&[], |t| t);
+    assert!(!shortcut.contains("the paper's method alone"), "{shortcut}");
+    assert!(!err.contains("the paper's method alone"), "{err}");
+    assert!(short_report["totals"]["paper_method"].is_null());
+    // The trunk without C and E: every leg needs the grid. The paper's figure is the route
+    // before the shortcut: the same figure the paper's method alone gives as its own time,
+    // and never less than the result.
+    let no_straight = |t: String| {
+        let kept: Vec<&str> = (t.lines())
+            .filter(|l| !l.contains("name: C,") && !l.contains("name: E,"))
+            .collect();
+        assert_eq!(
+            kept.len() + 2,
+            t.lines().count(),
+            "the trunk's points C and E"
+        );
+        kept.join("\n") + "\n"
+    };
+    let (alone, ..) = trunk(no_straight);
+    let (shortcut, short_report, _) = trunk_with(&[], no_straight);
     let paper = header(&shortcut, "the paper's method alone");
     let alone_figure = format!(
         "{} moves, {} s",

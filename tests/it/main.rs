@@ -14,6 +14,8 @@
 //! - `compare`: `gen-rapid compare` and the paper's comparison of the three searches.
 //! - `fuzz`: the seeded fuzz target over loading, validating and placing cells
 //!   (`GEN_RAPID_FUZZ_CASES`, `GEN_RAPID_FUZZ_SEED`).
+//! - `frames`: `robot.frame: base` (the numbers written in the base frame, by hand; the same
+//!   joints as in the cell frame).
 //! - `locate`: `base: auto`, `xyz` points and branches, `gen-rapid locate`.
 //! - `preview_browser`: the `--html` preview page in headless Chromium (skipped, saying so,
 //!   where no Chromium is installed).
@@ -25,7 +27,11 @@
 //!   fixtures in `tests/err/`).
 //! - `random_cells`: generated cells (with and without a tool), every method, every module
 //!   through the dense re-check.
+//! - `process`: the example cells with process moves run as a controller runs them
+//!   (`common/process.rs`: MoveL and MoveC sampled along the TCP path by the tests' own IK).
 //! - `tool_cells`: the example cells with a tool, every method, and the tool's volume at work.
+//! - `warnings`: axes 4 and 6 near their limits (stderr and the report's `near_limits`).
+//! - `readme`: every command the README shows, run, against the lines it quotes.
 //! - `tidy`: the house rules read from `src/` (dependency direction, no import cycles between
 //!   files, file length, no issue numbers, module docs), each checker held to a made-up
 //!   violation.
@@ -40,13 +46,17 @@ mod common;
 mod compare;
 mod convention;
 mod estimate;
+mod frames;
 mod fuzz;
 mod golden;
+mod hostile;
 mod locate;
 mod messages;
 mod pictures;
 mod preview_browser;
+mod process;
 mod random_cells;
+mod readme;
 mod recheck;
 mod refine;
 mod report;
@@ -54,3 +64,4 @@ mod safety;
 mod templates;
 mod tidy;
 mod tool_cells;
+mod warnings;

@@ -93,21 +93,25 @@ fn no_path_draws_the_blocked_nodes_and_rings_both_points_of_the_leg() {
     assert!(svg.all("rect").any(|r| r.attr("fill") == Some("#505050")));
 }
 
+/// A picture whose directory does not exist can never be written: the run is refused before it
+/// plans (exit 4, naming the file), not after minutes of planning with a note.
 #[test]
-fn a_failure_picture_that_cannot_be_written_keeps_the_planning_failure() {
+fn a_failure_picture_that_cannot_be_written_is_refused_before_the_run() {
     let o = gen_rapid(&[
         "tests/err/no_path.yaml",
         "--svg",
         "/nonexistent/dir/why.svg",
     ]);
-    assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
+    assert_eq!(o.status.code(), Some(4), "{}", stderr(&o));
     assert!(o.stdout.is_empty());
     let err = stderr(&o);
-    assert!(err.starts_with("error: no collision-free path"), "{err}");
     assert!(
-        err.contains("note: no picture: cannot write /nonexistent/dir/why.svg"),
+        err.starts_with(
+            "error: cannot write /nonexistent/dir/why.svg: its directory does not exist\n"
+        ),
         "{err}"
     );
+    assert!(!err.contains("no collision-free path"), "{err}");
 }
 
 #[test]

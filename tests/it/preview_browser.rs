@@ -6,12 +6,16 @@
 //! on Chromium's console), shows its labels (every waypoint, the smallest clearance as the
 //! `--report` of the same run states it, the failed points), and that the screenshot is a
 //! picture: several colours, the obstacles' blue, the links' orange and the tool's teal where
-//! the cell has them, and the arm in another place at the program's end.
+//! the cell has them, and the arm in another place at the program's end. Beyond that: the
+//! smallest clearance of a fly-by route (the gripper cell with `via_zone: z50`, whose least is
+//! a zoned corner's) is shown, named by its corner; the trunk cell with a floor 40 m wide still
+//! shows the robot large (the camera frames the robot, the tool and the points, not every box);
+//! two points at the same place (`tests/ok/same_point_twice.yaml`) have labels apart.
 //!
 //! Without Chromium the test prints how to install it and passes. `GEN_RAPID_CHROMIUM` names
 //! another browser binary (set but empty: run as without Chromium); `GEN_RAPID_PREVIEW_OUT=DIR` keeps the pages and screenshots there.
 
-use crate::common::{arg, gen_rapid, stderr};
+use crate::common::{arg, gen_rapid, read, stderr, temp_cell};
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -313,6 +317,21 @@ fn clearance_labels(report: &serde_json::Value) -> Vec<String> {
     labels
 }
 
+/// The `top` (px) of the label whose text is `text`, from the DOM after the scripts ran.
+fn label_top(dom: &str, text: &str) -> f64 {
+    let end = dom
+        .find(&format!(">{text}</div>"))
+        .unwrap_or_else(|| panic!("no label {text}"));
+    let start = dom[..end].rfind("<div").expect("the label's tag");
+    let tag = &dom[start..end];
+    let top = tag
+        .split("top:")
+        .nth(1)
+        .and_then(|t| t.split("px").next())
+        .unwrap_or_else(|| panic!("no top in {tag}"));
+    top.trim().parse().unwrap_or_else(|e| panic!("{tag}: {e}"))
+}
+
 /// Whether the page shows one of `labels`.
 fn shows_one_of(dom: &str, labels: &[String]) -> bool {
     labels.iter().any(|l| dom.contains(l.as_str()))
@@ -432,6 +451,63 @@ fn preview_pages_render_in_headless_chromium() {
         .count();
     eprintln!("torch-trunk at L1: the tool covers {tool_px} px");
     assert!(tool_px > 50, "the tool covers {tool_px} px");
+
+    // A fly-by route: the gripper cell with `via_zone: z50`, whose smallest clearance is a
+    // zoned corner's (no move has it): the page shows it, named by the corner's waypoint.
+    let fly_by = read("cells/gripper-pick.yaml")
+        .replace("../robots/irb1400.urdf", "URDF")
+        .replace("  zone: fine\n", "  zone: fine\n  via_zone: z50\n");
+    let cell = temp_cell(dir.path(), "gripper-z50.yaml", &fly_by);
+    let (html, report, out) = page_of(dir.path(), arg(&cell));
+    assert!(out.status.success(), "{}", stderr(&out));
+    let report = report.expect("the fly-by report");
+    let least = &report["totals"]["min_clearance"];
+    let moves = report["moves"].as_array().expect("moves");
+    assert!(
+        moves.iter().all(|m| m["min_clearance"] != *least),
+        "the gripper cell at z50 no longer has its least at a corner: {least}"
+    );
+    let page = load(&browser, &html, "");
+    assert_healthy(&page, "gripper-pick at z50");
+    let text = format!(
+        "min clearance {} mm: {} \u{2013} {}, the corner at ",
+        least["mm"],
+        least["name"].as_str().unwrap_or_default(),
+        least["obstacle"].as_str().unwrap_or_default()
+    );
+    assert!(
+        page.dom.contains(&text),
+        "the fly-by page shows no {text:?}"
+    );
+    assert!(page.image.share(red) > 0.0005, "no clearance marker");
+
+    // A floor 40 m wide under the trunk cell: the robot is still drawn large.
+    let wide = read("cells/trunk.yaml")
+        .replace("../robots/irb1400.urdf", "URDF")
+        .replace(
+            "obstacles:\n",
+            "obstacles:\n  - { name: field, box: { min: [-20000, -20000, -100], max: [20000, 20000, -50] } }\n",
+        );
+    let cell = temp_cell(dir.path(), "trunk-field.yaml", &wide);
+    let (html, _, out) = page_of(dir.path(), arg(&cell));
+    assert!(out.status.success(), "{}", stderr(&out));
+    let page = load(&browser, &html, "#t=0");
+    assert_healthy(&page, "trunk on a wide field");
+    assert!(
+        page.image.share(orange) > 0.01,
+        "on a wide field the links cover {:.2} %",
+        page.image.share(orange) * 100.0
+    );
+
+    // Two points at the same place: their labels are kept apart (one below the other).
+    let (html, _, out) = page_of(dir.path(), "tests/ok/same_point_twice.yaml");
+    assert!(out.status.success(), "{}", stderr(&out));
+    let page = load(&browser, &html, "#t=0");
+    let (p1, p2) = (label_top(&page.dom, "P1"), label_top(&page.dom, "P2"));
+    assert!(
+        (p1 - p2).abs() >= 12.0,
+        "the labels of P1 and P2 overlap: top {p1} and {p2} px"
+    );
 
     // A failed plan: exit 3, nothing on stdout, no report, and a page of the cell, the robot
     // at the first point and the two points that could not be joined, with the message.

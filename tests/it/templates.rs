@@ -4,8 +4,7 @@
 //! re-check and the TCP check read it as the controller would), a template's error points at
 //! its line (exit 1, nothing on stdout), and the routine's name follows the one name rule.
 
-use crate::common::dense::check_module;
-use crate::common::library::{load_cell, load_robot};
+use crate::common::library::load_cell;
 use crate::common::{arg, gen_rapid, root, stderr, stdout, temp_cell};
 
 /// The example templates and what each must show.
@@ -34,7 +33,6 @@ fn the_default_template_file_gives_the_same_bytes_as_no_flag() {
 fn every_example_template_renders_a_module_that_passes_the_rapid_checks() {
     let path = root().join("cells/torch-trunk.yaml");
     let cell = load_cell(&path);
-    let robot = load_robot(&cell);
     let default = stdout(&gen_rapid(&["cells/torch-trunk.yaml"]));
     for template in EXAMPLES {
         let out = gen_rapid(&[
@@ -46,16 +44,21 @@ fn every_example_template_renders_a_module_that_passes_the_rapid_checks() {
         ]);
         assert!(out.status.success(), "{template}: {}", stderr(&out));
         let text = stdout(&out);
-        let report = check_module(&cell, &robot, &text, template)
+        // The module runs as the controller runs it: its process moves too.
+        crate::common::process::check_process(&cell, &text, template)
             .unwrap_or_else(|f| panic!("{template}:\n{}", f.join("\n")));
-        let m = &report.module;
+        let m = crate::common::module::Module::parse(&text).expect("the module");
         assert_eq!(m.proc_name, "WeldTrunk", "{template}");
-        assert_eq!(report.tcp.points, 4, "{template}: the seam robtargets");
-        // The same targets as the default module, only the form differs.
+        assert_eq!(m.robtargets.len(), 4, "{template}: the seam robtargets");
+        // The same data and instructions as the default module, only the form differs.
         let plain = crate::common::module::Module::parse(&default).expect("the default module");
+        let declarations = plain.targets.len() + plain.robtargets.len();
         assert_eq!(m.targets, plain.targets, "{template}");
-        assert_eq!(m.move_args, plain.move_args, "{template}");
-        let declarations = m.targets.len() + m.robtargets.len();
+        assert_eq!(m.robtargets, plain.robtargets, "{template}");
+        let ins = |m: &crate::common::module::Module| -> Vec<_> {
+            m.body.iter().map(|s| s.ins.clone()).collect()
+        };
+        assert_eq!(ins(&m), ins(&plain), "{template}");
         match template {
             "templates/module-prg-header.mod.j2" => {
                 assert_eq!(m.program_header, ["VERSION:1", "LANGUAGE:ENGLISH"]);

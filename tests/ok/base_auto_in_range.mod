@@ -12,7 +12,6 @@ MODULE Auto1
     ! min clearance (mm): none (no obstacles)
     ! estimated time (s): 9.54
     ! zoned vias: 0 of 0 (via zone fine)
-    ! the paper's method alone: 2 moves, 9.54 s
 
     CONST jointtarget P1 := [[-91.302,-65.674,-4.639,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget P2 := [[41.878,-60.877,-17.679,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

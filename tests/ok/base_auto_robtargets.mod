@@ -15,20 +15,18 @@ MODULE AutoTcp
     ! min clearance (mm): 367.1
     ! estimated time (s): 4.03
     ! zoned vias: 0 of 0 (via zone fine)
-    ! the paper's method alone: 2 moves, 4.03 s
 
     PERS tooldata tGripper := [TRUE,[[0.000,0.000,180.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[1.000,[0.000,0.000,0.000],[1,0,0,0],0,0,0]];
 
-    CONST jointtarget A := [[-21.602,4.413,43.467,0.000,46.533,158.398],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget A_rt := [[900.000,-300.000,400.000],[0.000000000,1.000000000,0.000000000,0.000000000],[-1,0,1,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget B := [[22.264,4.753,43.440,0.000,46.560,202.264],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget B_rt := [[900.000,300.000,400.000],[0.000000000,1.000000000,0.000000000,0.000000000],[0,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget C := [[0.644,-45.953,3.735,0.000,86.265,180.644],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget C_rt := [[600.000,0.000,700.000],[0.000000000,1.000000000,0.000000000,0.000000000],[0,0,2,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
 
     PROC main()
-        MoveAbsJ A\NoEOffs, v300, fine, tGripper;
-        MoveAbsJ B\NoEOffs, v300, fine, tGripper;
-        MoveAbsJ C\NoEOffs, v300, fine, tGripper;
+        ConfJ \On;
+        ConfL \On;
+        MoveJ A_rt, v300, fine, tGripper;
+        MoveJ B_rt, v300, fine, tGripper;
+        MoveJ C_rt, v300, fine, tGripper;
     ENDPROC
 ENDMODULE

@@ -12,7 +12,6 @@ MODULE Branch
     ! min clearance (mm): none (no obstacles)
     ! estimated time (s): 4.50
     ! zoned vias: 0 of 0 (via zone fine)
-    ! the paper's method alone: 1 move, 4.50 s
 
     CONST jointtarget P := [[45.000,-44.340,-52.770,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget Q := [[0.000,3.919,23.221,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

@@ -13,7 +13,6 @@ MODULE Irb1200Auto
     ! min clearance (mm): 104.4
     ! estimated time (s): 4.66
     ! zoned vias: 0 of 0 (via zone fine)
-    ! the paper's method alone: 2 moves, 4.66 s
 
     CONST jointtarget P1 := [[-42.537,28.645,-11.571,0.000,60.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget P2 := [[31.251,33.629,-12.668,0.000,60.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

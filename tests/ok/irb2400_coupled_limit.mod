@@ -13,7 +13,6 @@ MODULE Irb2400Limit
     ! min clearance (mm): 10.1
     ! estimated time (s): 14.80
     ! zoned vias: 0 of 3 (via zone fine)
-    ! the paper's method alone: 5 moves, 15.30 s
 
     CONST jointtarget P1 := [[-40.000,60.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via01_01 := [[-18.000,34.000,-24.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

@@ -12,7 +12,6 @@ MODULE Diag
     ! min clearance (mm): none (no obstacles)
     ! estimated time (s): 0.74
     ! zoned vias: 0 of 0 (via zone fine)
-    ! the paper's method alone: 2 moves, 1.13 s
 
     CONST jointtarget P := [[0.000,0.000,0.000,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget Q := [[10.000,10.000,0.000,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

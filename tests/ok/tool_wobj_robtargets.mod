@@ -15,20 +15,19 @@ MODULE TcpCase
     ! min clearance (mm): 183.3
     ! estimated time (s): 4.64
     ! zoned vias: 0 of 0 (via zone fine)
-    ! the paper's method alone: 2 moves, 4.64 s
 
     PERS tooldata tTorch := [TRUE,[[0.000,0.000,250.000],[0.965925836,0.000000000,0.258819010,0.000000000]],[1.000,[0.000,0.000,0.000],[1,0,0,0],0,0,0]];
     PERS wobjdata wobjTable := [FALSE,TRUE,"",[[700.000,-200.000,400.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];
 
     CONST jointtarget P1 := [[-30.000,0.000,0.000,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget W1 := [[0.000,-21.675,24.750,0.000,35.250,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget W1_rt := [[100.000,200.000,150.000],[0.000000000,0.000000000,1.000000000,0.000000000],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget W2 := [[7.774,-10.068,27.469,-7.140,32.963,12.743],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget W2_rt := [[200.000,300.000,150.000],[0.000000000,0.000000000,1.000000000,0.000000000],[0,-1,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
 
     PROC main()
+        ConfJ \On;
+        ConfL \On;
         MoveAbsJ P1\NoEOffs, v300, fine, tTorch\WObj:=wobjTable;
-        MoveAbsJ W1\NoEOffs, v300, fine, tTorch\WObj:=wobjTable;
-        MoveAbsJ W2\NoEOffs, v100, fine, tTorch\WObj:=wobjTable;
+        MoveJ W1_rt, v300, fine, tTorch\WObj:=wobjTable;
+        MoveJ W2_rt, v100, fine, tTorch\WObj:=wobjTable;
     ENDPROC
 ENDMODULE

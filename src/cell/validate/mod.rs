@@ -29,7 +29,7 @@ use super::{
 };
 use crate::excerpt;
 use crate::geometry::Aabb;
-use crate::names::{check_identifier, robtarget_name, ROBTARGET_SUFFIX};
+use crate::names::{check_identifier, robtarget_name, DataType, ROBTARGET_SUFFIX};
 use crate::precision::{LENGTH_DECIMALS, YAW_DECIMALS};
 use nalgebra::Point3;
 use serde_saphyr::Spanned;
@@ -41,7 +41,7 @@ use values::{
 
 /// Validates every section of a parsed cell file (module docs).
 pub(super) fn cell(path: &Path, raw: RawCell) -> Result<Cell, CellError> {
-    let module = identifier(&raw.module, "module")?;
+    let module = values::module_name(&raw.module)?;
     let robot = robot(path, &raw.robot)?;
     let obstacles = obstacles(&raw.obstacles)?;
     // The work objects and loads first: points name them.
@@ -268,6 +268,7 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
         grid_deg: defaults::GRID_DEG,
         clearance_mm: defaults::CLEARANCE_MM,
         shortcut: defaults::SHORTCUT,
+        grid_loc: None,
     };
     let Some(p) = p else {
         return Ok(planner);
@@ -288,6 +289,7 @@ fn planner(p: Option<&RawPlanner>) -> Result<Planner, CellError> {
         planner.grid_deg = check_grid(g.value).map_err(|m| {
             invalid_help(loc(g), m, "planner.grid is the grid spacing d in degrees (default 1; finer is slower and needs more memory: 0.25 deg holds 413 M nodes)")
         })?;
+        planner.grid_loc = Some(loc(g));
     }
     if let Some(c) = &p.clearance {
         bounded(c, "planner.clearance", "a number >= 0 (mm)")?;
@@ -311,8 +313,8 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
         Some(p) => (identifier(p, "motion.proc")?, ProcFrom::Cell(loc(p))),
         None => (defaults::PROC.to_string(), ProcFrom::Default),
     };
-    let name = |s: Option<&Spanned<String>>, default: &str, what: &str| match s {
-        Some(s) => data_name(s, what),
+    let name = |s: Option<&Spanned<String>>, default: &str, what: &str, ty| match s {
+        Some(s) => data_name(s, what, ty),
         None => Ok(default.to_string()),
     };
     Ok(Motion {
@@ -320,16 +322,19 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
             m.and_then(|m| m.speed.as_ref()),
             defaults::SPEED,
             "motion.speed",
+            DataType::Speed,
         )?,
         zone: name(
             m.and_then(|m| m.zone.as_ref()),
             defaults::ZONE,
             "motion.zone",
+            DataType::Zone,
         )?,
         tool: name(
             m.and_then(|m| m.tool.as_ref()),
             defaults::TOOL,
             "motion.tool",
+            DataType::Tool,
         )?,
         proc,
         proc_from,
@@ -350,7 +355,7 @@ fn motion(m: Option<&RawMotion>) -> Result<Motion, CellError> {
 /// point must be told from a fly-by point, which only the predefined data say here. Written as
 /// the table spells it (`Z50` is `z50`).
 fn via_zone(z: &Spanned<String>) -> Result<String, CellError> {
-    data_name(z, "motion.via_zone")?;
+    data_name(z, "motion.via_zone", DataType::Zone)?;
     match crate::rapid_data::PREDEFINED_ZONES
         .iter()
         .find(|(name, _)| name.eq_ignore_ascii_case(&z.value))
@@ -539,6 +544,18 @@ fn one_name_space(d: &Declared, points: &[Point], motion: &Motion) -> Result<(),
                 loc: p.loc,
             });
         }
+        // A MoveC's circle point is written as CONST robtarget <point>_via.
+        if let super::Arrival::Circular { via_loc, .. } = p.arrival {
+            declared.push(Named {
+                name: format!("{}_via", p.name),
+                kind: "circle point name",
+                what: format!(
+                    "the circle point of point '{}' (line {})",
+                    p.name, p.loc.line
+                ),
+                loc: via_loc,
+            });
+        }
     }
     // The routine last: `motion:` follows the points in a cell file, and `--proc` has no line
     // there, so a clash is told about the routine's name.
@@ -573,6 +590,15 @@ fn one_name_space(d: &Declared, points: &[Point], motion: &Motion) -> Result<(),
                 )
             })?;
         }
+        if d.kind == "circle point name" {
+            check_identifier(&d.name).map_err(|e| {
+                invalid_help(
+                    d.loc,
+                    format!("the circle point of this move would be named '{}', not a valid RAPID name: {e}", d.name),
+                    "a `move: circular` point's circle point is written as a CONST robtarget named <name>_via; shorten the point's name".to_string(),
+                )
+            })?;
+        }
         let key = d.name.to_ascii_lowercase();
         if let Some(what) = taken.get(&key) {
             let rename = d.kind.trim_end_matches(" name");
@@ -584,7 +610,7 @@ fn one_name_space(d: &Declared, points: &[Point], motion: &Motion) -> Result<(),
                 ),
                 _ => format!("{} '{}' is already the name of {what}", d.kind, d.name),
             };
-            let rename = if rename == "robtarget" {
+            let rename = if rename == "robtarget" || rename == "circle point" {
                 "point"
             } else {
                 rename

@@ -11,6 +11,7 @@ use super::values::{
 };
 use super::{actions, process};
 use crate::excerpt;
+use crate::names::DataType;
 use crate::robot::ik::Branch;
 use serde_saphyr::Spanned;
 use std::collections::HashMap;
@@ -111,11 +112,11 @@ pub(super) fn points(
             Some(_) => format!("the revisit of '{name}'"),
         };
         let speed = match &p.value.speed {
-            Some(s) => Some(data_name(s, &format!("{who} speed"))?),
+            Some(s) => Some(data_name(s, &format!("{who} speed"), DataType::Speed)?),
             None => None,
         };
         let zone = match &p.value.zone {
-            Some(z) => Some(data_name(z, &format!("{who} zone"))?),
+            Some(z) => Some(data_name(z, &format!("{who} zone"), DataType::Zone)?),
             None => None,
         };
         let mut point = Point {

@@ -6,7 +6,10 @@ use super::super::raw::{RawPart, RawPose};
 use super::super::{CellError, Frame, Loc, QUATERNION_NORM_TOL};
 use crate::excerpt;
 use crate::input::MAX_MAGNITUDE;
-use crate::names::{check_data_name, check_identifier};
+use crate::names::{
+    check_data_name, check_data_type, check_identifier, check_module_name, DataType,
+    IdentifierError,
+};
 use crate::precision::{self, JOINT_DECIMALS, MASS_DECIMALS, POSITION_DECIMALS};
 use crate::robot::ik::six::ConfData;
 use serde_saphyr::Spanned;
@@ -398,8 +401,13 @@ pub(super) fn identifier(s: &Spanned<String>, what: &str) -> Result<String, Cell
 }
 
 /// A name of RAPID data the module uses but does not declare (speed, zone, tool): the same rule,
-/// predefined names allowed.
-pub(super) fn data_name(s: &Spanned<String>, what: &str) -> Result<String, CellError> {
+/// predefined names allowed, but only of the type the use needs (`speed: z50` is a zonedata
+/// where a speeddata belongs: [`crate::names::check_data_type`]).
+pub(super) fn data_name(
+    s: &Spanned<String>,
+    what: &str,
+    wanted: DataType,
+) -> Result<String, CellError> {
     check_data_name(&s.value).map_err(|e| {
         invalid_help(
             loc(s),
@@ -408,6 +416,43 @@ pub(super) fn data_name(s: &Spanned<String>, what: &str) -> Result<String, CellE
                 excerpt::value(&s.value)
             ),
             "speed, zone and tool name RAPID data: a predefined one (v300, fine, tool0) or one declared on the controller",
+        )
+    })?;
+    check_data_type(&s.value, wanted).map_err(|e| {
+        invalid_help(
+            loc(s),
+            format!("{what} {e}"),
+            format!(
+                "{what} names a {}: a predefined one ({}) or one declared on the controller; the controller refuses a module that uses data of another type",
+                wanted.rapid(),
+                match wanted {
+                    DataType::Speed => "v5 .. v7000, vmax",
+                    DataType::Zone => "fine, z0 .. z200",
+                    DataType::Tool => "tool0",
+                    DataType::Wobj => "wobj0",
+                    DataType::Load => "load0",
+                }
+            ),
+        )
+    })?;
+    Ok(s.value.clone())
+}
+
+/// The module's name: the identifier rule, and not a system module every controller task holds
+/// (`BASE`, `user`: [`crate::names::SYSTEM_MODULES`]).
+pub(super) fn module_name(s: &Spanned<String>) -> Result<String, CellError> {
+    check_module_name(&s.value).map_err(|e| {
+        let help = match e {
+            IdentifierError::SystemModule { .. } => "every task of the controller holds the system modules BASE and user (docs/rapid.md); name the module after its job, e.g. TrunkWeld",
+            _ => IDENTIFIER_HELP,
+        };
+        invalid_help(
+            loc(s),
+            format!(
+                "module '{}' is not a valid RAPID name: {e}",
+                excerpt::value(&s.value)
+            ),
+            help,
         )
     })?;
     Ok(s.value.clone())

@@ -190,6 +190,9 @@ pub struct SceneClearance {
     /// The move it occurs on, 0-based: move `i` runs from waypoint `i` to waypoint `i + 1`
     /// (the page shows it 1-based, as "move i+1").
     pub move_index: usize,
+    /// Where the smallest clearance is a zoned corner's (a fly-by waypoint's blend, which no
+    /// single move holds): that waypoint's index, which the page names instead of the move.
+    pub corner_waypoint: Option<usize>,
     /// The link or tool shape (a [`ShapeDef::name`]).
     pub shape: String,
     /// The obstacle (a [`SceneObstacle::name`]).

@@ -11,12 +11,17 @@
 //! time and every [`KEYFRAME_STEP_DEG`] of its largest axis change (whichever gives more
 //! samples), a ramp into at least [`RAMP_KEYFRAMES`] (a TCP-limited move's ramps are short and
 //! steep), both ends included, so the page's linear interpolation between keyframes stays within
-//! about a millimetre of the kinematics (a test measures it).
+//! about a millimetre of the kinematics (a test measures it). A run of more than
+//! [`MAX_KEYFRAMES`] keyframes (slow speeds, long moves) is thinned to about that many: every
+//! `stride`-th keyframe and every waypoint kept, so the page stays a few MB; its motion between
+//! them is then coarser.
 //!
-//! **The smallest clearance** is the plan's certified figure, on the move, link and obstacle the
-//! plan names (the move whose clearance is [`Plan::least`]; none where the least is a zoned
-//! corner's). Where on the move it occurs is only for the picture:
-//! the move is sampled ([`CLEARANCE_SAMPLES`]) and at each sample the closest points of the
+//! **The smallest clearance** is the plan's certified figure, with the link and obstacle the
+//! plan names, on the move whose clearance is [`Plan::least`], or, where the least is a zoned
+//! corner's (a fly-by `via_zone`: no move has it), on the corner of a fly-by waypoint: the page
+//! names that waypoint and marks the nearest place on the two half moves through it (the path
+//! the page draws; the controller's blend runs inside their corner). Where it occurs is only for
+//! the picture: the move (or each half move) is sampled ([`CLEARANCE_SAMPLES`]) and at each sample the closest points of the
 //! named shape and box are found by alternating projections (two convex sets: project onto one,
 //! then the other, until the pair stops moving); the nearest sample gives the time and the two
 //! points the page joins with a red line. That search certifies nothing.
@@ -146,11 +151,12 @@ fn lerp6(a: &[f64; 6], b: &[f64; 6], s: f64) -> [f64; 6] {
 /// Keyframes ramps are cut into at least (module docs).
 const RAMP_KEYFRAMES: f64 = 4.0;
 
-/// The times (s, after the move's start, the last `duration`) of a move's keyframes (module
-/// docs): each piece of the profile (a ramp, the cruise, a ramp; or the whole quintic) cut into
-/// equal steps of at most [`KEYFRAME_STEP_S`] and [`KEYFRAME_STEP_DEG`] of the largest axis
-/// change over the piece, a ramp into at least [`RAMP_KEYFRAMES`].
-fn keyframe_times(duration: f64, profile: Profile, largest_deg: f64) -> Vec<f64> {
+/// The pieces of a move's keyframes (module docs): each piece of the profile (a ramp, the
+/// cruise, a ramp; or the whole quintic) from `a` to `b` (s, after the move's start) cut into
+/// `n` equal steps of at most [`KEYFRAME_STEP_S`] and [`KEYFRAME_STEP_DEG`] of the largest axis
+/// change over the piece, a ramp into at least [`RAMP_KEYFRAMES`]. Counted, not listed: a slow
+/// move of a large arm has millions.
+fn keyframe_pieces(duration: f64, profile: Profile, largest_deg: f64) -> Vec<(f64, f64, u64)> {
     let pieces: Vec<(f64, f64, f64)> = match profile {
         Profile::Cruise { ramp_s } if ramp_s > 0.0 && 2.0 * ramp_s <= duration => vec![
             (0.0, ramp_s, RAMP_KEYFRAMES),
@@ -159,20 +165,51 @@ fn keyframe_times(duration: f64, profile: Profile, largest_deg: f64) -> Vec<f64>
         ],
         _ => vec![(0.0, duration, 1.0)],
     };
+    pieces
+        .into_iter()
+        .map(|(a, b, least)| {
+            let share = profile.progress(b, duration) - profile.progress(a, duration);
+            let n = ((b - a) / KEYFRAME_STEP_S)
+                .ceil()
+                .max((largest_deg * share / KEYFRAME_STEP_DEG).ceil())
+                .max(least);
+            // A NaN or a count past u64 (it cannot be listed anyway) becomes the most.
+            let n = if n.is_finite() { n as u64 } else { u64::MAX };
+            (a, b, n.max(1))
+        })
+        .collect()
+}
+
+/// The most keyframes a page holds: a page past it is thinned (every `stride`-th keyframe of
+/// the run kept, and every waypoint's), so the page stays a few MB (60 points at `v5`
+/// sampled every 1/30 s made a 157 MB page).
+pub const MAX_KEYFRAMES: u64 = 20_000;
+
+/// The times (s, after the move's start, the last `duration`) of a move's keyframes: of its
+/// pieces ([`keyframe_pieces`]), the keyframes numbered `first + j` (counting on from the
+/// keyframes of the moves before) that are multiples of `stride`, and the move's end.
+fn keyframe_times(pieces: &[(f64, f64, u64)], first: u64, stride: u64) -> Vec<f64> {
     let mut times = Vec::new();
-    for (a, b, least) in pieces {
-        let share = profile.progress(b, duration) - profile.progress(a, duration);
-        let n = ((b - a) / KEYFRAME_STEP_S)
-            .ceil()
-            .max((largest_deg * share / KEYFRAME_STEP_DEG).ceil())
-            .max(least) as usize;
-        times.extend((1..=n).map(|j| {
+    let mut before = first;
+    for (k, &(a, b, n)) in pieces.iter().enumerate() {
+        let at = |j: u64| {
             if j == n {
                 b
             } else {
                 a + (b - a) * j as f64 / n as f64
             }
-        }));
+        };
+        // The first j in 1..=n with (before + j) a multiple of the stride, then every stride.
+        let mut j = stride - before % stride;
+        while j <= n {
+            times.push(at(j));
+            j = j.saturating_add(stride);
+        }
+        let last = k + 1 == pieces.len();
+        if last && times.last() != Some(&b) {
+            times.push(b);
+        }
+        before = before.saturating_add(n);
     }
     times
 }
@@ -205,6 +242,23 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
     let mut waypoints = Vec::with_capacity(route.waypoints.len());
     let mut starts = Vec::with_capacity(route.moves());
     let mut t0 = 0.0;
+    let pieces: Vec<Vec<(f64, f64, u64)>> = route
+        .waypoints
+        .windows(2)
+        .zip(&timing)
+        .map(|(pair, &(duration, profile))| {
+            let largest = (0..6)
+                .map(|a| (pair[1].joints_deg[a] - pair[0].joints_deg[a]).abs())
+                .fold(0.0, f64::max);
+            keyframe_pieces(duration, profile, largest)
+        })
+        .collect();
+    let total = pieces
+        .iter()
+        .flatten()
+        .fold(1u64, |sum, p| sum.saturating_add(p.2));
+    let stride = total.div_ceil(MAX_KEYFRAMES).max(1);
+    let mut counted = 0u64;
     for (k, w) in route.waypoints.iter().enumerate() {
         if k == 0 {
             keyframes.push(keyframe(&poser, &carriers, 0.0, &w.joints_deg));
@@ -212,10 +266,10 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
             let from = &route.waypoints[k - 1].joints_deg;
             let (duration, profile) = timing[k - 1];
             starts.push(t0);
-            let largest = (0..6)
-                .map(|a| (w.joints_deg[a] - from[a]).abs())
-                .fold(0.0, f64::max);
-            let times = keyframe_times(duration, profile, largest);
+            let times = keyframe_times(&pieces[k - 1], counted, stride);
+            counted = pieces[k - 1]
+                .iter()
+                .fold(counted, |sum, p| sum.saturating_add(p.2));
             let last = times.len() - 1;
             for (j, &t) in times.iter().enumerate() {
                 let axes = if j == last {
@@ -231,7 +285,9 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
             name: names.get(k).cloned().unwrap_or_default(),
             kind: match w.kind {
                 crate::plan::WaypointKind::CellPoint(_) => WaypointKind::Cell,
-                crate::plan::WaypointKind::Via { .. } => WaypointKind::Via,
+                crate::plan::WaypointKind::Via { .. }
+                | crate::plan::WaypointKind::Approach(_)
+                | crate::plan::WaypointKind::Retract(_) => WaypointKind::Via,
             },
             time_s: t0,
             tcp_mm: poser.tcp_mm(&w.joints_deg),
@@ -265,6 +321,22 @@ fn base(p: Placement) -> SceneBase {
     }
 }
 
+/// The pieces of moves the least clearance is looked for on (module docs): `(move, from, to,
+/// corner)`, `from`/`to` fractions of the move, `corner` the waypoint whose zoned corner it is.
+fn searched_pieces(
+    plan: &Plan,
+    least: &crate::plan::Clearance,
+) -> Vec<(usize, f64, f64, Option<usize>)> {
+    if let Some(i) = (plan.moves.iter()).position(|m| m.clearance.as_ref() == Some(least)) {
+        return vec![(i, 0.0, 1.0, None)];
+    }
+    // A zoned corner's: the halves of the two moves through each fly-by waypoint.
+    (1..plan.moves.len())
+        .filter(|&k| crate::refine::zones::is_fly_by(&plan.moves[k - 1].motion.zone))
+        .flat_map(|k| [(k - 1, 0.5, 1.0, Some(k)), (k, 0.0, 0.5, Some(k))])
+        .collect()
+}
+
 /// The smallest clearance of the plan, marked where it occurs (module docs).
 fn clearance(
     cell: &Cell,
@@ -276,7 +348,6 @@ fn clearance(
     starts: &[f64],
 ) -> Option<SceneClearance> {
     let least = plan.least.as_ref()?;
-    let i = (plan.moves.iter()).position(|m| m.clearance.as_ref() == Some(least))?;
     // The link (or tool shape) named by the clearance, and the obstacle.
     let (part, shape_name) = crate::output::clearance_part(least);
     let kind = if part == "tool" {
@@ -288,35 +359,40 @@ fn clearance(
         .iter()
         .position(|d| d.kind == kind && d.name == shape_name)?;
     let obstacle = cell.obstacles.iter().find(|o| o.name == least.obstacle)?;
-    let (from, to) = (
-        &plan.route.waypoints[i].joints_deg,
-        &plan.route.waypoints[i + 1].joints_deg,
-    );
-    let (duration, profile) = timing.get(i).copied().unwrap_or((0.0, Profile::Quintic));
-    let mut best: Option<(f64, f64, [[f64; 3]; 2])> = None;
-    for j in 0..=CLEARANCE_SAMPLES {
-        let u = j as f64 / CLEARANCE_SAMPLES as f64;
-        let t = duration * u;
-        let axes = lerp6(from, to, profile.progress(t, duration));
-        let frame = match carriers[s] {
-            Carrier::Base => poser.base(),
-            Carrier::Link(k) => poser.links(&axes)[k],
-            Carrier::Flange => poser.tool0(&axes),
-        };
-        let (d, pts) = closest_points(
-            &defs[s].geometry,
-            &frame,
-            &obstacle.aabb.min,
-            &obstacle.aabb.max,
+    // (move, time in it, distance, points, corner)
+    type Best = (usize, f64, f64, [[f64; 3]; 2], Option<usize>);
+    let mut best: Option<Best> = None;
+    for (i, u0, u1, corner) in searched_pieces(plan, least) {
+        let (from, to) = (
+            &plan.route.waypoints[i].joints_deg,
+            &plan.route.waypoints[i + 1].joints_deg,
         );
-        if best.is_none_or(|b| d < b.1) {
-            best = Some((t, d, pts));
+        let (duration, profile) = timing.get(i).copied().unwrap_or((0.0, Profile::Quintic));
+        for j in 0..=CLEARANCE_SAMPLES {
+            let u = u0 + (u1 - u0) * j as f64 / CLEARANCE_SAMPLES as f64;
+            let t = duration * u;
+            let axes = lerp6(from, to, profile.progress(t, duration));
+            let frame = match carriers[s] {
+                Carrier::Base => poser.base(),
+                Carrier::Link(k) => poser.links(&axes)[k],
+                Carrier::Flange => poser.tool0(&axes),
+            };
+            let (d, pts) = closest_points(
+                &defs[s].geometry,
+                &frame,
+                &obstacle.aabb.min,
+                &obstacle.aabb.max,
+            );
+            if best.is_none_or(|b| d < b.2) {
+                best = Some((i, t, d, pts, corner));
+            }
         }
     }
-    let (t, _, points) = best?;
+    let (i, t, _, points, corner) = best?;
     Some(SceneClearance {
         distance_mm: crate::precision::round(least.mm, crate::precision::LENGTH_DECIMALS),
         move_index: i,
+        corner_waypoint: corner,
         shape: shape_name.to_string(),
         obstacle: least.obstacle.clone(),
         time_s: Some(starts.get(i).copied().unwrap_or(0.0) + t),
@@ -479,307 +555,5 @@ pub fn failure_scene(
 }
 
 #[cfg(test)]
-mod tests {
-    //! The scene of a real (small) run: the bundled IRB 1400 with a tool, a table and a post.
-    use super::*;
-    use crate::pipeline::{self, Loaded, Options};
-    use crate::plan::Method;
-    use std::path::Path;
-
-    const CELL: &str = "\
-module: Demo
-robot: { urdf: irb1400.urdf, base: [0, 0, 0] }
-tool:
-  name: tStick
-  tframe: [[0, 0, 200], [1, 0, 0, 0]]
-  shapes:
-    - { name: stick, cylinder: { from: [0, 0, 0], to: [0, 0, 150], radius: 20 } }
-    - { name: knob, sphere: { centre: [0, 0, 160], radius: 15 } }
-    - { name: plate, box: { min: [-40, -40, 0], max: [40, 40, 10] } }
-obstacles:
-  - { name: table, box: { min: [600, -300, 0], max: [1000, 300, 400] } }
-  - { name: post, box: { min: [700, -60, 400], max: [820, 60, 1300] } }
-points:
-  - { name: P1, joints: [-40, 10, 0, 0, 30, 0] }
-  - { name: P2, joints: [40, 10, 0, 0, 60, 0] }
-planner: { grid: 5 }
-";
-
-    fn job() -> Loaded {
-        let cell = crate::cell::parse(Path::new("demo.yaml"), CELL).expect("the cell");
-        Loaded {
-            cell,
-            text: CELL.to_string(),
-            robot: Robot::irb1400(),
-        }
-    }
-
-    fn close(a: [f64; 3], b: [f64; 3], tol: f64) -> bool {
-        (0..3).all(|k| (a[k] - b[k]).abs() <= tol)
-    }
-
-    #[test]
-    fn keyframes_follow_the_estimate_and_the_kinematics() {
-        let job = job();
-        let out = pipeline::run(&job, &Options::new(Method::Extensile, 5.0)).expect("plans");
-        let plan = &out.plan;
-        let route = &plan.route;
-        assert!(route.moves() >= 2, "the post makes a via");
-        let s = scene(
-            &job.cell,
-            &job.robot,
-            &out.placed,
-            plan,
-            &out.rendered.names,
-        );
-        // Links 1..3, then the tool's three shapes; one pose each per keyframe.
-        let kinds: Vec<_> = s.shapes.iter().map(|d| d.kind).collect();
-        assert_eq!(
-            kinds,
-            [ShapeKind::Link; 3]
-                .into_iter()
-                .chain([ShapeKind::Tool; 3])
-                .collect::<Vec<_>>()
-        );
-        assert!(s.keyframes.iter().all(|k| k.poses.len() == 6));
-        // Time runs from 0 to the estimate, never backwards.
-        assert_eq!(s.keyframes[0].time_s, 0.0);
-        let last = s.keyframes.last().expect("keyframes");
-        assert!((last.time_s - plan.total_s).abs() < 1e-9);
-        assert!(s.keyframes.windows(2).all(|w| w[0].time_s <= w[1].time_s));
-        // Each waypoint is reached when its moves' times add up, where forward kinematics puts
-        // its TCP (the tool's 200 mm beyond the flange), with the module's names.
-        let poser = Poser::new(&job.robot, out.placed.placement, job.cell.tool.as_ref());
-        let mut t = 0.0;
-        for (k, w) in s.waypoints.iter().enumerate() {
-            if k > 0 {
-                t += plan.moves[k - 1].estimate.time_s;
-            }
-            assert!((w.time_s - t).abs() < 1e-9);
-            assert_eq!(w.name, out.rendered.names[k]);
-            let tcp = poser.tcp_mm(&route.waypoints[k].joints_deg);
-            assert_eq!(w.tcp_mm, tcp);
-            let flange = poser
-                .tool0(&route.waypoints[k].joints_deg)
-                .translation
-                .vector;
-            let reach = (0..3)
-                .map(|a| (tcp[a] - flange[a]).powi(2))
-                .sum::<f64>()
-                .sqrt();
-            assert!((reach - 200.0).abs() < 1e-9);
-            let at = s.keyframes.iter().find(|f| (f.time_s - t).abs() < 1e-9);
-            assert_eq!(at.map(|f| f.tcp_mm), Some(tcp), "a keyframe at {}", w.name);
-        }
-        assert_eq!(s.waypoints[0].kind, WaypointKind::Cell);
-        assert_eq!(s.waypoints[1].kind, WaypointKind::Via);
-        // Halfway through the first move in time the robot is where the move's profile says:
-        // the straight joint move at the profile's progress (0.5 by symmetry).
-        let half = plan.moves[0].estimate.time_s / 2.0;
-        let mid = lerp6(
-            &route.waypoints[0].joints_deg,
-            &route.waypoints[1].joints_deg,
-            0.5,
-        );
-        let kf = s
-            .keyframes
-            .iter()
-            .min_by(|a, b| (a.time_s - half).abs().total_cmp(&(b.time_s - half).abs()))
-            .expect("keyframes");
-        assert!((kf.time_s - half).abs() < KEYFRAME_STEP_S);
-        if (kf.time_s - half).abs() < 1e-9 {
-            assert!(close(kf.tcp_mm, poser.tcp_mm(&mid), 1e-6));
-        }
-        // Keyframes are dense: halfway between two, the page's straight interpolation of the
-        // TCP is within a millimetre of the kinematics at that time (about 0.5 mm here).
-        let mut worst: f64 = 0.0;
-        let mut t0 = 0.0;
-        for (i, m) in plan.moves.iter().enumerate() {
-            let (duration, profile) = (m.estimate.time_s, m.estimate.profile);
-            let (from, to) = (
-                &route.waypoints[i].joints_deg,
-                &route.waypoints[i + 1].joints_deg,
-            );
-            let within = |t: f64| t >= t0 - 1e-9 && t <= t0 + duration + 1e-9;
-            for w in s.keyframes.windows(2) {
-                if w[0].time_s == w[1].time_s || !within(w[0].time_s) || !within(w[1].time_s) {
-                    continue;
-                }
-                let tm = 0.5 * (w[0].time_s + w[1].time_s);
-                let truth = poser.tcp_mm(&lerp6(from, to, profile.progress(tm - t0, duration)));
-                let shown: [f64; 3] =
-                    std::array::from_fn(|a| 0.5 * (w[0].tcp_mm[a] + w[1].tcp_mm[a]));
-                let off = (0..3)
-                    .map(|a| (truth[a] - shown[a]).powi(2))
-                    .sum::<f64>()
-                    .sqrt();
-                worst = worst.max(off);
-            }
-            t0 += duration;
-        }
-        eprintln!("the page's TCP is at most {worst:.3} mm off between keyframes");
-        assert!(
-            worst < 1.0,
-            "the page's TCP is {worst:.3} mm off between keyframes"
-        );
-    }
-
-    /// A shipped robot with cylinders on every link: the page draws each where its own link is
-    /// (base_link at the base, links 4..6 by the six-axis kinematics), the URDF's cylinders, not
-    /// the enclosures the checks carry them by. Fails with links 4..6 left out or drawn on link 3.
-    #[test]
-    fn every_link_of_a_shipped_robot_is_drawn_on_its_own_link() {
-        let text = CELL.replace("urdf: irb1400.urdf,", "model: irb2600_12_165,");
-        let cell = crate::cell::parse(Path::new("demo.yaml"), &text).expect("the cell");
-        let job = Loaded {
-            cell,
-            text,
-            robot: Robot::shipped("irb2600_12_165").expect("shipped"),
-        };
-        let out = pipeline::run(&job, &Options::new(Method::Extensile, 5.0)).expect("plans");
-        let s = scene(
-            &job.cell,
-            &job.robot,
-            &out.placed,
-            &out.plan,
-            &out.rendered.names,
-        );
-        let links: Vec<String> = s.shapes.iter().take(7).map(|d| d.name.clone()).collect();
-        let want: Vec<String> = (0..7).map(|k| format!("link_{k}")).collect();
-        assert_eq!(links[1..], want[1..]);
-        assert_eq!(links[0], "base_link");
-        assert!(s.shapes[..7].iter().all(|d| d.kind == ShapeKind::Link));
-        let poser = Poser::new(&job.robot, out.placed.placement, job.cell.tool.as_ref());
-        let at = &out.plan.route.waypoints[1].joints_deg;
-        let frame = s
-            .keyframes
-            .iter()
-            .find(|k| (k.time_s - s.waypoints[1].time_s).abs() < 1e-9)
-            .expect("a keyframe at the second waypoint");
-        let links = poser.links(at);
-        for (i, own) in job.robot.collision.iter().enumerate() {
-            let want = match own.frame {
-                crate::robot::LinkFrame::Base => poser.base(),
-                crate::robot::LinkFrame::Child(k) => links[k],
-            };
-            let got = frame.poses[i].position_mm;
-            let t = want.translation.vector;
-            assert!(
-                close(got, [t.x, t.y, t.z], 1e-6),
-                "{}: {got:?} vs {t:?}",
-                own.link
-            );
-        }
-    }
-
-    #[test]
-    fn the_smallest_clearance_is_marked_where_it_occurs() {
-        let job = job();
-        let out = pipeline::run(&job, &Options::new(Method::Extensile, 5.0)).expect("plans");
-        let s = scene(
-            &job.cell,
-            &job.robot,
-            &out.placed,
-            &out.plan,
-            &out.rendered.names,
-        );
-        let least = out.plan.least.as_ref().expect("obstacles");
-        let c = s.clearance.expect("marked");
-        assert_eq!(c.shape, crate::output::clearance_part(least).1);
-        assert_eq!(c.obstacle, least.obstacle);
-        assert_eq!(out.plan.moves[c.move_index].clearance.as_ref(), Some(least));
-        assert_eq!(
-            c.distance_mm,
-            crate::precision::round(least.mm, crate::precision::LENGTH_DECIMALS)
-        );
-        // The marker's two points are that far apart (the certified figure is a lower bound
-        // within 0.05 mm; the sampled marker lies at most a few tenths of a millimetre above
-        // the true minimum), the second on the obstacle's box.
-        let [p, q] = c.points_mm.expect("points");
-        let d = (0..3).map(|k| (p[k] - q[k]).powi(2)).sum::<f64>().sqrt();
-        assert!(
-            d >= least.mm - 0.01 && d < least.mm + 1.0,
-            "{d} against {}",
-            least.mm
-        );
-        let o = job
-            .cell
-            .obstacles
-            .iter()
-            .find(|o| o.name == c.obstacle)
-            .expect("the obstacle");
-        assert!((0..3).all(|k| q[k] >= o.aabb.min[k] - 1e-6 && q[k] <= o.aabb.max[k] + 1e-6));
-        // It happens during its move.
-        let t = c.time_s.expect("a time");
-        let (w0, w1) = (&s.waypoints[c.move_index], &s.waypoints[c.move_index + 1]);
-        assert!(t >= w0.time_s - 1e-9 && t <= w1.time_s + 1e-9);
-    }
-
-    #[test]
-    fn closest_points_of_each_shape_and_a_box_by_hand() {
-        let lo = Point3::new(100.0, -50.0, -50.0);
-        let hi = Point3::new(200.0, 50.0, 50.0);
-        let shifted = Isometry3::translation(0.0, 0.0, 0.0);
-        // A ball of radius 20 at the origin: 80 mm from the box's face x = 100.
-        let ball = ShapeGeometry::Sphere {
-            centre_mm: [0.0; 3],
-            radius_mm: 20.0,
-        };
-        let (d, [p, q]) = closest_points(&ball, &shifted, &lo, &hi);
-        assert!((d - 80.0).abs() < 1e-6 && close(p, [20.0, 0.0, 0.0], 1e-6));
-        assert!(close(q, [100.0, 0.0, 0.0], 1e-6));
-        // A cylinder along its z, radius 10, length 100, turned -90 deg about y: it runs from
-        // x = 0 to x = -100 in the cell, so its cap at x = 0 is 100 mm from the face.
-        let turned = Isometry3::rotation(Vector3::y() * -std::f64::consts::FRAC_PI_2);
-        let cyl = ShapeGeometry::Cylinder {
-            radius_mm: 10.0,
-            from_mm: [0.0; 3],
-            to_mm: [0.0, 0.0, 100.0],
-        };
-        let (d, _) = closest_points(&cyl, &turned, &lo, &hi);
-        assert!((d - 100.0).abs() < 1e-6, "{d}");
-        // The same cylinder turned the other way reaches x = 100: it touches the box.
-        let towards = Isometry3::rotation(Vector3::y() * std::f64::consts::FRAC_PI_2);
-        let (d, _) = closest_points(&cyl, &towards, &lo, &hi);
-        assert!(d < 1e-6, "{d}");
-        // A box 10 mm wide at x in [40, 50], moved 30 mm along x: 20 mm from the face.
-        let plate = ShapeGeometry::Box {
-            min_mm: [40.0, -5.0, -5.0],
-            max_mm: [50.0, 5.0, 5.0],
-        };
-        let (d, _) = closest_points(&plate, &Isometry3::translation(30.0, 0.0, 0.0), &lo, &hi);
-        assert!((d - 20.0).abs() < 1e-6, "{d}");
-    }
-
-    #[test]
-    fn a_failure_shows_the_cell_the_robot_and_the_points_not_joined() {
-        let job = job();
-        let placed = pipeline::place(&job).expect("placed");
-        let s = failure_scene(
-            &job.cell,
-            &job.robot,
-            Some(placed.placement),
-            Some(&placed.points),
-            &[0, 1],
-            "no path",
-        );
-        assert_eq!(s.keyframes.len(), 1);
-        let f = s.failure.expect("a failure");
-        let poser = Poser::new(&job.robot, placed.placement, job.cell.tool.as_ref());
-        assert_eq!(f.points.len(), 2);
-        assert_eq!(f.points[1].name, "P2");
-        assert_eq!(
-            f.points[1].position_mm,
-            poser.tcp_mm(&placed.points[1].joints_deg)
-        );
-        assert_eq!(s.keyframes[0].tcp_mm, f.points[0].position_mm);
-        assert!(s.waypoints.is_empty() && s.clearance.is_none());
-        // Nothing placed and no base known: the cell and what the cell itself says, no robot.
-        let s = failure_scene(&job.cell, &job.robot, None, None, &[0], "no base");
-        assert!(s.keyframes.is_empty() && s.base.is_none());
-        assert!(s.failure.as_ref().is_some_and(|f| f.points.is_empty()));
-        assert_eq!(s.obstacles.len(), 2);
-        // The page renders either way.
-        assert!(super::super::render_html(&s).is_ok());
-    }
-}
+#[path = "scene_tests.rs"]
+mod tests;

@@ -81,6 +81,7 @@ fn scene() -> Scene {
         clearance: Some(SceneClearance {
             distance_mm: 12.34,
             move_index: 0,
+            corner_waypoint: None,
             shape: "link_2".into(),
             obstacle: "table".into(),
             time_s: Some(0.75),

@@ -22,7 +22,8 @@ pub struct Pose {
 /// A `CONST robtarget` written beside a cell point's jointtarget.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RobTarget {
-    /// The TCP pose in the work object (as the cell gives it, normalised).
+    /// The TCP pose in the work object (as the cell gives it, normalised; in wobj0 with
+    /// `robot.frame: base`, in the robot's base frame).
     pub pose: Pose,
     /// `[cf1, cf4, cf6, cfx]` of the jointtarget beside it.
     pub conf: [i32; 4],
@@ -44,7 +45,8 @@ pub struct ToolData {
 #[derive(Debug, Clone, PartialEq)]
 pub struct WobjData {
     pub name: String,
-    /// The user frame in the world frame (the cell frame).
+    /// The user frame in the world frame (the cell frame, or the robot's base frame with
+    /// `robot.frame: base`).
     pub uframe: Pose,
 }
 
@@ -141,4 +143,22 @@ pub(super) fn tooldata(name: &str, t: &ToolData) -> Result<String, RapidError> {
 pub(super) fn wobjdata(w: &WobjData) -> Result<String, RapidError> {
     let uframe = pose(&format!("wobjdata `{}` uframe", w.name), &w.uframe)?;
     Ok(format!("[FALSE,TRUE,\"\",{uframe},[[0,0,0],[1,0,0,0]]]"))
+}
+
+/// A loaddata's value: `[mass,[cx,cy,cz],[1,0,0,0],0,0,0]` (a point mass at its centre of
+/// gravity, in the tool frame).
+pub(super) fn loaddata(l: &super::LoadData) -> Result<String, RapidError> {
+    let name = &l.name;
+    let mass = format_fixed(
+        finite(format!("loaddata `{name}` mass"), l.mass_kg)?,
+        MASS_DECIMALS,
+    );
+    let mut cog = Vec::with_capacity(3);
+    for (k, &v) in l.cog_mm.iter().enumerate() {
+        cog.push(format_fixed(
+            finite(format!("loaddata `{name}` cog {k}"), v)?,
+            POSITION_DECIMALS,
+        ));
+    }
+    Ok(format!("[{mass},[{}],[1,0,0,0],0,0,0]", cog.join(",")))
 }

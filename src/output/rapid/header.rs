@@ -3,6 +3,7 @@
 //! certified clearance, time). Free text is made printable ASCII on one line.
 
 use super::{finite, format_fixed, Program, RapidError};
+use crate::cell::RobotFrame;
 use crate::precision::{GRID_DECIMALS, LENGTH_DECIMALS, TIME_DECIMALS, YAW_DECIMALS};
 
 /// What the module says about the controller without a controller file.
@@ -12,6 +13,10 @@ pub const NO_CONTROLLER: &str = "none: serial arm, the URDF's limits";
 /// (and a wobjdata's user frame) is the controller's world frame, the cell's positions are in the
 /// cell frame; they agree only if the controller's base frame is the placement.
 pub const FRAMES_NOTE: &str = "frames: robtargets and the user frame are given in the cell frame; they mean the cell's poses only if the controller's base frame is the base and yaw above";
+
+/// The note with `robot.frame: base`: the user frame and wobj0's robtargets are written in the
+/// robot's base frame, which is the world frame of a controller whose base frame is not moved.
+pub const FRAMES_NOTE_BASE: &str = "frames: the user frame and robtargets in wobj0 are written in the robot's base frame; they mean the cell's poses when the controller's world frame is its base frame (the IRC5 default)";
 
 /// Values printed as comments at the top of the module.
 #[derive(Debug, Clone, PartialEq)]
@@ -53,6 +58,8 @@ pub struct Header {
     pub via_zone: String,
     /// The paper's method alone on the same cell: its moves and estimated time (s), when known.
     pub paper: Option<(usize, f64)>,
+    /// The frame the user frame and wobj0's robtargets are written in (`robot.frame`).
+    pub frame: RobotFrame,
 }
 
 /// Header free text as printable ASCII on one line (see module doc).
@@ -70,7 +77,7 @@ pub(super) fn comment_text(text: &str) -> String {
 }
 
 /// The header's facts, each formatted as the header writes it (and as a template sees them,
-/// `facts.*`; README). Free text is printable ASCII on one line.
+/// `facts.*`; docs/outputs.md). Free text is printable ASCII on one line.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Facts {
     pub generator: String,
@@ -250,5 +257,9 @@ fn tcp_lines(p: &Program) -> Option<[String; 3]> {
         ),
         None => "wobj: wobj0 (robtargets are in the world frame)".to_string(),
     };
-    Some([tool, wobj, FRAMES_NOTE.to_string()])
+    let frames = match p.header.frame {
+        RobotFrame::Cell => FRAMES_NOTE,
+        RobotFrame::Base => FRAMES_NOTE_BASE,
+    };
+    Some([tool, wobj, frames.to_string()])
 }

@@ -1,12 +1,13 @@
-//! RAPID output stage: turns an already planned joint path into the text of an
-//! ABB RAPID module (IRB 1400 on an IRC5 controller, loaded by RobotStudio).
+//! RAPID output stage (long: the render pass, its template context and the module's guards):
+//! turns an already planned path into the text of an ABB RAPID module (IRB 1400 on an IRC5
+//! controller, loaded by RobotStudio).
 //!
 //! Everything the text needs is decided by earlier stages and handed over as a
 //! [`Program`]; this stage only validates names, formats numbers and fills the
 //! template `templates/module.mod.j2` (embedded at compile time, rendered with
 //! minijinja in strict-undefined mode, no auto-escaping, trailing newline kept),
 //! or the user's template (`--template FILE`, [`ModuleTemplate`]), which sees the
-//! same context (README, "Your own module template": `module`, `proc`, `header`,
+//! same context (docs/outputs.md, "Your own module template": `module`, `proc`, `header`,
 //! `facts`, `tool`, `wobj`, `wobj_arg`, `targets`, `moves`). A template holds no
 //! logic beyond loops and variable output; every number is formatted here with
 //! [`format_fixed`]. An error of the user's template is an input error at its
@@ -38,12 +39,16 @@
 //!     PERS tooldata <tool> := [TRUE,[[x,y,z],[q1,q2,q3,q4]],[mass,[cx,cy,cz],[1,0,0,0],0,0,0]];
 //!     PERS wobjdata <wobj> := [FALSE,TRUE,"",[[x,y,z],[q1,q2,q3,q4]],[[0,0,0],[1,0,0,0]]];
 //!                                                     (each only when declared, then a blank line)
-//!     CONST jointtarget <name> := [[a1,a2,a3,a4,a5,a6],[9E9,9E9,9E9,9E9,9E9,9E9]];   (one per target)
+//!     CONST jointtarget <name> := [[a1,a2,a3,a4,a5,a6],[9E9,9E9,9E9,9E9,9E9,9E9]];
+//!                                                     (one per joint target and via)
 //!     CONST robtarget <name>_rt := [[x,y,z],[q1,q2,q3,q4],[cf1,cf4,cf6,cfx],[9E9,...]];
-//!                                                     (after a robtarget point's jointtarget)
+//!                                                     (one per robtarget point, in its place)
 //!
 //!     PROC <proc>()                                   (`main` unless the cell or --proc names it)
-//!         MoveAbsJ <name>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>];   (one per target)
+//!         ConfJ \On;                                  (both only when the module moves to a
+//!         ConfL \On;                                   robtarget)
+//!         MoveAbsJ <name>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>];   (a joint target, a via)
+//!         MoveJ <name>_rt, <speed>, <zone>, <tool>[\WObj:=<wobj>];           (a robtarget point)
 //!     ENDPROC
 //! ENDMODULE
 //! ```
@@ -74,8 +79,9 @@
 //!   All declared names are unique ignoring case and differ from the module
 //!   name, the routine's and every speed and zone name (see [`target_names`]); a via
 //!   whose name is taken by any of them steps aside (`via01_01_x1`, ...).
-//! - One `CONST jointtarget` per target and one `MoveAbsJ` per target, in the
-//!   same order, so each name is used by exactly one move.
+//! - One `CONST jointtarget` per joint target and via, one `CONST robtarget` per
+//!   robtarget point, and one move per target (`MoveAbsJ` to a jointtarget, `MoveJ`
+//!   to a robtarget), in the same order, so each name is used by exactly one move.
 //! - Free text in the header (`generator`, `cell_file`, paths, `planner`) is
 //!   made printable ASCII: each character outside `' '..='~'` becomes `?`,
 //!   surrounding spaces are trimmed, and empty text becomes `-`.
@@ -83,6 +89,7 @@
 mod data;
 mod format;
 mod header;
+mod tags;
 mod target_names;
 
 pub use data::{AxisRanges, Pose, RobTarget, ToolData, WobjData, NO_EXTERNAL_AXES};
@@ -91,7 +98,7 @@ pub use header::{Header, NO_CONTROLLER};
 pub use target_names::{target_names, target_names_avoiding};
 
 use crate::names::{check_data_name, check_identifier, robtarget_name, IdentifierError};
-use crate::precision::JOINT_DECIMALS;
+use crate::precision::{JOINT_DECIMALS, POSITION_DECIMALS, WAIT_TIME_DECIMALS};
 #[cfg(test)]
 use header::comment_text;
 
@@ -99,6 +106,8 @@ use minijinja::{value::Serde, AutoEscape, Environment, UndefinedBehavior};
 use serde::Serialize;
 use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Arc;
 
 /// The module template, embedded at compile time.
 pub const TEMPLATE: &str = include_str!("../../../templates/module.mod.j2");
@@ -123,6 +132,8 @@ pub struct Program {
     pub ranges: AxisRanges,
     /// The name of the routine that makes the moves (`motion.proc`, `--proc`; default `main`).
     pub proc_name: String,
+    /// The loaddata the module declares (`loads:`), in the cell's order.
+    pub loads: Vec<LoadData>,
 }
 
 /// What a target is: a named cell point or an intermediate via point.
@@ -140,6 +151,52 @@ pub enum TargetKind {
         /// 1-based index of the via within its leg.
         index: usize,
     },
+    /// A robtarget point's approach pose, `RelTool(<point>_rt, 0, 0, -D)` (declares nothing).
+    Approach {
+        /// The point's name.
+        point: String,
+    },
+    /// A robtarget point's retract pose, `RelTool(<point>_rt, 0, 0, -D)` (declares nothing).
+    Retract {
+        /// The point's name.
+        point: String,
+    },
+}
+
+/// How the move into a target runs.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MoveHow {
+    /// Joint interpolation: `MoveAbsJ` to a jointtarget, `MoveJ` to a robtarget point's robtarget
+    /// or to an approach pose (`RelTool`).
+    Joint,
+    /// `MoveL` to the point's robtarget, or to a retract pose (`RelTool`).
+    Linear,
+    /// `MoveC <point>_via, <point>_rt`: the circle point written as its own robtarget.
+    Circular { via: RobTarget },
+}
+
+/// An action done after the move into a target, as RAPID writes it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Action {
+    /// `SetDO signal, 0|1;`
+    SetDo { signal: String, value: bool },
+    /// `PulseDO signal;`
+    PulseDo { signal: String },
+    /// `WaitDI signal, 0|1;`
+    WaitDi { signal: String, value: bool },
+    /// `WaitTime s;` (3 decimals)
+    WaitTime { time_s: f64 },
+    /// `GripLoad load;`
+    GripLoad { load: String },
+}
+
+/// A `PERS loaddata` the module declares.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadData {
+    pub name: String,
+    pub mass_kg: f64,
+    /// Centre of gravity in the tool frame, mm.
+    pub cog_mm: [f64; 3],
 }
 
 /// One `CONST jointtarget` of the module (a joint position to visit) and the move into it.
@@ -156,6 +213,12 @@ pub struct JointTarget {
     /// For a cell point given as a robtarget: the `CONST robtarget` written beside it (named
     /// by [`robtarget_name`]).
     pub robtarget: Option<RobTarget>,
+    /// How the move into it runs.
+    pub how: MoveHow,
+    /// For an approach or retract pose: how far back along the tool's z axis, mm.
+    pub offset_mm: Option<f64>,
+    /// The actions done after the move into it, in order.
+    pub actions: Vec<Action>,
 }
 
 /// Why a module could not be rendered.
@@ -265,8 +328,10 @@ pub enum TemplateError {
         /// That line of the template.
         line_text: Option<String>,
         message: String,
-        /// Rendering ran past [`TEMPLATE_FUEL`] instructions.
+        /// Rendering ran past [`TEMPLATE_FUEL`].
         out_of_fuel: bool,
+        /// The module passed [`MAX_MODULE_BYTES`].
+        over_cap: bool,
     },
 }
 
@@ -293,12 +358,13 @@ impl TemplateError {
             line_text,
             message,
             out_of_fuel: e.kind() == minijinja::ErrorKind::OutOfFuel,
+            over_cap: false,
         }
     }
 }
 
 /// A module template: the embedded `templates/module.mod.j2`, or the user's (`--template FILE`).
-/// Both see the same context, which README lists for template writers.
+/// Both see the same context, which docs/outputs.md lists for template writers.
 #[derive(Clone, Debug)]
 pub struct ModuleTemplate {
     /// The user's file; `None` for the embedded template.
@@ -318,11 +384,26 @@ impl ModuleTemplate {
     /// The user's template read from `path`, compiled once here so that a syntax error is found
     /// before any planning (pointing at its line).
     pub fn user(path: &Path, source: String) -> Result<ModuleTemplate, TemplateError> {
+        if let Some(long) = tags::long_tag(&source) {
+            return Err(TemplateError::Invalid {
+                path: path.to_path_buf(),
+                line: Some(long.line),
+                column: Some(long.column),
+                line_text: source.lines().nth(long.line - 1).map(str::to_string),
+                message: format!(
+                    "this tag holds {} characters, more than the {} a tag may hold",
+                    long.chars,
+                    tags::MAX_TAG_CHARS
+                ),
+                out_of_fuel: false,
+                over_cap: false,
+            });
+        }
         let t = ModuleTemplate {
             path: Some(path.to_path_buf()),
             source,
         };
-        t.environment()
+        on_template_stack(|| t.environment().map(drop))
             .map_err(|e| TemplateError::of(path, &t.source, &e))?;
         Ok(t)
     }
@@ -341,8 +422,29 @@ impl ModuleTemplate {
     /// and at most [`TEMPLATE_FUEL`] instructions (a user's template that loops for ever, or
     /// 10^10 times, is an error, not a hang).
     fn environment(&self) -> Result<Environment<'_>, minijinja::Error> {
+        self.environment_counting(Arc::new(AtomicUsize::new(0)))
+    }
+
+    /// [`environment`](Self::environment) whose expressions refuse to write past
+    /// [`MAX_MODULE_BYTES`]: `written` counts the bytes the render has written (its writer
+    /// adds them), and each `{{ ... }}` checks it after writing, so a template that passes the
+    /// cap fails at that expression's line.
+    fn environment_counting(
+        &self,
+        written: Arc<AtomicUsize>,
+    ) -> Result<Environment<'_>, minijinja::Error> {
         let mut env = Environment::new();
         env.set_fuel(Some(TEMPLATE_FUEL));
+        env.set_formatter(move |out, state, value| {
+            minijinja::escape_formatter(out, state, value)?;
+            if written.load(Ordering::Relaxed) > MAX_MODULE_BYTES {
+                return Err(minijinja::Error::new(
+                    minijinja::ErrorKind::InvalidOperation,
+                    over_cap_message(),
+                ));
+            }
+            Ok(())
+        });
         env.set_undefined_behavior(UndefinedBehavior::Strict);
         env.set_auto_escape_callback(|_| AutoEscape::None);
         env.set_syntax(
@@ -359,27 +461,118 @@ impl ModuleTemplate {
     /// Renders the context; an error of the user's template becomes [`TemplateError`].
     fn render(&self, ctx: &ModuleCtx) -> Result<String, RapidError> {
         let name = self.name();
-        let rendered = self
-            .environment()
-            .and_then(|env| env.get_template(&name)?.render(Serde(ctx)));
+        let written = Arc::new(AtomicUsize::new(0));
+        let mut out = Capped {
+            bytes: Vec::new(),
+            written: Arc::clone(&written),
+        };
+        let rendered = on_template_stack(|| {
+            self.environment_counting(Arc::clone(&written))
+                .and_then(|env| {
+                    env.get_template(&name)?
+                        .render_captured_to(Serde(ctx), &mut out)
+                        .map(drop)
+                })
+        })
+        .and_then(|()| {
+            // Raw text past the cap with no expression after it: the cap, at no line.
+            if written.load(Ordering::Relaxed) > MAX_MODULE_BYTES {
+                Err(minijinja::Error::new(
+                    minijinja::ErrorKind::InvalidOperation,
+                    over_cap_message(),
+                ))
+            } else {
+                Ok(())
+            }
+        });
+        let over_cap = written.load(Ordering::Relaxed) > MAX_MODULE_BYTES;
         match (rendered, &self.path) {
-            (Ok(text), _) => Ok(text),
-            (Err(e), Some(path)) => Err(RapidError::UserTemplate(TemplateError::of(
-                path,
-                &self.source,
-                &e,
-            ))),
+            (Ok(()), _) => String::from_utf8(out.bytes).map_err(|e| {
+                RapidError::Template(minijinja::Error::new(
+                    minijinja::ErrorKind::InvalidOperation,
+                    e.to_string(),
+                ))
+            }),
+            (Err(e), Some(path)) => {
+                let mut t = TemplateError::of(path, &self.source, &e);
+                if let TemplateError::Invalid { over_cap: o, .. } = &mut t {
+                    *o = over_cap;
+                }
+                Err(RapidError::UserTemplate(t))
+            }
             (Err(e), None) => Err(RapidError::Template(e)),
         }
     }
 }
 
-/// The most instructions a template may run (minijinja's fuel): the embedded template renders
-/// a module of 20 000 targets well within it (tests), and a runaway loop stops after about two
-/// seconds.
-pub const TEMPLATE_FUEL: u64 = 100_000_000;
+/// The stack minijinja parses, compiles and renders a template on: it descends an expression
+/// by recursion, and the tags' length (`tags::MAX_TAG_CHARS`) bounds the depth to what this
+/// holds, whatever thread calls (a test's thread has 2 MiB).
+const TEMPLATE_STACK_BYTES: usize = 32 << 20;
 
-/// The template context (README, "Your own module template"): every value already formatted;
+/// Runs `f` on a thread with [`TEMPLATE_STACK_BYTES`] of stack (an error if no thread can be
+/// made).
+fn on_template_stack<T: Send>(
+    f: impl FnOnce() -> Result<T, minijinja::Error> + Send,
+) -> Result<T, minijinja::Error> {
+    let failed = |what: &str| {
+        minijinja::Error::new(
+            minijinja::ErrorKind::InvalidOperation,
+            format!("the template's thread {what}"),
+        )
+    };
+    std::thread::scope(|scope| {
+        std::thread::Builder::new()
+            .stack_size(TEMPLATE_STACK_BYTES)
+            .spawn_scoped(scope, f)
+            .map_err(|_| failed("could not be made"))?
+            .join()
+            .map_err(|_| failed("stopped"))?
+    })
+}
+
+/// The most bytes a module may hold, through any template: far more than a module of the
+/// largest cell a run takes (2 000 points and their vias: a few MB), the size of the largest
+/// input file.
+pub const MAX_MODULE_BYTES: usize = 64 << 20;
+
+fn over_cap_message() -> String {
+    format!(
+        "the module passes {} MiB here, the most a module may hold",
+        MAX_MODULE_BYTES >> 20
+    )
+}
+
+/// The render's writer: keeps the module's bytes up to [`MAX_MODULE_BYTES`] and counts every
+/// byte written, so the template's expressions can refuse to go on past the cap (memory stays
+/// bounded: what passes the cap is counted, not kept).
+struct Capped {
+    bytes: Vec<u8>,
+    written: Arc<AtomicUsize>,
+}
+
+impl std::io::Write for Capped {
+    fn write(&mut self, b: &[u8]) -> std::io::Result<usize> {
+        let total = self.written.fetch_add(b.len(), Ordering::Relaxed) + b.len();
+        if total <= MAX_MODULE_BYTES {
+            self.bytes.extend_from_slice(b);
+        }
+        Ok(b.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+/// The fuel a template may burn (minijinja's: one a instruction, and one for every 64 bytes of
+/// data it makes, strings, lists and output alike, so it bounds both time and memory): the
+/// embedded template renders a module of 20 000 targets well within it (tests), a runaway
+/// loop stops within a second, and a template that builds strings (a macro doubling one, a
+/// string repeated) stops before it has made 1 GiB of them.
+pub const TEMPLATE_FUEL: u64 = 16_000_000;
+
+/// The template context (docs/outputs.md, "Your own module template"): every value already formatted;
 /// templates hold no logic.
 #[derive(Serialize)]
 struct ModuleCtx {
@@ -399,8 +592,13 @@ struct ModuleCtx {
     wobj_arg: String,
     /// One per `CONST jointtarget`, in visiting order.
     targets: Vec<TargetCtx>,
-    /// One per `MoveAbsJ`, in order (move `i` goes to target `i`).
+    /// One per move instruction, in order (move `i` goes to target `i`).
     moves: Vec<MoveCtx>,
+    /// Whether the routine starts with `ConfJ \On; ConfL \On;`: the module moves to a
+    /// robtarget, and the controller must reach it in its written confdata.
+    conf_on: bool,
+    /// The `PERS loaddata` the module declares.
+    loads: Vec<DataCtx>,
 }
 
 #[derive(Serialize)]
@@ -421,7 +619,11 @@ struct DataCtx {
 
 #[derive(Serialize)]
 struct TargetCtx {
+    /// The target's name (a robtarget point's: the point's; its data is `robtarget.name`).
     name: String,
+    /// Whether the module declares it as a `CONST jointtarget` (joint targets and vias; a
+    /// robtarget point is moved to by its `CONST robtarget` alone).
+    jointtarget: bool,
     /// `cell` (a point of the cell) or `via` (the planner's).
     kind: &'static str,
     /// `a1,a2,a3,a4,a5,a6` (deg, 3 decimals).
@@ -433,11 +635,19 @@ struct TargetCtx {
     zone: String,
     /// The `CONST robtarget` written beside a robtarget point, or none.
     robtarget: Option<DataCtx>,
+    /// A circular move's circle point, `CONST robtarget <point>_via`, or none.
+    via: Option<DataCtx>,
 }
 
 #[derive(Serialize)]
 struct MoveCtx {
-    /// The jointtarget it goes to.
+    /// `MoveAbsJ` (to a jointtarget) or `MoveJ` (to a robtarget).
+    instruction: &'static str,
+    /// How it moves: `joint` (an air move).
+    kind: &'static str,
+    /// The instructions done after it, in order, without their `;`.
+    actions: Vec<String>,
+    /// The data it goes to: the jointtarget, or the robtarget (`<point>_rt`).
     target: String,
     speed: String,
     zone: String,
@@ -446,7 +656,8 @@ struct MoveCtx {
     wobj: Option<String>,
     /// `\WObj:=<name>`, or empty.
     wobj_arg: String,
-    /// The whole argument list: `<target>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>]`.
+    /// The whole argument list: `<target>\NoEOffs, <speed>, <zone>, <tool>[\WObj:=<wobj>]`
+    /// (without `\NoEOffs` for a robtarget).
     args: String,
 }
 
@@ -544,12 +755,69 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             None => None,
         };
         let axes = axes.join(",");
+        let via = match &target.how {
+            MoveHow::Circular { via } => {
+                let vname = format!("{name}_via");
+                let value = data::robtarget(&vname, via)?;
+                Some(DataCtx { name: vname, value })
+            }
+            _ => None,
+        };
+        // A robtarget point is moved to by its robtarget (the controller's tool, work object
+        // and touch-ups apply); a joint target and a via by their axis values; an approach or
+        // retract pose by RelTool on its point's robtarget.
+        let rel_tool = |point: &str| -> Result<String, RapidError> {
+            let d = finite(
+                format!("the offset of `{name}`"),
+                target.offset_mm.unwrap_or(0.0),
+            )?;
+            Ok(format!(
+                "RelTool({},0,0,{})",
+                robtarget_name(point),
+                format_fixed(-d, POSITION_DECIMALS)
+            ))
+        };
+        let (instruction, to, offs) = match (&target.kind, &target.how, &robtarget, &via) {
+            (TargetKind::Approach { point }, _, _, _) => ("MoveJ", rel_tool(point)?, ""),
+            (TargetKind::Retract { point }, _, _, _) => ("MoveL", rel_tool(point)?, ""),
+            (_, MoveHow::Circular { .. }, Some(r), Some(v)) => {
+                ("MoveC", format!("{}, {}", v.name, r.name), "")
+            }
+            (_, MoveHow::Linear, Some(r), _) => ("MoveL", r.name.clone(), ""),
+            (_, _, Some(r), _) => ("MoveJ", r.name.clone(), ""),
+            (_, _, None, _) => ("MoveAbsJ", name.clone(), "\\NoEOffs"),
+        };
+        let mut actions = Vec::with_capacity(target.actions.len());
+        for a in &target.actions {
+            actions.push(match a {
+                Action::SetDo { signal, value } => format!("SetDO {signal}, {}", u8::from(*value)),
+                Action::PulseDo { signal } => format!("PulseDO {signal}"),
+                Action::WaitDi { signal, value } => {
+                    format!("WaitDI {signal}, {}", u8::from(*value))
+                }
+                Action::WaitTime { time_s } => format!(
+                    "WaitTime {}",
+                    format_fixed(finite("a wait time", *time_s)?, WAIT_TIME_DECIMALS)
+                ),
+                Action::GripLoad { load } => format!("GripLoad {load}"),
+            });
+        }
         moves.push(MoveCtx {
             args: format!(
-                "{name}\\NoEOffs, {}, {}, {}{wobj_arg}",
+                "{to}{offs}, {}, {}, {}{wobj_arg}",
                 target.speed, target.zone, program.tool
             ),
-            target: name.clone(),
+            instruction,
+            kind: match (&target.kind, &target.how) {
+                (TargetKind::Approach { .. }, _) => "joint",
+                (TargetKind::Retract { .. }, _) => "retract",
+                (_, MoveHow::Circular { .. }) => "circular",
+                (_, MoveHow::Linear) if target.offset_mm.is_some() => "approach",
+                (_, MoveHow::Linear) => "linear",
+                (_, MoveHow::Joint) => "joint",
+            },
+            actions,
+            target: to,
             speed: target.speed.clone(),
             zone: target.zone.clone(),
             tool: program.tool.clone(),
@@ -557,20 +825,37 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             wobj_arg: wobj_arg.clone(),
         });
         targets.push(TargetCtx {
+            jointtarget: robtarget.is_none()
+                && matches!(
+                    target.kind,
+                    TargetKind::CellPoint { .. } | TargetKind::Via { .. }
+                ),
             value: format!("[[{axes}],{NO_EXTERNAL_AXES}]"),
             kind: match target.kind {
                 TargetKind::CellPoint { .. } => "cell",
                 TargetKind::Via { .. } => "via",
+                TargetKind::Approach { .. } => "approach",
+                TargetKind::Retract { .. } => "retract",
             },
             name,
             axes,
             speed: target.speed.clone(),
             zone: target.zone.clone(),
             robtarget,
+            via,
+        });
+    }
+    let mut loads = Vec::with_capacity(program.loads.len());
+    for l in &program.loads {
+        loads.push(DataCtx {
+            name: l.name.clone(),
+            value: data::loaddata(l)?,
         });
     }
 
     let ctx = ModuleCtx {
+        loads,
+        conf_on: program.targets.iter().any(|t| t.robtarget.is_some()),
         module: program.module.clone(),
         proc: program.proc_name.clone(),
         header,
@@ -668,10 +953,22 @@ fn check_name_space(program: &Program, target_names: &[String]) -> Result<(), Ra
             }
         }
     }
-    for name in target_names {
-        declared.push((name.clone(), format!("the target `{name}`")));
+    for (t, name) in program.targets.iter().zip(target_names) {
+        if matches!(
+            t.kind,
+            TargetKind::CellPoint { .. } | TargetKind::Via { .. }
+        ) {
+            declared.push((name.clone(), format!("the target `{name}`")));
+        }
+    }
+    for l in &program.loads {
+        declared.push((l.name.clone(), format!("the load data `{}`", l.name)));
     }
     for (t, name) in program.targets.iter().zip(target_names) {
+        if let MoveHow::Circular { .. } = t.how {
+            let v = format!("{name}_via");
+            declared.push((v.clone(), format!("the circle point `{v}`")));
+        }
         if t.robtarget.is_some() {
             let r = robtarget_name(name);
             check_identifier(&r).map_err(|source| RapidError::InvalidGeneratedName {

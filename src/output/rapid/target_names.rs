@@ -1,5 +1,7 @@
 //! The names of the generated `CONST jointtarget`s: cell points keep theirs, vias are numbered.
 
+#[cfg(test)]
+use super::MoveHow;
 use super::{JointTarget, RapidError, TargetKind};
 use crate::names::check_identifier;
 use std::collections::{HashMap, HashSet};
@@ -77,6 +79,9 @@ pub fn target_names_avoiding(
     for target in targets {
         match &target.kind {
             TargetKind::CellPoint { name } => names.push(name.clone()),
+            // Not declared: named for the report and the pictures only.
+            TargetKind::Approach { point } => names.push(format!("{point}_app")),
+            TargetKind::Retract { point } => names.push(format!("{point}_ret")),
             &TargetKind::Via { leg, index } => {
                 let base = format!("via{:0leg_w$}_{:0index_w$}", leg as u128 + 1, index);
                 if !seen_vias.insert((leg, index)) {
@@ -118,6 +123,9 @@ mod tests {
             speed: "v300".into(),
             zone: "fine".into(),
             robtarget: None,
+            how: MoveHow::Joint,
+            offset_mm: None,
+            actions: Vec::new(),
         }
     }
     fn via(leg: usize, index: usize) -> JointTarget {
@@ -127,6 +135,9 @@ mod tests {
             speed: "v300".into(),
             zone: "fine".into(),
             robtarget: None,
+            how: MoveHow::Joint,
+            offset_mm: None,
+            actions: Vec::new(),
         }
     }
 

@@ -1,6 +1,8 @@
-//! Tests of [`render`](super::render) (format and names have their own).
+//! Tests of [`render`](super::render) (long: one test a rule of the module text; format and
+//! names have their own).
 
 use super::*;
+use crate::cell::RobotFrame;
 use crate::names::check_identifier;
 
 fn point(name: &str, axes_deg: [f64; 6]) -> JointTarget {
@@ -12,6 +14,9 @@ fn point(name: &str, axes_deg: [f64; 6]) -> JointTarget {
         speed: "v300".into(),
         zone: "fine".into(),
         robtarget: None,
+        how: MoveHow::Joint,
+        offset_mm: None,
+        actions: Vec::new(),
     }
 }
 fn via(leg: usize, index: usize, axes_deg: [f64; 6]) -> JointTarget {
@@ -21,6 +26,9 @@ fn via(leg: usize, index: usize, axes_deg: [f64; 6]) -> JointTarget {
         speed: "v300".into(),
         zone: "fine".into(),
         robtarget: None,
+        how: MoveHow::Joint,
+        offset_mm: None,
+        actions: Vec::new(),
     }
 }
 
@@ -56,6 +64,7 @@ fn header(moves: usize) -> Header {
         zoned_vias: (1, 2),
         via_zone: "z50".to_string(),
         paper: Some((moves + 1, 4.0)),
+        frame: RobotFrame::Cell,
     }
 }
 
@@ -74,6 +83,7 @@ fn small_program() -> Program {
         wobj: None,
         ranges: IRB1400,
         proc_name: "main".into(),
+        loads: Vec::new(),
     }
 }
 
@@ -149,6 +159,7 @@ fn awkward_program() -> Program {
             zoned_vias: (0, 1),
             via_zone: "fine".to_string(),
             paper: None,
+            frame: RobotFrame::Cell,
         },
         targets: targets
             .into_iter()
@@ -163,6 +174,7 @@ fn awkward_program() -> Program {
         wobj: None,
         ranges: AxisRanges::UNBOUNDED,
         proc_name: "main".into(),
+        loads: Vec::new(),
     }
 }
 
@@ -552,6 +564,7 @@ fn tcp_program() -> Program {
         }),
         ranges: IRB1400,
         proc_name: "main".into(),
+        loads: Vec::new(),
     }
 }
 
@@ -582,7 +595,8 @@ fn vias_take_no_name_of_the_work_object_or_a_points_speed_or_zone() {
 }
 
 /// Written by hand from docs/rapid.md's formats (tooldata, wobjdata, robtarget, MoveAbsJ with
-/// `\WObj`), not copied from the output.
+/// `\WObj`, a robtarget point moved to by `MoveJ` on its robtarget with ConfJ and ConfL on, and
+/// no jointtarget of it), not copied from the output.
 const TCP_EXPECTED: &str = r#"MODULE Weld
     ! generator: gen-rapid 0.1.0
     ! cell: trunk.yaml
@@ -606,17 +620,17 @@ const TCP_EXPECTED: &str = r#"MODULE Weld
     PERS wobjdata wobjTrunk := [FALSE,TRUE,"",[[400.000,0.000,500.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[[0,0,0],[1,0,0,0]]];
 
     CONST jointtarget home := [[0.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget W1 := [[10.000,20.000,30.000,0.000,40.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget W1_rt := [[600.000,-100.000,300.000],[0.000000000,0.000000000,1.000000000,0.000000000],[0,0,0,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget via02_01 := [[-5.000,20.000,30.000,0.000,40.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget W2 := [[-10.500,20.000,30.000,-100.000,-40.000,-95.000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget W2_rt := [[612.500,0.250,300.000],[0.923879533,0.000000000,0.382683432,0.000000000],[-1,-2,-2,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
 
     PROC main()
+        ConfJ \On;
+        ConfL \On;
         MoveAbsJ home\NoEOffs, v300, fine, tTorch\WObj:=wobjTrunk;
-        MoveAbsJ W1\NoEOffs, v100, z10, tTorch\WObj:=wobjTrunk;
+        MoveJ W1_rt, v100, z10, tTorch\WObj:=wobjTrunk;
         MoveAbsJ via02_01\NoEOffs, v100, fine, tTorch\WObj:=wobjTrunk;
-        MoveAbsJ W2\NoEOffs, v100, fine, tTorch\WObj:=wobjTrunk;
+        MoveJ W2_rt, v100, fine, tTorch\WObj:=wobjTrunk;
     ENDPROC
 ENDMODULE
 "#;
@@ -631,7 +645,7 @@ fn render_tcp_program_matches_hand_written_text() {
 fn a_module_of_joint_moves_says_nothing_of_tools_and_frames() {
     let text = render(&small_program()).unwrap();
     assert!(
-        !text.contains("! tool:") && !text.contains("! frames:"),
+        !text.contains("! tool:") && !text.contains("! frames:") && !text.contains("Conf"),
         "{text}"
     );
     // A robtarget alone (tool0, wobj0) brings the tool, wobj and frames lines.
@@ -643,7 +657,9 @@ fn a_module_of_joint_moves_says_nothing_of_tools_and_frames() {
         "{text}"
     );
     assert!(
-        text.contains("MoveAbsJ pick\\NoEOffs, v300, fine, tool0;"),
+        text.contains("ConfL \\On;\n        MoveAbsJ ")
+            && text.contains("MoveJ pick_rt, v300, fine, tool0;")
+            && !text.contains("jointtarget pick "),
         "{text}"
     );
     assert!(text.contains("CONST robtarget pick_rt := "), "{text}");
@@ -751,9 +767,34 @@ fn a_huge_module_renders_within_the_fuel_and_a_runaway_template_is_stopped() {
     // Its help line says what stopped it (not the help of an undefined name).
     let help = crate::error::Error::Rapid(err).help().expect("a help line");
     assert!(
-        help.contains("at most 100000000 minijinja instructions"),
+        help.contains("at most 16000000 of minijinja's fuel"),
         "{help}"
     );
+    // A template that writes past the module's cap: refused at the expression that passes it
+    // (line 2), having kept no more than the cap (before: gigabytes written until the memory ran
+    // out, the fuel counting instructions only).
+    let big = "MODULE x\n{% for i in range(100000) %}{{ 'x' * 1000 }}\n{% endfor %}";
+    let t = ModuleTemplate::user(path, big.into()).expect("compiles");
+    let err = render_with(&small_program(), &t).expect_err("over the cap");
+    match &err {
+        RapidError::UserTemplate(TemplateError::Invalid { line, over_cap, .. }) => {
+            assert_eq!((*line, *over_cap), (Some(2), true), "{err}")
+        }
+        e => panic!("{e}"),
+    }
+    let help = crate::error::Error::Rapid(err).help().expect("a help line");
+    assert!(help.contains("at most 64 MiB"), "{help}");
+    // A macro doubling a string 40 times (a terabyte): the fuel counts the bytes it makes.
+    let doubling = "{% macro d(s, n) %}{% if n > 0 %}{{ d(s ~ s, n - 1) }}{% else %}{{ s }}{% endif %}{% endmacro %}{{ d('x', 40) | length }}";
+    let t = ModuleTemplate::user(path, doubling.into()).expect("compiles");
+    let err = render_with(&small_program(), &t).expect_err("out of fuel");
+    assert!(err.to_string().contains("out of fuel"), "{err}");
+    // A tag of a million operators is refused before it is parsed (before: a stack overflow).
+    let chain = format!("{{{{ 1{} }}}}", " + 1".repeat(1_000_000));
+    assert!(matches!(
+        ModuleTemplate::user(path, chain),
+        Err(TemplateError::Invalid { line: Some(1), .. })
+    ));
     let undefined = ModuleTemplate::user(path, "{{ no_such_name }}".into()).expect("compiles");
     let err = render_with(&small_program(), &undefined).expect_err("strict");
     let help = crate::error::Error::Rapid(err).help().expect("a help line");

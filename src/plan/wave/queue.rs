@@ -116,7 +116,7 @@ pub(super) fn number_scalar<W: Word, G: Graph + ?Sized>(
             }
             let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
             if l == W::default() {
-                let code = cs.code_index(i);
+                let code = cs.code_in(m);
                 if code & FREE == 0 {
                     continue;
                 }

@@ -5,8 +5,10 @@
 //! are its two ends, so its other words are not spread again level after level), and finds the
 //! next candidates by groups of rows marked, in ascending order (no list of touched rows). In
 //! the row wave, the free nodes a graph need not look at ([`Graph::look_bits`]: for a leg, those
-//! whose code says the tool stays clear) come a word at a time from the grid's row bit set
-//! ([`CSpace::row_bits`]). The row wave keeps no numbers: it keeps each numbered node's number
+//! whose code says the tool stays clear) come a word at a time from the grid's row words
+//! ([`Row::plain`](crate::plan::cspace::Row::plain)). Before each level the wave asks the grid
+//! for the blocks around its front ([`CSpace::inspect_around`]): the grid is inspected as the
+//! wave reaches it. The row wave keeps no numbers: it keeps each numbered node's number
 //! modulo 3 in two bit planes (2 bits a node, written a word at a time per level), which is all
 //! a walk back needs. A walk knows the number of the node it stands on (it starts at the end,
 //! numbered n), and in this wave every step between numbered nodes is a wave step, so a
@@ -15,7 +17,7 @@
 
 use super::reach::Reach;
 use super::{label_word, residue_code, Graph, Labels};
-use crate::plan::cspace::{CSpace, Node, FREE, ROW_BITS_MAX_BYTES};
+use crate::plan::cspace::{CSpace, Node, FREE};
 use crate::zeroed::ZeroBuf;
 
 /// The expansion for 26 neighbours over a graph whose every step between usable nodes is a
@@ -27,10 +29,10 @@ use crate::zeroed::ZeroBuf;
 /// its number's residue code picks ([`Labels::Residues`]: 2 bits a node, no node written one by
 /// one, nothing to clear and no number too long), so a level costs a few word operations per
 /// front word and per row it reaches, and one look per node it numbers. When the graph names
-/// the code bits its answer depends on ([`Graph::look_bits`]), the free nodes without them come
-/// a word at a time from the grid's row bit set ([`CSpace::row_bits`], grids up to
-/// [`ROW_BITS_MAX_BYTES`] of it): numbered without a look; only the other candidates (blocked,
-/// or with those bits) are looked at one by one. No node past the end in the end's word is
+/// the code bits its answer depends on ([`Graph::look_bits`]) and the grid keeps its row words
+/// for those bits ([`CSpace::kept_bits`]), the free nodes without them come a word at a time
+/// from the row words: numbered without a look; only the other candidates (blocked, or with
+/// those bits) are looked at one by one. No node past the end in the end's word is
 /// looked at. `K`: the words a row, or 0 for any number. Returns the labels and the end's
 /// number, `None` when the end cannot be reached.
 pub(super) fn number_rows<G: Graph + ?Sized, const K: usize>(
@@ -71,8 +73,9 @@ pub(super) struct RowWave<'a, G: Graph + ?Sized, const K: usize> {
     cs: &'a CSpace,
     graph: &'a G,
     pub(super) reach: Reach<K>,
-    /// The grid's row bit set of the free nodes usable without a look, if any.
-    rows_kept: Option<std::sync::Arc<crate::plan::cspace::RowBits>>,
+    /// Whether the grid's row words ([`Row::plain`](crate::plan::cspace::Row::plain)) are the
+    /// free nodes usable without a look.
+    plain: bool,
     /// The bits of a row's last word that are nodes.
     last_mask: u64,
     /// The end's word, its bit, and its bits up to the end's (no end: a word past the grid).
@@ -129,15 +132,12 @@ impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
             Some(e) => ((e / d2) * words + (e % d2) / 64, 1u64 << ((e % d2) % 64)),
             None => (usize::MAX, 1),
         };
-        let rows_kept = graph
-            .look_bits()
-            .filter(|_| rows * words * 8 <= ROW_BITS_MAX_BYTES)
-            .map(|bits| cs.row_bits(bits));
+        let plain = graph.look_bits().is_some() && graph.look_bits() == cs.kept_bits();
         RowWave {
             cs,
             graph,
             reach,
-            rows_kept,
+            plain,
             last_mask,
             end_word,
             end_bit,
@@ -179,9 +179,8 @@ impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
         self.reach.spread(&self.front);
         let (cs, graph) = (self.cs, self.graph);
         let d1 = cs.grid.dims[1];
-        let d2 = cs.grid.dims[2];
         let words = self.reach.words;
-        let plain = self.rows_kept.as_deref().map(|r| r.plain.as_slice());
+        let plain = self.plain;
         let (last_mask, end_word, end_bit, upto_end) =
             (self.last_mask, self.end_word, self.end_bit, self.upto_end);
         let (decided, planes, next_front) =
@@ -191,6 +190,11 @@ impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
         let keep = self
             .bound
             .map(|(to, steps)| (to, steps - i64::from(next - 1)));
+        // The blocks this level reads, inspected together (on all cores when there are several).
+        cs.inspect_around(
+            self.front.iter().map(|&(w, _)| w / words),
+            keep.map(|(to, r)| ([to[0], to[1]], r)),
+        );
         let pruned = &mut self.pruned;
         let ended = self.reach.drain(first, last, |t, j, w, taken| {
             let mut c = taken & !decided[w];
@@ -216,16 +220,17 @@ impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
                 c &= upto_end;
             }
             decided[w] |= c;
-            let base = t * d2 + j * 64;
+            let row = cs.row(t);
             // The usable candidates: the plain ones at once, the others looked at.
-            let (mut numbered, mut look) = match plain {
-                Some(p) => (c & p[w], c & !p[w]),
-                None => (0, c),
+            let (mut numbered, mut look) = if plain {
+                (c & row.plain[j], c & !row.plain[j])
+            } else {
+                (0, c)
             };
             while look != 0 {
                 let b = look.trailing_zeros() as usize;
                 look &= look - 1;
-                let code = cs.code_index(base + b);
+                let code = row.code[j * 64 + b];
                 if code & FREE != 0
                     && graph.node_ok_coded(
                         [(t / d1) as i32, (t % d1) as i32, (j * 64 + b) as i32],
@@ -303,15 +308,20 @@ mod tests {
     /// Random codes: free or blocked, and free nodes with or without a "look" bit (0x40, like
     /// the tool-near bit); a graph that refuses a third of the nodes with the bit, pseudo-
     /// randomly, and accepts every other free node. The row wave that numbers the nodes without
-    /// the bit from the grid's row bit set (`look_bits` `Some(0x40)`) and the one that looks at
-    /// every node (`None`) give every node below the end's number its breadth-first distance
-    /// over the usable nodes. A graph that wrongly says its answer needs no bits
-    /// (`Some(0)`) numbers refused nodes, and the same check catches it.
+    /// the bit from the grid's row words (`look_bits` `Some(0x40)`, the bits the grid keeps)
+    /// and the one that looks at every node (`None`) give every node below the end's number its
+    /// breadth-first distance over the usable nodes. A graph that wrongly says its answer needs
+    /// no bits (`Some(0)`, on a grid keeping the row words of every free node) numbers refused
+    /// nodes, and the same check catches it.
     #[test]
     fn row_wave_from_the_row_bits_numbers_like_the_look_at_every_node() {
         use crate::plan::search::testing::hash;
-        struct Codes;
+        /// The codes, with the row words of the bits given kept.
+        struct Codes(Option<u8>);
         impl crate::plan::cspace::Inspector for Codes {
+            fn row_bits_ahead(&self) -> Option<u8> {
+                self.0
+            }
             fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], code: &mut [u8], _: &mut [u8]) {
                 for (c, &z) in code.iter_mut().zip(a3) {
                     let h = hash([a1 as i32, a2 as i32, z as i32], 1);
@@ -345,7 +355,7 @@ mod tests {
         // used (the row words a constant); 450: eight words (their number read at run time).
         for d2 in [128usize, 130, 450] {
             let g = Grid::over([[0.0, 19.0], [0.0, 15.0], [0.0, (d2 - 1) as f64]], 1.0);
-            let cs = CSpace::build(g, &Codes);
+            let cs = CSpace::build(g, &Codes(Some(0x40)));
             let looked = (0..g.len())
                 .filter(|&i| cs.code_index(i) & (FREE | 0x40) == FREE | 0x40)
                 .count();
@@ -386,9 +396,12 @@ mod tests {
                     assert_eq!(w.n(), n, "{bits:?}");
                     assert_eq!(wrong(&w, n), 0, "{bits:?}");
                 }
+                // The row words of every free node kept, and a graph that says none needs a
+                // look.
+                let all = CSpace::build(g, &Codes(Some(0)));
                 let lying = expand(
-                    &cs,
-                    &Tool(&cs, Some(0)),
+                    &all,
+                    &Tool(&all, Some(0)),
                     start,
                     g.node(end),
                     Connectivity::TwentySix,

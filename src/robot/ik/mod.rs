@@ -1,11 +1,13 @@
 //! Inverse kinematics: controller values for a position the cell gives.
 //!
 //! [`wrist`] solves axes 1..3 for a wrist-centre position in closed form (the paper's lumped
-//! arm, section 3); [`six`] solves all six axes for a tool pose (all solutions, confdata, the chooser). This file holds what
+//! arm, section 3); [`six`] solves all six axes for a tool pose (all solutions, confdata, the chooser);
+//! [`follow`] follows a TCP path (a process move's line or arc) with the solution that continues. This file holds what
 //! they share: the branch names a cell may force, the solution type and the errors, each of
 //! which says why (out of reach by how much, which axis out of range by how much, which link
 //! hits which obstacle).
 
+pub mod follow;
 pub mod six;
 pub mod wrist;
 

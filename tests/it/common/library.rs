@@ -1,7 +1,7 @@
 //! Every path into the `gen_rapid` library that the integration tests use, in one place (the rest
 //! of the tests drive the binary or read files). When the library's modules move, mend them here.
 
-pub use gen_rapid::cell::{Base, Cell, Target, Tool, ToolGeometry};
+pub use gen_rapid::cell::{ActionKind, Base, Cell, Target, Tool, ToolGeometry};
 pub use gen_rapid::place::Survey;
 pub use gen_rapid::robot::{LinkFrame, Robot};
 
@@ -11,7 +11,6 @@ use gen_rapid::output::rapid::ModuleTemplate;
 use gen_rapid::pipeline::{self, Options};
 use gen_rapid::place::Placed;
 use gen_rapid::plan::{Certified, Method, Route};
-use gen_rapid::progress::Silent;
 use gen_rapid::refine::{Plan, Refined};
 use std::path::Path;
 
@@ -133,7 +132,7 @@ fn placed_and_inspected(
         robot,
     };
     let placed = pipeline::place(&job).map_err(|e| e.to_string())?;
-    let inspected = pipeline::inspect(&job, &placed, grid_deg, &Silent);
+    let inspected = pipeline::inspect(&job, &placed, grid_deg);
     Ok((job, placed, inspected))
 }
 
@@ -211,11 +210,68 @@ pub fn paper_and_refined(cell: &Cell, grid_deg: f64) -> Result<PaperAndRefined, 
     let module = pipeline::render(&job, &placed, &plan, &ModuleTemplate::embedded())
         .map(|r| r.text)
         .map_err(|e| e.to_string())?;
+    let paper = plan
+        .paper
+        .ok_or("the plan stage's route is the paper's: a figure")?;
     Ok(PaperAndRefined {
-        paper: (plan.paper.moves, plan.paper.time_s),
+        paper: (paper.moves, paper.time_s),
         refined: (plan.route.moves(), plan.total_s),
         paper_route: six(&route),
         refined_route: six(&plan.route),
         refined_module: module,
     })
+}
+
+/// A robot read from URDF text and controller-file text (as if from `urdf` and `controller`):
+/// `Err` is the refusal rendered as the user sees it (a cell pointing at the robot files), with
+/// its exit status.
+pub fn robot_from_texts(
+    urdf: &Path,
+    urdf_text: &str,
+    controller: &Path,
+    controller_text: Option<&str>,
+) -> Result<Robot, Refusal> {
+    gen_rapid::robot::urdf::robot_from_urdf(
+        urdf,
+        urdf_text,
+        controller_text.map(|t| (controller, t)),
+    )
+    .map_err(|source| {
+        refusal(
+            Error::Robot {
+                source,
+                loc: Default::default(),
+            },
+            "cell.yaml",
+            None,
+        )
+    })
+}
+
+/// Renders the trunk cell's plan (10 deg grid) through each template text given: the module
+/// text, or the refusal (a template error is exit 1, located in the template).
+pub struct TemplateBench {
+    job: pipeline::Loaded,
+    placed: Placed,
+    plan: Plan,
+}
+
+impl TemplateBench {
+    pub fn new() -> TemplateBench {
+        let path = super::root().join("cells/trunk.yaml");
+        let job = pipeline::load(&path).unwrap_or_else(|f| panic!("{}", f.render()));
+        let out = pipeline::run(&job, &Options::new(Method::Extensile, 10.0))
+            .unwrap_or_else(|h| panic!("{}", h.error));
+        let (placed, plan) = (out.placed, out.plan);
+        TemplateBench { job, placed, plan }
+    }
+
+    /// The template `source` (as if read from `path`): compiled, then rendered.
+    pub fn render(&self, path: &Path, source: &str) -> Result<String, Refusal> {
+        let template = gen_rapid::output::rapid::ModuleTemplate::user(path, source.to_string())
+            .map_err(|e| refusal(Error::Template(e), "cell.yaml", None))?;
+        pipeline::render(&self.job, &self.placed, &self.plan, &template)
+            .map(|r| r.text)
+            .map_err(|e| refusal(e, "cell.yaml", None))
+    }
 }

@@ -13,6 +13,7 @@ pub mod links;
 pub mod module;
 pub mod opw;
 pub mod paths;
+pub mod process;
 pub mod program;
 pub mod reach;
 pub mod routine;
@@ -23,7 +24,7 @@ pub mod tcp;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-/// The search methods as the cell format spells them (`planner.method`, `--planner`; README).
+/// The search methods as the cell format spells them (`planner.method`, `--planner`; docs/cell.md).
 /// `cli::help_teaches_the_format_examples_and_exit_statuses` holds them against `--help`.
 pub const METHODS: [&str; 3] = ["neighboring", "depth-first", "extensile"];
 

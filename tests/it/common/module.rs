@@ -12,7 +12,7 @@
 //! `RelTool`'s first argument) a declared robtarget (a `MoveL` to a jointtarget is refused), a
 //! `\WObj:=` a declared wobjdata or `wobj0`, a `GripLoad` a declared loaddata or `load0`.
 
-use super::routine::{self, Action, Instruction, MoveKind, Statement};
+use super::routine::{self, Action, Instruction, MoveKind, Statement, ToPoint};
 
 /// What a module says.
 #[derive(Clone, Debug)]
@@ -385,6 +385,132 @@ impl Module {
             Instruction::Action(_) => false,
             Instruction::ConfJ(_) | Instruction::ConfL(_) => true,
         })
+    }
+
+    /// The joint moves as the controller runs them: [`targets`](Self::targets),
+    /// [`moves`](Self::moves) and [`move_args`](Self::move_args) rebuilt in the routine's
+    /// order from every `MoveAbsJ` (its jointtarget as written) and every `MoveJ` to a robtarget
+    /// `<point>_rt` (named `<point>`, its joints the independent inverse kinematics of the
+    /// robtarget as written, through the tooldata and wobjdata it names, robot base at
+    /// `cell_from_robot`, of the written confdata: ConfJ on; of several such solutions, the one
+    /// nearest the joints before). An error when a robtarget has no such solution, or when the
+    /// routine has a `MoveL` or `MoveC` (not a joint move).
+    pub fn resolve_joint_moves(
+        &mut self,
+        robot: &super::library::Robot,
+        cell_from_robot: &nalgebra::Isometry3<f64>,
+    ) -> Result<(), String> {
+        self.resolve_moves(robot, cell_from_robot, false)
+    }
+
+    /// [`resolve_joint_moves`](Self::resolve_joint_moves), where a `MoveL` or `MoveC` and a
+    /// `RelTool` target are taken too, by where they end (the robtarget, moved by `RelTool`, in
+    /// its confdata; named `<point>`, `<point>_app` for a MoveJ to a RelTool pose and
+    /// `<point>_ret` for a MoveL to one, as the report names them): the waypoints of a module
+    /// with process moves, not the paths between them (`process.rs` runs those).
+    pub fn resolve_waypoints(
+        &mut self,
+        robot: &super::library::Robot,
+        cell_from_robot: &nalgebra::Isometry3<f64>,
+    ) -> Result<(), String> {
+        self.resolve_moves(robot, cell_from_robot, true)
+    }
+
+    fn resolve_moves(
+        &mut self,
+        robot: &super::library::Robot,
+        cell_from_robot: &nalgebra::Isometry3<f64>,
+        process: bool,
+    ) -> Result<(), String> {
+        use super::opw::{max_diff, Ik};
+        let ik = Ik::new(robot)?;
+        let iso = |v: &[f64]| {
+            nalgebra::Isometry3::from_parts(
+                nalgebra::Translation3::new(v[0], v[1], v[2]),
+                nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+                    v[3], v[4], v[5], v[6],
+                )),
+            )
+        };
+        let mut targets: Vec<(String, [f64; 6])> = Vec::new();
+        let mut moves = Vec::new();
+        let mut move_args = Vec::new();
+        let motions: Vec<(String, routine::Motion)> = self
+            .motions()
+            .map(|(s, m)| (s.label(), m.clone()))
+            .collect();
+        for (label, m) in motions {
+            let name = m.to.data().to_string();
+            let (point, axes) = match m.kind {
+                MoveKind::AbsJ => {
+                    let axes = self.target(&name);
+                    (name.clone(), axes)
+                }
+                MoveKind::J | MoveKind::L | MoveKind::C
+                    if process || (m.kind == MoveKind::J && matches!(m.to, ToPoint::Name(_))) =>
+                {
+                    let r = self
+                        .robtarget(&name)
+                        .ok_or_else(|| format!("{label}: no robtarget {name}"))?;
+                    let tframe = match self.tooldata.iter().find(|(n, _)| *n == m.tool) {
+                        Some((_, t)) => iso(&t.tframe),
+                        None => nalgebra::Isometry3::identity(),
+                    };
+                    let uframe = match self
+                        .wobjdata
+                        .iter()
+                        .find(|(n, _)| Some(n) == m.wobj.as_ref())
+                    {
+                        Some((_, w)) => iso(w),
+                        None => nalgebra::Isometry3::identity(),
+                    };
+                    let pose = [r.pos_mm.as_slice(), r.quat_wxyz.as_slice()].concat();
+                    let offset = match &m.to {
+                        ToPoint::RelTool { offset_mm: d, .. } => {
+                            nalgebra::Translation3::new(d[0], d[1], d[2])
+                        }
+                        ToPoint::Name(_) => nalgebra::Translation3::identity(),
+                    };
+                    let tool0 =
+                        cell_from_robot.inverse() * uframe * iso(&pose) * offset * tframe.inverse();
+                    let before = targets.last().map(|t| t.1);
+                    let axes = ik
+                        .with_conf(&tool0, &r.conf)
+                        .into_iter()
+                        .map(|s| s.axes)
+                        .min_by(|a, b| {
+                            let d = |x: &[f64; 6]| before.map_or(0.0, |p| max_diff(x, &p));
+                            d(a).total_cmp(&d(b))
+                        })
+                        .ok_or_else(|| {
+                            format!("{label}: {name} has no solution of confdata {:?}", r.conf)
+                        })?;
+                    let point = name.strip_suffix("_rt").unwrap_or(&name);
+                    let point = match (&m.to, m.kind) {
+                        (ToPoint::RelTool { .. }, MoveKind::J) => format!("{point}_app"),
+                        (ToPoint::RelTool { .. }, _) => format!("{point}_ret"),
+                        _ => point.to_string(),
+                    };
+                    (point, axes)
+                }
+                _ => {
+                    return Err(format!("{label}: not a joint move to a name"));
+                }
+            };
+            moves.push(point.clone());
+            move_args.push(MoveArgs {
+                target: point.clone(),
+                speed: m.speed.clone(),
+                zone: m.zone.clone(),
+                tool: m.tool.clone(),
+                wobj: m.wobj.clone(),
+            });
+            targets.push((point, axes));
+        }
+        self.targets = targets;
+        self.moves = moves;
+        self.move_args = move_args;
+        Ok(())
     }
 
     /// The axes of target `name`.

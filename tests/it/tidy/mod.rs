@@ -17,11 +17,13 @@ use std::path::Path;
 const ORDER: &[&str] = &[
     "robot",
     "cell",
+    "budget",
     "place",
     "collision",
     "plan",
     "timing",
     "refine",
+    "process",
     "output",
     "error",
     "load",
@@ -31,6 +33,7 @@ const ORDER: &[&str] = &[
 
 /// The leaves: any stage may use them; they use no other module of the crate.
 const LEAVES: &[&str] = &[
+    "blank_key",
     "excerpt",
     "geometry",
     "input",

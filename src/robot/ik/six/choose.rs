@@ -5,9 +5,13 @@
 //! 1. the time of a synchronised joint move at the controller's axis speeds,
 //!    `max_i |b_i - a_i| / speed_i` (the axis that takes longest sets the duration), then
 //! 2. the Euclidean distance in degrees, `sqrt(sum_i (b_i - a_i)^2)`, then
-//! 3. the fixed order [`SixAxisIk::solve`] returns (cfx, cf1, cf4, cf6, axis values).
+//! 3. the room to the limits, more first: each axis's distance to the nearer limit of its range,
+//!    sorted from the smallest, compared from the smallest on ([`SixAxisIk::rooms_deg`]), so that
+//!    of two solutions equally near the one further from a stop wins (from axis 6 at 100 deg,
+//!    280 and -80 are equally near; -80, 220 deg from its limit, wins over 280, 20 deg), then
+//! 4. the fixed order [`SixAxisIk::solve`] returns (cfx, cf1, cf4, cf6, axis values).
 //!
-//! Ties in 1 and 2 are exact comparisons of floating-point numbers, so the result is
+//! Ties in 1, 2 and 3 are exact comparisons of floating-point numbers, so the result is
 //! deterministic. Without a previous point the zero pose (all axes 0, the calibration position
 //! of ABB arms) stands in for it. Differences are plain differences of controller values (no
 //! wrapping): an axis moves through its range, not across +-180.
@@ -40,6 +44,16 @@ pub fn move_cost(from: &Axes6, to: &Axes6, speeds_deg_s: &[f64; 6]) -> MoveCost 
         seconds,
         euclidean_deg: sum.sqrt(),
     }
+}
+
+/// `Less` when rooms `a` (smallest first) leave more room than `b`: the first that differs is
+/// larger.
+fn more_room(a: &[f64; 6], b: &[f64; 6]) -> std::cmp::Ordering {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| y.total_cmp(x))
+        .find(|o| o.is_ne())
+        .unwrap_or(std::cmp::Ordering::Equal)
 }
 
 /// Why no solution was chosen. `R` is the caller's refusal reason.
@@ -116,6 +130,16 @@ impl SixAxisIk {
         std::array::from_fn(|i| self.robot.controller.axes[i].speed_deg_s)
     }
 
+    /// The room of `axes` to the limits, deg: each axis's distance to the nearer limit of its
+    /// range, smallest first (the metric's third key).
+    pub fn rooms_deg(&self, axes: &Axes6) -> [f64; 6] {
+        let ranges = &self.robot.controller.axes;
+        let mut r: [f64; 6] =
+            std::array::from_fn(|i| (axes[i] - ranges[i].min_deg).min(ranges[i].max_deg - axes[i]));
+        r.sort_by(f64::total_cmp);
+        r
+    }
+
     /// Sorts solutions by the module's metric from `previous` (the zero pose when `None`);
     /// stable, so exact ties keep their order.
     pub fn order_by_move(&self, solutions: &mut [Solution], previous: Option<&Axes6>) {
@@ -129,13 +153,15 @@ impl SixAxisIk {
             ca.seconds
                 .total_cmp(&cb.seconds)
                 .then(ca.euclidean_deg.total_cmp(&cb.euclidean_deg))
+                .then_with(|| more_room(&self.rooms_deg(&a.axes_deg), &self.rooms_deg(&b.axes_deg)))
         });
     }
 
     /// Chooses one solution for a tool0 pose (robot base frame, mm).
     ///
-    /// With `wanted` confdata: the solutions of that configuration (one, except at singular
-    /// poses; several are ordered by the metric). Without: all solutions, ordered by the metric
+    /// With `wanted` confdata: the solutions of that configuration, a value on a quadrant
+    /// boundary admitted for both quadrants ([`SixAxisIk::conf_admits`]; one solution, except
+    /// at singular poses; several are ordered by the metric). Without: all solutions, ordered by the metric
     /// from `previous`. The first that `is_acceptable` accepts wins (the caller's collision
     /// check; its refusals are kept). `previous` also settles the singular choices.
     pub fn choose<R>(
@@ -155,7 +181,7 @@ impl SixAxisIk {
                 let pool: Vec<Solution> = analysis
                     .solutions
                     .iter()
-                    .filter(|s| s.conf == w)
+                    .filter(|s| self.conf_admits(&s.axes_deg, w))
                     .copied()
                     .collect();
                 if pool.is_empty() {

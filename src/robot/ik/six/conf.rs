@@ -9,6 +9,23 @@
 //! - cfx, 0..7: `4 * (wrist centre behind axis 1) + 2 * (wrist centre behind the lower arm)
 //!   + 1 * (axis 5 negative)`.
 //!
+//! # On a quadrant boundary: one rule
+//! A solution of the inverse kinematics is a float: an axis the pose puts on a boundary comes
+//! out a hair either side of it (`-1e-15` for 0, `179.99999999999997` for 180), and the module
+//! writes it rounded to 0.001 deg (`0.000`, `180.000`). So:
+//! - **The confdata of values** ([`SixAxisIk::conf`]) is that of the values *as written*: the
+//!   quadrant of each of axes 1, 4, 6 rounded to [`JOINT_DECIMALS`] decimals (`-0` counting as
+//!   0), and "axis 5 negative" of axis 5 rounded the same way. A robtarget's written confdata
+//!   and its written joint values then always agree.
+//! - **A value admitted for a quadrant** ([`SixAxisIk::conf_admits`], the choice by confdata): it
+//!   lies within [`QUADRANT_TOL_DEG`] (half the written step) of the quadrant's closed interval
+//!   `[90 cf, 90 (cf + 1)]`; axis 5 within it of its side of 0. A value on a boundary is admitted
+//!   for both quadrants, so the confdata written for a pose (rounded, as above) and the one its
+//!   unrounded solution has both choose that solution. No two solutions of one pose are confused
+//!   by the tolerance: they differ by a full turn of an axis, by the wrist flip (axes 4 and 6 by
+//!   half a turn) or in the cfx bits of the arm, each far beyond it (at the exact wrist
+//!   singularity the flip is one solution anyway).
+//!
 //! Readings (the manual gives pictures, not formulas):
 //! - **Behind axis 1**: the wrist centre's component along the arm's forward direction (the
 //!   zero pose's direction from axis 1 to the wrist centre, normal to axes 1 and 2, turned by
@@ -23,7 +40,8 @@
 //! - **Behind the lower arm**: the wrist centre lies on the other side of the line axis 2 ->
 //!   axis 3 than at the zero pose (the elbow bent the other way). On the IRB 1400 the coupled
 //!   axis-3 range keeps it in front in every pose within the limits.
-//! - **Axis 5 negative**: the controller value of axis 5 is below 0 (0 counts as positive).
+//! - **Axis 5 negative**: the controller value of axis 5, rounded as written, is below 0 (0
+//!   counts as positive).
 //! - On a boundary (the wrist centre exactly on axis 1's plane or on the lower arm's line) the
 //!   wrist centre counts as in front; these are singular poses.
 //!
@@ -32,6 +50,7 @@
 //! still names the configuration a cell asks for.
 
 use super::SixAxisIk;
+use crate::precision::{round, JOINT_DECIMALS};
 use crate::robot::Axes6;
 use nalgebra::Rotation3;
 use std::fmt;
@@ -79,12 +98,43 @@ impl fmt::Display for ConfData {
     }
 }
 
-/// `floor(axis / 90 deg)`.
+/// A value this close to a quadrant's closed interval is admitted for it, deg: half the step
+/// of the written joint values (module docs, "On a quadrant boundary").
+pub const QUADRANT_TOL_DEG: f64 = 0.0005;
+
+/// `floor(axis / 90 deg)` of the value rounded as written (`-0` is 0: `floor(-0.0)` is `-0.0`,
+/// which converts to 0).
 pub(super) fn quadrant(axis_deg: f64) -> i32 {
-    (axis_deg / 90.0).floor() as i32
+    (round(axis_deg, JOINT_DECIMALS) / 90.0).floor() as i32
+}
+
+/// Whether `axis_deg` lies within [`QUADRANT_TOL_DEG`] of quadrant `cf`, `[90 cf, 90 (cf + 1)]`.
+fn admitted(axis_deg: f64, cf: i32) -> bool {
+    let lo = 90.0 * f64::from(cf);
+    axis_deg >= lo - QUADRANT_TOL_DEG && axis_deg <= lo + 90.0 + QUADRANT_TOL_DEG
 }
 
 impl SixAxisIk {
+    /// Whether controller values `axes_deg` are a solution of configuration `wanted` (module
+    /// docs, "On a quadrant boundary"): axes 1, 4 and 6 each admitted for its quadrant, axis 5
+    /// within [`QUADRANT_TOL_DEG`] of the side of 0 the cfx asks, and the wrist centre on the
+    /// sides of axis 1 and the lower arm the cfx asks. A cfx outside 0..7 admits nothing.
+    pub fn conf_admits(&self, axes_deg: &Axes6, wanted: ConfData) -> bool {
+        let own = self.conf(axes_deg);
+        let axis5 = axes_deg[4];
+        let side5 = if wanted.cfx & 1 == 1 {
+            axis5 <= QUADRANT_TOL_DEG
+        } else {
+            axis5 >= -QUADRANT_TOL_DEG
+        };
+        (0..8).contains(&wanted.cfx)
+            && own.cfx & 6 == wanted.cfx & 6
+            && side5
+            && admitted(axes_deg[0], wanted.cf1)
+            && admitted(axes_deg[3], wanted.cf4)
+            && admitted(axes_deg[5], wanted.cf6)
+    }
+
     /// The confdata of controller values under either reading of "behind axis 1".
     pub fn conf_with(&self, axes_deg: &Axes6, reading: BehindAxis1From) -> ConfData {
         let q = self.coupling.urdf_rad(axes_deg);
@@ -101,7 +151,7 @@ impl SixAxisIk {
         let behind_axis1 = forward.dot(&(w - from)) < 0.0;
         let sigma = u2.dot(&(elbow - shoulder).cross(&(w - shoulder)));
         let behind_lower_arm = sigma * self.front_sign < 0.0;
-        let axis5_negative = axes_deg[4] < 0.0;
+        let axis5_negative = round(axes_deg[4], JOINT_DECIMALS) < 0.0;
         ConfData {
             cf1: quadrant(axes_deg[0]),
             cf4: quadrant(axes_deg[3]),

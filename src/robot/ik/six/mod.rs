@@ -58,7 +58,9 @@
 //! (RAPID reference manual, `confdata`). "Behind axis 1" is measured from axis 1 itself
 //! ([`CFX_BEHIND_AXIS_1_FROM`]; `conf.rs` says why, and keeps the alternative). With that reading
 //! the cfx bits are exactly the three branch choices above, so every solution of a pose has its
-//! own confdata, apart from the singular poses.
+//! own confdata, apart from the singular poses. On a quadrant boundary one rule holds
+//! (`conf.rs`): the confdata of values is that of the values rounded as written, and a value
+//! within [`QUADRANT_TOL_DEG`] of a quadrant is admitted for it when choosing by confdata.
 //!
 //! # Choosing one
 //! [`SixAxisIk::choose`] takes the confdata a robtarget asks for, or else orders the solutions
@@ -88,7 +90,11 @@
 //! URDF chain), a different computation from the one solved here.
 
 mod bound;
+#[cfg(test)]
+mod boundary_tests;
 mod choose;
+#[cfg(test)]
+mod choose_tests;
 mod conf;
 mod error;
 mod solve;
@@ -97,7 +103,7 @@ mod tests;
 
 pub use bound::PoseBound;
 pub use choose::{move_cost, ChooseError, MoveCost};
-pub use conf::{BehindAxis1From, ConfData, CFX_BEHIND_AXIS_1_FROM};
+pub use conf::{BehindAxis1From, ConfData, CFX_BEHIND_AXIS_1_FROM, QUADRANT_TOL_DEG};
 pub use error::{describe_violation, excess_deg, Candidate, SixAxisError};
 
 use crate::robot::{Axes6, Robot};
@@ -431,7 +437,8 @@ impl SixAxisIk {
         Ok(self.analyse(tool0, previous)?.candidates)
     }
 
-    /// The confdata of controller values (any values, in range or not).
+    /// The confdata of controller values (any values, in range or not), as written: of the
+    /// values rounded to the written precision (`conf.rs`).
     pub fn conf(&self, axes_deg: &Axes6) -> ConfData {
         self.conf_with(axes_deg, CFX_BEHIND_AXIS_1_FROM)
     }

@@ -24,30 +24,7 @@ impl SixAxisIk {
         tool0: &Isometry3<f64>,
         previous: Option<&Axes6>,
     ) -> Result<Analysis, SixAxisError> {
-        let finite = tool0.translation.vector.iter().all(|v| v.is_finite())
-            && tool0.rotation.coords.iter().all(|v| v.is_finite());
-        if !finite {
-            return Err(SixAxisError::NotFinite);
-        }
-        let reference = previous
-            .map(|p| self.coupling.urdf_rad(p))
-            .unwrap_or([0.0; 6]);
-        let w = tool0 * Point3::from(self.wrist_in_tool0);
-        let wrist_mm = [w.x, w.y, w.z];
-        let arms = self.arm_solutions(&w, &reference)?;
-        let r_target = tool0.rotation.to_rotation_matrix()
-            * self.tool0_zero.rotation.to_rotation_matrix().inverse();
-        let mut bases: Vec<Axes6> = Vec::with_capacity(8);
-        for arm in &arms {
-            let m = self.rotation(&arm[..3], 0).inverse() * r_target;
-            for wrist in self.wrist_solutions(&m, reference[3]) {
-                let q = [arm[0], arm[1], arm[2], wrist[0], wrist[1], wrist[2]];
-                let axes = self.coupling.controller_deg(&q).map(wrap_deg);
-                if !bases.iter().any(|b| same(b, &axes)) {
-                    bases.push(axes);
-                }
-            }
-        }
+        let (wrist_mm, bases) = self.bases(tool0, previous)?;
         let mut solutions = Vec::new();
         let mut candidates = Vec::new();
         for base in &bases {
@@ -79,6 +56,52 @@ impl SixAxisIk {
             solutions,
             candidates,
         })
+    }
+
+    /// Every branch of a tool0 pose (robot base frame, mm), each axis wrapped into (-180, 180]
+    /// and no range applied: up to 8 (arm stance, elbow, wrist flip), in the solver's fixed
+    /// order. `previous` settles the singular choices (module docs). What a caller that turns
+    /// the axes itself needs, such as the continuing inverse (`ik::follow`); an error only for a
+    /// pose that is not finite or out of the arm's reach.
+    pub fn branches(
+        &self,
+        tool0: &Isometry3<f64>,
+        previous: Option<&Axes6>,
+    ) -> Result<Vec<Axes6>, SixAxisError> {
+        Ok(self.bases(tool0, previous)?.1)
+    }
+
+    /// The wrist centre of a tool0 pose and its branches ([`branches`](Self::branches)).
+    fn bases(
+        &self,
+        tool0: &Isometry3<f64>,
+        previous: Option<&Axes6>,
+    ) -> Result<([f64; 3], Vec<Axes6>), SixAxisError> {
+        let finite = tool0.translation.vector.iter().all(|v| v.is_finite())
+            && tool0.rotation.coords.iter().all(|v| v.is_finite());
+        if !finite {
+            return Err(SixAxisError::NotFinite);
+        }
+        let reference = previous
+            .map(|p| self.coupling.urdf_rad(p))
+            .unwrap_or([0.0; 6]);
+        let w = tool0 * Point3::from(self.wrist_in_tool0);
+        let wrist_mm = [w.x, w.y, w.z];
+        let arms = self.arm_solutions(&w, &reference)?;
+        let r_target = tool0.rotation.to_rotation_matrix()
+            * self.tool0_zero.rotation.to_rotation_matrix().inverse();
+        let mut bases: Vec<Axes6> = Vec::with_capacity(8);
+        for arm in &arms {
+            let m = self.rotation(&arm[..3], 0).inverse() * r_target;
+            for wrist in self.wrist_solutions(&m, reference[3]) {
+                let q = [arm[0], arm[1], arm[2], wrist[0], wrist[1], wrist[2]];
+                let axes = self.coupling.controller_deg(&q).map(wrap_deg);
+                if !bases.iter().any(|b| same(b, &axes)) {
+                    bases.push(axes);
+                }
+            }
+        }
+        Ok((wrist_mm, bases))
     }
 
     /// URDF `(q1, q2, q3)` (rad) putting the wrist centre at `w`, up to four.

@@ -2,6 +2,9 @@
 //! the user's module template (`pipeline::load_template`). Everything after it is a pure
 //! function of what it read, so a benchmark loads once and runs the rest as often as it likes.
 
+mod budgets;
+pub use budgets::check_budgets;
+
 use crate::cell::{self, Cell};
 use crate::error::{Error, Failure};
 use crate::excerpt;

@@ -1,0 +1,195 @@
+//! The grid against its statement: the lattice over the ranges, a node's code as its column
+//! alone gives it, and the grid inspected as it is read against the whole grid inspected first.
+
+use super::*;
+
+#[test]
+fn lattice_covers_the_ranges_at_multiples_of_the_step() {
+    let g = Grid::over([[-170.0, 170.0], [-70.0, 70.0], [-65.0, 70.0]], 1.0);
+    assert_eq!(g.dims, [341, 141, 136]);
+    assert_eq!(g.axes_deg([0, 0, 0]), [-170.0, -70.0, -65.0]);
+    let g = Grid::over([[-170.0, 170.0], [-70.0, 70.0], [-65.0, 70.0]], 3.0);
+    // -168 .. 168, -69 .. 69, -63 .. 69
+    assert_eq!(g.dims, [113, 47, 45]);
+    assert_eq!(g.axes_deg([0, 0, 0]), [-168.0, -69.0, -63.0]);
+}
+
+#[test]
+fn index_and_node_are_inverse() {
+    let g = Grid::over([[-10.0, 10.0], [-5.0, 5.0], [0.0, 3.0]], 1.0);
+    for i in 0..g.len() {
+        assert_eq!(g.index(g.node(i)), i);
+    }
+    assert_eq!(g.node_at(&[3.0, -2.0, 1.0]), Some([13, 3, 1]));
+    assert_eq!(g.node_at(&[3.5, -2.0, 1.0]), None);
+    assert_eq!(g.node_at(&[30.0, -2.0, 1.0]), None);
+}
+
+#[test]
+fn nodes_near_are_sorted_by_distance() {
+    let g = Grid::over([[-10.0, 10.0], [-10.0, 10.0], [-10.0, 10.0]], 1.0);
+    let n = g.nodes_near(&[0.2, 0.7, 0.4], 1);
+    assert_eq!(n.len(), 8);
+    assert_eq!(g.axes_deg(n[0]), [0.0, 1.0, 0.0]);
+    assert_eq!(g.axes_deg(n[7]), [1.0, 0.0, 1.0]);
+}
+
+struct Ball;
+impl Inspector for Ball {
+    fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], code: &mut [u8], _: &mut [u8]) {
+        for (f, &c) in code.iter_mut().zip(a3) {
+            *f = if a1 * a1 + a2 * a2 + c * c > 25.0 {
+                FREE
+            } else {
+                0
+            };
+        }
+    }
+}
+
+#[test]
+fn parallel_build_matches_a_direct_fill() {
+    let g = Grid::over([[-9.0, 9.0], [-8.0, 8.0], [-7.0, 7.0]], 1.0);
+    let built = CSpace::build(g, &Ball);
+    let direct = CSpace::from_fn(g, |n| {
+        let v = g.axes_deg(n);
+        v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > 25.0
+    });
+    for i in 0..g.len() {
+        assert_eq!(built.code_index(i), direct.code_index(i));
+    }
+    assert!(built.free_count() < g.len());
+}
+
+/// Pseudo-random codes (free or not, any other bits) from the node's values.
+struct Noise(Option<u8>);
+impl Inspector for Noise {
+    fn row_bits_ahead(&self) -> Option<u8> {
+        self.0
+    }
+    fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], code: &mut [u8], _: &mut [u8]) {
+        for (f, &c) in code.iter_mut().zip(a3) {
+            let h = ((a1 * 7919.0 + a2 * 104_729.0 + c * 1_299_709.0) as i64)
+                .wrapping_mul(0x2545_f491_4f6c_dd1d) as u64
+                >> 40;
+            *f = if h & 3 == 0 {
+                0
+            } else {
+                FREE | (h >> 8) as u8 & 0x7f
+            };
+        }
+    }
+}
+
+/// The row words a block keeps, made 8 codes at a time, against each node's code read
+/// alone: pseudo-random codes (free or not, any other bits), rows of 1 to 130 nodes (partly
+/// used last words, whole words, several words), several sets of bits kept, blocks whole and
+/// cut short at the grid's edges; without kept bits no row words.
+#[test]
+fn row_words_match_each_nodes_code() {
+    for d2 in [1usize, 7, 63, 64, 65, 70, 128, 130] {
+        let g = Grid::over([[-4.0, 5.0], [-3.0, 3.0], [0.0, (d2 - 1) as f64]], 1.0);
+        for bits in [0u8, 0x40, 0x41, 0x7f, 0x08] {
+            let cs = CSpace::build(g, &Noise(Some(bits)));
+            let words = d2.div_ceil(64);
+            let (mut plain, mut looked) = (0, 0);
+            for t in 0..g.dims[0] * g.dims[1] {
+                let row = cs.row(t);
+                assert_eq!(row.plain.len(), words);
+                for z in 0..d2 {
+                    let code = cs.code_index(t * d2 + z);
+                    assert_eq!(row.code[z], code);
+                    let bit = row.plain[z / 64] >> (z % 64) & 1 == 1;
+                    let want = code & FREE != 0 && code & bits == 0;
+                    assert_eq!(bit, want, "d2 {d2} bits {bits:#x} row {t} z {z}");
+                    plain += usize::from(want);
+                    looked += usize::from(code & FREE != 0 && !want);
+                }
+                let past = if d2 % 64 == 0 { 0 } else { !0u64 << (d2 % 64) };
+                assert_eq!(row.plain[words - 1] & past, 0);
+            }
+            assert!(plain + looked > 0);
+            if bits == 0x40 && d2 >= 64 {
+                assert!(plain > 0 && looked > 0, "{d2}: {plain} {looked}");
+            }
+        }
+        let none = CSpace::build(g, &Noise(None));
+        assert!(none.row(0).plain.is_empty());
+    }
+}
+
+/// A grid inspected as it is read holds, node by node and column by column, the codes and
+/// bytes of the grid inspected whole; a read inspects the one block holding the node; the
+/// blocks around a row (and only those, within a bound when given) are inspected together.
+#[test]
+fn a_lazy_grid_reads_what_the_whole_inspection_holds() {
+    /// `Noise` with two column bytes from the column's values.
+    struct Own;
+    impl Inspector for Own {
+        fn column_bytes(&self) -> usize {
+            2
+        }
+        fn row_bits_ahead(&self) -> Option<u8> {
+            Some(0x40)
+        }
+        fn inspect_column(&self, a1: f64, a2: f64, a3: &[f64], code: &mut [u8], own: &mut [u8]) {
+            Noise(None).inspect_column(a1, a2, a3, code, own);
+            own[0] = a1 as i8 as u8;
+            own[1] = a2 as i8 as u8;
+        }
+    }
+    let g = Grid::over([[-17.0, 13.0], [-9.0, 10.0], [0.0, 70.0]], 1.0);
+    let whole = CSpace::build(g, &Own);
+    let lazy = CSpace::lazy(g, Arc::new(Own));
+    assert_eq!(lazy.inspected_blocks(), 0);
+    assert_eq!(whole.inspected_blocks(), whole.block_count());
+    let n = [9, 13, 5];
+    assert_eq!(lazy.code(n), whole.code(n));
+    assert_eq!(lazy.inspected_blocks(), 1);
+    assert_eq!(
+        lazy.column(n),
+        &[(9 - 17) as i8 as u8, (13 - 9) as i8 as u8]
+    );
+    // Around a row: the blocks holding the 3 x 3 rows about it.
+    let [d0, d1, d2] = g.dims;
+    let around = |cs: &CSpace, t: usize, bound| {
+        cs.inspect_around([t, t].into_iter(), bound);
+        cs.inspected_blocks()
+    };
+    let blocks_of = |rows: &[(i64, i64)]| {
+        let mut b: Vec<(i64, i64)> = rows
+            .iter()
+            .filter(|&&(i, j)| i >= 0 && j >= 0 && i < d0 as i64 && j < d1 as i64)
+            .map(|&(i, j)| (i / BLOCK_COLUMNS[0] as i64, j / BLOCK_COLUMNS[1] as i64))
+            .collect();
+        b.sort_unstable();
+        b.dedup();
+        b.len()
+    };
+    let fresh = CSpace::lazy(g, Arc::new(Own));
+    // A row at a block's corner (4, 4): its neighbours reach four blocks.
+    let corner = |i: i64, j: i64| [-1, 0, 1].map(|a| [-1, 0, 1].map(move |b| (i + a, j + b)));
+    let rows: Vec<(i64, i64)> = corner(4, 4).into_iter().flatten().collect();
+    assert_eq!(around(&fresh, 4 * d1 + 4, None), blocks_of(&rows));
+    assert_eq!(blocks_of(&rows), 4);
+    // Bounded to the row's own column band: only its own block.
+    let fresh = CSpace::lazy(g, Arc::new(Own));
+    assert_eq!(around(&fresh, 4 * d1 + 4, Some(([5, 5], 1))), 1);
+    // On the grid's edge.
+    let rows: Vec<(i64, i64)> = corner(0, 0).into_iter().flatten().collect();
+    let fresh = CSpace::lazy(g, Arc::new(Own));
+    assert_eq!(around(&fresh, 0, None), blocks_of(&rows));
+    // Every node in a scattered order: the same codes and bytes.
+    let mut next = crate::plan::search::testing::xorshift(0x9e37_79b9_7f4a_7c15);
+    for _ in 0..4000 {
+        let i = next() as usize % g.len();
+        let m = g.node(i);
+        assert_eq!(lazy.code_index(i), whole.code_index(i), "{m:?}");
+        assert_eq!(lazy.column(m), whole.column(m), "{m:?}");
+        let t = i / d2;
+        assert_eq!(lazy.row(t).plain, whole.row(t).plain);
+    }
+    assert_eq!(lazy.free_count(), whole.free_count());
+    assert_eq!(lazy.inspected_blocks(), lazy.block_count());
+    assert!(whole.free_count() < g.len() && whole.free_count() > g.len() / 2);
+}

@@ -1,0 +1,718 @@
+//! The follow stage (beyond the paper): the cell's process moves resolved, followed and proven
+//! before the air route is planned between them. [`follow`]: `Cell` + `Placed` + the collision
+//! model -> [`Followed`], the *stops* in the routine's order and how each is reached; [`splice`]
+//! puts the refined air plans and the process moves together into the one `Plan` the module
+//! writes.
+//!
+//! **Stops.** A stop is where an air leg starts or ends: an entry's target, its approach pose
+//! (`RelTool(p, 0, 0, -D)`, reached by the planned route and left by the approach line into the
+//! point) and its retract pose (reached by the retract line after the actions). Between two
+//! consecutive stops the robot moves either through the air (the plan stage's route, proven
+//! as today) or by a process move: the approach line, a `move: linear` line, a `move:
+//! circular` arc, the retract line.
+//!
+//! **A process move is checked, not planned.** Its TCP path (`geometry::path`: the line, or
+//! the arc through the cell's `via`; the orientation turning evenly) runs from the controller's
+//! TCP at the stop before (the forward kinematics of its joints) to the target's pose as
+//! written. The joints follow the inverse kinematics that continues from the stop before
+//! (`robot::ik::follow`), ending in the confdata written for the end (a `RelTool` pose inherits
+//! its point's); the path is proven to keep the clearance for every link and tool shape
+//! between the samples too (`CollisionModel::prove_path`) and timed by `timing::process`. A
+//! path that leaves the reach or an axis range, jumps, passes the wrist singularity, ends in
+//! another configuration or comes too close to an obstacle is refused ([`ProcessError`], exit
+//! 3) at the point's line, naming the move, how far along it and why.
+//!
+//! **The joints at a stop** are those the controller reaches there: at an entry its placed
+//! joints (a robtarget's the inverse of its robtarget as written, in its confdata; the end of
+//! a followed move must agree with them); at an approach pose the inverse of the pose in the
+//! point's confdata (what `MoveJ RelTool(p, 0, 0, -D)` reaches with ConfJ on); at a retract
+//! pose the followed line's end. An approach or retract pose that lies in another configuration
+//! quadrant than its point (which would need a robtarget of its own) is refused.
+
+use crate::cell::{Arrival, Cell, Frame, Loc, Point, Target};
+use crate::collision::{CollisionModel, PathBlocked, PathClearance};
+use crate::geometry::path::{rel_tool, CartesianPath, PathError};
+use crate::place::{MoveMotion, Origin, Placed, PlacedPoint};
+use crate::plan::motion::MoveEstimate;
+use crate::plan::{Leg, Route, Waypoint, WaypointKind};
+use crate::rapid_data::predefined_speed;
+use crate::refine::{Move, MoveKind, PaperFigure, Plan};
+use crate::robot::ik::follow::{follow as follow_path, FollowError, FollowedPath, TcpFrames};
+use crate::robot::ik::six::{ConfData, SixAxisError, SixAxisIk};
+use crate::robot::{Axes6, Robot};
+use crate::timing::process::{process_move_time, ProcessTime};
+use nalgebra::{Isometry3, Point3};
+use std::ops::Range;
+
+/// How far the end of a followed move may lie from the joints placed for its target, deg: the
+/// same inverse in the same configuration, to the solver's rounding.
+pub const END_AGREEMENT_DEG: f64 = 1e-6;
+
+/// What a stop is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StopKind {
+    /// Entry `i`'s target.
+    Entry(usize),
+    /// Entry `i`'s approach pose.
+    Approach(usize),
+    /// Entry `i`'s retract pose.
+    Retract(usize),
+}
+
+impl StopKind {
+    /// The entry it belongs to.
+    pub fn entry(self) -> usize {
+        match self {
+            StopKind::Entry(i) | StopKind::Approach(i) | StopKind::Retract(i) => i,
+        }
+    }
+}
+
+/// One stop: what it is, the joints the controller has there and the motion of the move into
+/// it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Stop {
+    pub kind: StopKind,
+    /// Controller values, deg (module docs, "The joints at a stop").
+    pub joints_deg: Axes6,
+    pub motion: MoveMotion,
+}
+
+/// A followed and proven process move.
+#[derive(Clone, Debug)]
+pub struct ProcessMove {
+    pub kind: MoveKind,
+    pub followed: FollowedPath,
+    pub proof: PathClearance,
+    pub time: ProcessTime,
+}
+
+/// How a stop is reached from the one before.
+#[derive(Clone, Debug)]
+pub enum Reach {
+    /// Through the air: the plan stage's route (the first stop: from wherever the robot is).
+    Air,
+    /// By a process move.
+    Process(Box<ProcessMove>),
+}
+
+/// The follow stage's result: the stops in order and how each is reached (`into[k]` for
+/// `stops[k]`; `into[0]` is [`Reach::Air`]), and the warnings for stderr.
+#[derive(Clone, Debug)]
+pub struct Followed {
+    pub stops: Vec<Stop>,
+    pub into: Vec<Reach>,
+    pub warnings: Vec<String>,
+}
+
+impl Followed {
+    /// The runs of stops joined by air legs, in order: each a range of at least two stops
+    /// (a stop reached and left by process moves belongs to none).
+    pub fn air_runs(&self) -> Vec<Range<usize>> {
+        let mut runs = Vec::new();
+        let mut start = 0;
+        for k in 1..=self.stops.len() {
+            let air = k < self.stops.len() && matches!(self.into[k], Reach::Air);
+            if !air {
+                if k - start >= 2 {
+                    runs.push(start..k);
+                }
+                start = k;
+            }
+        }
+        runs
+    }
+
+    /// The stops of `run` as the plan stage's points (the same points as the cell's when every
+    /// stop is an entry).
+    pub fn points_of(&self, run: &Range<usize>, placed: &Placed) -> Vec<PlacedPoint> {
+        self.stops[run.clone()]
+            .iter()
+            .map(|s| {
+                let i = s.kind.entry();
+                match (s.kind, placed.points.get(i)) {
+                    (StopKind::Entry(_), Some(p)) => PlacedPoint {
+                        motion: s.motion.clone(),
+                        ..p.clone()
+                    },
+                    (kind, p) => PlacedPoint {
+                        name: match (kind, p) {
+                            (StopKind::Approach(_), Some(p)) => format!("{} (approach)", p.name),
+                            (_, Some(p)) => format!("{} (retract)", p.name),
+                            _ => String::new(),
+                        },
+                        joints_deg: s.joints_deg,
+                        loc: p.map(|p| p.loc).unwrap_or_default(),
+                        origin: crate::place::Origin::Joints,
+                        motion: s.motion.clone(),
+                    },
+                }
+            })
+            .collect()
+    }
+
+    /// The entry a stop of `run` (run-local index) belongs to.
+    pub fn entry_of(&self, run: &Range<usize>, k: usize) -> usize {
+        self.stops.get(run.start + k).map_or(0, |s| s.kind.entry())
+    }
+}
+
+/// What a process move is called in messages.
+fn move_name(kind: &MoveKind) -> &'static str {
+    match kind {
+        MoveKind::Joint => "the joint move",
+        MoveKind::Linear => "the linear move (MoveL)",
+        MoveKind::Circular { .. } => "the circular move (MoveC)",
+        MoveKind::Approach { .. } => "the approach line (MoveL)",
+        MoveKind::Retract { .. } => "the retract line (MoveL)",
+    }
+}
+
+/// Why a process move cannot be written.
+#[derive(Debug, thiserror::Error)]
+pub enum ProcessError {
+    /// The path cannot be made (a collinear or too long arc, a half turn of the tool).
+    #[error("{label}: {what}: {source}")]
+    Path {
+        label: String,
+        what: &'static str,
+        source: PathError,
+        loc: Loc,
+    },
+    /// The joints cannot follow the path.
+    #[error("{label}: {what}: {source}")]
+    Follow {
+        label: String,
+        what: &'static str,
+        /// Boxed: it is large and errors travel in `Result`s.
+        source: Box<FollowError>,
+        loc: Loc,
+    },
+    /// The path comes too close to an obstacle.
+    #[error("{label}: {what}: {source}")]
+    Blocked {
+        label: String,
+        what: &'static str,
+        /// Boxed: it is large and errors travel in `Result`s.
+        source: Box<PathBlocked>,
+        loc: Loc,
+    },
+    /// An approach or retract pose has no solution in its point's configuration.
+    #[error("{label}: {what}: {why}")]
+    Pose {
+        label: String,
+        what: &'static str,
+        why: String,
+        loc: Loc,
+    },
+}
+
+impl ProcessError {
+    /// Where in the cell file it points.
+    pub fn loc(&self) -> Loc {
+        match self {
+            ProcessError::Path { loc, .. }
+            | ProcessError::Follow { loc, .. }
+            | ProcessError::Blocked { loc, .. }
+            | ProcessError::Pose { loc, .. } => *loc,
+        }
+    }
+
+    /// The help line.
+    pub fn help(&self) -> &'static str {
+        match self {
+            ProcessError::Path { .. } => "give a `via` strictly between the ends, off their line, on an arc of at most 240 deg, and keep the tool's turn between the ends under 180 deg",
+            ProcessError::Follow { source, .. } if matches!(**source, FollowError::WristSingularity { .. }) => "tilt the tool's orientation at the ends so that axis 5 stays away from 0 along the path, or split the move with a point in between",
+            ProcessError::Follow { source, .. } if matches!(**source, FollowError::EndConf { .. }) => "give the end point the confdata the path reaches, or none (then the path's own is written)",
+            ProcessError::Follow { .. } => "move the path's ends (or the robot's base) so the arm reaches the whole path in one configuration within its axis ranges",
+            ProcessError::Blocked { .. } => "move the path or the obstacle, or lower planner.clearance; `gen-rapid --html FILE` shows the cell",
+            ProcessError::Pose { .. } => "shorten the approach or retract, or turn the point's tool orientation so axes 4 and 6 stay in their quadrants along it",
+        }
+    }
+}
+
+/// The robot, tool and work object a cell's process moves run with.
+struct Setting<'a> {
+    ik: SixAxisIk,
+    robot: &'a Robot,
+    frames: TcpFrames,
+    /// The work object's user frame in the cell frame, as written.
+    uframe: Isometry3<f64>,
+}
+
+impl Setting<'_> {
+    /// The controller's TCP at `joints`, cell frame.
+    fn tcp(&self, joints: &Axes6) -> Isometry3<f64> {
+        self.frames.cell_from_robot * self.robot.tool0(joints) * self.frames.tframe
+    }
+
+    /// A robtarget pose (work object frame) as written, cell frame.
+    fn pose_in_cell(&self, pose: &Frame) -> Isometry3<f64> {
+        self.uframe * pose.written().isometry()
+    }
+
+    /// The joints `MoveJ` reaches for TCP pose `tcp` (cell frame) in configuration `conf`: the
+    /// in-range solution admitted for it nearest `near`.
+    fn joints_in(&self, tcp: &Isometry3<f64>, conf: ConfData, near: &Axes6) -> Option<Axes6> {
+        let tool0 = self.frames.cell_from_robot.inverse() * tcp * self.frames.tframe.inverse();
+        let solutions = self.ik.solve(&tool0, Some(near)).ok()?;
+        solutions
+            .into_iter()
+            .map(|s| s.axes_deg)
+            .filter(|a| self.ik.conf_admits(a, conf))
+            .min_by(|a, b| max_diff(a, near).total_cmp(&max_diff(b, near)))
+    }
+}
+
+fn max_diff(a: &Axes6, b: &Axes6) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
+}
+
+/// The follow stage (module docs): the stops of `cell` placed as `placed`, each process move
+/// followed and proven on `model`. A cell without process keys gives its entries as stops, all
+/// reached through the air.
+pub fn follow(
+    cell: &Cell,
+    robot: &Robot,
+    placed: &Placed,
+    model: &CollisionModel,
+) -> Result<Followed, ProcessError> {
+    let mut out = Followed {
+        stops: Vec::new(),
+        into: Vec::new(),
+        warnings: Vec::new(),
+    };
+    let uses_process = cell
+        .points
+        .iter()
+        .any(|p| p.arrival.is_process() || p.approach_mm.is_some() || p.retract_mm.is_some());
+    let setting = match uses_process {
+        true => Some(setting_of(cell, robot, placed)?),
+        false => None,
+    };
+    for (i, (p, placed_point)) in cell.points.iter().zip(&placed.points).enumerate() {
+        let motion = placed_point.motion.clone();
+        let fine = MoveMotion {
+            speed: motion.speed.clone(),
+            zone: "fine".into(),
+        };
+        let (Some(s), Target::Robtarget { pose, .. }, Origin::Robtarget { conf, .. }) =
+            (&setting, &p.target, &placed_point.origin)
+        else {
+            out.stops.push(Stop {
+                kind: StopKind::Entry(i),
+                joints_deg: placed_point.joints_deg,
+                motion: match p.stops() {
+                    true => fine,
+                    false => motion,
+                },
+            });
+            out.into.push(Reach::Air);
+            continue;
+        };
+        let conf = *conf;
+        let target = s.pose_in_cell(pose);
+        let at = placed_point.joints_deg;
+        let label = p.label();
+        // Into the point: an approach line, a process move, or the air.
+        if let Some(d) = p.approach_mm {
+            let kind = MoveKind::Approach { dz_mm: d };
+            let app = rel_tool(&target, 0.0, 0.0, -d);
+            let app_joints = s.joints_in(&app, conf, &at).ok_or_else(|| ProcessError::Pose {
+                label: label.clone(),
+                what: "the approach pose",
+                why: format!(
+                    "RelTool({}, 0, 0, -{d}) has no solution in range in the point's configuration {conf}",
+                    p.name
+                ),
+                loc: p.approach_loc,
+            })?;
+            out.stops.push(Stop {
+                kind: StopKind::Approach(i),
+                joints_deg: app_joints,
+                motion: fine.clone(),
+            });
+            out.into.push(Reach::Air);
+            let m = process_move(
+                s,
+                model,
+                p,
+                &motion.speed,
+                kind,
+                &app,
+                &target,
+                None,
+                &app_joints,
+                conf,
+            )?;
+            agree(p, &m, &at, p.approach_loc)?;
+            warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
+            out.stops.push(Stop {
+                kind: StopKind::Entry(i),
+                joints_deg: at,
+                motion: fine.clone(),
+            });
+            out.into.push(Reach::Process(Box::new(m)));
+        } else if let (true, Some(before)) = (p.arrival.is_process(), out.stops.last()) {
+            let from = before.joints_deg;
+            let start = s.tcp(&from);
+            let (kind, via) = match p.arrival {
+                Arrival::Circular { via_mm, .. } => {
+                    let via = s.uframe * Point3::from(via_mm);
+                    (MoveKind::Linear, Some(via))
+                }
+                _ => (MoveKind::Linear, None),
+            };
+            let m = process_move(
+                s,
+                model,
+                p,
+                &motion.speed,
+                kind,
+                &start,
+                &target,
+                via,
+                &from,
+                conf,
+            )?;
+            agree(p, &m, &at, p.arrival_loc)?;
+            warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
+            // A corner next to a process move is not proven yet: `fine`.
+            if p.zone.as_deref().is_some_and(|z| z != "fine") {
+                out.warnings.push(format!(
+                    "warning: {label}: zone {} is written fine: the corner next to a process move is not proven",
+                    motion.zone
+                ));
+            }
+            out.stops.push(Stop {
+                kind: StopKind::Entry(i),
+                joints_deg: at,
+                motion: fine.clone(),
+            });
+            out.into.push(Reach::Process(Box::new(m)));
+        } else {
+            out.stops.push(Stop {
+                kind: StopKind::Entry(i),
+                joints_deg: at,
+                motion: match p.stops() {
+                    true => fine.clone(),
+                    false => motion.clone(),
+                },
+            });
+            out.into.push(Reach::Air);
+        }
+        // Out of the point: the retract line, after the actions.
+        if let Some(d) = p.retract_mm {
+            let kind = MoveKind::Retract { dz_mm: d };
+            let ret = rel_tool(&target, 0.0, 0.0, -d);
+            let m = process_move(
+                s,
+                model,
+                p,
+                &motion.speed,
+                kind,
+                &target,
+                &ret,
+                None,
+                &at,
+                conf,
+            )?;
+            warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
+            out.stops.push(Stop {
+                kind: StopKind::Retract(i),
+                joints_deg: m.followed.end_joints(),
+                motion: fine.clone(),
+            });
+            out.into.push(Reach::Process(Box::new(m)));
+        }
+    }
+    Ok(out)
+}
+
+/// The IK, frames and work object of a cell with process moves.
+fn setting_of<'a>(
+    cell: &Cell,
+    robot: &'a Robot,
+    placed: &Placed,
+) -> Result<Setting<'a>, ProcessError> {
+    let ik = SixAxisIk::from_robot(robot).map_err(|e: SixAxisError| ProcessError::Pose {
+        label: "robot.urdf".into(),
+        what: "the six-axis inverse kinematics",
+        why: e.to_string(),
+        loc: cell.robot.urdf_loc,
+    })?;
+    let written = |f: Option<Frame>| f.unwrap_or(Frame::IDENTITY).written().isometry();
+    Ok(Setting {
+        ik,
+        robot,
+        frames: TcpFrames {
+            cell_from_robot: placed.placement.cell_from_robot(),
+            tframe: written(cell.tool.as_ref().map(|t| t.tframe)),
+        },
+        uframe: written(cell.wobjs.first().map(|w| w.uframe)),
+    })
+}
+
+/// Follows, proves and times one process move of point `p` from `start` (joints `from`) to
+/// `end` (through `via` for an arc), ending in `conf`, timed at `speed` (the speeddata it is
+/// written with: the point's own, else `motion.speed`).
+#[allow(clippy::too_many_arguments)]
+fn process_move(
+    s: &Setting,
+    model: &CollisionModel,
+    p: &Point,
+    speed: &str,
+    kind: MoveKind,
+    start: &Isometry3<f64>,
+    end: &Isometry3<f64>,
+    via: Option<Point3<f64>>,
+    from: &Axes6,
+    conf: ConfData,
+) -> Result<ProcessMove, ProcessError> {
+    let (loc, kind) = match (&kind, via, p.arrival) {
+        (MoveKind::Approach { .. }, _, _) => (p.approach_loc, kind),
+        (MoveKind::Retract { .. }, _, _) => (p.retract_loc, kind),
+        (_, Some(_), Arrival::Circular { via_loc, .. }) => (via_loc, kind),
+        _ => (p.arrival_loc, kind),
+    };
+    let label = p.label();
+    let path = match via {
+        Some(v) => CartesianPath::arc(start, &v, end),
+        None => CartesianPath::line(start, end),
+    };
+    let kind = match (via, kind) {
+        (Some(_), _) => {
+            // The circle point as written: the via with the orientation at its arc fraction.
+            let cir = path.as_ref().ok().and_then(|p| p.cir_point());
+            let via = cir.map(|c| s.uframe.inverse() * c);
+            match via {
+                Some(v) => MoveKind::Circular {
+                    via: Frame {
+                        pos_mm: [v.translation.x, v.translation.y, v.translation.z],
+                        quat_wxyz: {
+                            let q = v.rotation.into_inner();
+                            [q.w, q.i, q.j, q.k]
+                        },
+                    },
+                    via_conf: conf,
+                },
+                None => MoveKind::Linear,
+            }
+        }
+        (None, k) => k,
+    };
+    let what = move_name(&kind);
+    let path = path.map_err(|source| ProcessError::Path {
+        label: label.clone(),
+        what,
+        source,
+        loc,
+    })?;
+    let followed = follow_path(&s.ik, &s.frames, &path, from, Some(conf)).map_err(|source| {
+        ProcessError::Follow {
+            label: label.clone(),
+            what,
+            source: Box::new(source),
+            loc,
+        }
+    })?;
+    let proof = model
+        .prove_path(&followed)
+        .map_err(|source| ProcessError::Blocked {
+            label: label.clone(),
+            what,
+            source: Box::new(source),
+            loc,
+        })?;
+    let time = process_move_time(&followed, &s.robot.controller.axes, predefined_speed(speed));
+    Ok(ProcessMove {
+        kind,
+        followed,
+        proof,
+        time,
+    })
+}
+
+/// The end of a followed move into point `p` must be the joints placed for it.
+fn agree(p: &Point, m: &ProcessMove, at: &Axes6, loc: Loc) -> Result<(), ProcessError> {
+    let end = m.followed.end_joints();
+    if max_diff(&end, at) <= END_AGREEMENT_DEG {
+        return Ok(());
+    }
+    let fmt = |a: &Axes6| {
+        let v: Vec<String> = a.iter().map(|x| format!("{x:.3}")).collect();
+        format!("[{}]", v.join(", "))
+    };
+    Err(ProcessError::Pose {
+        label: p.label(),
+        what: move_name(&m.kind),
+        why: format!(
+            "the path ends at axes {} but the point's robtarget is reached at {} (another solution of the same configuration)",
+            fmt(&end),
+            fmt(at)
+        ),
+        loc,
+    })
+}
+
+/// A warning where the point's speed needs an axis beyond its maximum along the move.
+fn warn_speed(s: &Setting, warnings: &mut Vec<String>, p: &Point, m: &ProcessMove, speed: &str) {
+    let Some(data) = predefined_speed(speed) else {
+        return;
+    };
+    if let Some(e) = m.followed.speed_excess(&data, &s.robot.controller.axes) {
+        warnings.push(format!(
+            "warning: {}: {} at {speed}: {e}; the controller slows down there",
+            p.label(),
+            move_name(&m.kind)
+        ));
+    }
+}
+
+/// The one plan the module writes (module docs): the refined air plans of `runs` (each the
+/// plan of [`Followed::air_runs`]'s range) and the process moves between them, in the stops'
+/// order; waypoints and vias named by the entries they belong to; the least clearance over
+/// every move; the total time with the `wait_time` actions.
+pub fn splice(
+    followed: &Followed,
+    runs: Vec<(Range<usize>, Plan)>,
+    method: crate::plan::Method,
+    grid_deg: f64,
+    waits_s: f64,
+) -> Plan {
+    let stops = &followed.stops;
+    // Every stop an entry, all joined through the air: the one plan as it is.
+    if let [(run, plan)] = runs.as_slice() {
+        if *run == (0..stops.len()) && followed.into.iter().all(|i| matches!(i, Reach::Air)) {
+            let mut plan = plan.clone();
+            plan.total_s += waits_s;
+            if let Some(p) = &mut plan.paper {
+                p.time_s += waits_s;
+            }
+            return plan;
+        }
+    }
+    let kind_of = |s: &Stop| match s.kind {
+        StopKind::Entry(i) => WaypointKind::CellPoint(i),
+        StopKind::Approach(i) => WaypointKind::Approach(i),
+        StopKind::Retract(i) => WaypointKind::Retract(i),
+    };
+    let mut waypoints: Vec<Waypoint> = Vec::new();
+    let mut legs: Vec<Leg> = Vec::new();
+    let mut moves: Vec<Move> = Vec::new();
+    // The paper's figure: of the whole program when every run's route is the paper's.
+    let mut paper = Some(PaperFigure {
+        moves: 0,
+        time_s: waits_s,
+    });
+    let mut total_s = waits_s;
+    let mut into_first = stops.first().map(|s| s.motion.clone());
+    let mut least: Option<crate::plan::Clearance> = None;
+    let mut keep_least = |c: Option<&crate::plan::Clearance>| {
+        if let Some(c) = c {
+            if least.as_ref().is_none_or(|l| c.mm < l.mm) {
+                least = Some(c.clone());
+            }
+        }
+    };
+    let mut runs = runs.into_iter().peekable();
+    let mut k = 0;
+    loop {
+        let mut advanced = false;
+        if let Some((run, plan)) = runs.next_if(|(r, _)| r.start == k) {
+            advanced = true;
+            if k == 0 {
+                into_first = Some(plan.into_first.clone());
+            }
+            let offset = waypoints.len().saturating_sub(1);
+            let skip = usize::from(!waypoints.is_empty());
+            for w in plan.route.waypoints.iter().skip(skip) {
+                let kind = match w.kind {
+                    WaypointKind::CellPoint(j) => stops.get(run.start + j).map_or(w.kind, kind_of),
+                    WaypointKind::Via { leg, index } => WaypointKind::Via {
+                        leg: followed.entry_of(&run, leg + 1).saturating_sub(1),
+                        index,
+                    },
+                    other => other,
+                };
+                waypoints.push(Waypoint {
+                    kind,
+                    joints_deg: w.joints_deg,
+                });
+            }
+            for l in &plan.route.legs {
+                legs.push(Leg {
+                    from: followed.entry_of(&run, l.from),
+                    to: followed.entry_of(&run, l.to),
+                    waypoints: l.waypoints.start + offset..l.waypoints.end + offset,
+                    ..l.clone()
+                });
+            }
+            keep_least(plan.least.as_ref());
+            moves.extend(plan.moves);
+            total_s += plan.total_s;
+            paper = paper.zip(plan.paper).map(|(p, q)| PaperFigure {
+                moves: p.moves + q.moves,
+                time_s: p.time_s + q.time_s,
+            });
+            k = run.end - 1;
+        } else if waypoints.is_empty() {
+            if let Some(s) = stops.get(k) {
+                waypoints.push(Waypoint {
+                    kind: kind_of(s),
+                    joints_deg: s.joints_deg,
+                });
+            }
+        }
+        // The process moves out of stop k.
+        while let Some((Reach::Process(m), s)) = followed.into.get(k + 1).zip(stops.get(k + 1)) {
+            waypoints.push(Waypoint {
+                kind: kind_of(s),
+                joints_deg: s.joints_deg,
+            });
+            let estimate = MoveEstimate {
+                time_s: m.time.stop_s,
+                profile: m.time.profile,
+                limit: m.time.limit,
+            };
+            keep_least(m.proof.clearance.as_ref());
+            total_s += m.time.stop_s;
+            if let Some(p) = &mut paper {
+                p.moves += 1;
+                p.time_s += m.time.stop_s;
+            }
+            moves.push(Move {
+                motion: s.motion.clone(),
+                clearance: m.proof.clearance.clone(),
+                estimate,
+                kind: m.kind,
+            });
+            k += 1;
+            advanced = true;
+        }
+        // Every stop is reached through the air (in a run from the stop before) or by a
+        // process move: nothing left when neither goes on.
+        if !advanced {
+            break;
+        }
+    }
+    Plan {
+        route: Route {
+            method,
+            grid_deg,
+            waypoints,
+            legs,
+        },
+        into_first: into_first.unwrap_or(MoveMotion {
+            speed: String::new(),
+            zone: String::new(),
+        }),
+        moves,
+        least,
+        total_s,
+        paper,
+    }
+}

@@ -1,0 +1,304 @@
+//! The example cells with process moves (approach and retract lines, linear and circular seams,
+//! actions, loads), their modules run as a controller runs them, independently of the
+//! library's inverse kinematics and proofs: every motion instruction in order from the joints
+//! the one before left (MoveAbsJ to its axis values; MoveJ to the solution of its robtarget,
+//! `RelTool` applied, in the robtarget's confdata, by the tests' own OPW inverse kinematics;
+//! MoveL and MoveC with the TCP on the line, or on the circle through the start, the circle
+//! point and the end, the orientation slerped, sampled every 0.25 mm and 0.05 deg of turn, each
+//! sample the branch nearest the one before). Each move is held to: no axis jump between
+//! samples (2 deg), every axis in range, axis 5 at least 1 deg from 0 along MoveL/MoveC, the
+//! end admitted for the target's confdata, the clearance at every sample and along each chord
+//! between samples (the dense check, links and tool), and the header's smallest clearance a
+//! lower bound of what the samples measure. The robtargets are the cell's poses; the actions
+//! the cell's, in order, after the move into their point.
+
+use super::dense::Scene;
+use super::library::{load_robot, Cell, Target};
+use super::module::Module;
+use super::opw::{conf_admits, max_diff, Ik};
+use super::routine::{Action, Instruction, MoveKind, ToPoint};
+use super::tcp::confdata;
+use nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
+
+/// Samples along a process move: at most this far apart, mm ...
+const STEP_MM: f64 = 0.25;
+/// ... and turned at most this much, deg.
+const STEP_DEG: f64 = 0.05;
+/// A larger change of any axis between samples is a jump (a configuration change).
+const JUMP_DEG: f64 = 2.0;
+
+fn iso(p: &[f64], q: &[f64]) -> Isometry3<f64> {
+    Isometry3::from_parts(
+        Translation3::new(p[0], p[1], p[2]),
+        UnitQuaternion::from_quaternion(Quaternion::new(q[0], q[1], q[2], q[3])),
+    )
+}
+
+/// What running a module measured.
+#[derive(Debug, Default)]
+pub struct Run {
+    /// Samples along process moves.
+    pub samples: usize,
+    /// The nearest approach seen, mm.
+    pub nearest_mm: f64,
+    /// Process moves run (MoveL, MoveC).
+    pub process_moves: usize,
+    /// The farthest a process sample's TCP (by forward kinematics) lies from its path, mm.
+    pub off_path_mm: f64,
+}
+
+/// A point of the circle through `a`, `b`, `c` from `a` (s = 0) over `b` to `c` (s = 1).
+fn arc(a: Point3<f64>, b: Point3<f64>, c: Point3<f64>) -> impl Fn(f64) -> Point3<f64> {
+    let (u, v) = (b - a, c - a);
+    let n = u.cross(&v);
+    let centre = a
+        + (n.cross(&u) * v.norm_squared() + v.cross(&n) * u.norm_squared())
+            / (2.0 * n.norm_squared());
+    let (r1, r3) = (a - centre, c - centre);
+    let radius = r1.norm();
+    let e1 = r1 / radius;
+    let e2 = n.normalize().cross(&e1);
+    let angle = |p: Vector3<f64>| {
+        let t = p.dot(&e2).atan2(p.dot(&e1));
+        if t < 0.0 {
+            t + std::f64::consts::TAU
+        } else {
+            t
+        }
+    };
+    let end = angle(r3);
+    move |s| centre + radius * ((s * end).cos() * e1 + (s * end).sin() * e2)
+}
+
+/// Runs `text`, the module written for `cell`, as the module docs say; `label` names it in
+/// messages. Every failure is collected.
+pub fn check_process(cell: &Cell, text: &str, label: &str) -> Result<Run, Vec<String>> {
+    let module = Module::parse(text).map_err(|e| vec![format!("{label}: {e}")])?;
+    let robot = load_robot(cell);
+    let ik = Ik::new(&robot).map_err(|e| vec![e])?;
+    let scene = Scene::new(&robot, module.base_mm, module.yaw_deg, cell);
+    let placed = Isometry3::from_parts(
+        Translation3::new(module.base_mm[0], module.base_mm[1], module.base_mm[2]),
+        UnitQuaternion::from_axis_angle(&Vector3::z_axis(), module.yaw_deg.to_radians()),
+    );
+    let mut failures = Vec::new();
+    let mut fail = |m: String| failures.push(format!("{label}: {m}"));
+    let mut run = Run {
+        nearest_mm: f64::INFINITY,
+        ..Run::default()
+    };
+    let tframe = module
+        .tooldata
+        .first()
+        .map_or(Isometry3::identity(), |(_, t)| {
+            iso(&t.tframe[..3], &t.tframe[3..])
+        });
+    let uframe_of = |w: &Option<String>| {
+        module
+            .wobjdata
+            .iter()
+            .find(|(n, _)| Some(n) == w.as_ref())
+            .map_or(Isometry3::identity(), |(_, u)| iso(&u[..3], &u[3..]))
+    };
+    // A written target as a TCP pose in the cell frame, with its confdata.
+    let pose_of = |to: &ToPoint, w: &Option<String>| -> Option<(Isometry3<f64>, [i32; 4])> {
+        let r = module.robtarget(to.data())?;
+        let mut p = iso(&r.pos_mm, &r.quat_wxyz);
+        if let ToPoint::RelTool { offset_mm: d, .. } = to {
+            p *= Translation3::new(d[0], d[1], d[2]);
+        }
+        Some((uframe_of(w) * p, r.conf))
+    };
+    let tcp = |q: &[f64; 6]| placed * robot.tool0(q) * tframe;
+    let tool0_for = |p: &Isometry3<f64>| placed.inverse() * p * tframe.inverse();
+    let clearance = cell.planner.clearance_mm;
+    let mut q: Option<[f64; 6]> = None;
+    let mut near = |a: &[f64; 6], b: &[f64; 6], what: &str, fail: &mut dyn FnMut(String)| {
+        let (n, _) = scene.nearest_along(a, b);
+        run.nearest_mm = run.nearest_mm.min(n.mm);
+        // The dense check's 1 mm of motion between samples: the true minimum is at most 0.5 mm
+        // below the samples'.
+        if n.mm < clearance - 0.5 {
+            fail(format!(
+                "{what}: {} comes {:.3} mm from {}",
+                n.link, n.mm, n.obstacle
+            ));
+        }
+    };
+    for (s, m) in module.motions() {
+        let what = s.label();
+        match m.kind {
+            MoveKind::AbsJ => {
+                let to = module.target(m.to.data());
+                if let Some(from) = q {
+                    near(&from, &to, &what, &mut fail);
+                }
+                q = Some(to);
+            }
+            MoveKind::J => {
+                let Some((pose, conf)) = pose_of(&m.to, &m.wobj) else {
+                    fail(format!("{what}: no robtarget"));
+                    continue;
+                };
+                let prev = q.unwrap_or([0.0; 6]);
+                let Some(to) = ik
+                    .with_conf(&tool0_for(&pose), &conf)
+                    .into_iter()
+                    .map(|s| s.axes)
+                    .min_by(|a, b| max_diff(a, &prev).total_cmp(&max_diff(b, &prev)))
+                else {
+                    fail(format!("{what}: no solution in range of confdata {conf:?}"));
+                    continue;
+                };
+                if let Some(from) = q {
+                    near(&from, &to, &what, &mut fail);
+                }
+                q = Some(to);
+            }
+            MoveKind::L | MoveKind::C => {
+                run.process_moves += 1;
+                let (Some(from), Some((end, conf))) = (q, pose_of(&m.to, &m.wobj)) else {
+                    fail(format!("{what}: no start or no robtarget"));
+                    continue;
+                };
+                let start = tcp(&from);
+                let (pa, pc) = (
+                    Point3::from(start.translation.vector),
+                    Point3::from(end.translation.vector),
+                );
+                let position: Box<dyn Fn(f64) -> Point3<f64>> = match &m.circle {
+                    Some(c) => {
+                        let Some((cp, _)) = pose_of(c, &m.wobj) else {
+                            fail(format!("{what}: no circle point"));
+                            continue;
+                        };
+                        Box::new(arc(pa, Point3::from(cp.translation.vector), pc))
+                    }
+                    None => Box::new(move |s| pa + s * (pc - pa)),
+                };
+                let length: f64 = (1..=1000)
+                    .map(|k| {
+                        (position(k as f64 / 1000.0) - position((k - 1) as f64 / 1000.0)).norm()
+                    })
+                    .sum();
+                let turn = start.rotation.angle_to(&end.rotation).to_degrees();
+                let n = ((length / STEP_MM).max(turn / STEP_DEG).ceil() as usize).max(1);
+                let mut prev = from;
+                for k in 1..=n {
+                    let s = k as f64 / n as f64;
+                    let rot = start.rotation.slerp(&end.rotation, s);
+                    let pose = Isometry3::from_parts(position(s).coords.into(), rot);
+                    let Some(next) = ik.nearest(&tool0_for(&pose), &prev) else {
+                        fail(format!("{what}: out of reach at {:.1} %", 100.0 * s));
+                        break;
+                    };
+                    run.samples += 1;
+                    let jump = max_diff(&next, &prev);
+                    if jump > JUMP_DEG {
+                        fail(format!(
+                            "{what}: axes jump {jump:.2} deg at {:.1} %",
+                            100.0 * s
+                        ));
+                        break;
+                    }
+                    if robot.check_range6(&next).is_err() {
+                        fail(format!(
+                            "{what}: out of range at {:.1} %: {next:?}",
+                            100.0 * s
+                        ));
+                        break;
+                    }
+                    if next[4].abs() < 1.0 {
+                        fail(format!(
+                            "{what}: axis 5 = {:.3} at {:.1} %",
+                            next[4],
+                            100.0 * s
+                        ));
+                    }
+                    let off = (tcp(&next).translation.vector - pose.translation.vector).norm();
+                    run.off_path_mm = run.off_path_mm.max(off);
+                    near(&prev, &next, &what, &mut fail);
+                    prev = next;
+                }
+                if !conf_admits(&prev, confdata(&robot, &prev)[3], &conf) {
+                    fail(format!(
+                        "{what}: ends in confdata {:?}, the target's is {conf:?}",
+                        confdata(&robot, &prev)
+                    ));
+                }
+                q = Some(prev);
+            }
+        }
+    }
+    // The header's smallest clearance: a lower bound of the dense samples (to its 0.1 mm).
+    if let Some(h) = module.min_clearance_mm {
+        if h > run.nearest_mm + 0.05 + 1e-9 {
+            fail(format!(
+                "header min clearance {h} mm, the dense samples come to {:.3} mm",
+                run.nearest_mm
+            ));
+        }
+    }
+    // The robtargets are the cell's poses; the actions the cell's, in order.
+    for p in &cell.points {
+        if let Target::Robtarget { pose, .. } = &p.target {
+            match module.robtarget(&format!("{}_rt", p.name)) {
+                Some(r) => {
+                    let off = (0..3)
+                        .map(|k| (r.pos_mm[k] - pose.pos_mm[k]).abs())
+                        .fold(0.0, f64::max);
+                    let qoff = (0..4)
+                        .map(|k| (r.quat_wxyz[k] - pose.quat_wxyz[k]).abs())
+                        .fold(0.0, f64::max);
+                    if off > 1e-9 || qoff > 1e-9 + 5e-10 {
+                        fail(format!("{}_rt is not the cell's pose", p.name));
+                    }
+                }
+                None => fail(format!("no robtarget {}_rt", p.name)),
+            }
+        }
+    }
+    let written: Vec<String> = module
+        .body
+        .iter()
+        .filter_map(|s| match &s.ins {
+            Instruction::Action(a) => Some(match a {
+                Action::SetDo { signal, value } => format!("SetDO {signal}, {value}"),
+                Action::PulseDo { signal } => format!("PulseDO {signal}"),
+                Action::WaitDi { signal, value } => format!("WaitDI {signal}, {value}"),
+                Action::WaitTime { s } => format!("WaitTime {s:.3}"),
+                Action::GripLoad { load } => format!("GripLoad {load}"),
+            }),
+            _ => None,
+        })
+        .collect();
+    let asked: Vec<String> = cell
+        .points
+        .iter()
+        .flat_map(|p| &p.actions)
+        .map(|a| action_text(cell, &a.kind))
+        .collect();
+    if written != asked {
+        fail(format!("actions {written:?}, the cell asks {asked:?}"));
+    }
+    match failures.is_empty() {
+        true => Ok(run),
+        false => Err(failures),
+    }
+}
+
+/// An action as RAPID writes it, from the cell (the tests' own wording of docs/rapid.md).
+fn action_text(cell: &Cell, a: &super::library::ActionKind) -> String {
+    use super::library::ActionKind as K;
+    match a {
+        K::SetDo { signal, value } => format!("SetDO {signal}, {}", u8::from(*value)),
+        K::PulseDo { signal } => format!("PulseDO {signal}"),
+        K::WaitDi { signal, value } => format!("WaitDI {signal}, {}", u8::from(*value)),
+        K::WaitTime { time_s } => format!("WaitTime {time_s:.3}"),
+        K::GripLoad { load } => format!(
+            "GripLoad {}",
+            load.and_then(|k| cell.loads.get(k))
+                .map_or("load0", |l| l.name.as_str())
+        ),
+    }
+}
