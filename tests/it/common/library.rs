@@ -16,7 +16,7 @@ use std::path::Path;
 
 /// How the controller's axis 3 relates to the URDF's (the OPW check converts its solutions),
 /// and the cell's process and program keys the controller-like re-check holds a module to.
-pub use gen_rapid::cell::{ActionKind, Arrival, Point, RobotFrame};
+pub use gen_rapid::cell::{Arrival, Point, RobotFrame};
 pub use gen_rapid::robot::Coupling;
 
 /// The bundled IRB 1400.
