@@ -77,17 +77,9 @@ pub const RESERVED_WORDS: &[&str] = &[
     "XOR",
 ];
 
-/// Predefined RAPID names a user data object must not shadow (compared
-/// case-insensitively): data types, predefined data, motion instructions and the instructions
-/// and functions the module writes beside them.
-///
-/// Besides this list, [`check_identifier`] rejects every name of the form
-/// `v<digits>`, `z<digits>`, `vrot<digits>` and `vlin<digits>` (the predefined
-/// speeddata `v5`..`v7000`, `vrot1`.., `vlin10`.. and zonedata `z0`..`z200`
-/// families; the whole pattern is rejected so no future or unusual member
-/// slips through).
-pub const PREDEFINED_NAMES: &[&str] = &[
-    // data types
+/// RAPID's data types a move's data may be named like (a user data object must not shadow
+/// them either: [`check_identifier`]).
+pub const DATA_TYPES: &[&str] = &[
     "num",
     "dnum",
     "bool",
@@ -107,6 +99,18 @@ pub const PREDEFINED_NAMES: &[&str] = &[
     "extjoint",
     "robjoint",
     "loaddata",
+];
+
+/// Predefined RAPID names a user data object must not shadow (compared
+/// case-insensitively), beside [`DATA_TYPES`]: the signal types, predefined data, motion instructions and the instructions
+/// and functions the module writes beside them.
+///
+/// Besides this list, [`check_identifier`] rejects every name of the form
+/// `v<digits>`, `z<digits>`, `vrot<digits>` and `vlin<digits>` (the predefined
+/// speeddata `v5`..`v7000`, `vrot1`.., `vlin10`.. and zonedata `z0`..`z200`
+/// families; the whole pattern is rejected so no future or unusual member
+/// slips through).
+pub const PREDEFINED_NAMES: &[&str] = &[
     "signaldi",
     "signaldo",
     // predefined data
@@ -340,30 +344,7 @@ pub fn predefined_kind(name: &str) -> Option<&'static str> {
         (&["pi", "EOF_BIN", "EOF_NUM", "END_OF_LIST"], "a num"),
         (&["ERRNO"], "an errnum"),
         (&["INTNO"], "an intnum"),
-        (
-            &[
-                "num",
-                "dnum",
-                "bool",
-                "string",
-                "byte",
-                "jointtarget",
-                "robtarget",
-                "tooldata",
-                "wobjdata",
-                "speeddata",
-                "zonedata",
-                "stoppointdata",
-                "pos",
-                "orient",
-                "pose",
-                "confdata",
-                "extjoint",
-                "robjoint",
-                "loaddata",
-            ],
-            "a data type",
-        ),
+        (DATA_TYPES, "a data type"),
         (
             &["MoveAbsJ", "MoveJ", "MoveL", "MoveC", "MoveExtJ"],
             "an instruction or function",
@@ -524,14 +505,15 @@ fn is_prefix_digits(name: &str, prefix: &str) -> bool {
 /// Checks that `name` can name a user data object (a `CONST`, the module):
 /// a RAPID identifier (ASCII letter first, then ASCII letters, digits and
 /// `_`; at most 32 characters), not a reserved word and not a predefined
-/// name (see [`RESERVED_WORDS`], [`PREDEFINED_NAMES`]). All comparisons
+/// name (see [`RESERVED_WORDS`], [`DATA_TYPES`], [`PREDEFINED_NAMES`]). All comparisons
 /// ignore letter case, as RAPID does. Checks run in this order: empty, first
 /// character, other characters, length, reserved word, predefined name; the
 /// error reports the first rule broken.
 pub fn check_identifier(name: &str) -> Result<(), IdentifierError> {
     check_data_name(name)?;
-    if let Some(p) = PREDEFINED_NAMES
+    if let Some(p) = DATA_TYPES
         .iter()
+        .chain(PREDEFINED_NAMES)
         .chain(PREDEFINED_ROUTINES)
         .find(|p| p.eq_ignore_ascii_case(name))
     {

@@ -1,34 +1,13 @@
 //! Tests of the collision model on every shipped robot: the lumped arm and the flange's link
 //! parts against parry3d's distances of the URDF's own cylinders, every link of every robot.
 
+use super::tests::parry_distance;
 use super::*;
 use crate::geometry::testing::Rng;
 use nalgebra::Point3;
-use parry3d::math::{Pose, Rotation, Vector};
 
 fn bx(name: &str, min: [f64; 3], max: [f64; 3]) -> Obstacle {
     Obstacle::new(name, Aabb::new(Point3::from(min), Point3::from(max)))
-}
-
-/// Exact cylinder-box distance straight from parry3d-f64 (its own shapes, GJK).
-fn parry_distance(c: &Cylinder, b: &Aabb) -> f64 {
-    let centre = nalgebra::center(&b.min, &b.max);
-    let h = (b.max - b.min) * 0.5;
-    let cuboid = parry3d::shape::Cuboid::new(Vector::new(h.x, h.y, h.z));
-    let d = c.b - c.a;
-    let len = d.norm();
-    let u = d / len;
-    let cyl = parry3d::shape::Cylinder::new(0.5 * len, c.radius);
-    let m = nalgebra::center(&c.a, &c.b);
-    let rot = Rotation::from_rotation_arc(Vector::Y, Vector::new(u.x, u.y, u.z));
-    let pc = Pose::from_parts(Vector::new(m.x, m.y, m.z), rot);
-    let pb = Pose::from_parts(
-        Vector::new(centre.x, centre.y, centre.z),
-        Rotation::IDENTITY,
-    );
-    parry3d::query::distance(&pc, &cyl, &pb, &cuboid)
-        .expect("cylinder-cuboid is supported")
-        .distance
 }
 
 /// Every shipped robot, every link: at random poses among random boxes, the model's smallest

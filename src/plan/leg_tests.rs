@@ -292,20 +292,26 @@ fn where_the_optimistic_walk_runs_out_the_eager_wave_finds_the_way() {
     }
 }
 
-#[test]
-fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_accepted_ones() {
-    // tests/ok/complete_search_2deg.yaml (found by a seeded generator of random cells): on a
-    // 2 deg grid every path the paper's wave offers from P to Q has a step the step check
-    // refuses, so the walk on it runs out (a search on that wave alone gives up here); the
-    // wave over accepted steps has a path, and the leg plans.
-    let boxes = vec![
+/// The boxes of tests/ok/complete_search_2deg.yaml (found by a seeded generator of random
+/// cells): on a 2 deg grid the paper's wave from P to Q offers only steps the step check refuses.
+fn refusing_boxes() -> Vec<Obstacle> {
+    vec![
         bx("b0", [641.0, 453.0, 0.0], [1041.0, 933.0, 199.0]),
         bx("b1", [-137.0, 537.0, 0.0], [57.0, 1047.0, 1383.0]),
         bx("b3", [623.0, 648.0, 0.0], [767.0, 980.0, 382.0]),
         bx("b4", [-650.0, -1388.0, 0.0], [-56.0, -1060.0, 872.0]),
         bx("b5", [581.0, 291.0, 319.0], [1075.0, 445.0, 775.0]),
         bx("b6", [197.0, 526.0, 383.0], [631.0, 830.0, 635.0]),
-    ];
+    ]
+}
+
+#[test]
+fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_accepted_ones() {
+    // tests/ok/complete_search_2deg.yaml (found by a seeded generator of random cells): on a
+    // 2 deg grid every path the paper's wave offers from P to Q has a step the step check
+    // refuses, so the walk on it runs out (a search on that wave alone gives up here); the
+    // wave over accepted steps has a path, and the leg plans.
+    let boxes = refusing_boxes();
     let robot = Robot::irb1400();
     let placement = Placement {
         base_mm: [0.0, 0.0, 0.0],
@@ -588,14 +594,7 @@ fn the_spread_marks_its_offsets_nodes_inside_and_at_the_faces() {
 #[test]
 fn a_leg_on_the_grid_inspected_as_read_is_the_leg_on_the_whole_grid() {
     use std::sync::Arc;
-    let refusing = vec![
-        bx("b0", [641.0, 453.0, 0.0], [1041.0, 933.0, 199.0]),
-        bx("b1", [-137.0, 537.0, 0.0], [57.0, 1047.0, 1383.0]),
-        bx("b3", [623.0, 648.0, 0.0], [767.0, 980.0, 382.0]),
-        bx("b4", [-650.0, -1388.0, 0.0], [-56.0, -1060.0, 872.0]),
-        bx("b5", [581.0, 291.0, 319.0], [1075.0, 445.0, 775.0]),
-        bx("b6", [197.0, 526.0, 383.0], [631.0, 830.0, 635.0]),
-    ];
+    let refusing = refusing_boxes();
     let robot = Robot::irb1400();
     let placement = Placement {
         base_mm: [0.0, 0.0, 0.0],

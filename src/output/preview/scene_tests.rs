@@ -26,6 +26,17 @@ points:
 planner: { grid: 5 }
 ";
 
+/// The scene of a run's outcome.
+fn scene_of(job: &Loaded, out: &pipeline::Outcome) -> Scene {
+    scene(
+        &job.cell,
+        &job.robot,
+        &out.placed,
+        &out.plan,
+        &out.rendered.names,
+    )
+}
+
 fn job() -> Loaded {
     let cell = crate::cell::parse(Path::new("demo.yaml"), CELL).expect("the cell");
     Loaded {
@@ -157,13 +168,7 @@ fn every_link_of_a_shipped_robot_is_drawn_on_its_own_link() {
         robot: Robot::shipped("irb2600_12_165").expect("shipped"),
     };
     let out = pipeline::run(&job, &Options::new(Method::Extensile, 5.0)).expect("plans");
-    let s = scene(
-        &job.cell,
-        &job.robot,
-        &out.placed,
-        &out.plan,
-        &out.rendered.names,
-    );
+    let s = scene_of(&job, &out);
     let links: Vec<String> = s.shapes.iter().take(7).map(|d| d.name.clone()).collect();
     let want: Vec<String> = (0..7).map(|k| format!("link_{k}")).collect();
     assert_eq!(links[1..], want[1..]);
@@ -196,13 +201,7 @@ fn every_link_of_a_shipped_robot_is_drawn_on_its_own_link() {
 fn the_smallest_clearance_is_marked_where_it_occurs() {
     let job = job();
     let out = pipeline::run(&job, &Options::new(Method::Extensile, 5.0)).expect("plans");
-    let s = scene(
-        &job.cell,
-        &job.robot,
-        &out.placed,
-        &out.plan,
-        &out.rendered.names,
-    );
+    let s = scene_of(&job, &out);
     let least = out.plan.least.as_ref().expect("obstacles");
     let c = s.clearance.expect("marked");
     assert_eq!(c.shape, crate::output::clearance_part(least).1);
