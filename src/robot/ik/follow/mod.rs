@@ -4,8 +4,8 @@
 //!
 //! Stage: a path in the cell frame + the start joints -> [`FollowedPath`] (joint samples along
 //! the path, and per chord between two samples a proven bound on how far the controller's
-//! joints stray from the straight joint chord), or a [`FollowError`] that says where (progress in percent
-//! and the TCP position) and why. Beyond the paper, which plans joint moves only.
+//! joints stray from the straight joint chord), or a [`FollowError`] that says where (progress
+//! in percent and the TCP position) and why. Beyond the paper, which plans joint moves only.
 //!
 //! # The continuing solution
 //! At every progress `s` the controller's joints are the inverse kinematics of the path's pose

@@ -85,12 +85,14 @@ pub struct PoseForm {
 type V3 = [Dual; 3];
 type M3 = [[Dual; 3]; 3];
 
+/// A constant computed in floating point (module docs).
 fn k(x: f64) -> Dual {
-    if x.fract() == 0.0 && x.abs() <= 1e6 {
-        Dual::constant(Interval::point(x))
-    } else {
-        Dual::near(x, CONSTANT_EPS)
-    }
+    Dual::near(x, CONSTANT_EPS)
+}
+
+/// A number that is exact: a sign, an integer of the coupling, 0.
+fn exact(x: f64) -> Dual {
+    Dual::constant(Interval::point(x))
 }
 
 /// A constant that is a product or quotient of exact inputs: within `CONSTANT_EPS` of its own
@@ -234,7 +236,7 @@ impl SixAxisIk {
     /// The branch `signs` of the tool0 pose `pose` over the progress `s` (module docs), or
     /// `None` where a step is not defined with room on all of `s`.
     pub fn enclose(&self, pose: &PoseForm, s: Interval, signs: Signs) -> Option<Enclosure> {
-        let sign = |plus: bool| k(if plus { 1.0 } else { -1.0 });
+        let sign = |plus: bool| exact(if plus { 1.0 } else { -1.0 });
         let var = Dual::variable(s);
         let (arc, turn) = (var * k(pose.arc_rad), var * k(pose.turn_rad));
         let (ca, sa, ct, st) = (arc.cos(), arc.sin(), turn.cos(), turn.sin());
@@ -310,12 +312,14 @@ impl SixAxisIk {
         let deg = kr(180.0 / std::f64::consts::PI);
         let q_deg: [Dual; 6] = std::array::from_fn(|j| q[j] * deg - k(self.coupling.offset_deg[j]));
         let axes: [Dual; 6] = std::array::from_fn(|i| {
-            (0..6).fold(k(0.0), |sum, j| {
+            (0..6).fold(exact(0.0), |sum, j| {
+                // The coupling's inverse is exact where it is integer (`LinearCoupling::probe`).
                 let t = self.coupling.to_controller[(i, j)];
+                let factor = if t.fract() == 0.0 { exact(t) } else { k(t) };
                 if t == 0.0 {
                     sum
                 } else {
-                    sum + q_deg[j] * k(t)
+                    sum + q_deg[j] * factor
                 }
             })
         });
