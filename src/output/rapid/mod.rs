@@ -8,7 +8,9 @@
 //! minijinja in strict-undefined mode, no auto-escaping, trailing newline kept),
 //! or the user's template (`--template FILE`, [`ModuleTemplate`]), which sees the
 //! same context (docs/outputs.md, "Your own module template": `module`, `proc`, `header`,
-//! `facts`, `tool`, `wobj`, `wobj_arg`, `targets`, `moves`). A template holds no
+//! `facts`, `tool`, `wobj`, `wobj_arg`, `targets`, `moves` with each move's instruction, kind,
+//! target and actions ([`written_moves`]), `loads`, `conf_on`, and `settings`, the template
+//! settings of `--set`). A template holds no
 //! logic beyond loops and variable output; every number is formatted here with
 //! [`format_fixed`]. An error of the user's template is an input error at its
 //! line ([`TemplateError`]). The guarantees below are the embedded template's; a
