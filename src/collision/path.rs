@@ -27,11 +27,12 @@
 //! ([`CollisionModel::min_clearance_along`], within [`PATH_CLEARANCE_TOL_MM`]) less its margin,
 //! with the part and obstacle of that chord's witness.
 //!
-//! The one assumption is the follower's: its `delta` bounds the deviation (an a-posteriori bound
-//! from the probes' second differences with a safety factor; `robot::ik::follow` argues it and
-//! its tests hold it against dense sampling). With the follower's tolerance of 0.005 deg on
-//! every axis, `m_k` is at most about half a millimetre on an arm of the IRB 1400's size with a
-//! tool, typically far less (most axes bend much less than the tolerance).
+//! The follower's `delta` is a proof, not an estimate (`robot::ik::follow`, "The deviation
+//! bound": the branch's closed form enclosed in interval arithmetic with derivatives over the
+//! chord), under its one assumption: the controller runs the continuous inverse kinematics of
+//! the path's pose from the start joints. With the follower's tolerance of 0.005 deg on every
+//! axis, `m_k` is at most about half a millimetre on an arm of the IRB 1400's size with a tool,
+//! typically far less (most axes bend much less than the tolerance).
 //!
 //! Where a chord fails, the place is where the whole-move proof at `clearance + m_k` fails on
 //! it ([`CollisionModel::first_contact`]: the earliest pair closer than that, or that cannot

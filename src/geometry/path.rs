@@ -87,6 +87,26 @@ enum Shape {
     },
 }
 
+/// How a path's position is made from the progress `s` (for a caller that encloses the pose
+/// over a range of progress, the follower's deviation bound); the orientation is
+/// `start * exp(s turn)` ([`CartesianPath::form`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PathForm {
+    /// `from + s (to - from)`.
+    Line {
+        from: Vector3<f64>,
+        to: Vector3<f64>,
+    },
+    /// `centre + radius_mm (cos(angle_rad s) u + sin(angle_rad s) w)`.
+    Arc {
+        centre: Vector3<f64>,
+        radius_mm: f64,
+        u: Vector3<f64>,
+        w: Vector3<f64>,
+        angle_rad: f64,
+    },
+}
+
 /// A TCP path: a pose at every progress `s` in `[0, 1]` (module docs).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CartesianPath {
@@ -224,6 +244,32 @@ impl CartesianPath {
                 via: b,
             },
         })
+    }
+
+    /// The formula of [`pose_at`](Self::pose_at) inside `(0, 1)`: the positions' form, the
+    /// start's orientation, and the turn as a scaled axis in the start's frame (rad).
+    pub fn form(&self) -> (PathForm, UnitQuaternion<f64>, Vector3<f64>) {
+        let form = match self.shape {
+            Shape::Line => PathForm::Line {
+                from: self.start.translation.vector,
+                to: self.end.translation.vector,
+            },
+            Shape::Arc {
+                centre,
+                radius_mm,
+                u,
+                w,
+                angle_rad,
+                ..
+            } => PathForm::Arc {
+                centre: centre.coords,
+                radius_mm,
+                u,
+                w,
+                angle_rad,
+            },
+        };
+        (form, self.start.rotation, self.turn)
     }
 
     /// The pose at the start (`s` = 0).

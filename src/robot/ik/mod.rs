@@ -8,6 +8,9 @@
 //! hits which obstacle).
 
 pub mod follow;
+pub mod interval;
+#[cfg(test)]
+mod interval_tests;
 pub mod six;
 pub mod wrist;
 

@@ -3,9 +3,9 @@
 //! `MoveL` line or a `MoveC` arc ([`CartesianPath`]), from the configuration the move starts in.
 //!
 //! Stage: a path in the cell frame + the start joints -> [`FollowedPath`] (joint samples along
-//! the path, and per chord between two samples a bound on how far the true joint path strays
-//! from the straight joint chord), or a [`FollowError`] that says where (progress in percent
-//! and the TCP position) and why. Beyond the paper, which plans joint moves only.
+//! the path, and per chord between two samples a proven bound on how far the controller's
+//! joints stray from the straight joint chord), or a [`FollowError`] that says where (progress
+//! in percent and the TCP position) and why. Beyond the paper, which plans joint moves only.
 //!
 //! # The continuing solution
 //! At every progress `s` the controller's joints are the inverse kinematics of the path's pose
@@ -15,30 +15,63 @@
 //! 181, not to -179; no range applied), the branch nearest the previous joints on every axis
 //! (the largest axis difference, then the solver's fixed order). Far from singular poses the
 //! branches of a pose lie tens of degrees apart or more, so with steps of at most
-//! [`MAX_PROBE_STEP_DEG`] the nearest branch is the one that continues.
+//! [`MAX_PROBE_STEP_DEG`] the nearest branch is the one that continues; the deviation bound
+//! (below) proves it of every sample.
 //!
-//! # Samples, chords and the deviation bound
+//! # Samples and chords
 //! The path is cut into chords `[s0, s1]` with adaptive steps. On each, the continuing solution
-//! is taken at four probes `s0 + h j / 4` (`j` = 1..4, each continuing from the one before), and
-//! its deviation from the straight joint chord `q(s0) -> q(s1)` at the interior probes,
-//! `e_j = q(s_j) - (q(s0) + j/4 (q(s1) - q(s0)))` (with `e_0 = e_4 = 0`), per axis. Between the
-//! probes, the deviation of a twice differentiable joint path differs from the straight line
-//! through its probe values by at most `(h/4)^2 / 8 max |q''|` (linear interpolation's error),
-//! and `q'' (h/4)^2` is measured by the second differences `e_{j-1} - 2 e_j + e_{j+1}`. So the
-//! bound kept for the chord, per axis, is
+//! is taken at four probes `s0 + h j / 4` (`j` = 1..4, each continuing from the one before):
+//! they locate a jump, a range exit or the wrist singularity, and the last is the chord's end
+//! sample. A chord is refined (halved) where its deviation bound (below) exceeds the tolerance,
+//! [`DEVIATION_TOL_DEG`], where the bound cannot be had, or where a probe moves an axis more
+//! than [`MAX_PROBE_STEP_DEG`]; accepted chords double the next step where the bound is under
+//! a quarter of the tolerance.
+//!
+//! # The deviation bound
+//! Per chord and axis, a bound `delta` on how far the controller's joints stray from the
+//! straight joint chord `q0 -> q1` between the two samples, proven as follows.
+//!
+//! *What the controller runs (the one assumption).* The controller's joints along the path are
+//! the continuous solution of the inverse kinematics of the path's pose ([`CartesianPath`]'s
+//! formula: the position on the line or the circle, the orientation slerped) that starts at the
+//! start joints. Of the closed form's eight branches (`six::Signs`: arm stance, elbow, wrist
+//! flip), that is the one whose solution of the start pose is the start joints
+//! (`start_branch`: the start pose is the forward kinematics of the start joints, so they agree
+//! to rounding, `e_0` below), for as long as no two branches meet; and two meet only where the
+//! branch's closed form has a singular step, which every enclosure below excludes.
+//!
+//! *Enclosures.* On an interval `S` of progress, `six::enclose` evaluates that branch's closed
+//! form in interval arithmetic with derivatives (`ik::interval`, outward rounding): per axis an
+//! interval `[a, b]` holding `dq/ds` at every `s` in `S`, and, at a point, an interval holding
+//! the axis value modulo a full turn. It gives nothing where a step may be singular on `S` (the
+//! wrist centre on the axis-1 line, the elbow stretched or folded, axis 5 at 0); there the
+//! chord is refined, and at the smallest step refused as a jump.
+//!
+//! *The end sample.* With `q0` within `e0` of the controller's joints at `s0` (`e0` from the
+//! chord before; at the start from `start_branch`), the controller's axis at `s1` lies in
+//! `q0 +- e0 + h [a, b]` (mean value theorem, `h = s1 - s0`) and, up to full turns, in the
+//! branch's value at `s1`. Where the first interval is narrower than a half turn these meet in
+//! one interval, which holds the controller's axis; `e1` is how far `q1` (the probe) may lie
+//! from it. A probe on another branch, or a turn off, gives a large `e1` and the chord is
+//! refined: the samples are the controller's joints, within `e1`, not only the nearest branch.
+//!
+//! *Between the samples.* Let `m = (q1 - q0) / h` (the chord's slope) and `g(s) = q(s) - q0 -
+//! (s - s0) m` the deviation of the controller's axis `q` from the chord. Then `|g(s0)| <= e0`,
+//! `|g(s1)| <= e1` and `g' = q' - m` lies in `[a - m, b - m]`, so with `A = m - a`,
+//! `B = b - m` (taken as 0 when negative):
 //!
 //! ```text
-//! delta = max_j |e_j| + SAFETY * max_j |e_{j-1} - 2 e_j + e_{j+1}| / 8 + floor
+//! g(s) <= e0 + (s - s0) B   and   g(s) <= e1 + (s1 - s) A     (and the same for -g, A and B
+//! |g(s)| <= max(e0, e1) + h A B / (A + B)  =: delta               swapped)
 //! ```
 //!
-//! with [`SAFETY`] = 4 covering a `q''` up to four times the largest measured on the chord
-//! (the chords are refined until `delta` is below the tolerance, [`DEVIATION_TOL_DEG`], so a
-//! chord is short where the joints bend, and `q''` varies little along it away from singular
-//! poses, which are refused) and a floor of [`DEVIATION_FLOOR_DEG`] for the solver's rounding.
-//! It is an a-posteriori bound, not an interval proof: the tests hold it against the continuing
-//! solution sampled densely along every chord. A chord is refined (halved) where `delta`
-//! exceeds the tolerance or a probe moves an axis more than [`MAX_PROBE_STEP_DEG`]; accepted
-//! chords double the next step where `delta` is under a quarter of the tolerance.
+//! the minimum of the two lines being largest where they cross. `h A B / (A + B)` is at most
+//! `h (b - a) / 4`: second order in `h`, since `b - a` shrinks with `S` (about `h max |q''|`
+//! times the enclosure's overestimate). Every step of it is computed in interval arithmetic and
+//! rounded up. The tests hold `delta` against the continuing solution sampled densely along
+//! every chord of the shipped process cells and of random lines and arcs, and show a joint path
+//! with a narrow bump between the probes that an estimate from the probes' second differences
+//! misses and this bound does not.
 //!
 //! # What is refused, and where
 //! Each is located by refining down to a step of [`MIN_STEP`] (of the progress) at the place it
@@ -75,7 +108,10 @@
 //!
 //! Same input, same output: the steps depend on the path and the start joints only.
 
-use super::six::{describe_violation, ConfData, SixAxisError, SixAxisIk};
+use super::interval::Interval;
+use super::six::{
+    describe_violation, ConfData, Enclosure, PoseForm, Signs, SixAxisError, SixAxisIk,
+};
 use crate::geometry::path::CartesianPath;
 use crate::rapid_data::SpeedData;
 use crate::robot::{Axes6, AxisSpec, RangeViolation, Robot};
@@ -93,10 +129,6 @@ pub const START_TOL_DEG: f64 = 0.01;
 /// The most a probe may move an axis from the probe before it, deg: the step at which the
 /// nearest branch is the continuing one (module docs).
 pub const MAX_PROBE_STEP_DEG: f64 = 1.0;
-/// The safety factor on the estimated interpolation error between probes (module docs).
-pub const SAFETY: f64 = 4.0;
-/// The least deviation bound of a chord, deg: the solver's rounding.
-pub const DEVIATION_FLOOR_DEG: f64 = 1e-9;
 /// How far a chord widened by its bound may pass a limit (rounding), deg.
 pub const RANGE_SLACK_DEG: f64 = 1e-6;
 /// The smallest step (of the progress) a chord is refined to before a refusal.
@@ -221,6 +253,8 @@ pub struct PathSample {
 pub struct FollowedPath {
     /// The path, cell frame.
     path: CartesianPath,
+    /// Where it was run (the base and the tool).
+    frames: TcpFrames,
     /// From `s` = 0 (the start joints) to `s` = 1, increasing.
     samples: Vec<PathSample>,
     /// Per chord (samples `k` -> `k + 1`): per axis, how far the joints along the path stray
@@ -327,8 +361,18 @@ pub fn follow_with(
             previous,
         )
     };
-    let (samples, deviation_deg) = track(start, &solve, &Limits::of(robot), settings)
-        .map_err(|stop| stop.into_error(path, settings))?;
+    let form = ik.pose_form(&robot_from_cell, path, &tframe_inverse);
+    let (signs, start_error) = start_branch(ik, &form, start);
+    let enclose = |s: Interval| ik.enclose(&form, s, signs);
+    let (samples, deviation_deg) = track(
+        start,
+        &start_error,
+        &solve,
+        &enclose,
+        &Limits::of(robot),
+        settings,
+    )
+    .map_err(|stop| stop.into_error(path, settings))?;
     let end = samples.last().map_or(*start, |x| x.joints_deg);
     let reached = ik.conf(&end);
     if let Some(wanted) = end_conf {
@@ -342,10 +386,45 @@ pub fn follow_with(
     }
     Ok(FollowedPath {
         path: *path,
+        frames: *frames,
         samples,
         deviation_deg,
         end_conf: reached,
     })
+}
+
+/// The branch the controller runs from `start` (module docs, "The deviation bound"): the signs
+/// whose solution of the path's start pose, modulo full turns, lies nearest `start`, and per axis
+/// how far from `start` that solution may lie (deg; infinite when no branch is defined there).
+fn start_branch(ik: &SixAxisIk, form: &PoseForm, start: &Axes6) -> (Signs, [f64; 6]) {
+    let mut best = (Signs::all()[0], [f64::INFINITY; 6]);
+    for signs in Signs::all() {
+        let Some(e) = ik.enclose(form, Interval::point(0.0), signs) else {
+            continue;
+        };
+        let error: [f64; 6] = std::array::from_fn(|i| {
+            let v = e.value_deg[i];
+            let turned = v.shift(360.0 * ((start[i] - v.mid()) / 360.0).round());
+            farthest(start[i], &turned)
+        });
+        if max_of(&error) < max_of(&best.1) {
+            best = (signs, error);
+        }
+    }
+    best
+}
+
+/// The largest of six numbers.
+fn max_of(a: &[f64; 6]) -> f64 {
+    a.iter().fold(0.0, |m, x| m.max(*x))
+}
+
+/// How far `x` may lie from a member of `within` at most, rounded up.
+fn farthest(x: f64, within: &Interval) -> f64 {
+    let p = Interval::point(x);
+    (p - Interval::point(within.lo()))
+        .hi()
+        .max((Interval::point(within.hi()) - p).hi())
 }
 
 /// The ranges a path must keep (controller values, deg).
@@ -477,40 +556,87 @@ impl Stop {
     }
 }
 
-/// A chord tried: accepted with its end joints and deviation bound, or to be refined because of
-/// what happened at progress `s`.
+/// A chord tried: accepted with its end joints, its deviation bound and the bound on how far
+/// the end joints lie from the controller's, or to be refined because of what happened at
+/// progress `s`.
 enum Outcome {
-    Accept { end: Axes6, deviation: [f64; 6] },
-    Refine { s: f64, why: Trouble },
+    Accept {
+        end: Axes6,
+        deviation: [f64; 6],
+        end_error: [f64; 6],
+    },
+    Refine {
+        s: f64,
+        why: Trouble,
+    },
 }
 
-/// Per axis `max_j |e_j| + SAFETY * max_j |second difference| / 8 + floor` of the deviations
-/// `e` at the interior probes 1..3 (module docs).
-pub(crate) fn deviation_bound(probes: &[Axes6; 5]) -> [f64; 6] {
-    std::array::from_fn(|i| {
-        let (q0, q4) = (probes[0][i], probes[4][i]);
-        let e: [f64; 5] =
-            std::array::from_fn(|j| probes[j][i] - (q0 + (j as f64 / 4.0) * (q4 - q0)));
-        let largest = e[1].abs().max(e[2].abs()).max(e[3].abs());
-        let bend = (1..4)
-            .map(|j| (e[j - 1] - 2.0 * e[j] + e[j + 1]).abs())
-            .fold(0.0, f64::max);
-        largest + SAFETY * bend / 8.0 + DEVIATION_FLOOR_DEG
-    })
+/// The deviation bound of the chord `q0 -> q1` over `[s0, s1]` (module docs, "The deviation
+/// bound"): `q0` within `e0` of the controller's joints at `s0`; `over` the branch's enclosure
+/// on `[s0, s1]`, `end` at `s1`. Per axis the bound and how far `q1` may lie from the
+/// controller's joints at `s1`; `None` where the end cannot be placed on the branch.
+pub(crate) fn chord_bound(
+    (s0, q0, e0): (f64, &Axes6, &[f64; 6]),
+    (s1, q1): (f64, &Axes6),
+    over: &Enclosure,
+    end: &Enclosure,
+) -> Option<([f64; 6], [f64; 6])> {
+    let h = Interval::point(s1) - Interval::point(s0);
+    let mut deviation = [0.0; 6];
+    let mut end_error = [0.0; 6];
+    for i in 0..6 {
+        let rate = over.rate_deg[i];
+        // Where the controller's axis is at s1: reached from q0 at a rate within `rate`, and
+        // the branch's value there up to full turns.
+        let reach = Interval::around(q0[i], e0[i]) + h * rate;
+        let v = end.value_deg[i];
+        if !(reach.is_valid() && v.is_valid()) || reach.width() + v.width() >= 180.0 {
+            return None;
+        }
+        let there = v
+            .shift(360.0 * ((reach.mid() - v.mid()) / 360.0).round())
+            .intersect(&reach);
+        if !there.is_valid() {
+            return None;
+        }
+        let e1 = farthest(q1[i], &there);
+        // The chord's slope against the rates: the joints stray from it by at most
+        // h a b / (a + b) beyond the ends' errors.
+        let slope = (Interval::point(q1[i]) - Interval::point(q0[i])) * h.recip();
+        let a = (slope - rate).hi().max(0.0);
+        let b = (rate - slope).hi().max(0.0);
+        let bend = if a + b > 0.0 {
+            let (a, b) = (Interval::point(a), Interval::point(b));
+            (h * a * b * (a + b).recip()).hi()
+        } else {
+            0.0
+        };
+        let d = (Interval::point(e0[i].max(e1)) + Interval::point(bend)).hi();
+        if !d.is_finite() {
+            return None;
+        }
+        deviation[i] = d;
+        end_error[i] = e1;
+    }
+    Some((deviation, end_error))
 }
 
 /// The chord `[s0, s1]` from joints `q0` (module docs, "Samples, chords and the deviation
 /// bound").
-fn try_chord<F>(
+#[allow(clippy::too_many_arguments)]
+fn try_chord<F, G>(
     s0: f64,
     q0: &Axes6,
+    e0: &[f64; 6],
     s1: f64,
     solve: &F,
+    enclose: &G,
     limits: &Limits,
     settings: &FollowSettings,
 ) -> Outcome
 where
     F: Fn(f64, &Axes6) -> Result<Axes6, SixAxisError>,
+    G: Fn(Interval) -> Option<Enclosure>,
 {
     let h = s1 - s0;
     let mut probes = [*q0; 5];
@@ -555,15 +681,18 @@ where
             };
         }
     }
-    let deviation = deviation_bound(&probes);
-    if deviation
-        .iter()
-        .any(|d| d.is_nan() || *d > settings.deviation_tol_deg)
-    {
-        // Report the probe step that moves the worst axis most.
-        let worst = (0..6)
-            .max_by(|a, b| deviation[*a].total_cmp(&deviation[*b]))
-            .unwrap_or(0);
+    let bound = match (enclose(Interval::new(s0, s1)), enclose(Interval::point(s1))) {
+        (Some(over), Some(end)) => chord_bound((s0, q0, e0), (s1, &probes[4]), &over, &end),
+        _ => None,
+    };
+    let within = bound.filter(|(d, _)| d.iter().all(|d| *d <= settings.deviation_tol_deg));
+    let Some((deviation, end_error)) = within else {
+        // Report the probe step that moves the worst axis most (the axis that moves most
+        // where the branch could not be enclosed).
+        let worst = match bound {
+            Some((d, _)) => (0..6).max_by(|a, b| d[*a].total_cmp(&d[*b])).unwrap_or(0),
+            None => largest_change(q0, &probes[4]).0,
+        };
         let (j, change_deg) = (1..5)
             .map(|j| (j, (probes[j][worst] - probes[j - 1][worst]).abs()))
             .fold((1, -1.0), |b, x| if x.1 > b.1 { x } else { b });
@@ -576,7 +705,7 @@ where
                 to: at[j],
             },
         };
-    }
+    };
     let end = probes[4];
     let mid = 0.5 * (s0 + s1);
     if let Some(v) = limits.check_band(q0, &end, &deviation, RANGE_SLACK_DEG) {
@@ -593,7 +722,11 @@ where
             why: Trouble::Singular(if a5.abs() < b5.abs() { a5 } else { b5 }),
         };
     }
-    Outcome::Accept { end, deviation }
+    Outcome::Accept {
+        end,
+        deviation,
+        end_error,
+    }
 }
 
 /// The axis (0-based) that changes most from `a` to `b`, and by how much (deg).
@@ -604,15 +737,20 @@ fn largest_change(a: &Axes6, b: &Axes6) -> (usize, f64) {
 }
 
 /// The samples and chord bounds of a path whose continuing solution at progress `s` from the
-/// previous joints is `solve(s, previous)`, from joints `start` (module docs).
-pub(crate) fn track<F>(
+/// previous joints is `solve(s, previous)` and whose branch over a range of progress is
+/// enclosed by `enclose`, from joints `start`, within `start_error` of the branch's (module
+/// docs).
+pub(crate) fn track<F, G>(
     start: &Axes6,
+    start_error: &[f64; 6],
     solve: &F,
+    enclose: &G,
     limits: &Limits,
     settings: &FollowSettings,
 ) -> Result<(Vec<PathSample>, Vec<[f64; 6]>), Stop>
 where
     F: Fn(f64, &Axes6) -> Result<Axes6, SixAxisError>,
+    G: Fn(Interval) -> Option<Enclosure>,
 {
     if let Some(v) = limits.check(start) {
         return Err(Stop {
@@ -632,6 +770,7 @@ where
     }];
     let mut deviations = Vec::new();
     let (mut s, mut q, mut h) = (0.0f64, *start, FIRST_STEP);
+    let mut error = *start_error;
     // Every try either accepts a chord or halves the step, which it can do at most
     // log2(1 / MIN_STEP) times in a row: a budget on tries follows from the one on chords.
     let mut tries = 0usize;
@@ -649,8 +788,12 @@ where
         } else {
             s + step
         };
-        match try_chord(s, &q, s1, solve, limits, settings) {
-            Outcome::Accept { end, deviation } => {
+        match try_chord(s, &q, &error, s1, solve, enclose, limits, settings) {
+            Outcome::Accept {
+                end,
+                deviation,
+                end_error,
+            } => {
                 let largest = deviation.iter().fold(0.0f64, |m, d| m.max(*d));
                 samples.push(PathSample {
                     s: s1,
@@ -662,7 +805,7 @@ where
                 } else {
                     s1 - s
                 };
-                (s, q) = (s1, end);
+                (s, q, error) = (s1, end, end_error);
             }
             Outcome::Refine { s: at, why } => {
                 if s1 - s <= MIN_STEP {
@@ -708,6 +851,11 @@ impl FollowedPath {
     /// The path followed, cell frame.
     pub fn path(&self) -> &CartesianPath {
         &self.path
+    }
+
+    /// The robot base and the tool the path was run with.
+    pub fn frames(&self) -> &TcpFrames {
+        &self.frames
     }
 
     /// The samples, from `s` = 0 (the start joints) to `s` = 1.

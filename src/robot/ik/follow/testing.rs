@@ -78,6 +78,42 @@ pub(crate) fn conveyor(x: f64, y: f64, z: f64) -> Isometry3<f64> {
 pub(crate) const ABOVE_PICK: Axes6 = [-18.435, 11.508, 30.997, 0.0, 59.003, 71.565];
 pub(crate) const ABOVE_PLACE: Axes6 = [90.0, 9.123, 35.675, 0.0, 54.325, 180.0];
 
+/// Random joints of the IRB 1400 about its working pose (axis 5 from 20 to 90 deg, clear of the
+/// wrist singularity), not all in range: the random paths' starts.
+pub(crate) fn random_joints(rng: &mut crate::geometry::testing::Rng) -> Axes6 {
+    [
+        rng.range(-120.0, 120.0),
+        rng.range(-30.0, 50.0),
+        rng.range(-20.0, 40.0),
+        rng.range(-90.0, 90.0),
+        rng.range(20.0, 90.0),
+        rng.range(-180.0, 180.0),
+    ]
+}
+
+/// A random move: start joints, the TCP there, the end pose, the direction to it.
+pub(crate) type RandomMove = (Axes6, Isometry3<f64>, Isometry3<f64>, Vector3<f64>);
+
+/// A random process move's start and end (cell frame): `random_joints` in range, the TCP
+/// there, and a pose 100 to 300 mm away along a random direction (returned too), turned up
+/// to 30 deg about a random axis; `None` for joints out of range.
+pub(crate) fn random_move(
+    rng: &mut crate::geometry::testing::Rng,
+    robot: &Robot,
+    frames: &TcpFrames,
+) -> Option<RandomMove> {
+    let start = random_joints(rng);
+    robot.check_range6(&start).ok()?;
+    let a = tcp(robot, frames, &start);
+    let dir = rng.point(-1.0, 1.0).coords.normalize();
+    let axis = rng.point(-1.0, 1.0).coords.normalize();
+    let end = Isometry3::from_parts(
+        (a.translation.vector + dir * rng.range(100.0, 300.0)).into(),
+        UnitQuaternion::from_scaled_axis(axis * rng.range(0.0, 30f64.to_radians())) * a.rotation,
+    );
+    Some((start, a, end, dir))
+}
+
 /// The TCP (cell frame) at `joints`.
 pub(crate) fn tcp(robot: &Robot, frames: &TcpFrames, joints: &Axes6) -> Isometry3<f64> {
     frames.cell_from_robot * robot.tool0(joints) * frames.tframe

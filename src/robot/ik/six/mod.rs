@@ -96,6 +96,9 @@ mod choose;
 #[cfg(test)]
 mod choose_tests;
 mod conf;
+mod enclose;
+#[cfg(test)]
+mod enclose_tests;
 mod error;
 mod solve;
 #[cfg(test)]
@@ -104,6 +107,7 @@ mod tests;
 pub use bound::PoseBound;
 pub use choose::{move_cost, ChooseError, MoveCost};
 pub use conf::{BehindAxis1From, ConfData, CFX_BEHIND_AXIS_1_FROM, QUADRANT_TOL_DEG};
+pub use enclose::{Enclosure, PoseForm, Signs, CONSTANT_EPS};
 pub use error::{describe_violation, excess_deg, Candidate, SixAxisError};
 
 use crate::robot::{Axes6, Robot};
