@@ -2,7 +2,7 @@
 //! independently of the library's inverse kinematics: for every robtarget point, the forward
 //! kinematics of its written jointtarget, carried through the written tooldata's tframe and
 //! expressed in the written wobjdata's user frame (robot base at the header's placement), must
-//! give the written robtarget within 0.1 mm and 0.01 deg (issue 9); the written robtarget must
+//! give the written robtarget within 0.1 mm and 0.01 deg; the written robtarget must
 //! be the cell's pose (as given, normalised) and its confdata that of the jointtarget, computed
 //! here from the RAPID definition (and the cell's, when it gives one). Also the motion of every
 //! move: the tool and work object the cell names, the point's speed and zone (the cell's
@@ -14,7 +14,7 @@ use super::library::{Cell, Robot, Target};
 use super::module::Module;
 use nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
 
-/// The written joint values must reach the robtarget within these (issue 9).
+/// The written joint values must reach the robtarget within these.
 pub const TCP_TOL_MM: f64 = 0.1;
 pub const TCP_TOL_DEG: f64 = 0.01;
 
@@ -100,7 +100,7 @@ pub fn check_tcp(
             break;
         };
         let speed = p.speed.clone().unwrap_or_else(|| cell.motion.speed.clone());
-        // The zone asked for, or `fine` where its corner was not proven (issue 10; the dense
+        // The zone asked for, or `fine` where its corner was not proven (the dense
         // check samples every corner written with a fly-by zone), and `fine` at the ends.
         let asked = match m.target == p.name {
             true => p.zone.clone().unwrap_or_else(|| cell.motion.zone.clone()),
