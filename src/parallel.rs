@@ -6,6 +6,7 @@
 //! proofs in `refine::shortcut`, and with a limit on threads ([`map_on`]) the legs of a route in
 //! `plan::route`.
 
+use std::cell::Cell;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Mutex, OnceLock};
 
@@ -34,10 +35,11 @@ static RUNNING: AtomicUsize = AtomicUsize::new(1);
 /// that many items are in hand at once, whatever memory each holds. `max_threads` 0 or 1
 /// computes every item here, in order.
 ///
-/// The caller computes items too, beside the threads it starts, and a map asked while other
-/// maps' threads keep the cores busy (a map inside a map's item) starts only as many threads as
-/// cores are left: a thread costs tens of microseconds to start, and more threads than cores
-/// only share them. Which thread computes an item never changes its result.
+/// The caller computes items too, beside the threads it starts (and counts as idle once it only
+/// waits for them), and a map asked while other maps' threads keep the cores busy (a map inside
+/// a map's item) starts only as many threads as cores are left: a thread costs tens of
+/// microseconds to start, and more threads than cores only share them. Which thread computes an
+/// item never changes its result.
 pub fn map_on<T: Sync, R: Send>(
     max_threads: usize,
     items: &[T],
@@ -64,6 +66,7 @@ pub fn map_on<T: Sync, R: Send>(
             all.extend(mine);
         }
     };
+    let waiting = Waiting(Cell::new(false));
     std::thread::scope(|s| {
         for _ in 1..threads {
             RUNNING.fetch_add(1, Ordering::Relaxed);
@@ -74,10 +77,26 @@ pub fn map_on<T: Sync, R: Send>(
             });
         }
         work();
+        // No more items: the caller waits for its threads, and its core is free for theirs.
+        RUNNING.fetch_sub(1, Ordering::Relaxed);
+        waiting.0.set(true);
     });
+    drop(waiting);
     let mut all = done.into_inner().unwrap_or_else(|e| e.into_inner());
     all.sort_unstable_by_key(|&(i, _)| i);
     all.into_iter().map(|(_, r)| r).collect()
+}
+
+/// The caller of a map, counted out of [`RUNNING`] while it waits for the threads it started
+/// (when it holds `true`), and back in when it is dropped.
+struct Waiting(Cell<bool>);
+
+impl Drop for Waiting {
+    fn drop(&mut self) {
+        if self.0.get() {
+            RUNNING.fetch_add(1, Ordering::Relaxed);
+        }
+    }
 }
 
 /// A thread a map started, counted in [`RUNNING`] until it is dropped.
