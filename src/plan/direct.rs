@@ -8,7 +8,10 @@
 //! proven is that one move: no search, no shortening, no grid node inspected for it. The grid,
 //! inspected as its waves ask (`cspace`), plans only the other legs, so a cell whose legs are all
 //! proven inspects no node at all. A straight joint move is the shortest path in joint space, the
-//! one a shortened and straightened grid path tends to.
+//! one a shortened and straightened grid path tends to. It is not always the fastest in the
+//! time estimate (a TCP speed limit slows a long move as a whole, where a route through vias
+//! may be slowed only in part); a proven straight leg is taken without planning the grid route
+//! that would tell (`docs/planning.md`, "How it plans", 7).
 //!
 //! The paper plans every leg on its grid: a route with a leg planned here is not the paper's
 //! method alone ([`Route::paper_alone`] says so), and `Legs::GridOnly` keeps the paper's method

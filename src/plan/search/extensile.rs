@@ -19,7 +19,8 @@ use std::collections::{BinaryHeap, HashMap};
 
 pub(crate) fn candidates(w: &Wave, n: Node, label: u32, prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     let mut c: Vec<[i32; 3]> = offsets(Connectivity::TwentySix).to_vec();
-    c.sort_by_key(|o| {
+    // Stable, each key read once (a label read per neighbour, not per comparison).
+    c.sort_by_cached_key(|o| {
         let l = match w.label_next_to(add(n, *o), label) {
             0 => u32::MAX,
             l => l,

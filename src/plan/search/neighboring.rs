@@ -17,9 +17,9 @@ use crate::plan::wave::{self, offsets, Connectivity, Graph, Wave};
 
 pub(crate) fn candidates(w: &Wave, n: Node, here: u32, _prev: Option<[i32; 3]>) -> Vec<[i32; 3]> {
     let mut c: Vec<[i32; 3]> = offsets(Connectivity::TwentySix).to_vec();
-    // Stable sort: smallest number first; among equals the node nearest the start node
-    // (squared grid distance), then the fixed order. Unnumbered last.
-    c.sort_by_key(|o| {
+    // Stable sort (each key read once): smallest number first; among equals the node nearest
+    // the start node (squared grid distance), then the fixed order. Unnumbered last.
+    c.sort_by_cached_key(|o| {
         let m = super::add(n, *o);
         let label = match w.label_next_to(m, here) {
             0 => u32::MAX,
