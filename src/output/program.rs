@@ -8,7 +8,7 @@
 //! [`RobotFacts`] of the robot files; no text is produced here (`rapid` does).
 
 use super::rapid::{
-    Action, AxisRanges, Header, JointTarget, LoadData, MoveHow, Pose, Program, RobTarget,
+    Action, AxisRanges, Ends, Header, JointTarget, LoadData, MoveHow, Pose, Program, RobTarget,
     TargetKind, ToolData, WobjData,
 };
 use crate::cell::{ActionKind, Cell, Frame};
@@ -94,6 +94,9 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             .unwrap_or_default()
     };
     let kinds = std::iter::once(MoveKind::Joint).chain(plan.moves.iter().map(|m| m.kind));
+    // The entries reached so far: an entry reached again (the leg closing the cycle) is a
+    // revisit without actions.
+    let mut reached = vec![false; cell.points.len()];
     let targets = plan
         .route
         .waypoints
@@ -102,11 +105,22 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
         .zip(kinds)
         .map(|((w, motion), move_kind)| {
             let (kind, robtarget, actions) = match w.kind {
-                WaypointKind::CellPoint(i) => (
-                    TargetKind::CellPoint { name: name_of(i) },
-                    robtarget_of(i),
-                    actions(cell, i),
-                ),
+                WaypointKind::CellPoint(i) => {
+                    let again = reached.get(i).copied().unwrap_or(false);
+                    if let Some(r) = reached.get_mut(i) {
+                        *r = true;
+                    }
+                    let revisit = cell.points.get(i).is_some_and(|p| p.revisit_of.is_some());
+                    let kind = match revisit || again {
+                        true => TargetKind::Revisit { point: name_of(i) },
+                        false => TargetKind::CellPoint { name: name_of(i) },
+                    };
+                    let actions = match again {
+                        true => Vec::new(),
+                        false => actions(cell, i),
+                    };
+                    (kind, robtarget_of(i), actions)
+                }
                 WaypointKind::Via { leg, index } => {
                     (TargetKind::Via { leg, index }, None, Vec::new())
                 }
@@ -182,6 +196,7 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             via_zone: cell.motion.via_zone.clone(),
             paper: plan.paper.map(|p| (p.moves, p.time_s)),
             frame,
+            ends: ends(cell, plan),
         },
         targets,
         // The tool block's name when there is one (the cell validation sees to it).
@@ -234,4 +249,30 @@ fn actions(cell: &Cell, i: usize) -> Vec<Action> {
             },
         })
         .collect()
+}
+
+/// Where the routine of `plan` ends: at the first entry's target (its last waypoint is that
+/// target: the first entry, a revisit of it, the point the first entry revisits, or a point at
+/// the very same joints), or elsewhere (the last entry's target or its retract pose).
+fn ends(cell: &Cell, plan: &Plan) -> Ends {
+    let origin = |i: usize| cell.points.get(i).and_then(|p| p.revisit_of).unwrap_or(i);
+    let name = |i: usize| cell.points.get(i).map(|p| p.name.clone()).unwrap_or_default();
+    let (first, last) = (plan.route.waypoints.first(), plan.route.waypoints.last());
+    let same_joints = first
+        .zip(last)
+        .is_some_and(|(a, b)| a.joints_deg == b.joints_deg);
+    match last.map(|w| w.kind) {
+        Some(WaypointKind::CellPoint(i)) if origin(i) == origin(0) || same_joints => {
+            Ends::AtStart
+        }
+        last => Ends::Elsewhere {
+            first: name(0),
+            last: match last {
+                Some(WaypointKind::Retract(i)) => format!("{}'s retract pose", name(i)),
+                Some(WaypointKind::Approach(i)) => format!("{}'s approach pose", name(i)),
+                Some(WaypointKind::CellPoint(i)) => name(i),
+                _ => "a via".to_string(),
+            },
+        },
+    }
 }

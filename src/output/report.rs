@@ -306,7 +306,12 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
     let cell_points = program
         .targets
         .iter()
-        .filter(|t| matches!(t.kind, TargetKind::CellPoint { .. }))
+        .filter(|t| {
+            matches!(
+                t.kind,
+                TargetKind::CellPoint { .. } | TargetKind::Revisit { .. }
+            )
+        })
         .count();
     let h = &program.header;
     Ok(Report {

@@ -33,6 +33,7 @@
 //!     ! moves: <moves>
 //!     ! min clearance (mm): <min_clearance_mm, 1 decimal, or `none (no obstacles)`>
 //!     ! estimated time (s): <estimated_time_s, 2 decimals>   (only when known)
+//!     ! cycle: closed: ... | open: the routine ends at <last>, not where it starts (<first>); ...
 //!     ! zoned vias: <N> of <M> (via zone <zone>)
 //!     ! the paper's method alone: <n> moves, <t, 2 decimals> s   (only when known)
 //!
@@ -94,7 +95,7 @@ mod target_names;
 
 pub use data::{AxisRanges, Pose, RobTarget, ToolData, WobjData, NO_EXTERNAL_AXES};
 pub use format::format_fixed;
-pub use header::{Header, NO_CONTROLLER};
+pub use header::{Ends, Header, NO_CONTROLLER};
 pub use target_names::{target_names, target_names_avoiding};
 
 use crate::names::{check_data_name, check_identifier, robtarget_name, IdentifierError};
@@ -150,6 +151,12 @@ pub enum TargetKind {
         leg: usize,
         /// 1-based index of the via within its leg.
         index: usize,
+    },
+    /// A point's target reached again (a `{ revisit: NAME }` entry, or the leg closing the
+    /// cycle): moved to by the point's own data, declares nothing.
+    Revisit {
+        /// The point's name.
+        point: String,
     },
     /// A robtarget point's approach pose, `RelTool(<point>_rt, 0, 0, -D)` (declares nothing).
     Approach {
@@ -824,6 +831,11 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             wobj: program.wobj.as_ref().map(|w| w.name.clone()),
             wobj_arg: wobj_arg.clone(),
         });
+        // A revisit moves to its point's data and declares none.
+        let robtarget = match target.kind {
+            TargetKind::Revisit { .. } => None,
+            _ => robtarget,
+        };
         targets.push(TargetCtx {
             jointtarget: robtarget.is_none()
                 && matches!(
@@ -833,6 +845,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             value: format!("[[{axes}],{NO_EXTERNAL_AXES}]"),
             kind: match target.kind {
                 TargetKind::CellPoint { .. } => "cell",
+                TargetKind::Revisit { .. } => "revisit",
                 TargetKind::Via { .. } => "via",
                 TargetKind::Approach { .. } => "approach",
                 TargetKind::Retract { .. } => "retract",
@@ -969,7 +982,7 @@ fn check_name_space(program: &Program, target_names: &[String]) -> Result<(), Ra
             let v = format!("{name}_via");
             declared.push((v.clone(), format!("the circle point `{v}`")));
         }
-        if t.robtarget.is_some() {
+        if let (Some(_), false) = (&t.robtarget, matches!(t.kind, TargetKind::Revisit { .. })) {
             let r = robtarget_name(name);
             check_identifier(&r).map_err(|source| RapidError::InvalidGeneratedName {
                 name: r.clone(),

@@ -65,6 +65,10 @@ fn header(moves: usize) -> Header {
         via_zone: "z50".to_string(),
         paper: Some((moves + 1, 4.0)),
         frame: RobotFrame::Cell,
+        ends: Ends::Elsewhere {
+            first: "A".to_string(),
+            last: "End_point".to_string(),
+        },
     }
 }
 
@@ -160,6 +164,7 @@ fn awkward_program() -> Program {
             via_zone: "fine".to_string(),
             paper: None,
             frame: RobotFrame::Cell,
+            ends: Ends::AtStart,
         },
         targets: targets
             .into_iter()
