@@ -238,7 +238,7 @@ pub(super) fn facts(p: &Program) -> Result<Facts, RapidError> {
         ),
         paper_method,
         cycle: match &h.ends {
-            Ends::AtStart => "closed: the routine ends where it starts; the estimated time is a cycle time".to_string(),
+            Ends::AtStart => "closed: the routine ends where it starts; its time is a cycle time".to_string(),
             Ends::Elsewhere { first, last } => format!(
                 "open: the routine ends at {}, not where it starts ({}); motion.cycle: true closes it",
                 comment_text(last),

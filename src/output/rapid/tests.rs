@@ -66,8 +66,8 @@ fn header(moves: usize) -> Header {
         paper: Some((moves + 1, 4.0)),
         frame: RobotFrame::Cell,
         ends: Ends::Elsewhere {
-            first: "A".to_string(),
-            last: "End_point".to_string(),
+            first: "home".to_string(),
+            last: "pick".to_string(),
         },
     }
 }
@@ -105,6 +105,7 @@ const SMALL_EXPECTED: &str = r"MODULE Trunk
     ! moves: 3
     ! min clearance (mm): 14.0
     ! estimated time (s): 3.46
+    ! cycle: open: the routine ends at pick, not where it starts (home); motion.cycle: true closes it
     ! zoned vias: 1 of 2 (via zone z50)
     ! the paper's method alone: 4 moves, 4.00 s
 
@@ -346,6 +347,7 @@ fn render_without_targets() {
     ! base: [0.0, -250.5, 12.3] yaw: -90.000
     ! moves: 0
     ! min clearance (mm): 14.0
+    ! cycle: open: the routine ends at pick, not where it starts (home); motion.cycle: true closes it
     ! zoned vias: 0 of 0 (via zone z50)
 
 
@@ -618,6 +620,7 @@ const TCP_EXPECTED: &str = r#"MODULE Weld
     ! moves: 3
     ! min clearance (mm): 14.0
     ! estimated time (s): 3.46
+    ! cycle: open: the routine ends at pick, not where it starts (home); motion.cycle: true closes it
     ! zoned vias: 1 of 2 (via zone z50)
     ! the paper's method alone: 4 moves, 4.00 s
 
