@@ -6,7 +6,8 @@
 //! object. `docs/report.schema.json` is its JSON Schema (draft 2020-12); `format` names the
 //! version of that layout (version 2 added each move's `limit`, `totals.zoned_vias` and
 //! `totals.paper_method`, version 3 `near_limits`, the cell points whose axis 4 or 6 lies near a
-//! limit; later versions add keys and change the name).
+//! limit, version 4 `totals.closed` and a `wobj` of `null` with several work objects; later
+//! versions add keys and change the name).
 //!
 //! Goes beyond the paper (a script's view of a run). Made from the run's results only: the cell,
 //! the placed job, the plan and the module's content ([`Program`]: the names, speeds and zones
@@ -33,7 +34,7 @@ use crate::robot::Robot;
 use serde::{Serialize, Serializer};
 
 /// The layout's name and version (the `format` key).
-pub const FORMAT: &str = "gen-rapid report 3";
+pub const FORMAT: &str = "gen-rapid report 4";
 
 /// Why a report could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -78,8 +79,9 @@ pub struct Report {
     pub clearance_mm: Fixed,
     /// The tooldata every move uses.
     pub tool: String,
-    /// The work object every move names (`wobj0` when the module declares none).
-    pub wobj: String,
+    /// The work object every move names (`wobj0` when the module declares none); `null` with
+    /// several (each move names its point's, as the module shows).
+    pub wobj: Option<String>,
     pub totals: Totals,
     pub waypoints: Vec<WaypointInfo>,
     pub moves: Vec<MoveInfo>,
@@ -131,6 +133,9 @@ pub struct Totals {
     pub zoned_vias: ZonedVias,
     /// The paper's method alone on the same cell; `null` when not known.
     pub paper_method: Option<PaperMethod>,
+    /// The routine ends where it starts (the module header's `cycle: closed`): the estimated
+    /// time is a cycle time.
+    pub closed: bool,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -345,10 +350,11 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
             REPORT_CLEARANCE_DECIMALS,
         )?,
         tool: program.tool.clone(),
-        wobj: program
-            .wobj
-            .as_ref()
-            .map_or_else(|| "wobj0".to_string(), |w| w.name.clone()),
+        wobj: match program.wobjs.as_slice() {
+            [] => Some("wobj0".to_string()),
+            [w] => Some(w.name.clone()),
+            _ => None,
+        },
         totals: Totals {
             waypoints: route.waypoints.len(),
             cell_points,
@@ -379,6 +385,7 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
                 }),
                 None => None,
             },
+            closed: h.ends == crate::output::rapid::Ends::AtStart,
         },
         waypoints,
         moves,

@@ -52,7 +52,9 @@ pub fn near_limits(placed: &Placed, robot: &Robot) -> Vec<NearLimit> {
                 false => (range.max_deg - value, range.max_deg),
             };
             // A revisit has its point's name and joints: said once.
-            let said = out.iter().any(|n: &NearLimit| n.point == p.name && n.axis == axis);
+            let said = out
+                .iter()
+                .any(|n: &NearLimit| n.point == p.name && n.axis == axis);
             if room <= NEAR_LIMIT_DEG && !said {
                 out.push(NearLimit {
                     point: p.name.clone(),

@@ -171,7 +171,10 @@ impl Followed {
 
     /// The leg (0-based) that ends at stop `k` of `run` (run-local index): the vias' numbers.
     fn leg_into(&self, run: &Range<usize>, k: usize) -> usize {
-        let end = self.stops.get(run.start + k).map_or(0, |s| s.kind.leg_end());
+        let end = self
+            .stops
+            .get(run.start + k)
+            .map_or(0, |s| s.kind.leg_end());
         end.saturating_sub(1)
     }
 }
@@ -255,8 +258,8 @@ struct Setting<'a> {
     ik: SixAxisIk,
     robot: &'a Robot,
     frames: TcpFrames,
-    /// The work object's user frame in the cell frame, as written.
-    uframe: Isometry3<f64>,
+    /// The work objects' user frames in the cell frame, as written, in the cell's order.
+    uframes: Vec<Isometry3<f64>>,
 }
 
 impl Setting<'_> {
@@ -265,9 +268,16 @@ impl Setting<'_> {
         self.frames.cell_from_robot * self.robot.tool0(joints) * self.frames.tframe
     }
 
-    /// A robtarget pose (work object frame) as written, cell frame.
-    fn pose_in_cell(&self, pose: &Frame) -> Isometry3<f64> {
-        self.uframe * pose.written().isometry()
+    /// The user frame of work object `wobj` (`Point::wobj`; `None`: wobj0, the cell frame).
+    fn uframe(&self, wobj: Option<usize>) -> Isometry3<f64> {
+        wobj.and_then(|i| self.uframes.get(i))
+            .copied()
+            .unwrap_or_else(Isometry3::identity)
+    }
+
+    /// A robtarget pose in work object `wobj` as written, cell frame.
+    fn pose_in_cell(&self, pose: &Frame, wobj: Option<usize>) -> Isometry3<f64> {
+        self.uframe(wobj) * pose.written().isometry()
     }
 
     /// The joints `MoveJ` reaches for TCP pose `tcp` (cell frame) in configuration `conf`: the
@@ -333,7 +343,7 @@ pub fn follow(
             continue;
         };
         let conf = *conf;
-        let target = s.pose_in_cell(pose);
+        let target = s.pose_in_cell(pose, p.wobj);
         let at = placed_point.joints_deg;
         let label = p.label();
         // Into the point: an approach line, a process move, or the air.
@@ -380,7 +390,7 @@ pub fn follow(
             let start = s.tcp(&from);
             let (kind, via) = match p.arrival {
                 Arrival::Circular { via_mm, .. } => {
-                    let via = s.uframe * Point3::from(via_mm);
+                    let via = s.uframe(p.wobj) * Point3::from(via_mm);
                     (MoveKind::Linear, Some(via))
                 }
                 _ => (MoveKind::Linear, None),
@@ -484,7 +494,9 @@ fn setting_of<'a>(
             cell_from_robot: placed.placement.cell_from_robot(),
             tframe: written(cell.tool.as_ref().map(|t| t.tframe)),
         },
-        uframe: written(cell.wobjs.first().map(|w| w.uframe)),
+        uframes: (cell.wobjs.iter())
+            .map(|w| written(Some(w.uframe)))
+            .collect(),
     })
 }
 
@@ -519,7 +531,7 @@ fn process_move(
         (Some(_), _) => {
             // The circle point as written: the via with the orientation at its arc fraction.
             let cir = path.as_ref().ok().and_then(|p| p.cir_point());
-            let via = cir.map(|c| s.uframe.inverse() * c);
+            let via = cir.map(|c| s.uframe(p.wobj).inverse() * c);
             match via {
                 Some(v) => MoveKind::Circular {
                     via: Frame {

@@ -252,7 +252,7 @@ pub(super) fn facts(p: &Program) -> Result<Facts, RapidError> {
 /// work object or writes robtargets (a module of joint moves alone says nothing of them).
 fn tcp_lines(p: &Program) -> Option<[String; 3]> {
     let robtargets = p.targets.iter().any(|t| t.robtarget.is_some());
-    if p.tooldata.is_none() && p.wobj.is_none() && !robtargets {
+    if p.tooldata.is_none() && p.wobjs.is_empty() && !robtargets {
         return None;
     }
     let tool = match &p.tooldata {
@@ -273,12 +273,19 @@ fn tcp_lines(p: &Program) -> Option<[String; 3]> {
             comment_text(&p.tool)
         ),
     };
-    let wobj = match &p.wobj {
-        Some(w) => format!(
+    let wobj = match p.wobjs.as_slice() {
+        [w] => format!(
             "wobj: {} (declared below; robtargets are in its user frame)",
             comment_text(&w.name)
         ),
-        None => "wobj: wobj0 (robtargets are in the world frame)".to_string(),
+        [] => "wobj: wobj0 (robtargets are in the world frame)".to_string(),
+        several => {
+            let names: Vec<&str> = several.iter().map(|w| w.name.as_str()).collect();
+            format!(
+                "wobjs: {} (declared below; each robtarget is in the user frame of the one it names)",
+                comment_text(&names.join(", "))
+            )
+        }
     };
     let frames = match p.header.frame {
         RobotFrame::Cell => FRAMES_NOTE,

@@ -127,8 +127,9 @@ pub struct Program {
     pub tool: String,
     /// The tooldata the module declares under the name [`tool`](Self::tool), if any.
     pub tooldata: Option<ToolData>,
-    /// The work object the module declares and every move names (`\WObj:=`), if any.
-    pub wobj: Option<WobjData>,
+    /// The work objects the module declares, in the cell's order; each move names the one of
+    /// its target ([`JointTarget::wobj`]).
+    pub wobjs: Vec<WobjData>,
     /// The robot's axis ranges: no joint value outside them is written.
     pub ranges: AxisRanges,
     /// The name of the routine that makes the moves (`motion.proc`, `--proc`; default `main`).
@@ -226,6 +227,9 @@ pub struct JointTarget {
     pub offset_mm: Option<f64>,
     /// The actions done after the move into it, in order.
     pub actions: Vec<Action>,
+    /// The work object the move into it names (`\WObj:=`): an index into
+    /// [`Program::wobjs`]; `None`: none (wobj0).
+    pub wobj: Option<usize>,
 }
 
 /// Why a module could not be rendered.
@@ -593,10 +597,12 @@ struct ModuleCtx {
     facts: header::Facts,
     /// The tooldata the moves use: its name, and its value when the module declares it.
     tool: ToolCtx,
-    /// The work object the module declares and the moves name, or none.
+    /// The work object the module declares when it declares exactly one, or none.
     wobj: Option<DataCtx>,
-    /// `\WObj:=<name>`, or empty.
+    /// `\WObj:=<name>` of that one work object, or empty (each move's own: `moves[i].wobj_arg`).
     wobj_arg: String,
+    /// Every work object the module declares, in the cell's order.
+    wobjs: Vec<DataCtx>,
     /// One per `CONST jointtarget`, in visiting order.
     targets: Vec<TargetCtx>,
     /// One per move instruction, in order (move `i` goes to target `i`).
@@ -717,7 +723,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
         source,
     })?;
     data_name("tool", &program.tool, program.tooldata.is_some())?;
-    if let Some(w) = &program.wobj {
+    for w in &program.wobjs {
         data_name("wobj", &w.name, true)?;
     }
     for t in &program.targets {
@@ -738,9 +744,14 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
     let target_names = module_target_names(program)?;
     check_name_space(program, &target_names)?;
 
-    let wobj_arg = match &program.wobj {
+    let wobj_arg_of = |w: Option<usize>| match w.and_then(|i| program.wobjs.get(i)) {
         Some(w) => format!("\\WObj:={}", w.name),
         None => String::new(),
+    };
+    // The one work object's argument, for a template that writes one for every move.
+    let wobj_arg = match program.wobjs.as_slice() {
+        [_] => wobj_arg_of(Some(0)),
+        _ => String::new(),
     };
     let mut targets = Vec::with_capacity(program.targets.len());
     let mut moves = Vec::with_capacity(program.targets.len());
@@ -809,6 +820,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
                 Action::GripLoad { load } => format!("GripLoad {load}"),
             });
         }
+        let wobj_arg = wobj_arg_of(target.wobj);
         moves.push(MoveCtx {
             args: format!(
                 "{to}{offs}, {}, {}, {}{wobj_arg}",
@@ -828,8 +840,10 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             speed: target.speed.clone(),
             zone: target.zone.clone(),
             tool: program.tool.clone(),
-            wobj: program.wobj.as_ref().map(|w| w.name.clone()),
-            wobj_arg: wobj_arg.clone(),
+            wobj: (target.wobj)
+                .and_then(|i| program.wobjs.get(i))
+                .map(|w| w.name.clone()),
+            wobj_arg,
         });
         // A revisit moves to its point's data and declares none.
         let robtarget = match target.kind {
@@ -858,6 +872,13 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             via,
         });
     }
+    let mut wobjs = Vec::with_capacity(program.wobjs.len());
+    for w in &program.wobjs {
+        wobjs.push(DataCtx {
+            name: w.name.clone(),
+            value: data::wobjdata(w)?,
+        });
+    }
     let mut loads = Vec::with_capacity(program.loads.len());
     for l in &program.loads {
         loads.push(DataCtx {
@@ -881,14 +902,15 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
                 None => None,
             },
         },
-        wobj: match &program.wobj {
-            Some(w) => Some(DataCtx {
+        wobj: match wobjs.as_slice() {
+            [w] => Some(DataCtx {
                 name: w.name.clone(),
-                value: data::wobjdata(w)?,
+                value: w.value.clone(),
             }),
-            None => None,
+            _ => None,
         },
         wobj_arg,
+        wobjs,
         targets,
         moves,
     };
@@ -919,7 +941,7 @@ fn other_names(program: &Program) -> Vec<String> {
         program.proc_name.clone(),
         program.tool.clone(),
     ];
-    names.extend(program.wobj.iter().map(|w| w.name.clone()));
+    names.extend(program.wobjs.iter().map(|w| w.name.clone()));
     for t in &program.targets {
         names.push(t.speed.clone());
         names.push(t.zone.clone());
@@ -955,7 +977,7 @@ fn check_name_space(program: &Program, target_names: &[String]) -> Result<(), Ra
         Some(_) => declared.push(tool),
         None => used.push(tool),
     }
-    if let Some(w) = &program.wobj {
+    for w in &program.wobjs {
         declared.push((w.name.clone(), format!("the work object `{}`", w.name)));
     }
     let mut listed: HashSet<String> = used.iter().map(|(n, _)| n.clone()).collect();

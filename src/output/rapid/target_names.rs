@@ -128,6 +128,7 @@ mod tests {
             how: MoveHow::Joint,
             offset_mm: None,
             actions: Vec::new(),
+            wobj: None,
         }
     }
     fn via(leg: usize, index: usize) -> JointTarget {
@@ -140,6 +141,7 @@ mod tests {
             how: MoveHow::Joint,
             offset_mm: None,
             actions: Vec::new(),
+            wobj: None,
         }
     }
 

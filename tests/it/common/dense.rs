@@ -529,8 +529,13 @@ pub fn check_module(
             module.moves
         ));
     }
+    // The last: the last cell point's, or the first's after the leg closing the cycle.
+    let last_point = match cell.closing_leg() {
+        true => cell.points.first(),
+        false => cell.points.last(),
+    };
     if names.first().copied() != cell.points.first().map(|p| p.name.as_str())
-        || names.last().copied() != cell.points.last().map(|p| p.name.as_str())
+        || names.last().copied() != last_point.map(|p| p.name.as_str())
     {
         fail("the first and last targets are not the first and last cell points".into());
     }
