@@ -444,7 +444,7 @@ pub struct Report {
 }
 
 /// The points of a module of `MoveAbsJ` alone, and the header's count of moves: the targets
-/// declared once each, in the order of their first moves, the moves from the first cell point
+/// declared once each and each moved to, the moves from the first cell point
 /// to the last (or back to the first after the leg closing the cycle); every cell point
 /// appears, in order: joint points exactly as given, xyz points at their wrist centre by forward
 /// kinematics from the header's placement; every target in range; every via's wrist on the
@@ -464,18 +464,16 @@ fn joint_module_points(
             module.moves.len()
         ));
     }
-    // A revisit and the leg closing the cycle move to a target declared once: the targets are
-    // declared once each, in the order of their first moves, and read along the moves.
-    let mut first_use: Vec<&str> = Vec::new();
-    for m in &module.moves {
-        if !first_use.contains(&m.as_str()) {
-            first_use.push(m);
-        }
-    }
+    // A revisit and the leg closing the cycle move to a target declared once (where its point
+    // stands in the cell): every target declared once and moved to, every move to a declared
+    // target; the points are read along the moves.
     let declared: Vec<&str> = module.targets.iter().map(|t| t.0.as_str()).collect();
-    if first_use != declared {
+    let twice = (declared.iter().enumerate()).any(|(i, d)| declared[..i].contains(d));
+    let unused = declared.iter().any(|d| !module.moves.iter().any(|m| m == d));
+    let undeclared = module.moves.iter().any(|m| !declared.contains(&m.as_str()));
+    if twice || unused || undeclared {
         fail(format!(
-            "moves {:?} do not name the targets {declared:?} in order of first use",
+            "moves {:?} do not name the targets {declared:?} (each declared once and moved to)",
             module.moves
         ));
     }

@@ -1,7 +1,7 @@
 //! Every path into the `gen_rapid` library that the integration tests use, in one place (the rest
 //! of the tests drive the binary or read files). When the library's modules move, mend them here.
 
-pub use gen_rapid::cell::{ActionKind, Base, Cell, Point, Target, Tool, ToolGeometry};
+pub use gen_rapid::cell::{ActionKind, Base, Cell, Target, Tool, ToolGeometry};
 pub use gen_rapid::place::Survey;
 pub use gen_rapid::robot::{LinkFrame, Robot};
 
