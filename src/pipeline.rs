@@ -163,7 +163,10 @@ pub fn plan_all(
             let entry = followed.entry_of(&run, source.point());
             // The leg closing the cycle is the cell's `motion.cycle`'s.
             let closing = matches!(
-                followed.stops.get(run.start + source.point()).map(|s| s.kind),
+                followed
+                    .stops
+                    .get(run.start + source.point())
+                    .map(|s| s.kind),
                 Some(process::StopKind::Closing(_))
             );
             let loc = match closing {

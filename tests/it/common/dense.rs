@@ -469,7 +469,9 @@ fn joint_module_points(
     // target; the points are read along the moves.
     let declared: Vec<&str> = module.targets.iter().map(|t| t.0.as_str()).collect();
     let twice = (declared.iter().enumerate()).any(|(i, d)| declared[..i].contains(d));
-    let unused = declared.iter().any(|d| !module.moves.iter().any(|m| m == d));
+    let unused = declared
+        .iter()
+        .any(|d| !module.moves.iter().any(|m| m == d));
     let undeclared = module.moves.iter().any(|m| !declared.contains(&m.as_str()));
     if twice || unused || undeclared {
         fail(format!(
