@@ -161,7 +161,18 @@ pub fn plan_all(
         let route = plan::route_with(&got.cspace, &got.model, &points, method, legs);
         let route = route.map_err(|source| {
             let entry = followed.entry_of(&run, source.point());
-            let loc = cell.points.get(entry).map(|p| p.loc);
+            // The leg closing the cycle is the cell's `motion.cycle`'s.
+            let closing = matches!(
+                followed
+                    .stops
+                    .get(run.start + source.point())
+                    .map(|s| s.kind),
+                Some(process::StopKind::Closing(_))
+            );
+            let loc = match closing {
+                true => Some(cell.motion.cycle_loc),
+                false => cell.points.get(entry).map(|p| p.loc),
+            };
             Error::Plan {
                 source,
                 loc: loc.unwrap_or_default(),

@@ -485,11 +485,13 @@ impl Cell {
     }
 
     /// With `motion.cycle`, the routine needs a leg from the last entry back to the first: the
-    /// last entry does not already reach the first one's target (a revisit of it, or the point a
-    /// first revisit names).
+    /// last entry does not already end at the first one's target (a revisit of it, or the point
+    /// a first revisit names, without a retract).
     pub fn closing_leg(&self) -> bool {
         let origin = |i: usize| self.points.get(i).and_then(|p| p.revisit_of).unwrap_or(i);
-        self.motion.cycle && self.points.len() > 1 && origin(0) != origin(self.points.len() - 1)
+        let n = self.points.len();
+        let retracts = self.points.last().is_some_and(|p| p.retract_mm.is_some());
+        self.motion.cycle && n > 1 && (origin(0) != origin(n - 1) || retracts)
     }
 }
 

@@ -373,24 +373,21 @@ fn the_guard_refuses_what_the_later_stages_do_not_carry_out_at_its_first_line() 
     unsupported(&parse_str(&base).expect("valid")).expect("`robot.frame: base` is carried out");
     // Process moves, approach and retract lines, actions and loads are carried out.
     unsupported(&parse_str(SEAM).expect("valid")).expect("the seam is carried out");
-    let cases = [
-        (
-            format!("{plain}{wobj}  - {{ name: wB, uframe: [[0, 0, 0], [1, 0, 0, 0]] }}\n")
-                .replace("move: joint", "move: joint, wobj: wB"),
-            "a second work object",
-            "name: wB, uframe",
-        ),
-        (
-            plain.replace("motion:\n", "  - { revisit: a }\nmotion:\n"),
-            "the revisit of 'A' (line 8): `revisit`",
-            "revisit: a",
-        ),
-        (
-            plain.replace("cycle: false", "cycle: true"),
-            "`motion.cycle: true`",
-            "cycle: true",
-        ),
-    ];
+    // Several work objects are carried out.
+    let two = format!("{plain}{wobj}  - {{ name: wB, uframe: [[0, 0, 0], [1, 0, 0, 0]] }}\n")
+        .replace("move: joint", "move: joint, wobj: wB");
+    unsupported(&parse_str(&two).expect("valid")).expect("two work objects are carried out");
+    let cases = [(
+        base.replace("move: joint", "move: joint, retract: 50"),
+        "`robot.frame: base` with process moves",
+        "frame: base",
+    )];
+    // Revisits and the closed cycle are carried out.
+    let revisit = plain.replace("motion:\n", "  - { revisit: a }\nmotion:\n");
+    unsupported(&parse_str(&revisit).expect("valid")).expect("a revisit is carried out");
+    let cycle = plain.replace("cycle: false", "cycle: true");
+    assert!(cycle.contains("cycle: true"));
+    unsupported(&parse_str(&cycle).expect("valid")).expect("the cycle is carried out");
     for (text, needle, at) in cases {
         let c = parse_str(&text).unwrap_or_else(|e| panic!("{needle}: {e}\n{text}"));
         let err = unsupported(&c).expect_err(needle);

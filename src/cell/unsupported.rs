@@ -1,6 +1,6 @@
 //! The guard between the cell file and the later stages: the keys the cell validation reads but
-//! the place, plan and render stages do not carry out yet (revisits, the closed cycle, several
-//! work objects, the base frame together with process moves). A
+//! the place, plan and render stages do not carry out yet (the base frame together with process
+//! moves). A
 //! cell that uses one is refused at its line, so no module is written that leaves out what the
 //! cell asks for. Orientations given as `zyx` need no guard: they are read into the same
 //! quaternions. Once the later stages carry out a key, its line here goes; once they carry out
@@ -12,15 +12,6 @@ use super::{Cell, CellError, Loc};
 /// such key in the file.
 pub fn unsupported(cell: &Cell) -> Result<(), CellError> {
     let mut uses: Vec<(Loc, String)> = Vec::new();
-    for p in &cell.points {
-        let who = p.label();
-        if p.revisit_of.is_some() {
-            uses.push((p.loc, format!("{who}: `revisit`")));
-        }
-    }
-    if let Some(w) = cell.wobjs.get(1) {
-        uses.push((w.loc, "a second work object".into()));
-    }
     // The base frame with process moves: the follow stage works from the cell-frame poses, not
     // yet from the data as the base frame writes them.
     let process = |p: &super::Point| {
@@ -32,9 +23,6 @@ pub fn unsupported(cell: &Cell) -> Result<(), CellError> {
             "`robot.frame: base` with process moves (approach, retract, `move: linear | circular`)"
                 .into(),
         ));
-    }
-    if cell.motion.cycle {
-        uses.push((cell.motion.cycle_loc, "`motion.cycle: true`".into()));
     }
     match uses.into_iter().min_by_key(|(l, _)| (l.line, l.column)) {
         None => Ok(()),

@@ -57,7 +57,8 @@ pub fn check_budgets(job: &Loaded, grid_deg: f64, searches: usize) -> Result<(),
         grid_deg,
         parts: robot.cylinders.len() + cell.tool.as_ref().map_or(0, |t| t.shapes.len()),
         obstacles: cell.obstacles.len(),
-        points: cell.points.len(),
+        // The leg closing the cycle is one more.
+        points: cell.points.len() + usize::from(cell.closing_leg()),
         searches,
         fly_by: fly_by(cell),
     };

@@ -8,7 +8,7 @@
 //! [`RobotFacts`] of the robot files; no text is produced here (`rapid` does).
 
 use super::rapid::{
-    Action, AxisRanges, Header, JointTarget, LoadData, MoveHow, Pose, Program, RobTarget,
+    Action, AxisRanges, Ends, Header, JointTarget, LoadData, MoveHow, Pose, Program, RobTarget,
     TargetKind, ToolData, WobjData,
 };
 use crate::cell::{ActionKind, Cell, Frame};
@@ -75,17 +75,26 @@ fn pose(f: &Frame) -> Pose {
 pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> Program {
     // `robot.frame`: a robtarget in wobj0 and a uframe as the module writes them.
     let frame = cell.robot.frame;
-    let robtarget_as_written = |f: &Frame| match cell.wobjs.is_empty() {
-        true => placed.placement.written(frame, f),
-        false => *f,
+    // A robtarget of entry `i` as written: in wobj0 in the frame `robot.frame` says, in a work
+    // object as given.
+    let robtarget_as_written = |i: usize, f: &Frame| match cell.points.get(i).and_then(|p| p.wobj) {
+        None => placed.placement.written(frame, f),
+        Some(_) => *f,
     };
     let robtarget_of = |i: usize| match placed.points.get(i).map(|p| &p.origin) {
         Some(Origin::Robtarget { pose: f, conf }) => Some(RobTarget {
-            pose: pose(&robtarget_as_written(f)),
+            pose: pose(&robtarget_as_written(i, f)),
             conf: conf.to_array(),
         }),
         _ => None,
     };
+    // The work object a move towards entry `i` names: with one work object always it, with
+    // several the entry's own (none towards a jointtarget point).
+    let wobj_towards = |i: usize| match cell.wobjs.len() {
+        1 => Some(0),
+        _ => cell.points.get(i).and_then(|p| p.wobj),
+    };
+    let n = cell.points.len();
     let name_of = |i: usize| {
         placed
             .points
@@ -94,6 +103,9 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             .unwrap_or_default()
     };
     let kinds = std::iter::once(MoveKind::Joint).chain(plan.moves.iter().map(|m| m.kind));
+    // The entries reached so far: an entry reached again (the leg closing the cycle) is a
+    // revisit without actions.
+    let mut reached = vec![false; cell.points.len()];
     let targets = plan
         .route
         .waypoints
@@ -102,11 +114,22 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
         .zip(kinds)
         .map(|((w, motion), move_kind)| {
             let (kind, robtarget, actions) = match w.kind {
-                WaypointKind::CellPoint(i) => (
-                    TargetKind::CellPoint { name: name_of(i) },
-                    robtarget_of(i),
-                    actions(cell, i),
-                ),
+                WaypointKind::CellPoint(i) => {
+                    let again = reached.get(i).copied().unwrap_or(false);
+                    if let Some(r) = reached.get_mut(i) {
+                        *r = true;
+                    }
+                    let revisit = cell.points.get(i).is_some_and(|p| p.revisit_of.is_some());
+                    let kind = match revisit || again {
+                        true => TargetKind::Revisit { point: name_of(i) },
+                        false => TargetKind::CellPoint { name: name_of(i) },
+                    };
+                    let actions = match again {
+                        true => Vec::new(),
+                        false => actions(cell, i),
+                    };
+                    (kind, robtarget_of(i), actions)
+                }
                 WaypointKind::Via { leg, index } => {
                     (TargetKind::Via { leg, index }, None, Vec::new())
                 }
@@ -117,6 +140,14 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
                     (TargetKind::Retract { point: name_of(i) }, None, Vec::new())
                 }
             };
+            // The entry the move goes towards: a via's is its leg's end (the first entry for
+            // the leg closing the cycle).
+            let towards = match w.kind {
+                WaypointKind::CellPoint(i)
+                | WaypointKind::Approach(i)
+                | WaypointKind::Retract(i) => i,
+                WaypointKind::Via { leg, .. } => (leg + 1) % n.max(1),
+            };
             let (how, offset_mm) = match move_kind {
                 MoveKind::Joint => (MoveHow::Joint, None),
                 MoveKind::Linear => (MoveHow::Linear, None),
@@ -125,7 +156,7 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
                 MoveKind::Circular { via, via_conf } => (
                     MoveHow::Circular {
                         via: RobTarget {
-                            pose: pose(&robtarget_as_written(&via)),
+                            pose: pose(&robtarget_as_written(towards, &via)),
                             conf: via_conf.to_array(),
                         },
                     },
@@ -146,6 +177,7 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
                 how,
                 offset_mm,
                 actions,
+                wobj: wobj_towards(towards),
             }
         })
         .collect();
@@ -182,16 +214,18 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             via_zone: cell.motion.via_zone.clone(),
             paper: plan.paper.map(|p| (p.moves, p.time_s)),
             frame,
+            ends: ends(cell, plan),
         },
         targets,
         // The tool block's name when there is one (the cell validation sees to it).
         tool: cell.motion.tool.clone(),
         tooldata,
-        // One work object at most (`cell::unsupported` refuses several).
-        wobj: cell.wobjs.first().map(|w| WobjData {
-            name: w.name.clone(),
-            uframe: pose(&placed.placement.written(frame, &w.uframe)),
-        }),
+        wobjs: (cell.wobjs.iter())
+            .map(|w| WobjData {
+                name: w.name.clone(),
+                uframe: pose(&placed.placement.written(frame, &w.uframe)),
+            })
+            .collect(),
         ranges: robot.ranges,
         proc_name: cell.motion.proc.clone(),
         loads: cell
@@ -234,4 +268,33 @@ fn actions(cell: &Cell, i: usize) -> Vec<Action> {
             },
         })
         .collect()
+}
+
+/// Where the routine of `plan` ends: at the first entry's target (its last waypoint is that
+/// target: the first entry, a revisit of it, the point the first entry revisits, or a point at
+/// the very same joints), or elsewhere (the last entry's target or its retract pose).
+fn ends(cell: &Cell, plan: &Plan) -> Ends {
+    let origin = |i: usize| cell.points.get(i).and_then(|p| p.revisit_of).unwrap_or(i);
+    let name = |i: usize| {
+        cell.points
+            .get(i)
+            .map(|p| p.name.clone())
+            .unwrap_or_default()
+    };
+    let (first, last) = (plan.route.waypoints.first(), plan.route.waypoints.last());
+    let same_joints = first
+        .zip(last)
+        .is_some_and(|(a, b)| a.joints_deg == b.joints_deg);
+    match last.map(|w| w.kind) {
+        Some(WaypointKind::CellPoint(i)) if origin(i) == origin(0) || same_joints => Ends::AtStart,
+        last => Ends::Elsewhere {
+            first: name(0),
+            last: match last {
+                Some(WaypointKind::Retract(i)) => format!("{}'s retract pose", name(i)),
+                Some(WaypointKind::Approach(i)) => format!("{}'s approach pose", name(i)),
+                Some(WaypointKind::CellPoint(i)) => name(i),
+                _ => "a via".to_string(),
+            },
+        },
+    }
 }

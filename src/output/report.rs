@@ -7,8 +7,9 @@
 //! version of that layout (version 2 added each move's `limit`, `totals.zoned_vias` and
 //! `totals.paper_method`, version 3 `near_limits`, the cell points whose axis 4 or 6 lies near a
 //! limit; version 4 each move's `kind`, `instruction`, `target`, `circle_point`, `offset_mm`
-//! and `actions`, and `start`, the instruction that reaches the first waypoint; later versions
-//! add keys and change the name).
+//! and `actions`, and `start`, the instruction that reaches the first waypoint; version 5
+//! `totals.closed` and a `wobj` of `null` with several work objects; later versions add keys
+//! and change the name).
 //!
 //! Goes beyond the paper (a script's view of a run). Made from the run's results only: the cell,
 //! the placed job, the plan and the module's content ([`Program`]: the names, speeds and zones
@@ -35,7 +36,7 @@ use crate::robot::Robot;
 use serde::{Serialize, Serializer};
 
 /// The layout's name and version (the `format` key).
-pub const FORMAT: &str = "gen-rapid report 4";
+pub const FORMAT: &str = "gen-rapid report 5";
 
 /// Why a report could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -80,8 +81,9 @@ pub struct Report {
     pub clearance_mm: Fixed,
     /// The tooldata every move uses.
     pub tool: String,
-    /// The work object every move names (`wobj0` when the module declares none).
-    pub wobj: String,
+    /// The work object every move names (`wobj0` when the module declares none); `null` with
+    /// several (each move names its point's, as the module shows).
+    pub wobj: Option<String>,
     pub totals: Totals,
     pub waypoints: Vec<WaypointInfo>,
     /// The instruction that reaches the first waypoint from wherever the robot stands (not a
@@ -136,6 +138,9 @@ pub struct Totals {
     pub zoned_vias: ZonedVias,
     /// The paper's method alone on the same cell; `null` when not known.
     pub paper_method: Option<PaperMethod>,
+    /// The routine ends where it starts (the module header's `cycle: closed`): the estimated
+    /// time is a cycle time.
+    pub closed: bool,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -400,7 +405,12 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
     let cell_points = program
         .targets
         .iter()
-        .filter(|t| matches!(t.kind, TargetKind::CellPoint { .. }))
+        .filter(|t| {
+            matches!(
+                t.kind,
+                TargetKind::CellPoint { .. } | TargetKind::Revisit { .. }
+            )
+        })
         .count();
     let h = &program.header;
     Ok(Report {
@@ -434,10 +444,11 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
             REPORT_CLEARANCE_DECIMALS,
         )?,
         tool: program.tool.clone(),
-        wobj: program
-            .wobj
-            .as_ref()
-            .map_or_else(|| "wobj0".to_string(), |w| w.name.clone()),
+        wobj: match program.wobjs.as_slice() {
+            [] => Some("wobj0".to_string()),
+            [w] => Some(w.name.clone()),
+            _ => None,
+        },
         totals: Totals {
             waypoints: route.waypoints.len(),
             cell_points,
@@ -468,6 +479,7 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
                 }),
                 None => None,
             },
+            closed: h.ends == crate::output::rapid::Ends::AtStart,
         },
         waypoints,
         start: match written_moves.first() {

@@ -129,7 +129,7 @@ fn find<C: PoseCheck>(
             pos_mm: pose.pos_mm,
             quat_wxyz: read,
         };
-        if let Ok(s) = tcp.choose(&changed, None, placement, None, check) {
+        if let Ok(s) = tcp.choose(&changed, p.wobj, None, placement, None, check) {
             return Some(format!(
                 "turned {turn} deg about its own z axis, the tool reaches point '{point}': orientation {} (the smallest such turn in {TURN_STEP_DEG} deg steps; by the inverse kinematics axes {}, in range and free of collision; without confdata); a torch or a round gripper is often free to turn so",
                 fmt_quat(&shown),
@@ -158,7 +158,7 @@ fn find<C: PoseCheck>(
             ],
             yaw_deg: placement.yaw_deg,
         };
-        if let Ok(s) = tcp.choose(pose, *conf, moved, None, &check_at(moved)) {
+        if let Ok(s) = tcp.choose(pose, p.wobj, *conf, moved, None, &check_at(moved)) {
             let [x, y, z] = moved.base_mm;
             return Some(format!(
                 "no turn of the tool about its z axis ({TURN_STEP_DEG} deg steps) makes point '{point}' reachable; moving the robot's base {step} mm {} it, to robot.base [{x:.1}, {y:.1}, {z:.1}], does (by the inverse kinematics axes {}, in range and free of collision; the other points are not checked from there)",

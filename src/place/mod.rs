@@ -313,7 +313,9 @@ fn survey_points(
                 Target::Joints { axes_deg, .. } => {
                     Some(placement.to_cell_frame(ik::forward(geom, *axes_deg)))
                 }
-                Target::Robtarget { pose, .. } => tcp.as_ref().map(|t| t.wrist_centre(pose)),
+                Target::Robtarget { pose, .. } => {
+                    tcp.as_ref().map(|t| t.wrist_centre(pose, p.wobj))
+                }
             };
             xyz.map(|x| (p.name.clone(), x))
         })
@@ -409,7 +411,7 @@ fn positions(cell: &Cell, robot: &Robot) -> Result<Vec<(String, [f64; 3])>, Plac
                 _,
             ) => Some((p.name.clone(), *wrist_centre_mm)),
             (Target::Robtarget { pose, .. }, Some(tcp)) => {
-                Some((p.name.clone(), tcp.wrist_centre(pose)))
+                Some((p.name.clone(), tcp.wrist_centre(pose, p.wobj)))
             }
             _ => None,
         })

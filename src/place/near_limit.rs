@@ -51,7 +51,11 @@ pub fn near_limits(placed: &Placed, robot: &Robot) -> Vec<NearLimit> {
                 true => (value - range.min_deg, range.min_deg),
                 false => (range.max_deg - value, range.max_deg),
             };
-            if room <= NEAR_LIMIT_DEG {
+            // A revisit has its point's name and joints: said once.
+            let said = out
+                .iter()
+                .any(|n: &NearLimit| n.point == p.name && n.axis == axis);
+            if room <= NEAR_LIMIT_DEG && !said {
                 out.push(NearLimit {
                     point: p.name.clone(),
                     axis,

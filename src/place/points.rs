@@ -16,6 +16,9 @@
 //!   found it.
 //! - **`robtarget` points** (TCP pose in the work object) are solved on all six axes by
 //!   `robtarget.rs`, nearest the previous point unless the point gives its confdata.
+//! - **revisits** (`{ revisit: NAME }`) take the very joints (and origin) of the point they
+//!   name, earlier or later in the list, with their own motion; the point after a revisit of a
+//!   later point is solved near the last point resolved before it.
 //!
 //! A `joints` point outside the robot's ranges (all six axes, its own wrist or `robot.wrist`) is
 //! an input error at its line. Every point also gets the motion of the move into it.
@@ -41,7 +44,34 @@ pub(super) fn resolve(
         .then(|| Tcp::of(cell, robot))
         .transpose()?;
     let mut points: Vec<PlacedPoint> = Vec::with_capacity(cell.points.len());
-    for p in &cell.points {
+    // A revisit of a later point: its place in `points` until that point is resolved.
+    let mut later: Vec<(usize, usize)> = Vec::new();
+    for (i, p) in cell.points.iter().enumerate() {
+        let motion = MoveMotion {
+            speed: p.speed.clone().unwrap_or_else(|| cell.motion.speed.clone()),
+            zone: p.zone.clone().unwrap_or_else(|| cell.motion.zone.clone()),
+        };
+        // A revisit reaches the very joints of the point it names (its data is written once).
+        if let Some(j) = p.revisit_of {
+            // An earlier point is resolved already (`j < i`); a later one is not.
+            let base = points.get(j).cloned().unwrap_or_else(|| {
+                later.push((i, j));
+                // Filled in below, once point `j` is resolved.
+                PlacedPoint {
+                    name: p.name.clone(),
+                    joints_deg: [0.0; 6],
+                    loc: p.loc,
+                    origin: Origin::Joints,
+                    motion: motion.clone(),
+                }
+            });
+            points.push(PlacedPoint {
+                loc: p.loc,
+                motion,
+                ..base
+            });
+            continue;
+        }
         let (axes_deg, wrist_deg, origin) = match &p.target {
             Target::Joints {
                 axes_deg,
@@ -72,7 +102,7 @@ pub(super) fn resolve(
                         &derived
                     }
                 };
-                let previous = points.last().map(|w| w.joints_deg);
+                let previous = previous_of(&points, &later);
                 let (q, conf) = tcp.solve(p, pose, *conf, placement, previous.as_ref(), check)?;
                 (
                     arm(&q),
@@ -107,7 +137,7 @@ pub(super) fn resolve(
                         &derived
                     }
                 };
-                let previous = points.last().map(|w| arm(&w.joints_deg));
+                let previous = previous_of(&points, &later).map(|j| arm(&j));
                 let wrist = cell.robot.wrist_deg;
                 let usable = |a: [f64; 3]| {
                     let a = quantize_joints(a);
@@ -134,13 +164,32 @@ pub(super) fn resolve(
             joints_deg: six(axes_deg, wrist_deg),
             loc: p.loc,
             origin,
-            motion: MoveMotion {
-                speed: p.speed.clone().unwrap_or_else(|| cell.motion.speed.clone()),
-                zone: p.zone.clone().unwrap_or_else(|| cell.motion.zone.clone()),
-            },
+            motion,
         });
     }
+    for (i, j) in later {
+        if let (Some(source), Some(revisit)) = (points.get(j).cloned(), points.get(i)) {
+            let (loc, motion) = (revisit.loc, revisit.motion.clone());
+            if let Some(slot) = points.get_mut(i) {
+                *slot = PlacedPoint {
+                    loc,
+                    motion,
+                    ..source
+                };
+            }
+        }
+    }
     Ok(points)
+}
+
+/// The joints the next point is solved near: the last point resolved (a revisit of a later
+/// point is not yet, and is skipped).
+fn previous_of(points: &[PlacedPoint], later: &[(usize, usize)]) -> Option<[f64; 6]> {
+    (0..points.len())
+        .rev()
+        .find(|k| !later.iter().any(|(i, _)| i == k))
+        .and_then(|k| points.get(k))
+        .map(|w| w.joints_deg)
 }
 
 /// Axes 1..3 of six.

@@ -1,8 +1,9 @@
 //! Robtarget points: a TCP pose in the work object -> controller values of all six axes, through
 //! the six-axis inverse kinematics ([`SixAxisIk`]). Beyond the paper (which plans wrist centres).
 //!
-//! **Frames.** The cell gives the TCP pose in the work object's user frame (`wobj.uframe`, itself
-//! in the cell frame; without a `wobj:` block wobj0, whose frame is the cell frame). So
+//! **Frames.** The cell gives the TCP pose in its point's work object's user frame (`uframe`,
+//! itself in the cell frame; the point's `wobj:`, the one work object when the cell has one, else
+//! wobj0, whose frame is the cell frame). So
 //! `TCP (cell) = uframe * pose`, `TCP (robot base) = placement^-1 * TCP (cell)`, and the flange
 //! (tool0) pose the arm must reach is `TCP (robot base) * tframe^-1` (`tool.tframe`: the TCP in
 //! the flange frame; without a `tool:` block tool0, the identity). With `robot.frame: base` the
@@ -48,10 +49,10 @@ pub(super) struct Tcp {
     ik: SixAxisIk,
     /// TCP in the flange frame.
     tframe: Isometry3<f64>,
-    /// Work object user frame in the cell frame (`None`: wobj0).
-    wobj: Option<Frame>,
-    uframe: Isometry3<f64>,
-    /// The frame the module writes the uframe and wobj0 robtargets in.
+    /// The work objects' user frames in the cell frame, as given, in the cell's order
+    /// (`Point::wobj` indexes them; `None` there: wobj0).
+    wobjs: Vec<Frame>,
+    /// The frame the module writes the uframes and wobj0 robtargets in.
     written: RobotFrame,
 }
 
@@ -65,27 +66,39 @@ impl Tcp {
         })?;
         // The frames as written (tooldata, wobjdata): what the controller computes with.
         let frame = |f: Option<Frame>| f.unwrap_or(Frame::IDENTITY).written().isometry();
-        // One work object at most (`cell::unsupported` refuses several): every robtarget's.
-        let wobj = cell.wobjs.first().map(|w| w.uframe);
         Ok(Tcp {
             ik,
             tframe: frame(cell.tool.as_ref().map(|t| t.tframe)),
-            wobj,
-            uframe: frame(wobj),
+            wobjs: cell.wobjs.iter().map(|w| w.uframe).collect(),
             written: cell.robot.frame,
         })
     }
 
-    /// The TCP pose of a robtarget in the cell frame, as written (module docs, "Choice").
-    fn tcp_in_cell(&self, pose: &Frame) -> Isometry3<f64> {
-        self.uframe * pose.written().isometry()
+    /// The user frame of work object `wobj` as given (`None`, or an index the cell does not
+    /// have: wobj0).
+    fn wobj(&self, wobj: Option<usize>) -> Option<&Frame> {
+        wobj.and_then(|i| self.wobjs.get(i))
     }
 
-    /// The TCP pose of a robtarget in the robot base frame, from the data the module writes
-    /// (module docs).
-    fn tcp_in_base(&self, pose: &Frame, placement: Placement) -> Isometry3<f64> {
-        match (self.written, &self.wobj) {
-            (RobotFrame::Cell, _) => placement.cell_from_robot().inverse() * self.tcp_in_cell(pose),
+    /// The TCP pose of a robtarget in work object `wobj`, in the cell frame, as written (module
+    /// docs, "Choice").
+    fn tcp_in_cell(&self, pose: &Frame, wobj: Option<usize>) -> Isometry3<f64> {
+        let uframe = self.wobj(wobj).copied().unwrap_or(Frame::IDENTITY);
+        uframe.written().isometry() * pose.written().isometry()
+    }
+
+    /// The TCP pose of a robtarget in work object `wobj`, in the robot base frame, from the
+    /// data the module writes (module docs).
+    fn tcp_in_base(
+        &self,
+        pose: &Frame,
+        wobj: Option<usize>,
+        placement: Placement,
+    ) -> Isometry3<f64> {
+        match (self.written, self.wobj(wobj)) {
+            (RobotFrame::Cell, _) => {
+                placement.cell_from_robot().inverse() * self.tcp_in_cell(pose, wobj)
+            }
             (RobotFrame::Base, Some(u)) => {
                 placement.written(RobotFrame::Base, u).isometry() * pose.written().isometry()
             }
@@ -93,25 +106,28 @@ impl Tcp {
         }
     }
 
-    /// The wrist centre of a robtarget, cell frame, mm (module docs).
-    pub(super) fn wrist_centre(&self, pose: &Frame) -> [f64; 3] {
-        let w =
-            self.tcp_in_cell(pose) * self.tframe.inverse() * Point3::from(self.ik.wrist_in_tool0());
+    /// The wrist centre of a robtarget in work object `wobj`, cell frame, mm (module docs).
+    pub(super) fn wrist_centre(&self, pose: &Frame, wobj: Option<usize>) -> [f64; 3] {
+        let w = self.tcp_in_cell(pose, wobj)
+            * self.tframe.inverse()
+            * Point3::from(self.ik.wrist_in_tool0());
         [w.x, w.y, w.z]
     }
 
     /// The joints of `pose` as written from `placement` (module docs): the solution the IK
     /// chooses among those in range, admitted for the confdata `wanted`, reaching the pose and
     /// accepted by `check`.
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn choose(
         &self,
         pose: &Frame,
+        wobj: Option<usize>,
         wanted: Option<ConfData>,
         placement: Placement,
         previous: Option<&Axes6>,
         check: &impl PoseCheck,
     ) -> Result<Axes6, ChooseError<String>> {
-        let tcp = self.tcp_in_base(pose, placement);
+        let tcp = self.tcp_in_base(pose, wobj, placement);
         let robot = self.ik.robot();
         let accept = |axes: &Axes6| -> Result<(), String> {
             if let Err(v) = robot.check_range6(axes) {
@@ -150,7 +166,7 @@ impl Tcp {
         check: &impl PoseCheck,
     ) -> Result<(Axes6, ConfData), PlaceError> {
         let q = self
-            .choose(pose, wanted, placement, previous, check)
+            .choose(pose, p.wobj, wanted, placement, previous, check)
             .map_err(|source| PlaceError::Robtarget {
                 point: p.name.clone(),
                 base_mm: placement.base_mm,

@@ -308,7 +308,7 @@ fn base_auto_takes_a_robtargets_wrist_centre_from_its_pose_and_tool() {
         ),
     );
     let tcp = Tcp::of(&c, &robot).expect("six-axis arm");
-    let w = tcp.wrist_centre(&pose);
+    let w = tcp.wrist_centre(&pose, c.points[0].wobj);
     let expected = PLACEMENT.cell_from_robot() * robot.wrist_centre(&a);
     let off = (nalgebra::Point3::from(w) - expected).norm();
     assert!(off < 0.01, "{w:?} vs {expected:?}");

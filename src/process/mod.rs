@@ -57,13 +57,26 @@ pub enum StopKind {
     Approach(usize),
     /// Entry `i`'s retract pose.
     Retract(usize),
+    /// The first entry's target again, at the end of the leg that closes the cycle
+    /// (`motion.cycle`); `n` is the number of entries (the leg is the `n`th).
+    Closing(usize),
 }
 
 impl StopKind {
-    /// The entry it belongs to.
+    /// The entry it belongs to (the closing stop: the first).
     pub fn entry(self) -> usize {
         match self {
             StopKind::Entry(i) | StopKind::Approach(i) | StopKind::Retract(i) => i,
+            StopKind::Closing(_) => 0,
+        }
+    }
+
+    /// The leg that ends at it is the `leg_end() - 1`th (0-based; the closing leg after the
+    /// last entry's).
+    pub fn leg_end(self) -> usize {
+        match self {
+            StopKind::Closing(n) => n,
+            other => other.entry(),
         }
     }
 }
@@ -131,7 +144,7 @@ impl Followed {
             .map(|s| {
                 let i = s.kind.entry();
                 match (s.kind, placed.points.get(i)) {
-                    (StopKind::Entry(_), Some(p)) => PlacedPoint {
+                    (StopKind::Entry(_) | StopKind::Closing(_), Some(p)) => PlacedPoint {
                         motion: s.motion.clone(),
                         ..p.clone()
                     },
@@ -154,6 +167,15 @@ impl Followed {
     /// The entry a stop of `run` (run-local index) belongs to.
     pub fn entry_of(&self, run: &Range<usize>, k: usize) -> usize {
         self.stops.get(run.start + k).map_or(0, |s| s.kind.entry())
+    }
+
+    /// The leg (0-based) that ends at stop `k` of `run` (run-local index): the vias' numbers.
+    fn leg_into(&self, run: &Range<usize>, k: usize) -> usize {
+        let end = self
+            .stops
+            .get(run.start + k)
+            .map_or(0, |s| s.kind.leg_end());
+        end.saturating_sub(1)
     }
 }
 
@@ -236,8 +258,8 @@ struct Setting<'a> {
     ik: SixAxisIk,
     robot: &'a Robot,
     frames: TcpFrames,
-    /// The work object's user frame in the cell frame, as written.
-    uframe: Isometry3<f64>,
+    /// The work objects' user frames in the cell frame, as written, in the cell's order.
+    uframes: Vec<Isometry3<f64>>,
 }
 
 impl Setting<'_> {
@@ -246,9 +268,16 @@ impl Setting<'_> {
         self.frames.cell_from_robot * self.robot.tool0(joints) * self.frames.tframe
     }
 
-    /// A robtarget pose (work object frame) as written, cell frame.
-    fn pose_in_cell(&self, pose: &Frame) -> Isometry3<f64> {
-        self.uframe * pose.written().isometry()
+    /// The user frame of work object `wobj` (`Point::wobj`; `None`: wobj0, the cell frame).
+    fn uframe(&self, wobj: Option<usize>) -> Isometry3<f64> {
+        wobj.and_then(|i| self.uframes.get(i))
+            .copied()
+            .unwrap_or_else(Isometry3::identity)
+    }
+
+    /// A robtarget pose in work object `wobj` as written, cell frame.
+    fn pose_in_cell(&self, pose: &Frame, wobj: Option<usize>) -> Isometry3<f64> {
+        self.uframe(wobj) * pose.written().isometry()
     }
 
     /// The joints `MoveJ` reaches for TCP pose `tcp` (cell frame) in configuration `conf`: the
@@ -314,7 +343,7 @@ pub fn follow(
             continue;
         };
         let conf = *conf;
-        let target = s.pose_in_cell(pose);
+        let target = s.pose_in_cell(pose, p.wobj);
         let at = placed_point.joints_deg;
         let label = p.label();
         // Into the point: an approach line, a process move, or the air.
@@ -361,7 +390,7 @@ pub fn follow(
             let start = s.tcp(&from);
             let (kind, via) = match p.arrival {
                 Arrival::Circular { via_mm, .. } => {
-                    let via = s.uframe * Point3::from(via_mm);
+                    let via = s.uframe(p.wobj) * Point3::from(via_mm);
                     (MoveKind::Linear, Some(via))
                 }
                 _ => (MoveKind::Linear, None),
@@ -429,6 +458,19 @@ pub fn follow(
             out.into.push(Reach::Process(Box::new(m)));
         }
     }
+    // The leg that closes the cycle: through the air at `motion.speed`, ending `fine` at the
+    // first entry's target (none of its zone or actions).
+    if let (true, Some(first)) = (cell.closing_leg(), placed.points.first()) {
+        out.stops.push(Stop {
+            kind: StopKind::Closing(cell.points.len()),
+            joints_deg: first.joints_deg,
+            motion: MoveMotion {
+                speed: cell.motion.speed.clone(),
+                zone: "fine".into(),
+            },
+        });
+        out.into.push(Reach::Air);
+    }
     Ok(out)
 }
 
@@ -452,7 +494,9 @@ fn setting_of<'a>(
             cell_from_robot: placed.placement.cell_from_robot(),
             tframe: written(cell.tool.as_ref().map(|t| t.tframe)),
         },
-        uframe: written(cell.wobjs.first().map(|w| w.uframe)),
+        uframes: (cell.wobjs.iter())
+            .map(|w| written(Some(w.uframe)))
+            .collect(),
     })
 }
 
@@ -487,7 +531,7 @@ fn process_move(
         (Some(_), _) => {
             // The circle point as written: the via with the orientation at its arc fraction.
             let cir = path.as_ref().ok().and_then(|p| p.cir_point());
-            let via = cir.map(|c| s.uframe.inverse() * c);
+            let via = cir.map(|c| s.uframe(p.wobj).inverse() * c);
             match via {
                 Some(v) => MoveKind::Circular {
                     via: Frame {
@@ -586,7 +630,9 @@ pub fn splice(
     let stops = &followed.stops;
     // Every stop an entry, all joined through the air: the one plan as it is.
     if let [(run, plan)] = runs.as_slice() {
-        if *run == (0..stops.len()) && followed.into.iter().all(|i| matches!(i, Reach::Air)) {
+        let entries = (stops.iter().enumerate()).all(|(k, s)| s.kind == StopKind::Entry(k));
+        let air = followed.into.iter().all(|i| matches!(i, Reach::Air));
+        if *run == (0..stops.len()) && entries && air {
             let mut plan = plan.clone();
             plan.total_s += waits_s;
             if let Some(p) = &mut plan.paper {
@@ -597,6 +643,7 @@ pub fn splice(
     }
     let kind_of = |s: &Stop| match s.kind {
         StopKind::Entry(i) => WaypointKind::CellPoint(i),
+        StopKind::Closing(_) => WaypointKind::CellPoint(0),
         StopKind::Approach(i) => WaypointKind::Approach(i),
         StopKind::Retract(i) => WaypointKind::Retract(i),
     };
@@ -633,7 +680,7 @@ pub fn splice(
                 let kind = match w.kind {
                     WaypointKind::CellPoint(j) => stops.get(run.start + j).map_or(w.kind, kind_of),
                     WaypointKind::Via { leg, index } => WaypointKind::Via {
-                        leg: followed.entry_of(&run, leg + 1).saturating_sub(1),
+                        leg: followed.leg_into(&run, leg + 1),
                         index,
                     },
                     other => other,

@@ -14,6 +14,7 @@ MODULE ArcSeam
     ! moves: 14
     ! min clearance (mm): 10.0
     ! estimated time (s): 31.26
+    ! cycle: open: the routine ends at home2, not where it starts (home); motion.cycle: true closes it
     ! zoned vias: 0 of 9 (via zone fine)
     ! the paper's method alone: 17 moves, 31.89 s
 

@@ -15,6 +15,7 @@ MODULE FrameWeld
     ! moves: 10
     ! min clearance (mm): 10.3
     ! estimated time (s): 20.92
+    ! cycle: closed: the routine ends where it starts; its time is a cycle time
     ! zoned vias: 0 of 1 (via zone fine)
 
     PERS tooldata tTorch2600 := [TRUE,[[116.673,0.000,336.673],[0.923879539,0.000000000,0.382683416,0.000000000]],[4.500,[0.000,0.000,120.000],[1,0,0,0],0,0,0]];

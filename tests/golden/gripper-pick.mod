@@ -14,6 +14,7 @@ MODULE GripperPick
     ! moves: 9
     ! min clearance (mm): 10.3
     ! estimated time (s): 19.73
+    ! cycle: closed: the routine ends where it starts; its time is a cycle time
     ! zoned vias: 0 of 2 (via zone fine)
 
     PERS tooldata tGripper := [TRUE,[[0.000,0.000,180.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[3.200,[0.000,0.000,80.000],[1,0,0,0],0,0,0]];

@@ -15,6 +15,7 @@ MODULE PalletStack
     ! moves: 24
     ! min clearance (mm): 20.0
     ! estimated time (s): 33.11
+    ! cycle: closed: the routine ends where it starts; its time is a cycle time
     ! zoned vias: 0 of 5 (via zone fine)
 
     PERS tooldata tVacuum := [TRUE,[[0.000,0.000,250.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[35.000,[0.000,0.000,150.000],[1,0,0,0],0,0,0]];

@@ -14,6 +14,7 @@ MODULE TorchTrunk
     ! moves: 19
     ! min clearance (mm): 10.0
     ! estimated time (s): 32.99
+    ! cycle: open: the routine ends at home2, not where it starts (home); motion.cycle: true closes it
     ! zoned vias: 0 of 10 (via zone fine)
     ! the paper's method alone: 20 moves, 33.42 s
 

@@ -11,6 +11,7 @@ MODULE TrunkWeld
     ! moves: 11
     ! min clearance (mm): 10.0
     ! estimated time (s): 14.50
+    ! cycle: open: the routine ends at F, not where it starts (A); motion.cycle: true closes it
     ! zoned vias: 0 of 6 (via zone fine)
 
     CONST jointtarget A := [[90.000,0.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

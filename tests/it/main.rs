@@ -45,6 +45,7 @@ mod cli;
 mod common;
 mod compare;
 mod convention;
+mod daily;
 mod estimate;
 mod frames;
 mod fuzz;

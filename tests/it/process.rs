@@ -7,7 +7,12 @@ use crate::common::{arg, gen_rapid, root, stderr, stdout};
 
 #[test]
 fn the_process_cells_run_as_a_controller_runs_them() {
-    for (name, process_moves) in [("torch-trunk", 6), ("gripper-pick", 4), ("arc-seam", 3)] {
+    for (name, process_moves) in [
+        ("torch-trunk", 6),
+        ("gripper-pick", 4),
+        ("arc-seam", 3),
+        ("pick-place", 4),
+    ] {
         let path = root().join(format!("cells/{name}.yaml"));
         let cell = load_cell(&path);
         let o = gen_rapid(&[arg(&path), "-q"]);

@@ -342,7 +342,7 @@ fn report_moves_say_the_instruction_target_and_actions_the_module_writes() {
         ("cells/trunk.yaml", [].as_slice()),
     ] {
         let (text, report, _) = run(cell, &[]);
-        assert_eq!(report["format"], "gen-rapid report 4");
+        assert_eq!(report["format"], "gen-rapid report 5");
         let module = Module::parse(&text).expect("the module");
         // The module's motions, each with the actions written after it.
         let mut written: Vec<(&crate::common::routine::Motion, Vec<String>)> = Vec::new();

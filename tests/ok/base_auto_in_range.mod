@@ -11,6 +11,7 @@ MODULE Auto1
     ! moves: 2
     ! min clearance (mm): none (no obstacles)
     ! estimated time (s): 9.54
+    ! cycle: open: the routine ends at P3, not where it starts (P1); motion.cycle: true closes it
     ! zoned vias: 0 of 0 (via zone fine)
 
     CONST jointtarget P1 := [[-91.302,-65.674,-4.639,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

@@ -14,6 +14,7 @@ MODULE AutoTcp
     ! moves: 2
     ! min clearance (mm): 367.1
     ! estimated time (s): 4.03
+    ! cycle: open: the routine ends at C, not where it starts (A); motion.cycle: true closes it
     ! zoned vias: 0 of 0 (via zone fine)
 
     PERS tooldata tGripper := [TRUE,[[0.000,0.000,180.000],[1.000000000,0.000000000,0.000000000,0.000000000]],[1.000,[0.000,0.000,0.000],[1,0,0,0],0,0,0]];

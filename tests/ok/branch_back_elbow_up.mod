@@ -11,6 +11,7 @@ MODULE Branch
     ! moves: 1
     ! min clearance (mm): none (no obstacles)
     ! estimated time (s): 6.82
+    ! cycle: open: the routine ends at Q, not where it starts (P); motion.cycle: true closes it
     ! zoned vias: 0 of 0 (via zone fine)
 
     CONST jointtarget P := [[-135.000,-50.038,-61.411,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

@@ -11,6 +11,7 @@ MODULE Branch
     ! moves: 1
     ! min clearance (mm): none (no obstacles)
     ! estimated time (s): 4.50
+    ! cycle: open: the routine ends at Q, not where it starts (P); motion.cycle: true closes it
     ! zoned vias: 0 of 0 (via zone fine)
 
     CONST jointtarget P := [[45.000,-44.340,-52.770,0.000,0.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

@@ -11,6 +11,7 @@ MODULE CompleteSearch
     ! moves: 3
     ! min clearance (mm): 25.2
     ! estimated time (s): 12.79
+    ! cycle: open: the routine ends at Q, not where it starts (P); motion.cycle: true closes it
     ! zoned vias: 0 of 2 (via zone fine)
     ! the paper's method alone: 3 moves, 12.91 s
 

@@ -12,6 +12,7 @@ MODULE Irb1200Auto
     ! moves: 2
     ! min clearance (mm): 104.4
     ! estimated time (s): 4.66
+    ! cycle: open: the routine ends at P3, not where it starts (P1); motion.cycle: true closes it
     ! zoned vias: 0 of 0 (via zone fine)
 
     CONST jointtarget P1 := [[-42.537,28.645,-11.571,0.000,60.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

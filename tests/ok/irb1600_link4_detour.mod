@@ -12,6 +12,7 @@ MODULE Irb1600Link4
     ! moves: 2
     ! min clearance (mm): 12.3
     ! estimated time (s): 6.21
+    ! cycle: open: the routine ends at P2, not where it starts (P1); motion.cycle: true closes it
     ! zoned vias: 0 of 1 (via zone fine)
     ! the paper's method alone: 2 moves, 6.47 s
 

@@ -12,6 +12,7 @@ MODULE Irb2400Limit
     ! moves: 5
     ! min clearance (mm): 10.1
     ! estimated time (s): 14.80
+    ! cycle: open: the routine ends at P3, not where it starts (P1); motion.cycle: true closes it
     ! zoned vias: 0 of 3 (via zone fine)
 
     CONST jointtarget P1 := [[-40.000,60.000,0.000,0.000,30.000,0.000],[9E9,9E9,9E9,9E9,9E9,9E9]];

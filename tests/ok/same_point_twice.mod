@@ -11,6 +11,7 @@ MODULE Dup
     ! moves: 1
     ! min clearance (mm): none (no obstacles)
     ! estimated time (s): 0.00
+    ! cycle: closed: the routine ends where it starts; its time is a cycle time
     ! zoned vias: 0 of 0 (via zone fine)
     ! the paper's method alone: 1 move, 0.00 s
 

@@ -14,6 +14,7 @@ MODULE TcpCase
     ! moves: 2
     ! min clearance (mm): 183.3
     ! estimated time (s): 4.64
+    ! cycle: open: the routine ends at W2, not where it starts (P1); motion.cycle: true closes it
     ! zoned vias: 0 of 0 (via zone fine)
 
     PERS tooldata tTorch := [TRUE,[[0.000,0.000,250.000],[0.965925836,0.000000000,0.258819010,0.000000000]],[1.000,[0.000,0.000,0.000],[1,0,0,0],0,0,0]];

@@ -60,6 +60,18 @@ pub struct Header {
     pub paper: Option<(usize, f64)>,
     /// The frame the user frame and wobj0's robtargets are written in (`robot.frame`).
     pub frame: RobotFrame,
+    /// Where the routine ends, against where it starts.
+    pub ends: Ends,
+}
+
+/// Where the routine ends: where it starts (a closed cycle, `motion.cycle` or a last entry
+/// that reaches the first one's target), or elsewhere.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Ends {
+    /// At the first entry's target: the estimated time is a cycle time.
+    AtStart,
+    /// Elsewhere: at `last` (the last stop), not at `first` (the first entry).
+    Elsewhere { first: String, last: String },
 }
 
 /// Header free text as printable ASCII on one line (see module doc).
@@ -112,6 +124,8 @@ pub struct Facts {
     pub zoned_vias: String,
     /// `n moves, t s` (t with 2 decimals): the paper's method alone, or none when not known.
     pub paper_method: Option<String>,
+    /// Whether the routine ends where it starts: `closed (...)` or `open (...)`.
+    pub cycle: String,
 }
 
 impl Facts {
@@ -147,6 +161,7 @@ impl Facts {
         if let Some(t) = &self.estimated_time_s {
             lines.push(format!("estimated time (s): {t}"));
         }
+        lines.push(format!("cycle: {}", self.cycle));
         lines.push(format!("zoned vias: {}", self.zoned_vias));
         if let Some(p) = &self.paper_method {
             lines.push(format!("the paper's method alone: {p}"));
@@ -222,6 +237,14 @@ pub(super) fn facts(p: &Program) -> Result<Facts, RapidError> {
             comment_text(&h.via_zone)
         ),
         paper_method,
+        cycle: match &h.ends {
+            Ends::AtStart => "closed: the routine ends where it starts; its time is a cycle time".to_string(),
+            Ends::Elsewhere { first, last } => format!(
+                "open: the routine ends at {}, not where it starts ({}); motion.cycle: true closes it",
+                comment_text(last),
+                comment_text(first)
+            ),
+        },
     })
 }
 
@@ -229,7 +252,7 @@ pub(super) fn facts(p: &Program) -> Result<Facts, RapidError> {
 /// work object or writes robtargets (a module of joint moves alone says nothing of them).
 fn tcp_lines(p: &Program) -> Option<[String; 3]> {
     let robtargets = p.targets.iter().any(|t| t.robtarget.is_some());
-    if p.tooldata.is_none() && p.wobj.is_none() && !robtargets {
+    if p.tooldata.is_none() && p.wobjs.is_empty() && !robtargets {
         return None;
     }
     let tool = match &p.tooldata {
@@ -250,12 +273,19 @@ fn tcp_lines(p: &Program) -> Option<[String; 3]> {
             comment_text(&p.tool)
         ),
     };
-    let wobj = match &p.wobj {
-        Some(w) => format!(
+    let wobj = match p.wobjs.as_slice() {
+        [w] => format!(
             "wobj: {} (declared below; robtargets are in its user frame)",
             comment_text(&w.name)
         ),
-        None => "wobj: wobj0 (robtargets are in the world frame)".to_string(),
+        [] => "wobj: wobj0 (robtargets are in the world frame)".to_string(),
+        several => {
+            let names: Vec<&str> = several.iter().map(|w| w.name.as_str()).collect();
+            format!(
+                "wobjs: {} (declared below; each robtarget is in the user frame of the one it names)",
+                comment_text(&names.join(", "))
+            )
+        }
     };
     let frames = match p.header.frame {
         RobotFrame::Cell => FRAMES_NOTE,

@@ -35,6 +35,7 @@
 //!     ! moves: <moves>
 //!     ! min clearance (mm): <min_clearance_mm, 1 decimal, or `none (no obstacles)`>
 //!     ! estimated time (s): <estimated_time_s, 2 decimals>   (only when known)
+//!     ! cycle: closed: ... | open: the routine ends at <last>, not where it starts (<first>); ...
 //!     ! zoned vias: <N> of <M> (via zone <zone>)
 //!     ! the paper's method alone: <n> moves, <t, 2 decimals> s   (only when known)
 //!
@@ -98,7 +99,7 @@ mod target_names;
 
 pub use data::{AxisRanges, Pose, RobTarget, ToolData, WobjData, NO_EXTERNAL_AXES};
 pub use format::format_fixed;
-pub use header::{Header, NO_CONTROLLER};
+pub use header::{Ends, Header, NO_CONTROLLER};
 pub use moves::{written_moves, WrittenAction, WrittenMove};
 pub use settings::{parse_setting, settings_map};
 pub use target_names::{target_names, target_names_avoiding};
@@ -132,8 +133,9 @@ pub struct Program {
     pub tool: String,
     /// The tooldata the module declares under the name [`tool`](Self::tool), if any.
     pub tooldata: Option<ToolData>,
-    /// The work object the module declares and every move names (`\WObj:=`), if any.
-    pub wobj: Option<WobjData>,
+    /// The work objects the module declares, in the cell's order; each move names the one of
+    /// its target ([`JointTarget::wobj`]).
+    pub wobjs: Vec<WobjData>,
     /// The robot's axis ranges: no joint value outside them is written.
     pub ranges: AxisRanges,
     /// The name of the routine that makes the moves (`motion.proc`, `--proc`; default `main`).
@@ -156,6 +158,12 @@ pub enum TargetKind {
         leg: usize,
         /// 1-based index of the via within its leg.
         index: usize,
+    },
+    /// A point's target reached again (a `{ revisit: NAME }` entry, or the leg closing the
+    /// cycle): moved to by the point's own data, declares nothing.
+    Revisit {
+        /// The point's name.
+        point: String,
     },
     /// A robtarget point's approach pose, `RelTool(<point>_rt, 0, 0, -D)` (declares nothing).
     Approach {
@@ -225,6 +233,9 @@ pub struct JointTarget {
     pub offset_mm: Option<f64>,
     /// The actions done after the move into it, in order.
     pub actions: Vec<Action>,
+    /// The work object the move into it names (`\WObj:=`): an index into
+    /// [`Program::wobjs`]; `None`: none (wobj0).
+    pub wobj: Option<usize>,
 }
 
 /// Why a module could not be rendered.
@@ -601,10 +612,12 @@ struct ModuleCtx {
     facts: header::Facts,
     /// The tooldata the moves use: its name, and its value when the module declares it.
     tool: ToolCtx,
-    /// The work object the module declares and the moves name, or none.
+    /// The work object the module declares when it declares exactly one, or none.
     wobj: Option<DataCtx>,
-    /// `\WObj:=<name>`, or empty.
+    /// `\WObj:=<name>` of that one work object, or empty (each move's own: `moves[i].wobj_arg`).
     wobj_arg: String,
+    /// Every work object the module declares, in the cell's order.
+    wobjs: Vec<DataCtx>,
     /// One per `CONST jointtarget`, in visiting order.
     targets: Vec<TargetCtx>,
     /// One per move instruction, in order (move `i` goes to target `i`).
@@ -745,7 +758,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
         source,
     })?;
     data_name("tool", &program.tool, program.tooldata.is_some())?;
-    if let Some(w) = &program.wobj {
+    for w in &program.wobjs {
         data_name("wobj", &w.name, true)?;
     }
     for t in &program.targets {
@@ -766,9 +779,14 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
     let target_names = module_target_names(program)?;
     check_name_space(program, &target_names)?;
 
-    let wobj_arg = match &program.wobj {
+    let wobj_arg_of = |w: Option<usize>| match w.and_then(|i| program.wobjs.get(i)) {
         Some(w) => format!("\\WObj:={}", w.name),
         None => String::new(),
+    };
+    // The one work object's argument, for a template that writes one for every move.
+    let wobj_arg = match program.wobjs.as_slice() {
+        [_] => wobj_arg_of(Some(0)),
+        _ => String::new(),
     };
     let written = moves::written_moves(program, &target_names)?;
     let mut outputs: BTreeSet<String> = BTreeSet::new();
@@ -814,6 +832,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
                 }
             }
         }
+        let wobj_arg = wobj_arg_of(target.wobj);
         moves.push(MoveCtx {
             args: format!(
                 "{}, {}, {}, {}{wobj_arg}",
@@ -840,9 +859,16 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             speed: target.speed.clone(),
             zone: target.zone.clone(),
             tool: program.tool.clone(),
-            wobj: program.wobj.as_ref().map(|w| w.name.clone()),
-            wobj_arg: wobj_arg.clone(),
+            wobj: (target.wobj)
+                .and_then(|i| program.wobjs.get(i))
+                .map(|w| w.name.clone()),
+            wobj_arg,
         });
+        // A revisit moves to its point's data and declares none.
+        let robtarget = match target.kind {
+            TargetKind::Revisit { .. } => None,
+            _ => robtarget,
+        };
         targets.push(TargetCtx {
             jointtarget: robtarget.is_none()
                 && matches!(
@@ -852,6 +878,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             value: format!("[[{axes}],{NO_EXTERNAL_AXES}]"),
             kind: match target.kind {
                 TargetKind::CellPoint { .. } => "cell",
+                TargetKind::Revisit { .. } => "revisit",
                 TargetKind::Via { .. } => "via",
                 TargetKind::Approach { .. } => "approach",
                 TargetKind::Retract { .. } => "retract",
@@ -862,6 +889,13 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             zone: target.zone.clone(),
             robtarget,
             via,
+        });
+    }
+    let mut wobjs = Vec::with_capacity(program.wobjs.len());
+    for w in &program.wobjs {
+        wobjs.push(DataCtx {
+            name: w.name.clone(),
+            value: data::wobjdata(w)?,
         });
     }
     let mut loads = Vec::with_capacity(program.loads.len());
@@ -887,14 +921,15 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
                 None => None,
             },
         },
-        wobj: match &program.wobj {
-            Some(w) => Some(DataCtx {
+        wobj: match wobjs.as_slice() {
+            [w] => Some(DataCtx {
                 name: w.name.clone(),
-                value: data::wobjdata(w)?,
+                value: w.value.clone(),
             }),
-            None => None,
+            _ => None,
         },
         wobj_arg,
+        wobjs,
         targets,
         moves,
         settings: template.settings.clone(),
@@ -926,7 +961,7 @@ fn other_names(program: &Program) -> Vec<String> {
         program.proc_name.clone(),
         program.tool.clone(),
     ];
-    names.extend(program.wobj.iter().map(|w| w.name.clone()));
+    names.extend(program.wobjs.iter().map(|w| w.name.clone()));
     for t in &program.targets {
         names.push(t.speed.clone());
         names.push(t.zone.clone());
@@ -962,7 +997,7 @@ fn check_name_space(program: &Program, target_names: &[String]) -> Result<(), Ra
         Some(_) => declared.push(tool),
         None => used.push(tool),
     }
-    if let Some(w) = &program.wobj {
+    for w in &program.wobjs {
         declared.push((w.name.clone(), format!("the work object `{}`", w.name)));
     }
     let mut listed: HashSet<String> = used.iter().map(|(n, _)| n.clone()).collect();
@@ -989,7 +1024,7 @@ fn check_name_space(program: &Program, target_names: &[String]) -> Result<(), Ra
             let v = format!("{name}_via");
             declared.push((v.clone(), format!("the circle point `{v}`")));
         }
-        if t.robtarget.is_some() {
+        if let (Some(_), false) = (&t.robtarget, matches!(t.kind, TargetKind::Revisit { .. })) {
             let r = robtarget_name(name);
             check_identifier(&r).map_err(|source| RapidError::InvalidGeneratedName {
                 name: r.clone(),

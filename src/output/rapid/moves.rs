@@ -120,6 +120,7 @@ pub fn written_moves(program: &Program, names: &[String]) -> Result<Vec<WrittenM
         };
         let point = match &target.kind {
             TargetKind::CellPoint { name: p }
+            | TargetKind::Revisit { point: p }
             | TargetKind::Approach { point: p }
             | TargetKind::Retract { point: p } => Some(p.clone()),
             TargetKind::Via { .. } => None,

@@ -79,6 +79,8 @@ pub fn target_names_avoiding(
     for target in targets {
         match &target.kind {
             TargetKind::CellPoint { name } => names.push(name.clone()),
+            // The point's own name: its data, declared once by the point.
+            TargetKind::Revisit { point } => names.push(point.clone()),
             // Not declared: named for the report and the pictures only.
             TargetKind::Approach { point } => names.push(format!("{point}_app")),
             TargetKind::Retract { point } => names.push(format!("{point}_ret")),
@@ -126,6 +128,7 @@ mod tests {
             how: MoveHow::Joint,
             offset_mm: None,
             actions: Vec::new(),
+            wobj: None,
         }
     }
     fn via(leg: usize, index: usize) -> JointTarget {
@@ -138,6 +141,7 @@ mod tests {
             how: MoveHow::Joint,
             offset_mm: None,
             actions: Vec::new(),
+            wobj: None,
         }
     }
 

@@ -17,6 +17,7 @@ fn point(name: &str, axes_deg: [f64; 6]) -> JointTarget {
         how: MoveHow::Joint,
         offset_mm: None,
         actions: Vec::new(),
+        wobj: None,
     }
 }
 fn via(leg: usize, index: usize, axes_deg: [f64; 6]) -> JointTarget {
@@ -29,6 +30,7 @@ fn via(leg: usize, index: usize, axes_deg: [f64; 6]) -> JointTarget {
         how: MoveHow::Joint,
         offset_mm: None,
         actions: Vec::new(),
+        wobj: None,
     }
 }
 
@@ -65,6 +67,10 @@ fn header(moves: usize) -> Header {
         via_zone: "z50".to_string(),
         paper: Some((moves + 1, 4.0)),
         frame: RobotFrame::Cell,
+        ends: Ends::Elsewhere {
+            first: "home".to_string(),
+            last: "pick".to_string(),
+        },
     }
 }
 
@@ -80,7 +86,7 @@ fn small_program() -> Program {
         ],
         tool: "tool0".to_string(),
         tooldata: None,
-        wobj: None,
+        wobjs: Vec::new(),
         ranges: IRB1400,
         proc_name: "main".into(),
         loads: Vec::new(),
@@ -101,6 +107,7 @@ const SMALL_EXPECTED: &str = r"MODULE Trunk
     ! moves: 3
     ! min clearance (mm): 14.0
     ! estimated time (s): 3.46
+    ! cycle: open: the routine ends at pick, not where it starts (home); motion.cycle: true closes it
     ! zoned vias: 1 of 2 (via zone z50)
     ! the paper's method alone: 4 moves, 4.00 s
 
@@ -160,6 +167,7 @@ fn awkward_program() -> Program {
             via_zone: "fine".to_string(),
             paper: None,
             frame: RobotFrame::Cell,
+            ends: Ends::AtStart,
         },
         targets: targets
             .into_iter()
@@ -171,7 +179,7 @@ fn awkward_program() -> Program {
             .collect(),
         tool: "gripper".to_string(),
         tooldata: None,
-        wobj: None,
+        wobjs: Vec::new(),
         ranges: AxisRanges::UNBOUNDED,
         proc_name: "main".into(),
         loads: Vec::new(),
@@ -341,6 +349,7 @@ fn render_without_targets() {
     ! base: [0.0, -250.5, 12.3] yaw: -90.000
     ! moves: 0
     ! min clearance (mm): 14.0
+    ! cycle: open: the routine ends at pick, not where it starts (home); motion.cycle: true closes it
     ! zoned vias: 0 of 0 (via zone z50)
 
 
@@ -544,7 +553,10 @@ fn tcp_program() -> Program {
     Program {
         module: "Weld".to_string(),
         header: header(3),
-        targets: vec![point("home", [0.0, 0.0, 0.0, 0.0, 30.0, 0.0]), w1, v, w2],
+        // With one work object every move names it.
+        targets: [point("home", [0.0, 0.0, 0.0, 0.0, 30.0, 0.0]), w1, v, w2]
+            .map(|t| JointTarget { wobj: Some(0), ..t })
+            .into(),
         tool: "tTorch".into(),
         tooldata: Some(ToolData {
             tframe: Pose {
@@ -555,13 +567,13 @@ fn tcp_program() -> Program {
             cog_mm: [0.0, 0.0, 120.0],
             shapes: vec!["neck".into(), "body".into()],
         }),
-        wobj: Some(WobjData {
+        wobjs: vec![WobjData {
             name: "wobjTrunk".into(),
             uframe: Pose {
                 pos_mm: [400.0, 0.0, 500.0],
                 quat_wxyz: [1.0, 0.0, 0.0, 0.0],
             },
-        }),
+        }],
         ranges: IRB1400,
         proc_name: "main".into(),
         loads: Vec::new(),
@@ -574,7 +586,7 @@ fn vias_take_no_name_of_the_work_object_or_a_points_speed_or_zone() {
     // that name is valid RAPID, so the via steps aside.
     let stepped = "CONST jointtarget via02_01_x1 := ";
     let mut p = tcp_program();
-    p.wobj.as_mut().expect("wobj").name = "Via02_01".into();
+    p.wobjs[0].name = "Via02_01".into();
     let text = render(&p).expect("renders");
     assert!(text.contains("PERS wobjdata Via02_01 := "), "{text}");
     assert!(text.contains(stepped), "{text}");
@@ -613,6 +625,7 @@ const TCP_EXPECTED: &str = r#"MODULE Weld
     ! moves: 3
     ! min clearance (mm): 14.0
     ! estimated time (s): 3.46
+    ! cycle: open: the routine ends at pick, not where it starts (home); motion.cycle: true closes it
     ! zoned vias: 1 of 2 (via zone z50)
     ! the paper's method alone: 4 moves, 4.00 s
 
@@ -718,7 +731,7 @@ fn declared_tool_wobj_and_robtarget_names_share_the_name_space() {
     p.tool = "Home".into();
     assert!(matches!(render(&p), Err(RapidError::NameClash { .. })));
     let mut p = tcp_program();
-    p.wobj.as_mut().unwrap().name = "weld".into();
+    p.wobjs[0].name = "weld".into();
     let err = render(&p).unwrap_err().to_string();
     assert!(err.contains("the module name `Weld`"), "{err}");
     // Declared names follow the identifier rule: tool0 cannot be declared again.

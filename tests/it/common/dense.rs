@@ -443,8 +443,9 @@ pub struct Report {
     pub program: ProgramReport,
 }
 
-/// The points of a module of `MoveAbsJ` alone, and the header's count of moves: the moves name
-/// the targets one to one, in order, from the first cell point to the last; every cell point
+/// The points of a module of `MoveAbsJ` alone, and the header's count of moves: the targets
+/// declared once each and each moved to, the moves from the first cell point
+/// to the last (or back to the first after the leg closing the cycle); every cell point
 /// appears, in order: joint points exactly as given, xyz points at their wrist centre by forward
 /// kinematics from the header's placement; every target in range; every via's wrist on the
 /// leg's schedule. The number of xyz points held, and the failures.
@@ -463,15 +464,34 @@ fn joint_module_points(
             module.moves.len()
         ));
     }
-    let names: Vec<&str> = module.targets.iter().map(|t| t.0.as_str()).collect();
-    if names != module.moves.iter().map(String::as_str).collect::<Vec<_>>() {
+    // A revisit and the leg closing the cycle move to a target declared once (where its point
+    // stands in the cell): every target declared once and moved to, every move to a declared
+    // target; the points are read along the moves.
+    let declared: Vec<&str> = module.targets.iter().map(|t| t.0.as_str()).collect();
+    let twice = (declared.iter().enumerate()).any(|(i, d)| declared[..i].contains(d));
+    let unused = declared
+        .iter()
+        .any(|d| !module.moves.iter().any(|m| m == d));
+    let undeclared = module.moves.iter().any(|m| !declared.contains(&m.as_str()));
+    if twice || unused || undeclared {
         fail(format!(
-            "moves {:?} do not name the targets {names:?} in order",
+            "moves {:?} do not name the targets {declared:?} (each declared once and moved to)",
             module.moves
         ));
     }
+    let mut along = module.clone();
+    along.targets = (module.moves.iter())
+        .filter_map(|m| module.targets.iter().find(|t| t.0 == *m).cloned())
+        .collect();
+    let module = &along;
+    let names: Vec<&str> = module.targets.iter().map(|t| t.0.as_str()).collect();
+    // The last: the last entry's point, or the first after the leg closing the cycle.
+    let last_point = match cell.closing_leg() {
+        true => cell.points.first(),
+        false => cell.points.last(),
+    };
     if names.first().copied() != cell.points.first().map(|p| p.name.as_str())
-        || names.last().copied() != cell.points.last().map(|p| p.name.as_str())
+        || names.last().copied() != last_point.map(|p| p.name.as_str())
     {
         fail("the first and last targets are not the first and last cell points".into());
     }

@@ -95,7 +95,17 @@ pub fn check_tcp(
                 m.target, m.tool, m.wobj
             ));
         }
-        let Some(p) = cell.points.get(next_point) else {
+        // After the last cell point, the leg closing the cycle: to the first, at motion.speed,
+        // fine.
+        let closing = (cell.closing_leg() && next_point == cell.points.len())
+            .then(|| cell.points.first())
+            .flatten()
+            .map(|p| super::library::Point {
+                speed: None,
+                zone: Some("fine".into()),
+                ..p.clone()
+            });
+        let Some(p) = cell.points.get(next_point).or(closing.as_ref()) else {
             fail(format!("MoveAbsJ {} after the last cell point", m.target));
             break;
         };
