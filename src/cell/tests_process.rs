@@ -373,6 +373,13 @@ fn the_guard_refuses_what_the_later_stages_do_not_carry_out_at_its_first_line() 
     unsupported(&parse_str(&base).expect("valid")).expect("`robot.frame: base` is carried out");
     // Process moves, approach and retract lines, actions and loads are carried out.
     unsupported(&parse_str(SEAM).expect("valid")).expect("the seam is carried out");
+    let seam_in_base = SEAM.replace(
+        "  base: [0, -850, 0]\n",
+        "  base: [0, -850, 0]\n  frame: base\n",
+    );
+    assert_ne!(seam_in_base, SEAM);
+    unsupported(&parse_str(&seam_in_base).expect("valid"))
+        .expect("the seam in the base frame is carried out");
     let cases = [
         (
             format!("{plain}{wobj}  - {{ name: wB, uframe: [[0, 0, 0], [1, 0, 0, 0]] }}\n")

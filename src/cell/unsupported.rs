@@ -1,8 +1,7 @@
 //! The guard between the cell file and the later stages: the keys the cell validation reads but
 //! the place, plan and render stages do not carry out yet (revisits, the closed cycle, several
-//! work objects, the base frame together with process moves). A
-//! cell that uses one is refused at its line, so no module is written that leaves out what the
-//! cell asks for. Orientations given as `zyx` need no guard: they are read into the same
+//! work objects). A cell that uses one is refused at its line, so no module is written that
+//! leaves out what the cell asks for. Orientations given as `zyx` need no guard: they are read into the same
 //! quaternions. Once the later stages carry out a key, its line here goes; once they carry out
 //! all, this file goes.
 
@@ -20,18 +19,6 @@ pub fn unsupported(cell: &Cell) -> Result<(), CellError> {
     }
     if let Some(w) = cell.wobjs.get(1) {
         uses.push((w.loc, "a second work object".into()));
-    }
-    // The base frame with process moves: the follow stage works from the cell-frame poses, not
-    // yet from the data as the base frame writes them.
-    let process = |p: &super::Point| {
-        p.approach_mm.is_some() || p.retract_mm.is_some() || p.arrival != super::Arrival::Joint
-    };
-    if cell.robot.frame == super::RobotFrame::Base && cell.points.iter().any(process) {
-        uses.push((
-            cell.robot.frame_loc,
-            "`robot.frame: base` with process moves (approach, retract, `move: linear | circular`)"
-                .into(),
-        ));
     }
     if cell.motion.cycle {
         uses.push((cell.motion.cycle_loc, "`motion.cycle: true`".into()));

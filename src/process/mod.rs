@@ -29,14 +29,14 @@
 //! pose the followed line's end. An approach or retract pose that lies in another configuration
 //! quadrant than its point (which would need a robtarget of its own) is refused.
 
-use crate::cell::{Arrival, Cell, Frame, Loc, Point, Target};
+use crate::cell::{Arrival, Cell, Frame, Loc, Point, RobotFrame, Target};
 use crate::collision::{CollisionModel, PathBlocked, PathClearance};
 use crate::geometry::path::{rel_tool, CartesianPath, PathError};
-use crate::place::{MoveMotion, Origin, Placed, PlacedPoint};
+use crate::place::{MoveMotion, Origin, Placed, PlacedPoint, Placement};
 use crate::plan::motion::MoveEstimate;
 use crate::plan::{Leg, Route, Waypoint, WaypointKind};
 use crate::rapid_data::predefined_speed;
-use crate::refine::{Move, MoveKind, PaperFigure, Plan};
+use crate::refine::{Move, MoveKind, OwnTarget, PaperFigure, Plan};
 use crate::robot::ik::follow::{follow as follow_path, FollowError, FollowedPath, TcpFrames};
 use crate::robot::ik::six::{ConfData, SixAxisError, SixAxisIk};
 use crate::robot::{Axes6, Robot};
@@ -231,13 +231,17 @@ impl ProcessError {
     }
 }
 
-/// The robot, tool and work object a cell's process moves run with.
+/// The robot, tool and work object a cell's process moves run with, and the frame the module
+/// writes their robtargets in.
 struct Setting<'a> {
     ik: SixAxisIk,
     robot: &'a Robot,
     frames: TcpFrames,
-    /// The work object's user frame in the cell frame, as written.
-    uframe: Isometry3<f64>,
+    placement: Placement,
+    /// `robot.frame`: the frame the module writes the uframe and wobj0 robtargets in.
+    frame: RobotFrame,
+    /// The work object's user frame as the cell gives it (`None`: wobj0).
+    uframe: Option<Frame>,
 }
 
 impl Setting<'_> {
@@ -246,9 +250,34 @@ impl Setting<'_> {
         self.frames.cell_from_robot * self.robot.tool0(joints) * self.frames.tframe
     }
 
-    /// A robtarget pose (work object frame) as written, cell frame.
-    fn pose_in_cell(&self, pose: &Frame) -> Isometry3<f64> {
-        self.uframe * pose.written().isometry()
+    /// The numbers the module writes for a robtarget pose of the cell (`Placement::robtarget_data`).
+    fn data(&self, pose: &Frame) -> Frame {
+        self.placement
+            .robtarget_data(self.frame, self.uframe.as_ref(), pose)
+    }
+
+    /// The cell pose of robtarget numbers as written: what the controller runs to.
+    fn in_cell(&self, data: &Frame) -> Isometry3<f64> {
+        self.placement.data_frame(self.frame, self.uframe.as_ref()) * data.isometry()
+    }
+
+    /// Pose `tcp` (cell frame) as robtarget numbers written in the module's frame, its
+    /// quaternion of the sign nearest `like`'s (the point it belongs to).
+    fn written(&self, tcp: &Isometry3<f64>, like: &Frame) -> Frame {
+        let d = self
+            .placement
+            .data_frame(self.frame, self.uframe.as_ref())
+            .inverse()
+            * tcp;
+        let q = d.rotation.into_inner();
+        let quat = [q.w, q.i, q.j, q.k];
+        let dot: f64 = quat.iter().zip(like.quat_wxyz).map(|(a, b)| a * b).sum();
+        let sign = if dot < 0.0 { -1.0 } else { 1.0 };
+        Frame {
+            pos_mm: [d.translation.x, d.translation.y, d.translation.z],
+            quat_wxyz: quat.map(|v| sign * v),
+        }
+        .written()
     }
 
     /// The joints `MoveJ` reaches for TCP pose `tcp` (cell frame) in configuration `conf`: the
@@ -313,23 +342,16 @@ pub fn follow(
             out.into.push(Reach::Air);
             continue;
         };
-        let conf = *conf;
-        let target = s.pose_in_cell(pose);
+        let point = Written {
+            data: s.data(pose),
+            conf: *conf,
+        };
+        let target = s.in_cell(&point.data);
         let at = placed_point.joints_deg;
         let label = p.label();
         // Into the point: an approach line, a process move, or the air.
         if let Some(d) = p.approach_mm {
-            let kind = MoveKind::Approach { dz_mm: d };
-            let app = rel_tool(&target, 0.0, 0.0, -d);
-            let app_joints = s.joints_in(&app, conf, &at).ok_or_else(|| ProcessError::Pose {
-                label: label.clone(),
-                what: "the approach pose",
-                why: format!(
-                    "RelTool({}, 0, 0, -{d}) has no solution in range in the point's configuration {conf}",
-                    p.name
-                ),
-                loc: p.approach_loc,
-            })?;
+            let (app, app_joints, own) = approach_pose(s, p, &point, &target, &at, d)?;
             out.stops.push(Stop {
                 kind: StopKind::Approach(i),
                 joints_deg: app_joints,
@@ -341,12 +363,12 @@ pub fn follow(
                 model,
                 p,
                 &motion.speed,
-                kind,
+                MoveKind::Approach { dz_mm: d, own },
                 &app,
                 &target,
                 None,
                 &app_joints,
-                conf,
+                Some(point.conf),
             )?;
             agree(p, &m, &at, p.approach_loc)?;
             warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
@@ -359,24 +381,32 @@ pub fn follow(
         } else if let (true, Some(before)) = (p.arrival.is_process(), out.stops.last()) {
             let from = before.joints_deg;
             let start = s.tcp(&from);
-            let (kind, via) = match p.arrival {
+            let via = match p.arrival {
+                // The circle point's position as written, in the cell frame.
                 Arrival::Circular { via_mm, .. } => {
-                    let via = s.uframe * Point3::from(via_mm);
-                    (MoveKind::Linear, Some(via))
+                    let given = Frame {
+                        pos_mm: via_mm,
+                        quat_wxyz: Frame::IDENTITY.quat_wxyz,
+                    };
+                    let written = Frame {
+                        quat_wxyz: Frame::IDENTITY.quat_wxyz,
+                        ..s.data(&given)
+                    };
+                    Some((written, s.in_cell(&written).translation.vector.into()))
                 }
-                _ => (MoveKind::Linear, None),
+                _ => None,
             };
             let m = process_move(
                 s,
                 model,
                 p,
                 &motion.speed,
-                kind,
+                MoveKind::Linear,
                 &start,
                 &target,
-                via,
+                via.map(|(w, cell)| (w.pos_mm, cell, point.data)),
                 &from,
-                conf,
+                Some(point.conf),
             )?;
             agree(p, &m, &at, p.arrival_loc)?;
             warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
@@ -406,20 +436,7 @@ pub fn follow(
         }
         // Out of the point: the retract line, after the actions.
         if let Some(d) = p.retract_mm {
-            let kind = MoveKind::Retract { dz_mm: d };
-            let ret = rel_tool(&target, 0.0, 0.0, -d);
-            let m = process_move(
-                s,
-                model,
-                p,
-                &motion.speed,
-                kind,
-                &target,
-                &ret,
-                None,
-                &at,
-                conf,
-            )?;
+            let m = retract_line(s, model, p, &motion.speed, &point, &target, &at, d)?;
             warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
             out.stops.push(Stop {
                 kind: StopKind::Retract(i),
@@ -430,6 +447,133 @@ pub fn follow(
         }
     }
     Ok(out)
+}
+
+/// A robtarget as the module writes it: its numbers (in the frame of the point's robtargets)
+/// and its confdata.
+#[derive(Clone, Copy, Debug)]
+struct Written {
+    data: Frame,
+    conf: ConfData,
+}
+
+/// `RelTool(p, 0, 0, -d)` of robtarget numbers `p`, as its own robtarget writes it (the
+/// position rounded, the orientation `p`'s).
+fn rel_tool_data(p: &Frame, d: f64) -> Frame {
+    let moved = rel_tool(&p.isometry(), 0.0, 0.0, -d).translation.vector;
+    Frame {
+        pos_mm: [moved.x, moved.y, moved.z],
+        quat_wxyz: p.quat_wxyz,
+    }
+    .written()
+}
+
+/// Point `p`'s approach pose, `d` back along its tool's z axis from `target` (the point's pose
+/// as written, cell frame), and the joints `MoveJ` reaches there (module docs): in the point's
+/// configuration, `RelTool` of its robtarget; where the approach line from the point's joints
+/// `at` (followed backwards) reaches it in another configuration, its own robtarget (the
+/// position rounded as written) in that configuration, returned as `OwnTarget`.
+fn approach_pose(
+    s: &Setting,
+    p: &Point,
+    point: &Written,
+    target: &Isometry3<f64>,
+    at: &Axes6,
+    d: f64,
+) -> Result<(Isometry3<f64>, Axes6, Option<OwnTarget>), ProcessError> {
+    let app = rel_tool(target, 0.0, 0.0, -d);
+    if let Some(joints) = s.joints_in(&app, point.conf, at) {
+        return Ok((app, joints, None));
+    }
+    let refused = |why: String| ProcessError::Pose {
+        label: p.label(),
+        what: "the approach pose",
+        why,
+        loc: p.approach_loc,
+    };
+    let data = rel_tool_data(&point.data, d);
+    let own = s.in_cell(&data);
+    // The approach line run backwards from the point: the configuration the approach pose is
+    // reached in when the line into the point continues to the point's joints.
+    let back = CartesianPath::line(target, &own)
+        .map_err(|e| refused(e.to_string()))
+        .and_then(|path| {
+            follow_path(&s.ik, &s.frames, &path, at, None).map_err(|e| {
+                refused(format!(
+                    "RelTool({}, 0, 0, -{d}) has no solution in range in the point's configuration {}, and the line from the point cannot be followed to it: {e}",
+                    p.name, point.conf
+                ))
+            })
+        })?;
+    let conf = back.end_conf();
+    let joints = s.joints_in(&own, conf, &back.end_joints()).ok_or_else(|| {
+        refused(format!(
+            "its own robtarget {}_app has no solution in range in configuration {conf}",
+            p.name
+        ))
+    })?;
+    Ok((own, joints, Some(OwnTarget { pose: data, conf })))
+}
+
+/// Point `p`'s retract line from `target` (its pose as written, cell frame; joints `at`), `d`
+/// back along its tool's z axis: to `RelTool` of its robtarget where the line ends in the
+/// point's configuration, else to its own robtarget (the position rounded as written) in the
+/// configuration the line ends in (module docs).
+#[allow(clippy::too_many_arguments)]
+fn retract_line(
+    s: &Setting,
+    model: &CollisionModel,
+    p: &Point,
+    speed: &str,
+    point: &Written,
+    target: &Isometry3<f64>,
+    at: &Axes6,
+    d: f64,
+) -> Result<ProcessMove, ProcessError> {
+    let ret = rel_tool(target, 0.0, 0.0, -d);
+    let kind = MoveKind::Retract {
+        dz_mm: d,
+        own: None,
+    };
+    match process_move(
+        s,
+        model,
+        p,
+        speed,
+        kind,
+        target,
+        &ret,
+        None,
+        at,
+        Some(point.conf),
+    ) {
+        Err(ProcessError::Follow { source, .. })
+            if matches!(*source, FollowError::EndConf { .. }) =>
+        {
+            let data = rel_tool_data(&point.data, d);
+            let mut m = process_move(
+                s,
+                model,
+                p,
+                speed,
+                kind,
+                target,
+                &s.in_cell(&data),
+                None,
+                at,
+                None,
+            )?;
+            m.kind = MoveKind::Retract {
+                dz_mm: d,
+                own: Some(OwnTarget {
+                    pose: data,
+                    conf: m.followed.end_conf(),
+                }),
+            };
+            Ok(m)
+        }
+        other => other,
+    }
 }
 
 /// The IK, frames and work object of a cell with process moves.
@@ -444,21 +588,33 @@ fn setting_of<'a>(
         why: e.to_string(),
         loc: cell.robot.urdf_loc,
     })?;
-    let written = |f: Option<Frame>| f.unwrap_or(Frame::IDENTITY).written().isometry();
     Ok(Setting {
         ik,
         robot,
         frames: TcpFrames {
             cell_from_robot: placed.placement.cell_from_robot(),
-            tframe: written(cell.tool.as_ref().map(|t| t.tframe)),
+            tframe: cell
+                .tool
+                .as_ref()
+                .map_or(Frame::IDENTITY, |t| t.tframe)
+                .written()
+                .isometry(),
         },
-        uframe: written(cell.wobjs.first().map(|w| w.uframe)),
+        placement: placed.placement,
+        frame: cell.robot.frame,
+        // One work object at most (`cell::unsupported` refuses several).
+        uframe: cell.wobjs.first().map(|w| w.uframe),
     })
 }
 
+/// The circle point of an arc: its position as written (the module's frame for the point's
+/// robtargets), the same in the cell frame, and the point's robtarget numbers (whose
+/// quaternion's sign the circle point's takes).
+type CirclePoint = ([f64; 3], Point3<f64>, Frame);
+
 /// Follows, proves and times one process move of point `p` from `start` (joints `from`) to
-/// `end` (through `via` for an arc), ending in `conf`, timed at `speed` (the speeddata it is
-/// written with: the point's own, else `motion.speed`).
+/// `end` (through `via` for an arc), ending in `conf` if given, timed at `speed` (the speeddata
+/// it is written with: the point's own, else `motion.speed`).
 #[allow(clippy::too_many_arguments)]
 fn process_move(
     s: &Setting,
@@ -468,50 +624,33 @@ fn process_move(
     kind: MoveKind,
     start: &Isometry3<f64>,
     end: &Isometry3<f64>,
-    via: Option<Point3<f64>>,
+    via: Option<CirclePoint>,
     from: &Axes6,
-    conf: ConfData,
+    conf: Option<ConfData>,
 ) -> Result<ProcessMove, ProcessError> {
-    let (loc, kind) = match (&kind, via, p.arrival) {
-        (MoveKind::Approach { .. }, _, _) => (p.approach_loc, kind),
-        (MoveKind::Retract { .. }, _, _) => (p.retract_loc, kind),
-        (_, Some(_), Arrival::Circular { via_loc, .. }) => (via_loc, kind),
-        _ => (p.arrival_loc, kind),
+    let loc = match (&kind, via, p.arrival) {
+        (MoveKind::Approach { .. }, _, _) => p.approach_loc,
+        (MoveKind::Retract { .. }, _, _) => p.retract_loc,
+        (_, Some(_), Arrival::Circular { via_loc, .. }) => via_loc,
+        _ => p.arrival_loc,
     };
     let label = p.label();
     let path = match via {
-        Some(v) => CartesianPath::arc(start, &v, end),
+        Some((_, v, _)) => CartesianPath::arc(start, &v, end),
         None => CartesianPath::line(start, end),
     };
-    let kind = match (via, kind) {
-        (Some(_), _) => {
-            // The circle point as written: the via with the orientation at its arc fraction.
-            let cir = path.as_ref().ok().and_then(|p| p.cir_point());
-            let via = cir.map(|c| s.uframe.inverse() * c);
-            match via {
-                Some(v) => MoveKind::Circular {
-                    via: Frame {
-                        pos_mm: [v.translation.x, v.translation.y, v.translation.z],
-                        quat_wxyz: {
-                            let q = v.rotation.into_inner();
-                            [q.w, q.i, q.j, q.k]
-                        },
-                    },
-                    via_conf: conf,
-                },
-                None => MoveKind::Linear,
-            }
-        }
-        (None, k) => k,
+    // Named as a circular move in messages before it is followed.
+    let what = match via {
+        Some(_) => "the circular move (MoveC)",
+        None => move_name(&kind),
     };
-    let what = move_name(&kind);
     let path = path.map_err(|source| ProcessError::Path {
         label: label.clone(),
         what,
         source,
         loc,
     })?;
-    let followed = follow_path(&s.ik, &s.frames, &path, from, Some(conf)).map_err(|source| {
+    let followed = follow_path(&s.ik, &s.frames, &path, from, conf).map_err(|source| {
         ProcessError::Follow {
             label: label.clone(),
             what,
@@ -519,6 +658,27 @@ fn process_move(
             loc,
         }
     })?;
+    let kind = match (via, path.cir_point(), path.via_fraction()) {
+        (Some((pos_mm, _, like)), Some(cir), Some(f)) => {
+            // The circle point as written: the via's position as written, the orientation at
+            // its arc fraction; its confdata those of the followed joints there.
+            let via = Frame {
+                pos_mm,
+                ..s.written(&cir, &like)
+            };
+            let via_conf =
+                s.ik.conf(
+                    &joints_at(s, &followed, f).ok_or_else(|| ProcessError::Pose {
+                        label: label.clone(),
+                        what,
+                        why: "the joints at the circle point cannot be found".into(),
+                        loc,
+                    })?,
+                );
+            MoveKind::Circular { via, via_conf }
+        }
+        _ => kind,
+    };
     let proof = model
         .prove_path(&followed)
         .map_err(|source| ProcessError::Blocked {
@@ -534,6 +694,19 @@ fn process_move(
         proof,
         time,
     })
+}
+
+/// The joints of a followed path at progress `f`: the continuing solution from the last sample
+/// at or before it (a sample's chord moves no axis far, so the nearest branch continues).
+fn joints_at(s: &Setting, followed: &FollowedPath, f: f64) -> Option<Axes6> {
+    let samples = followed.samples();
+    let before = samples.iter().rev().find(|x| x.s <= f)?;
+    if before.s == f {
+        return Some(before.joints_deg);
+    }
+    let tool0 =
+        s.frames.cell_from_robot.inverse() * followed.path().pose_at(f) * s.frames.tframe.inverse();
+    s.ik.continuing(&tool0, &before.joints_deg).ok()
 }
 
 /// The end of a followed move into point `p` must be the joints placed for it.
