@@ -26,8 +26,22 @@
 //! joints (a robtarget's the inverse of its robtarget as written, in its confdata; the end of
 //! a followed move must agree with them); at an approach pose the inverse of the pose in the
 //! point's confdata (what `MoveJ RelTool(p, 0, 0, -D)` reaches with ConfJ on); at a retract
-//! pose the followed line's end. An approach or retract pose that lies in another configuration
-//! quadrant than its point (which would need a robtarget of its own) is refused.
+//! pose the followed line's end. An approach pose with no solution in the point's
+//! configuration is reached in the configuration the approach line, run backwards from the
+//! point, reaches it in, and a retract line that ends in another configuration ends there: such
+//! a pose is written as its own robtarget (`OwnTarget`, `<point>_app` / `<point>_ret`: the pose
+//! moved back along the tool's z axis, its position rounded as written, in that configuration),
+//! and its joints are the exact inverse of those written numbers.
+//!
+//! **As written.** Every pose is built from the numbers the module writes, in the frame it
+//! writes them in (`Placement::robtarget_data`, `Placement::data_frame`: the cell frame, or
+//! with `robot.frame: base` the robot's base frame, a wobj0 robtarget rounded there): the
+//! target, its `RelTool` poses, the circle point's position. So the path proven is the one the
+//! controller computes from the module. The circle point is written with the orientation at its
+//! arc fraction and the confdata of the followed joints there.
+//!
+//! **Zones.** A corner next to a process move (the point reached or left by one) is not proven
+//! yet: the point is reached `fine`, and a zone asked there is warned about.
 
 use crate::cell::{Arrival, Cell, Frame, Loc, Point, RobotFrame, Target};
 use crate::collision::{CollisionModel, PathBlocked, PathClearance};
@@ -328,16 +342,26 @@ pub fn follow(
             speed: motion.speed.clone(),
             zone: "fine".into(),
         };
+        // A point reached through the air keeps its zone unless it stops there or the move out
+        // of it is a process move (its corner is not proven: `fine`, with a warning).
+        let before_process = cell
+            .points
+            .get(i + 1)
+            .is_some_and(|q| q.arrival.is_process());
+        if before_process && !p.arrival.is_process() {
+            warn_zone(&mut out.warnings, p, &motion);
+        }
+        let air_motion = match p.stops() || before_process {
+            true => fine.clone(),
+            false => motion.clone(),
+        };
         let (Some(s), Target::Robtarget { pose, .. }, Origin::Robtarget { conf, .. }) =
             (&setting, &p.target, &placed_point.origin)
         else {
             out.stops.push(Stop {
                 kind: StopKind::Entry(i),
                 joints_deg: placed_point.joints_deg,
-                motion: match p.stops() {
-                    true => fine,
-                    false => motion,
-                },
+                motion: air_motion,
             });
             out.into.push(Reach::Air);
             continue;
@@ -348,7 +372,6 @@ pub fn follow(
         };
         let target = s.in_cell(&point.data);
         let at = placed_point.joints_deg;
-        let label = p.label();
         // Into the point: an approach line, a process move, or the air.
         if let Some(d) = p.approach_mm {
             let (app, app_joints, own) = approach_pose(s, p, &point, &target, &at, d)?;
@@ -411,12 +434,7 @@ pub fn follow(
             agree(p, &m, &at, p.arrival_loc)?;
             warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
             // A corner next to a process move is not proven yet: `fine`.
-            if p.zone.as_deref().is_some_and(|z| z != "fine") {
-                out.warnings.push(format!(
-                    "warning: {label}: zone {} is written fine: the corner next to a process move is not proven",
-                    motion.zone
-                ));
-            }
+            warn_zone(&mut out.warnings, p, &motion);
             out.stops.push(Stop {
                 kind: StopKind::Entry(i),
                 joints_deg: at,
@@ -427,10 +445,7 @@ pub fn follow(
             out.stops.push(Stop {
                 kind: StopKind::Entry(i),
                 joints_deg: at,
-                motion: match p.stops() {
-                    true => fine.clone(),
-                    false => motion.clone(),
-                },
+                motion: air_motion,
             });
             out.into.push(Reach::Air);
         }
@@ -729,6 +744,18 @@ fn agree(p: &Point, m: &ProcessMove, at: &Axes6, loc: Loc) -> Result<(), Process
         ),
         loc,
     })
+}
+
+/// The warning for a zone point `p` asks on a corner next to a process move: it is written
+/// `fine` (such a corner is not proven).
+fn warn_zone(warnings: &mut Vec<String>, p: &Point, motion: &MoveMotion) {
+    if p.zone.as_deref().is_some_and(|z| z != "fine") {
+        warnings.push(format!(
+            "warning: {}: zone {} is written fine: the corner next to a process move is not proven",
+            p.label(),
+            motion.zone
+        ));
+    }
 }
 
 /// A warning where the point's speed needs an axis beyond its maximum along the move.

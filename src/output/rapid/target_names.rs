@@ -164,6 +164,31 @@ mod tests {
     }
 
     #[test]
+    fn approach_and_retract_poses_step_aside_as_vias_do() {
+        let pose = |kind: TargetKind| JointTarget { kind, ..point("x") };
+        let app = pose(TargetKind::Approach { point: "P1".into() });
+        let ret = pose(TargetKind::Retract { point: "P1".into() });
+        // A cell point named like P1's approach pose, in any case, and a reserved name like its
+        // retract pose.
+        let t = [point("p1_APP"), app, point("P1"), ret];
+        assert_eq!(
+            target_names_avoiding(&t, &["P1_ret"]).unwrap(),
+            ["p1_APP", "P1_app_x1", "P1", "P1_ret_x1"]
+        );
+        let long = "P".repeat(29);
+        let t = [
+            pose(TargetKind::Approach {
+                point: long.clone(),
+            }),
+            point(&long),
+        ];
+        assert!(matches!(
+            target_names(&t),
+            Err(RapidError::InvalidGeneratedName { .. })
+        ));
+    }
+
+    #[test]
     fn vias_avoid_the_modules_other_names() {
         let t = [point("home"), via(0, 1), via(0, 2), point("pick")];
         assert_eq!(

@@ -37,6 +37,9 @@ fn iso(p: &[f64], q: &[f64]) -> Isometry3<f64> {
     )
 }
 
+/// A process move's start and end poses and its circle point (cell frame, mm).
+pub type Ends = (Isometry3<f64>, Isometry3<f64>, Option<Point3<f64>>);
+
 /// What running a module measured.
 #[derive(Debug, Default)]
 pub struct Run {
@@ -49,58 +52,63 @@ pub struct Run {
     /// The farthest a process sample's TCP (by forward kinematics) lies from its path, mm.
     pub off_path_mm: f64,
     /// Each process move's start and end poses and its circle point (cell frame, mm).
-    pub ends: Vec<(Isometry3<f64>, Isometry3<f64>, Option<Point3<f64>>)>,
+    pub ends: Vec<Ends>,
     /// Circle points whose confdata were checked against the joints at their arc fraction.
     pub circle_points: usize,
 }
 
 /// A point of the circle through `a`, `b`, `c` from `a` (s = 0) over `b` to `c` (s = 1).
 fn arc(a: Point3<f64>, b: Point3<f64>, c: Point3<f64>) -> impl Fn(f64) -> Point3<f64> {
-    let (centre, radius, e1, e2, angle) = circle(a, b, c);
-    let end = angle(c);
-    move |s| centre + radius * ((s * end).cos() * e1 + (s * end).sin() * e2)
+    let k = Circle::through(a, b, c);
+    let end = k.angle(c);
+    move |s| k.centre + k.radius * ((s * end).cos() * k.e1 + (s * end).sin() * k.e2)
 }
 
-/// The circle through `a`, `b`, `c`: its centre, radius, the unit vector to `a`, the one a
-/// quarter turn ahead in the direction `a` -> `b` -> `c`, and the angle of a point from `a`
-/// in that direction (0 .. 2 pi).
-fn circle(
-    a: Point3<f64>,
-    b: Point3<f64>,
-    c: Point3<f64>,
-) -> (
-    Point3<f64>,
-    f64,
-    Vector3<f64>,
-    Vector3<f64>,
-    impl Fn(Point3<f64>) -> f64,
-) {
-    let (u, v) = (b - a, c - a);
-    let n = u.cross(&v);
-    let centre = a
-        + (n.cross(&u) * v.norm_squared() + v.cross(&n) * u.norm_squared())
-            / (2.0 * n.norm_squared());
-    let r1 = a - centre;
-    let radius = r1.norm();
-    let e1 = r1 / radius;
-    let e2 = n.normalize().cross(&e1);
-    let angle = move |p: Point3<f64>| {
-        let d = p - centre;
-        let t = d.dot(&e2).atan2(d.dot(&e1));
+/// The circle through three points: its centre and radius, the unit vector from the centre to
+/// the first, and the one a quarter turn ahead in the direction first -> second -> third.
+struct Circle {
+    centre: Point3<f64>,
+    radius: f64,
+    e1: Vector3<f64>,
+    e2: Vector3<f64>,
+}
+
+impl Circle {
+    fn through(a: Point3<f64>, b: Point3<f64>, c: Point3<f64>) -> Circle {
+        let (u, v) = (b - a, c - a);
+        let n = u.cross(&v);
+        let centre = a
+            + (n.cross(&u) * v.norm_squared() + v.cross(&n) * u.norm_squared())
+                / (2.0 * n.norm_squared());
+        let r1 = a - centre;
+        let radius = r1.norm();
+        let e1 = r1 / radius;
+        let e2 = n.normalize().cross(&e1);
+        Circle {
+            centre,
+            radius,
+            e1,
+            e2,
+        }
+    }
+
+    /// The angle of `p` from the first point in the direction of travel (0 .. 2 pi).
+    fn angle(&self, p: Point3<f64>) -> f64 {
+        let d = p - self.centre;
+        let t = d.dot(&self.e2).atan2(d.dot(&self.e1));
         if t < 0.0 {
             t + std::f64::consts::TAU
         } else {
             t
         }
-    };
-    (centre, radius, e1, e2, angle)
+    }
 }
 
 /// The arc fraction of `b` on the arc from `a` through `b` to `c`: the angle at the centre from
 /// `a` to `b` over the one from `a` to `c`.
 fn arc_fraction(a: Point3<f64>, b: Point3<f64>, c: Point3<f64>) -> f64 {
-    let (_, _, _, _, angle) = circle(a, b, c);
-    angle(b) / angle(c)
+    let k = Circle::through(a, b, c);
+    k.angle(b) / k.angle(c)
 }
 
 /// Runs `text`, the module written for `cell`, as the module docs say; `label` names it in
