@@ -181,7 +181,7 @@ fn a_failing_method_is_a_row_and_the_others_still_count() {
 fn depth_first_no_longer_gives_up_where_its_axis_steps_have_a_way() {
     // The trunk on a 4 deg grid: the axis-step walk once ran out of steps the whole-move check
     // accepted and gave up with the Fig. 8 message, though the grid's safe axis steps join A
-    // and B (issue 8); the complete search plans it, and the dense check holds the module.
+    // and B; the complete search plans it, and the dense check holds the module.
     let o = gen_rapid(&[TRUNK, "--planner", "depth-first", "--grid", "4"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let cell = load_cell(&root().join(TRUNK));

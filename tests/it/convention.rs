@@ -1,4 +1,4 @@
-//! The robot convention is never silent (issue 8 item 4): the module names the URDF, the
+//! The robot convention is never silent: the module names the URDF, the
 //! controller file and the coupling; a URDF without a controller file warns on stderr (never on
 //! stdout); `robot.controller` names one explicitly, so a renamed URDF keeps its convention.
 

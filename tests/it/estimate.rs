@@ -1,4 +1,4 @@
-//! The time estimate through the command line (issue 10): the speeddata changes it, `vmax` and
+//! The time estimate through the command line: the speeddata changes it, `vmax` and
 //! an unknown speeddata give the axes alone (the latter with one warning per name), a zoned cell
 //! point is flown through, and the header, the summary line and the report agree on the time,
 //! the zoned vias and the paper's method alone. Lower bounds are computed here from the

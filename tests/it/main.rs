@@ -5,8 +5,10 @@
 //!   error needs no code, only files: `cells/<stem>.yaml` + `tests/golden/<stem>.mod` (and
 //!   `tests/golden/<stem>.<method>.mod` for `--planner <method>`), `tests/ok/<stem>.yaml` +
 //!   `.mod`, `tests/err/<stem>.yaml` + `.stderr`. Refresh them all with `GEN_RAPID_BLESS=1`.
-//! - `safety`: the independent dense re-check of every module on file, and of the re-check
-//!   itself (what the base stands on).
+//! - `safety`: the independent controller-like re-check (`docs/recheck.md`) of every module on
+//!   file, and of the re-check itself (what the base stands on).
+//! - `recheck`: the re-check's own tests: its inverse kinematics, its reading of the robot's
+//!   shapes and motion bound, hand-written modules with process moves that pass or fail.
 //! - `cli`: the command line as such: stdout, stderr, `-o`, flags, exit statuses, `--help`.
 //! - `convention`: the robot convention stated (header lines, the warning, `robot.controller`).
 //! - `compare`: `gen-rapid compare` and the paper's comparison of the three searches.
@@ -34,8 +36,8 @@
 //!   files, file length, no issue numbers, module docs), each checker held to a made-up
 //!   violation.
 //! - `common`: helpers: running the binary, temporary cells, reading a module (`module`), the
-//!   fixtures (`fixtures`), the dense re-check (`dense`), and `library`, the only file here that
-//!   names the library's paths.
+//!   fixtures (`fixtures`), the dense re-check (`dense` and the files it uses: `controller`,
+//!   `program`, `sweep`, ...), and `library`, the only file here that names the library's paths.
 //!
 //! A test about the library's internals belongs in the source file it tests, not here.
 

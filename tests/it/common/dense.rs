@@ -1,39 +1,48 @@
 //! The independent whole-move check: read a `.mod` as written (targets, moves, the header's base
-//! and yaw), place the robot's link cylinders (every link's, base_link to link_6, as the URDF
-//! gives them on its own link: `Robot::collision`, not the enclosures the collision model
-//! carries them by) and the cell's tool shapes (`Cell::tool`, carried by the flange: the robot's
-//! `tool0`) with the URDF kinematics, and sample every straight
-//! six-axis move so densely that no point of the arm or the tool moves more than 1 mm between
-//! samples, measuring the exact distance to every box with parry3d's own shapes. It shares no
-//! code with `collision` or `geometry`: only the cell types and parser and the robot's
+//! and yaw), place every collision shape the robot's URDF gives (`links.rs`, read here, any
+//! link) and the cell's tool shapes (`Cell::tool`, carried by the flange: the robot's `tool0`)
+//! with the URDF kinematics, and sample every move so densely that no point of the arm or the
+//! tool moves more than a tenth of the clearance (at most 1 mm) between samples (`reach.rs`),
+//! measuring the exact distance to every box with parry3d's own shapes. It shares no code with
+//! `collision` or `geometry`: only the cell types and parser and the robot's forward
 //! kinematics (which `robot`'s tests hold against RobotStudio). It also holds every via's wrist
 //! to the wrist schedule (the leg's wrists in proportion to the via's projection onto the leg's
-//! line in axes 1..3, clamped, rounded to 0.001 deg), computed here again. Robtarget points, the
-//! TCP, the work object and each move's speed and zone are checked in `tcp.rs`.
+//! line in axes 1..3, clamped, rounded to 0.001 deg), computed here again. A module of
+//! `MoveAbsJ` alone has its robtarget points, TCP, work object, speeds and zones checked in
+//! `tcp.rs`; a module that moves to robtargets is held to the cell's program in `program.rs`.
+//! Either way the routine is run as the controller runs it (`controller.rs`) and the clearance
+//! measured along all of it (`sweep.rs`); `docs/recheck.md` has the whole picture.
 //!
 //! # What the robot stands on: this check's own reading
 //!
 //! The base cylinder (base_link's, or link 1's on a robot whose base_link carries none, as the
 //! IRB 1400's) starts at the mounting plane, so a floor under the robot touches it. This check
 //! does not take the collision model's rule for that; it reads it from the geometry it computes
-//! itself, pose by pose: a box is not measured against a base_link or link-1 cylinder
+//! itself, pose by pose: a box is not measured against a base_link or link-1 shape
 //! only when the box lies wholly at or below the mounting plane (the header's base z) *and* the
 //! cylinder, placed by this check's forward kinematics, lies wholly on or above the box's top
-//! (its lowest point, `min(end z) - r sin(tilt)`, is not below the top). Any other contact
-//! counts: a box reaching above the mounting plane, or a base cylinder that dips below the top
-//! of what it would stand on. Links 2..6 are measured against every box.
+//! (its lowest point, the bottom of its exact bounding box, is not below the top). Any other
+//! contact counts: a box reaching above the mounting plane, or a base cylinder that dips below
+//! the top of what it would stand on. Links 2..6 are measured against every box.
 //!
 //! # The header's smallest clearance
 //!
 //! The collision model certifies its smallest clearance for what it checks. Where that is the
 //! URDF's cylinders themselves (links 1..3 alone, the IRB 1400), the header is held to within
-//! 0.05 mm of the minimum measured here; where the model checks enclosures of some links
-//! (base_link about axis 1, link 4 about axis 4, link 5 as a ball: `robot/lumped.rs`), its
-//! figure may lie further below, and the header is held to be a lower bound of the minimum
-//! measured here (within the rounding) and never negative.
+//! 0.05 mm (and half a sampling step) of the minimum measured here; where the model checks
+//! enclosures of some links (base_link about axis 1, link 4 about axis 4, link 5 as a ball:
+//! `robot/lumped.rs`), its figure may lie further below, and the header is held to be a lower
+//! bound of the minimum measured here (within the rounding) and never negative.
 
-use super::library::{Base, Cell, LinkFrame, Robot, Target, Tool, ToolGeometry};
+use super::controller::{self, Run, Setup};
+use super::library::RobotFrame;
+use super::library::{Base, Cell, Robot, Target, Tool, ToolGeometry};
+use super::links::{self, to_pose, LinkShape};
 use super::module::Module;
+use super::opw::Ik;
+use super::program::{check_program, point_as_written, ProgramReport};
+use super::reach::{sample_step_mm, Reach};
+use super::sweep::sweep;
 use super::tcp::{check_tcp, TcpReport};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use parry3d::math::{Pose, Vector};
@@ -43,60 +52,14 @@ use parry3d::shape::{Ball, Cuboid, Cylinder, Shape};
 /// cylinder's lowest point and the box top.
 const STAND_TOL_MM: f64 = 1e-6;
 
-/// No point of the IRB 1400 is farther than this from any joint axis (reach 1.44 m plus the
-/// wrist; radius and offsets stay well below 2 m), mm; a larger robot takes its own bound
-/// ([`arm_radius_mm`]).
-const ARM_RADIUS_MM: f64 = 2000.0;
-
-/// A bound on the distance of any point of any link cylinder from any joint axis, mm: for a
-/// cylinder on the child of joint `j` and an axis `i <= j`, the length across axis `i` of joint
-/// `i + 1`'s origin, the lengths of the origins after it up to `j`, and the cylinder's farthest
-/// point from its link's origin (the ends' distance plus the radius); at least
-/// [`ARM_RADIUS_MM`].
-fn arm_radius_mm(robot: &Robot) -> f64 {
-    let t = |k: usize| robot.joints[k].origin.translation.vector;
-    let mut r: f64 = ARM_RADIUS_MM;
-    for c in &robot.collision {
-        let LinkFrame::Child(j) = c.frame else {
-            continue; // base_link does not move
-        };
-        let far = c.a.coords.norm().max(c.b.coords.norm()) + c.radius_mm;
-        for i in 0..=j {
-            let u = robot.joints[i].axis.into_inner();
-            let across = if i < j {
-                let v = t(i + 1);
-                (v - u * u.dot(&v)).norm()
-            } else {
-                0.0
-            };
-            let chain: f64 = (i + 2..=j).map(|k| t(k).norm()).sum();
-            r = r.max(across + chain + far);
-        }
-    }
-    r
-}
-
-/// A cell-frame xyz point's written joints must give it back within this, mm (the module's
-/// 0.001 deg moves the wrist centre by less than 0.05 mm).
-const XYZ_TOL_MM: f64 = 0.05;
-
 /// The header states the min clearance to 0.1 mm, as a lower bound within 0.05 mm of the
 /// true minimum (docs/outputs.md).
 const HEADER_ROUNDING_MM: f64 = 0.05;
 const HEADER_TOL_MM: f64 = 0.05;
 
-/// Most motion of any point of the arm or tool between neighbouring samples of a corner
-/// triangle, mm (a triangle is sampled over an area, so more coarsely than a move).
-const CORNER_STEP_MM: f64 = 4.0;
-
 /// Most steps along a corner triangle's edge (a wide corner is sampled more coarsely than
-/// [`CORNER_STEP_MM`]; the header's bound is then held to the step reached).
+/// `sweep::CORNER_STEP_MM`; the header's bound is then held to the step reached).
 const MAX_CORNER_STEPS: usize = 150;
-
-/// The midpoint of two six-axis configurations.
-fn mid(a: &[f64; 6], b: &[f64; 6]) -> [f64; 6] {
-    std::array::from_fn(|k| 0.5 * (a[k] + b[k]))
-}
 
 struct Block {
     name: String,
@@ -116,13 +79,16 @@ struct ToolPiece {
 /// The robot placed in the cell, with the cell's boxes and tool.
 pub struct Scene<'a> {
     robot: &'a Robot,
-    /// [`arm_radius_mm`] of the robot.
-    arm_radius_mm: f64,
     cell_from_robot: Isometry3<f64>,
     blocks: Vec<Block>,
+    /// The robot's collision shapes, read from its URDF here.
+    links: Vec<LinkShape>,
     tool: Vec<ToolPiece>,
     /// How far any point of the tool lies from the tool0 origin, mm.
     tool_extent_mm: f64,
+    /// How far points move per radian of each joint, and the sampling step (`reach.rs`), mm.
+    reach: Reach,
+    step_mm: f64,
 }
 
 /// The nearest link and box at one pose.
@@ -148,7 +114,10 @@ impl<'a> Scene<'a> {
                 )
             })
             .collect();
-        Scene::from_boxes(robot, base_mm, yaw_deg, &boxes).with_tool(cell.tool.as_ref())
+        let mut scene =
+            Scene::from_boxes(robot, base_mm, yaw_deg, &boxes).with_tool(cell.tool.as_ref());
+        scene.step_mm = sample_step_mm(cell.planner.clearance_mm);
+        scene
     }
 
     /// The same scene carrying `tool`'s shapes on the flange (none: no tool volume).
@@ -205,6 +174,7 @@ impl<'a> Scene<'a> {
                 shape,
             });
         }
+        self.reach = Reach::new(self.robot, &self.links, self.tool_extent_mm);
         self
     }
 
@@ -232,20 +202,34 @@ impl<'a> Scene<'a> {
                 }
             })
             .collect();
+        let links = links::read(robot).unwrap_or_else(|e| panic!("the dense check: {e}"));
+        let reach = Reach::new(robot, &links, 0.0);
         Scene {
             robot,
-            arm_radius_mm: arm_radius_mm(robot),
             cell_from_robot,
             blocks,
+            links,
             tool: Vec::new(),
             tool_extent_mm: 0.0,
+            reach,
+            step_mm: sample_step_mm(0.0),
         }
     }
 
-    /// The most any point of the arm or the tool can move per radian of any joint, mm: the arm
-    /// radius plus the tool's extent beyond the flange.
-    pub fn radius_mm(&self) -> f64 {
-        self.arm_radius_mm + self.tool_extent_mm
+    /// How far points move per radian of each joint (`reach.rs`).
+    pub fn reach(&self) -> Reach {
+        self.reach
+    }
+
+    /// The sampling step: the most any point moves between neighbouring samples, mm.
+    pub fn step_mm(&self) -> f64 {
+        self.step_mm
+    }
+
+    /// The most any point of the arm or the tool moves along the straight joint move `a -> b`,
+    /// mm.
+    pub fn motion_mm(&self, a: &[f64; 6], b: &[f64; 6]) -> f64 {
+        self.reach.motion_mm(self.robot, a, b)
     }
 
     /// Height of the mounting plane (the base frame's origin), cell frame, mm.
@@ -253,9 +237,9 @@ impl<'a> Scene<'a> {
         self.cell_from_robot.translation.vector.z
     }
 
-    /// The smallest distance from the link cylinders and the tool's shapes to the boxes at
-    /// controller axes 1..6, and where (a link by name, a tool shape as `tool shape 'name'`);
-    /// `mm` is infinite when nothing is measured.
+    /// The smallest distance from the robot's collision shapes and the tool's shapes to the
+    /// boxes at controller axes 1..6, and where (a link by name, a tool shape as
+    /// `tool shape 'name'`); `mm` is infinite when nothing is measured.
     pub fn nearest(&self, axes: [f64; 6]) -> Nearest {
         let poses = self.robot.link_poses(&axes);
         let mut best = Nearest {
@@ -263,37 +247,25 @@ impl<'a> Scene<'a> {
             link: String::new(),
             obstacle: String::new(),
         };
-        for c in &self.robot.collision {
-            let (frame, base) = match c.frame {
-                LinkFrame::Base => (self.cell_from_robot, true),
-                LinkFrame::Child(k) => (self.cell_from_robot * poses[k], k == 0),
+        for l in &self.links {
+            let frame = match l.carrier {
+                Some(k) => self.cell_from_robot * poses[k],
+                None => self.cell_from_robot,
             };
-            let (a, b) = (frame * c.a, frame * c.b);
-            let axis = b - a;
-            let len = axis.norm();
-            let dir = axis / len;
-            let rot = UnitQuaternion::rotation_between(&Vector3::y(), &dir).unwrap_or_else(|| {
-                UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI)
-            });
-            let q = rot.quaternion();
-            let mid = nalgebra::center(&a, &b);
-            let pose = Pose::from_parts(
-                Vector::new(mid.x, mid.y, mid.z),
-                parry3d::math::Rotation::from_xyzw(q.i, q.j, q.k, q.w),
-            );
-            let cyl = Cylinder::new(len / 2.0, c.radius_mm);
-            let lowest_z = lowest_point_z(a, b, dir, c.radius_mm);
+            let pose = to_pose(&(frame * l.in_frame));
+            let lowest_z = l.shape.compute_aabb(&pose).mins.z;
             for block in &self.blocks {
-                if base && self.stands_on(lowest_z, block) {
+                if l.carrier.is_none_or(|k| k == 0) && self.stands_on(lowest_z, block) {
                     continue;
                 }
-                let d = parry3d::query::distance(&pose, &cyl, &block.pose, &block.cuboid)
-                    .expect("convex shapes")
-                    .distance;
+                let d =
+                    parry3d::query::distance(&pose, l.shape.as_ref(), &block.pose, &block.cuboid)
+                        .expect("convex shapes")
+                        .distance;
                 if d < best.mm {
                     best = Nearest {
                         mm: d,
-                        link: c.link.clone(),
+                        link: l.link.clone(),
                         obstacle: block.name.clone(),
                     };
                 }
@@ -332,14 +304,11 @@ impl<'a> Scene<'a> {
     }
 
     /// The nearest approach (links and tool shapes) along the straight six-axis move `a -> b`,
-    /// sampled as [`check_module`] does (no point of the arm or the tool moves more than 1 mm
-    /// between samples, so the true minimum lies at most 0.5 mm below it), with the number of
-    /// samples.
+    /// sampled as [`check_module`] does (no point of the arm or the tool moves more than
+    /// [`step_mm`](Self::step_mm) between samples, so the true minimum lies at most half that
+    /// below it), with the number of samples.
     pub fn nearest_along(&self, a: &[f64; 6], b: &[f64; 6]) -> (Nearest, usize) {
-        let qa = self.robot.urdf_joints_deg(a);
-        let qb = self.robot.urdf_joints_deg(b);
-        let turn_rad: f64 = (0..6).map(|k| (qb[k] - qa[k]).abs().to_radians()).sum();
-        let n = (self.radius_mm() * turn_rad).ceil().max(1.0) as usize;
+        let n = self.steps_along(a, b);
         let mut best = Nearest {
             mm: f64::INFINITY,
             link: String::new(),
@@ -355,9 +324,16 @@ impl<'a> Scene<'a> {
         (best, n + 1)
     }
 
+    /// How many steps the straight six-axis move `a -> b` is sampled in so that no point of the
+    /// arm or the tool moves more than [`step_mm`](Self::step_mm) between samples (the bound of
+    /// `reach.rs`).
+    pub fn steps_along(&self, a: &[f64; 6], b: &[f64; 6]) -> usize {
+        (self.motion_mm(a, b) / self.step_mm).ceil().max(1.0) as usize
+    }
+
     /// The nearest approach over the triangle `tri` of controller values, sampled on a
     /// barycentric grid with at most `step_mm` of motion of any point between neighbouring
-    /// samples (each edge's joint turn, times the radius), but at most [`MAX_CORNER_STEPS`]
+    /// samples (each edge's motion bound, `reach.rs`), but at most [`MAX_CORNER_STEPS`]
     /// steps along an edge, with the number of samples and the motion between neighbouring
     /// samples it reached, mm.
     pub fn nearest_over_triangle(
@@ -365,12 +341,9 @@ impl<'a> Scene<'a> {
         tri: &[[f64; 6]; 3],
         step_mm: f64,
     ) -> (Nearest, usize, f64) {
-        let q: Vec<[f64; 6]> = tri.iter().map(|t| self.robot.urdf_joints_deg(t)).collect();
-        let turn = |a: usize, b: usize| -> f64 {
-            (0..6).map(|k| (q[b][k] - q[a][k]).abs().to_radians()).sum()
-        };
-        let widest = turn(0, 1).max(turn(1, 2)).max(turn(2, 0));
-        let n = ((self.radius_mm() * widest / step_mm).ceil() as usize).clamp(1, MAX_CORNER_STEPS);
+        let edge = |a: usize, b: usize| self.motion_mm(&tri[a], &tri[b]);
+        let widest = edge(0, 1).max(edge(1, 2)).max(edge(2, 0));
+        let n = ((widest / step_mm).ceil() as usize).clamp(1, MAX_CORNER_STEPS);
         let mut best = Nearest {
             mm: f64::INFINITY,
             link: String::new(),
@@ -390,12 +363,12 @@ impl<'a> Scene<'a> {
                 }
             }
         }
-        (best, count, self.radius_mm() * widest / n as f64)
+        (best, count, widest / n as f64)
     }
 
-    /// Whether a base_link or link-1 cylinder whose lowest point is at `lowest_z` stands on
-    /// `block` (module doc): the block wholly at or below the mounting plane, the cylinder
-    /// wholly on or above the block's top.
+    /// Whether a base or link-1 shape whose lowest point is at `lowest_z` stands on `block` (module
+    /// doc): the block wholly at or below the mounting plane, the cylinder wholly on or above
+    /// the block's top.
     fn stands_on(&self, lowest_z: f64, block: &Block) -> bool {
         block.top_z <= self.mounting_plane_z() + STAND_TOL_MM
             && lowest_z >= block.top_z - STAND_TOL_MM
@@ -447,16 +420,12 @@ pub fn wrist_schedule_errors(cell: &Cell, module: &Module) -> Vec<String> {
     out
 }
 
-/// Height of the lowest point of a cylinder with axis ends `a`, `b` (unit direction `dir`) and
-/// radius `r`: each end disc reaches `r sin(tilt)` below its centre.
-fn lowest_point_z(a: Point3<f64>, b: Point3<f64>, dir: Vector3<f64>, r: f64) -> f64 {
-    a.z.min(b.z) - r * (1.0 - dir.z * dir.z).max(0.0).sqrt()
-}
-
 /// What [`check_module`] measured.
 #[derive(Debug)]
 pub struct Report {
     pub module: Module,
+    /// The sampling step: the most any point moved between neighbouring samples, mm.
+    pub step_mm: f64,
     /// Poses measured along the moves and over the zoned corners.
     pub samples: usize,
     /// Corners written with a fly-by zone, each sampled over its triangle.
@@ -465,8 +434,73 @@ pub struct Report {
     pub smallest: Nearest,
     /// Cell points given as `xyz` whose written joints were held against them.
     pub xyz_points: usize,
-    /// The robtarget points, tooldata, wobjdata and moves (`tcp.rs`).
+    /// The robtarget points, tooldata, wobjdata and moves of a module of `MoveAbsJ` alone
+    /// (`tcp.rs`).
     pub tcp: TcpReport,
+    /// The routine as the controller ran it (`controller.rs`).
+    pub run: Run,
+    /// The program of a module that moves to robtargets or runs actions (`program.rs`).
+    pub program: ProgramReport,
+}
+
+/// The points of a module of `MoveAbsJ` alone, and the header's count of moves: the moves name
+/// the targets one to one, in order, from the first cell point to the last; every cell point
+/// appears, in order: joint points exactly as given, xyz points at their wrist centre by forward
+/// kinematics from the header's placement; every target in range; every via's wrist on the
+/// leg's schedule. The number of xyz points held, and the failures.
+fn joint_module_points(
+    cell: &Cell,
+    robot: &Robot,
+    scene: &Scene,
+    module: &Module,
+) -> (usize, Vec<String>) {
+    let mut failures = Vec::new();
+    let mut fail = |m: String| failures.push(m);
+    if module.header_moves + 1 != module.moves.len() {
+        fail(format!(
+            "header says {} moves, PROC main has {} MoveAbsJ",
+            module.header_moves,
+            module.moves.len()
+        ));
+    }
+    let names: Vec<&str> = module.targets.iter().map(|t| t.0.as_str()).collect();
+    if names != module.moves.iter().map(String::as_str).collect::<Vec<_>>() {
+        fail(format!(
+            "moves {:?} do not name the targets {names:?} in order",
+            module.moves
+        ));
+    }
+    if names.first().copied() != cell.points.first().map(|p| p.name.as_str())
+        || names.last().copied() != cell.points.last().map(|p| p.name.as_str())
+    {
+        fail("the first and last targets are not the first and last cell points".into());
+    }
+    let mut k = 0;
+    let mut xyz_points = 0;
+    for p in &cell.points {
+        let Some(at) = module.targets[k..].iter().position(|t| t.0 == p.name) else {
+            fail(format!("point {} missing or out of order", p.name));
+            continue;
+        };
+        k += at;
+        let axes = module.targets[k].1;
+        if matches!(p.target, Target::Xyz { .. }) {
+            xyz_points += 1;
+        }
+        // A robtarget point is reached by its jointtarget: `tcp::check_tcp`.
+        if let Some(e) = point_as_written(cell, robot, &scene.cell_from_robot, p, &axes) {
+            fail(e);
+        }
+    }
+    for (name, axes) in &module.targets {
+        if let Err(e) = robot.check_range6(axes) {
+            fail(format!("target {name} out of range: {e}"));
+        }
+    }
+    for m in wrist_schedule_errors(cell, module) {
+        fail(m);
+    }
+    (xyz_points, failures)
 }
 
 /// Checks a module written for `cell` by `robot` (see the module doc); `label` names it in
@@ -477,15 +511,7 @@ pub fn check_module(
     text: &str,
     label: &str,
 ) -> Result<Report, Vec<String>> {
-    let mut module = Module::parse(text).map_err(|e| vec![format!("{label}: {e}")])?;
-    // The moves as the controller runs them: a MoveJ's joints from its robtarget.
-    let cell_from_robot = Isometry3::from_parts(
-        Translation3::new(module.base_mm[0], module.base_mm[1], module.base_mm[2]),
-        UnitQuaternion::from_axis_angle(&Vector3::z_axis(), module.yaw_deg.to_radians()),
-    );
-    module
-        .resolve_joint_moves(robot, &cell_from_robot)
-        .map_err(|e| vec![format!("{label}: {e}")])?;
+    let module = Module::parse(text).map_err(|e| vec![format!("{label}: {e}")])?;
     let mut failures = Vec::new();
     let mut fail = |m: String| failures.push(format!("{label}: {m}"));
 
@@ -514,170 +540,60 @@ pub fn check_module(
             module.yaw_deg, cell.robot.yaw_deg
         ));
     }
-    if module.header_moves + 1 != module.moves.len() {
-        fail(format!(
-            "header says {} moves, PROC main has {} MoveAbsJ",
-            module.header_moves,
-            module.moves.len()
-        ));
-    }
-    // Moves name the targets one to one, in order.
-    let names: Vec<&str> = module.targets.iter().map(|t| t.0.as_str()).collect();
-    if names != module.moves.iter().map(String::as_str).collect::<Vec<_>>() {
-        fail(format!(
-            "moves {:?} do not name the targets {names:?} in order",
-            module.moves
-        ));
-    }
-    if names.first().copied() != cell.points.first().map(|p| p.name.as_str())
-        || names.last().copied() != cell.points.last().map(|p| p.name.as_str())
-    {
-        fail("the first and last targets are not the first and last cell points".into());
-    }
 
     let scene = Scene::new(robot, module.base_mm, module.yaw_deg, cell);
-    // Every cell point appears, in order: joint points exactly as given, xyz points at their
-    // wrist centre by forward kinematics from the header's placement.
-    let mut k = 0;
+    // What the module says of the cell: a module of `MoveAbsJ` alone (robtarget points reached
+    // by their jointtargets) target by target, with `tcp.rs`; a module that moves to robtargets
+    // or runs actions as the contract's program (`program.rs`).
+    let joint_moves = module.joint_moves_only();
     let mut xyz_points = 0;
-    for p in &cell.points {
-        let Some(at) = module.targets[k..].iter().position(|t| t.0 == p.name) else {
-            fail(format!("point {} missing or out of order", p.name));
-            continue;
-        };
-        k += at;
-        let axes = module.targets[k].1;
-        match &p.target {
-            Target::Joints {
-                axes_deg,
-                wrist_deg,
-            } => {
-                let w = wrist_deg.unwrap_or(cell.robot.wrist_deg);
-                if axes[..3] != axes_deg[..] || axes[3..] != w[..] {
-                    fail(format!(
-                        "point {} written as {axes:?}, given as {axes_deg:?} wrist {w:?}",
-                        p.name
-                    ));
-                }
-            }
-            Target::Xyz {
-                wrist_centre_mm, ..
-            } => {
-                xyz_points += 1;
-                let back = scene.wrist_centre(&axes);
-                let off = (back - Point3::from(*wrist_centre_mm)).norm();
-                if off > XYZ_TOL_MM {
-                    fail(format!(
-                        "point {}: its written joints {axes:?} reach {back:?}, {off:.3} mm from the given {wrist_centre_mm:?}",
-                        p.name
-                    ));
-                }
-            }
-            // Reached by its jointtarget: `tcp::check_tcp` below.
-            Target::Robtarget { .. } => {}
+    let mut program = ProgramReport::default();
+    if joint_moves {
+        let (n, f) = joint_module_points(cell, robot, &scene, &module);
+        xyz_points = n;
+        f.into_iter().for_each(&mut fail);
+    } else {
+        match check_program(cell, robot, &module, &scene.cell_from_robot) {
+            Ok(r) => program = r,
+            Err(f) => f.into_iter().for_each(&mut fail),
         }
-    }
-    for (name, axes) in &module.targets {
-        if let Err(e) = robot.check_range6(axes) {
-            fail(format!("target {name} out of range: {e}"));
-        }
-    }
-    for m in wrist_schedule_errors(cell, &module) {
-        fail(m);
     }
 
-    let mut samples = 0;
-    let mut smallest = Nearest {
-        mm: f64::INFINITY,
-        link: String::new(),
-        obstacle: String::new(),
+    // The routine as the controller runs it, and the clearance along all of it.
+    let setup = Setup {
+        robot,
+        ik: Ik::new(robot),
+        world_from_base: match cell.robot.frame {
+            RobotFrame::Base => Isometry3::identity(),
+            RobotFrame::Cell => scene.cell_from_robot,
+        },
+        reach: scene.reach(),
+        step_mm: scene.step_mm(),
     };
-    for w in module.targets.windows(2) {
-        let (a, b) = (w[0].1, w[1].1);
-        let qa = robot.urdf_joints_deg(&a);
-        let qb = robot.urdf_joints_deg(&b);
-        // Every point lies within `radius_mm` of every joint axis, so it moves at most that much
-        // per radian of each joint (the wrist axes move only the tool and the wrist).
-        let turn_rad: f64 = (0..6).map(|k| (qb[k] - qa[k]).abs().to_radians()).sum();
-        let n = (scene.radius_mm() * turn_rad).ceil().max(1.0) as usize;
-        for i in 0..=n {
-            let t = i as f64 / n as f64;
-            let axes: [f64; 6] = std::array::from_fn(|k| a[k] + t * (b[k] - a[k]));
-            let near = scene.nearest(axes);
-            samples += 1;
-            let below = near.mm < cell.planner.clearance_mm - 1e-6;
-            if below {
-                fail(format!(
-                    "move {} -> {} at t = {t:.4} ({axes:?}): {} is {:.3} mm from {}, below the clearance {} mm",
-                    w[0].0, w[1].0, near.link, near.mm, near.obstacle, cell.planner.clearance_mm
-                ));
-            }
-            if near.mm < smallest.mm {
-                smallest = near;
-            }
-            if below {
-                break; // one message per move
-            }
-        }
-    }
-
-    // Every corner written with a fly-by zone (issue 10): the triangle of the midpoint of the
-    // move into the target, the target and the midpoint of the move out, sampled on a
-    // barycentric grid with at most CORNER_STEP_MM of motion of any point between neighbours.
-    // The route starts and ends at a stop: the first and last moves are `fine`.
-    let last = module.targets.len().saturating_sub(1);
-    for k in [0, last] {
-        if let Some(m) = module.move_args.get(k) {
-            if !m.zone.eq_ignore_ascii_case("fine") {
-                fail(format!(
-                    "the move to {} is {}, not fine",
-                    module.targets[k].0, m.zone
-                ));
-            }
-        }
-    }
-    let mut corners = 0;
-    let mut corner_smallest = f64::INFINITY;
-    for k in 1..module.targets.len().saturating_sub(1) {
-        let zone = module.move_args.get(k).map_or("fine", |m| m.zone.as_str());
-        if zone.eq_ignore_ascii_case("fine") {
-            continue;
-        }
-        corners += 1;
-        let (p, v, n) = (
-            module.targets[k - 1].1,
-            module.targets[k].1,
-            module.targets[k + 1].1,
-        );
-        let tri = [mid(&p, &v), v, mid(&v, &n)];
-        let (near, count, step) = scene.nearest_over_triangle(&tri, CORNER_STEP_MM);
-        samples += count;
-        if near.mm < cell.planner.clearance_mm - 1e-6 {
-            fail(format!(
-                "corner at {} ({zone}): {} is {:.3} mm from {}, below the clearance {} mm",
-                module.targets[k].0, near.link, near.mm, near.obstacle, cell.planner.clearance_mm
-            ));
-        }
-        corner_smallest = corner_smallest.min(near.mm - step);
-        if near.mm < smallest.mm {
-            smallest = near;
-        }
-    }
+    let (run, f) = controller::run(&module, &setup);
+    f.into_iter().for_each(&mut fail);
+    let swept = sweep(&scene, &run, cell.planner.clearance_mm);
+    swept.failures.iter().cloned().for_each(&mut fail);
+    let (samples, corners, smallest, corner_smallest) = (
+        swept.samples,
+        swept.corners,
+        swept.smallest,
+        swept.corner_smallest,
+    );
 
     // The header's min clearance is a lower bound within 0.05 mm of the true minimum, which lies
-    // at most 0.5 mm below the smallest sample of a move (1 mm of motion between samples), at
-    // most the step reached below that of a corner, and not above either. Where the model
-    // checks enclosures of some links (module doc), a lower bound, not below 0.
-    let enclosed = robot
-        .collision
-        .iter()
-        .any(|c| matches!(c.frame, LinkFrame::Base | LinkFrame::Child(3..)));
+    // at most half the sampling step below the smallest sample of a move (`reach.rs`), at most
+    // the step reached below that of a corner, and not above either. Where the model checks
+    // enclosures of some links (module doc: a shape on the base or on links 4..6), a lower
+    // bound, not below 0.
+    let step_mm = scene.step_mm();
+    let enclosed = scene.links.iter().any(|l| l.carrier.is_none_or(|k| k >= 3));
     match (module.min_clearance_mm, smallest.mm.is_finite()) {
         (Some(h), true) => {
             let (lo, hi) = (
                 match enclosed {
                     false => {
-                        (smallest.mm - 0.5).min(corner_smallest)
+                        (smallest.mm - step_mm / 2.0).min(corner_smallest)
                             - HEADER_TOL_MM
                             - HEADER_ROUNDING_MM
                     }
@@ -699,21 +615,27 @@ pub fn check_module(
         )),
     }
 
-    let tcp = match check_tcp(cell, robot, &module, &scene.cell_from_robot) {
-        Ok(r) => r,
-        Err(f) => {
-            failures.extend(f.into_iter().map(|m| format!("{label}: {m}")));
-            TcpReport::default()
-        }
+    let tcp = match joint_moves {
+        true => match check_tcp(cell, robot, &module, &scene.cell_from_robot) {
+            Ok(r) => r,
+            Err(f) => {
+                failures.extend(f.into_iter().map(|m| format!("{label}: {m}")));
+                TcpReport::default()
+            }
+        },
+        false => TcpReport::default(),
     };
     if failures.is_empty() {
         Ok(Report {
             module,
+            step_mm,
             samples,
             corners,
             smallest,
             xyz_points,
             tcp,
+            run,
+            program,
         })
     } else {
         Err(failures)

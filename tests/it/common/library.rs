@@ -10,11 +10,13 @@ use gen_rapid::error::Error;
 use gen_rapid::output::rapid::ModuleTemplate;
 use gen_rapid::pipeline::{self, Options};
 use gen_rapid::place::Placed;
-use gen_rapid::plan::{Certified, Method, Route};
+use gen_rapid::plan::{Certified, Legs, Method, Route};
 use gen_rapid::refine::{Plan, Refined};
 use std::path::Path;
 
-/// How the controller's axis 3 relates to the URDF's (the OPW check converts its solutions).
+/// How the controller's axis 3 relates to the URDF's (the OPW check converts its solutions),
+/// and the cell's process and program keys the controller-like re-check holds a module to.
+pub use gen_rapid::cell::{Arrival, Point, RobotFrame};
 pub use gen_rapid::robot::Coupling;
 
 /// The bundled IRB 1400.
@@ -134,19 +136,17 @@ fn placed_and_inspected(
     Ok((job, placed, inspected))
 }
 
-/// Plans `cell` with every method on one inspected grid of `grid_deg`, as a run does (route,
-/// refine, render). Any error but a planning failure (the cell, the robot, a point, rendering)
+/// Plans `cell` with every method on one inspected grid of `grid_deg`, as a run does (the
+/// process moves followed, every air leg on the grid, refined, spliced and rendered). Any error but a planning failure (the cell, the robot, a point, rendering)
 /// is `Err` with its message.
 pub fn plan_every_method(cell: &Cell, grid_deg: f64) -> Result<Vec<(String, Planned)>, String> {
     let (job, placed, inspected) = placed_and_inspected(cell, grid_deg)?;
     let template = ModuleTemplate::embedded();
-    let shortcut = cell.planner.shortcut;
     Method::ALL
         .into_iter()
         .map(|m| {
-            let planned = match pipeline::route(&job, &placed, &inspected, m)
-                .map(|r| pipeline::refine(&job, &placed, &inspected, r, shortcut).plan)
-                .and_then(|p| pipeline::render(&job, &placed, &p, &template))
+            let planned = match pipeline::plan_all(&job, &placed, &inspected, m, Legs::GridOnly)
+                .and_then(|r| pipeline::render(&job, &placed, &r.plan, &template))
             {
                 Ok(out) => Planned::Module(out.text),
                 Err(e @ Error::Plan { .. }) => Planned::PlanningFailed(e.to_string()),
@@ -193,7 +193,7 @@ pub fn refined_and_recertified(cell: &Cell, grid_deg: f64) -> Result<Recertified
 /// The paper's method alone (the plan stage's route and the time the plan states for it) and
 /// the refined route (shortcut and zones, as a run writes it) of `cell` on a grid of
 /// `grid_deg`: `(moves, estimated s)` of each, the waypoints of both routes (all six axes) and
-/// the refined module's text.
+/// the module a run writes (the process moves spliced in).
 pub struct PaperAndRefined {
     pub paper: (usize, f64),
     pub refined: (usize, f64),
@@ -203,9 +203,13 @@ pub struct PaperAndRefined {
 }
 
 pub fn paper_and_refined(cell: &Cell, grid_deg: f64) -> Result<PaperAndRefined, String> {
-    let (job, placed, _, route, plan) = through_refine(cell, grid_deg)?;
+    let (job, placed, inspected, route, plan) = through_refine(cell, grid_deg)?;
     let six = |r: &Route| r.waypoints.iter().map(|w| w.joints_deg).collect();
-    let module = pipeline::render(&job, &placed, &plan, &ModuleTemplate::embedded())
+    // The module as a run writes it: the process moves followed and spliced in.
+    let method = cell.planner.method;
+    let whole = pipeline::plan_all(&job, &placed, &inspected, method, Legs::GridOnly)
+        .map_err(|e| e.to_string())?;
+    let module = pipeline::render(&job, &placed, &whole.plan, &ModuleTemplate::embedded())
         .map(|r| r.text)
         .map_err(|e| e.to_string())?;
     let paper = plan

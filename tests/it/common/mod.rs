@@ -2,14 +2,23 @@
 //! fixtures, the dense re-check, and (in `library`) every library path the tests use.
 #![allow(dead_code)]
 
+pub mod actions;
+pub mod controller;
+pub mod data;
 pub mod dense;
 pub mod fixtures;
+pub mod follow;
 pub mod library;
+pub mod links;
 pub mod module;
 pub mod opw;
+pub mod paths;
 pub mod process;
+pub mod program;
+pub mod reach;
 pub mod routine;
 pub mod svg;
+pub mod sweep;
 pub mod tcp;
 
 use std::path::{Path, PathBuf};

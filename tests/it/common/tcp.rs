@@ -2,18 +2,19 @@
 //! independently of the library's inverse kinematics: for every robtarget point, the forward
 //! kinematics of its written jointtarget, carried through the written tooldata's tframe and
 //! expressed in the written wobjdata's user frame (robot base at the header's placement), must
-//! give the written robtarget within 0.1 mm and 0.01 deg (issue 9); the written robtarget must
+//! give the written robtarget within 0.1 mm and 0.01 deg; the written robtarget must
 //! be the cell's pose (as given, normalised) and its confdata that of the jointtarget, computed
 //! here from the RAPID definition (and the cell's, when it gives one). Also the motion of every
 //! move: the tool and work object the cell names, the point's speed and zone (the cell's
 //! `motion` by default), and for a via the speed of its leg's end point and `motion.via_zone`;
 //! any zone may be `fine` instead (a corner not proven), the first and last always are.
 
+use super::data::check_declarations;
 use super::library::{Cell, Robot, Target};
 use super::module::Module;
 use nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
 
-/// The written joint values must reach the robtarget within these (issue 9).
+/// The written joint values must reach the robtarget within these.
 pub const TCP_TOL_MM: f64 = 0.1;
 pub const TCP_TOL_DEG: f64 = 0.01;
 
@@ -69,72 +70,18 @@ pub fn check_tcp(
     let mut fail = |m: String| failures.push(m);
     let mut report = TcpReport::default();
 
-    // The declarations: what the cell says, no more.
+    // The declarations: what the cell says, no more (`data.rs`).
+    for m in check_declarations(cell, module, cell_from_robot) {
+        fail(m);
+    }
     let tool_name = cell.tool.as_ref().map(|t| t.name.clone());
-    let tframe = match (&cell.tool, module.tooldata.as_slice()) {
-        (Some(t), [(name, d)]) => {
-            if *name != t.name {
-                fail(format!(
-                    "tooldata '{name}', the cell's tool is '{}'",
-                    t.name
-                ));
-            }
-            let given = [t.tframe.pos_mm.as_slice(), t.tframe.quat_wxyz.as_slice()].concat();
-            if given
-                .iter()
-                .zip(&d.tframe)
-                .any(|(a, b)| (a - b).abs() > 1e-9 + 5e-10)
-            {
-                fail(format!(
-                    "tooldata tframe {:?}, the cell says {given:?}",
-                    d.tframe
-                ));
-            }
-            if d.mass_kg != t.mass_kg || d.cog_mm != t.cog_mm {
-                fail(format!(
-                    "tooldata load {} kg at {:?}, the cell says {} kg at {:?}",
-                    d.mass_kg, d.cog_mm, t.mass_kg, t.cog_mm
-                ));
-            }
-            iso(&d.tframe)
-        }
-        (None, []) => Isometry3::identity(),
-        (t, d) => {
-            fail(format!(
-                "the cell's tool block is {:?}, the module declares {} tooldata",
-                t.as_ref().map(|t| &t.name),
-                d.len()
-            ));
-            Isometry3::identity()
-        }
+    let tframe = match module.tooldata.as_slice() {
+        [(_, d)] => iso(&d.tframe),
+        _ => Isometry3::identity(),
     };
-    let uframe = match (cell.wobjs.first(), module.wobjdata.as_slice()) {
-        (Some(w), [(name, d)]) => {
-            if *name != w.name {
-                fail(format!(
-                    "wobjdata '{name}', the cell's wobj is '{}'",
-                    w.name
-                ));
-            }
-            let given = [w.uframe.pos_mm.as_slice(), w.uframe.quat_wxyz.as_slice()].concat();
-            if given
-                .iter()
-                .zip(d)
-                .any(|(a, b)| (a - b).abs() > 1e-9 + 5e-10)
-            {
-                fail(format!("wobjdata uframe {d:?}, the cell says {given:?}"));
-            }
-            iso(d)
-        }
-        (None, []) => Isometry3::identity(),
-        (w, d) => {
-            fail(format!(
-                "the cell's wobj block is {:?}, the module declares {} wobjdata",
-                w.as_ref().map(|w| &w.name),
-                d.len()
-            ));
-            Isometry3::identity()
-        }
+    let uframe = match module.wobjdata.as_slice() {
+        [(_, u)] => iso(u),
+        _ => Isometry3::identity(),
     };
 
     // The moves: the tool and work object, the speed and zone of the move into each target.
@@ -153,7 +100,7 @@ pub fn check_tcp(
             break;
         };
         let speed = p.speed.clone().unwrap_or_else(|| cell.motion.speed.clone());
-        // The zone asked for, or `fine` where its corner was not proven (issue 10; the dense
+        // The zone asked for, or `fine` where its corner was not proven (the dense
         // check samples every corner written with a fly-by zone), and `fine` at the ends.
         let asked = match m.target == p.name {
             true => p.zone.clone().unwrap_or_else(|| cell.motion.zone.clone()),

@@ -203,8 +203,7 @@ pub fn load_arm(dir: &Path, arm: &Arm) -> Robot {
     }
     urdf += "  <link name=\"tool0\"/>\n";
     let m = |v: f64| v / 1000.0;
-    #[allow(clippy::needless_range_loop)] // k names the joint and indexes three tables
-    for k in 0..6 {
+    for (k, axis) in axes.iter().enumerate() {
         let parent = match k {
             0 => "base_link".to_string(),
             _ => format!("link_{k}"),
@@ -218,7 +217,7 @@ pub fn load_arm(dir: &Path, arm: &Arm) -> Robot {
             m(o[0]),
             m(o[1]),
             m(o[2]),
-            axes[k],
+            axis,
             lo.to_radians(),
             hi.to_radians()
         );
