@@ -623,25 +623,7 @@ fn one_name_space(d: &Declared, points: &[Point], motion: &Motion) -> Result<(),
         }
         taken.insert(key, d.what.as_str());
     }
-    // An approach or retract pose in another configuration than its point is written as CONST
-    // robtarget <point>_app or <point>_ret (stepping aside, `_x1`, from a name taken): whether
-    // it is, planning tells, so the name must be one RAPID takes.
-    for p in points.iter().filter(|p| p.revisit_of.is_none()) {
-        for (given, suffix, pose, loc) in [
-            (p.approach_mm, "app", "approach", p.approach_loc),
-            (p.retract_mm, "ret", "retract", p.retract_loc),
-        ] {
-            let name = format!("{}_{suffix}", p.name);
-            if let (Some(_), Err(e)) = (given, check_identifier(&name)) {
-                return Err(invalid_help(
-                    loc,
-                    format!("the {pose} pose of this point may be written as CONST robtarget '{name}', not a valid RAPID name: {e}"),
-                    "an approach or retract pose in another configuration than its point is written as a CONST robtarget named <name>_app or <name>_ret; shorten the point's name".to_string(),
-                ));
-            }
-        }
-    }
-    Ok(())
+    process::own_pose_names(points)
 }
 
 /// One speeddata, zonedata, tooldata or signal name the module uses, for [`distinct_data`].
