@@ -23,6 +23,8 @@ Examples:
   gen-rapid cells/trunk.yaml --report trunk.json  also the results as JSON
   gen-rapid cells/trunk.yaml --template templates/module-local.mod.j2 --proc Weld
                                                   your own module template, routine Weld
+  gen-rapid cells/torch-trunk.yaml --template templates/arc-weld.mod.j2 --set seam=seam1 --set weld=weld1
+                                                  seams as ArcLStart/ArcL/ArcLEnd
   gen-rapid compare cells/trunk.yaml --svg all.svg      the three methods side by side
   gen-rapid locate cells/trunk-auto.yaml --svg r.svg    where the base may stand (region R)
   gen-rapid robots                                      the robots built in (robot.model)
@@ -106,6 +108,10 @@ struct RunArgs {
     /// (templates/module.mod.j2 is the default; docs/outputs.md lists the names a template may use).
     #[arg(long, value_name = "FILE")]
     template: Option<PathBuf>,
+    /// A template setting the template reads as settings.NAME (repeatable; with --template),
+    /// e.g. --set seam=seam1 --set weld=weld1 for templates/arc-weld.mod.j2.
+    #[arg(long = "set", value_name = "NAME=VALUE", requires = "template", value_parser = gen_rapid::output::rapid::parse_setting)]
+    settings: Vec<(String, String)>,
     /// Name the routine that makes the moves (default: the cell's motion.proc, else main).
     #[arg(long = "proc", value_name = "NAME")]
     proc_name: Option<String>,
@@ -378,6 +384,16 @@ fn main() -> ExitCode {
         });
     }
     let quiet = cli.command.is_none() && cli.run.quiet;
+    // A setting given twice is a command-line error (exit 2), before any work.
+    let settings = match gen_rapid::output::rapid::settings_map(&cli.run.settings) {
+        Ok(map) => map,
+        Err(message) => {
+            let _ = Cli::command()
+                .error(clap::error::ErrorKind::ArgumentConflict, message)
+                .print();
+            return ExitCode::from(gen_rapid::error::exit::USAGE);
+        }
+    };
     let result = match cli.command {
         None => run(&RunOptions {
             cell: cli.run.cell.unwrap_or_default(),
@@ -388,6 +404,7 @@ fn main() -> ExitCode {
             html: cli.run.html,
             report: cli.run.report,
             template: cli.run.template,
+            settings,
             proc_name: cli.run.proc_name,
             quiet: cli.run.quiet,
             no_shortcut: cli.run.no_shortcut,

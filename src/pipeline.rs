@@ -196,11 +196,13 @@ pub fn plan_all(
     Ok(Refined { plan, warnings })
 }
 
-/// The render stage's result: the module's content, its text and its names of the waypoints.
+/// The render stage's result: the module's content, its text, its names of the waypoints and
+/// its moves as written (instruction, target, actions).
 pub struct Rendered {
     pub program: rapid::Program,
     pub text: String,
     pub names: Vec<String>,
+    pub moves: Vec<rapid::WrittenMove>,
 }
 
 /// Render: the RAPID module of a plan through `template`; a user template's error is an input
@@ -217,10 +219,12 @@ pub fn render(
         e => Error::Rapid(e),
     })?;
     let names = rapid::module_target_names(&program)?;
+    let moves = rapid::written_moves(&program, &names)?;
     Ok(Rendered {
         program,
         text,
         names,
+        moves,
     })
 }
 

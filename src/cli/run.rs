@@ -35,6 +35,8 @@ pub struct RunOptions {
     pub report: Option<PathBuf>,
     /// Render the module through this minijinja template instead of the embedded one.
     pub template: Option<PathBuf>,
+    /// The template settings (`--set NAME=VALUE`), by name.
+    pub settings: std::collections::BTreeMap<String, String>,
     /// The routine's name, overriding the cell's `motion.proc`.
     pub proc_name: Option<String>,
     /// No progress bar (`--quiet`; the caller also leaves out the summary line).
@@ -61,6 +63,7 @@ pub fn run(opts: &RunOptions) -> Result<String, Failure> {
         Some(path) => pipeline::load_template(path)?,
         None => ModuleTemplate::embedded(),
     };
+    let template = template.with_settings(opts.settings.clone());
     let method = opts.planner.unwrap_or(job.cell.planner.method);
     let grid_deg = opts.grid_deg.unwrap_or(job.cell.planner.grid_deg);
     let bar = if opts.quiet {
@@ -166,6 +169,7 @@ fn files(
             &out.placed,
             &out.plan,
             &out.rendered.names,
+            &out.rendered.moves,
         );
         files.push((path.clone(), preview::render_html(&scene)?));
     }
@@ -177,6 +181,7 @@ fn files(
             plan: &out.plan,
             program: &out.rendered.program,
             names: &out.rendered.names,
+            written: &out.rendered.moves,
         })?;
         files.push((path.clone(), report::to_json(&r)?));
     }

@@ -6,7 +6,9 @@
 //! object. `docs/report.schema.json` is its JSON Schema (draft 2020-12); `format` names the
 //! version of that layout (version 2 added each move's `limit`, `totals.zoned_vias` and
 //! `totals.paper_method`, version 3 `near_limits`, the cell points whose axis 4 or 6 lies near a
-//! limit; later versions add keys and change the name).
+//! limit; version 4 each move's `kind`, `instruction`, `target`, `circle_point`, `offset_mm`
+//! and `actions`, and `start`, the instruction that reaches the first waypoint; later versions
+//! add keys and change the name).
 //!
 //! Goes beyond the paper (a script's view of a run). Made from the run's results only: the cell,
 //! the placed job, the plan and the module's content ([`Program`]: the names, speeds and zones
@@ -19,7 +21,7 @@
 
 use super::clearance_part;
 use super::poses::Poser;
-use super::rapid::{format_fixed, Program, TargetKind};
+use super::rapid::{format_fixed, Program, TargetKind, WrittenMove};
 use crate::cell::{Base, Cell};
 use crate::place::near_limit::near_limits;
 use crate::place::Placed;
@@ -33,7 +35,7 @@ use crate::robot::Robot;
 use serde::{Serialize, Serializer};
 
 /// The layout's name and version (the `format` key).
-pub const FORMAT: &str = "gen-rapid report 3";
+pub const FORMAT: &str = "gen-rapid report 4";
 
 /// Why a report could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -82,6 +84,9 @@ pub struct Report {
     pub wobj: String,
     pub totals: Totals,
     pub waypoints: Vec<WaypointInfo>,
+    /// The instruction that reaches the first waypoint from wherever the robot stands (not a
+    /// move of `moves`: neither proven nor timed), and its actions.
+    pub start: Option<Written>,
     pub moves: Vec<MoveInfo>,
     /// The cell points whose axis 4 or 6 lies near a limit (the warnings of
     /// [`near_limit`](crate::place::near_limit)).
@@ -175,9 +180,84 @@ pub struct MoveInfo {
     pub time_s: Fixed,
     /// What set its time from rest to rest: `axis`, `tcp` or `reorientation`.
     pub limit: &'static str,
-    /// The speeddata and zonedata of its `MoveAbsJ`.
+    /// The speeddata and zonedata it is written with.
     pub speed: String,
     pub zone: String,
+    /// How it is written: the instruction, its kind, its target and its actions.
+    #[serde(flatten)]
+    pub written: Written,
+}
+
+/// A move as the module writes it (`rapid::WrittenMove`).
+#[derive(Clone, Debug, Serialize)]
+pub struct Written {
+    /// `joint` (an air move), `approach` (the approach line into a point), `linear`,
+    /// `circular` or `retract` (the retract line out of a point).
+    pub kind: &'static str,
+    /// `MoveAbsJ`, `MoveJ`, `MoveL` or `MoveC`.
+    pub instruction: &'static str,
+    /// The data its `ToPoint` names: a jointtarget (`MoveAbsJ`) or a robtarget (`<point>_rt`,
+    /// also under `RelTool`).
+    pub target: String,
+    /// `MoveC`'s circle point (`<point>_via`); `null` otherwise.
+    pub circle_point: Option<String>,
+    /// `RelTool(target,0,0,dz)`'s `dz`, mm; `null` without `RelTool`.
+    pub offset_mm: Option<Fixed>,
+    /// The actions written after it, in order.
+    pub actions: Vec<ActionInfo>,
+}
+
+/// One action (`SetDO`, `PulseDO`, `WaitDI`, `WaitTime`, `GripLoad`) as data: `kind` and the
+/// keys of that kind only.
+#[derive(Clone, Debug, Serialize)]
+pub struct ActionInfo {
+    /// `set_do`, `pulse_do`, `wait_di`, `wait_time` or `grip_load`.
+    pub kind: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub signal: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub value: Option<u8>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seconds: Option<Fixed>,
+    /// The instruction as the module writes it, without its `;`.
+    pub text: String,
+}
+
+fn written(w: &WrittenMove) -> Result<Written, ReportError> {
+    let number = |what: &str, text: &str| -> Result<Fixed, ReportError> {
+        let value: f64 = text.parse().map_err(|_| ReportError::NotFinite {
+            what: format!("{what} '{text}'"),
+        })?;
+        let decimals = text.split_once('.').map_or(0, |(_, d)| d.len());
+        fixed(|| what.to_string(), value, decimals)
+    };
+    let mut actions = Vec::with_capacity(w.actions.len());
+    for a in &w.actions {
+        actions.push(ActionInfo {
+            kind: a.kind,
+            signal: a.signal.clone(),
+            value: a.value,
+            load: a.load.clone(),
+            seconds: match &a.seconds {
+                Some(s) => Some(number("a wait time", s)?),
+                None => None,
+            },
+            text: a.text.clone(),
+        });
+    }
+    Ok(Written {
+        kind: w.kind,
+        instruction: w.instruction,
+        target: w.robtarget.clone().unwrap_or_else(|| w.to.clone()),
+        circle_point: w.circle_point.clone(),
+        offset_mm: match &w.offset_mm {
+            Some(d) => Some(number("a RelTool offset", d)?),
+            None => None,
+        },
+        actions,
+    })
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -202,6 +282,8 @@ pub struct Input<'a> {
     pub program: &'a Program,
     /// The module's names of the plan's waypoints, in order.
     pub names: &'a [String],
+    /// The module's moves as written (move `i` into waypoint `i`).
+    pub written: &'a [WrittenMove],
 }
 
 /// Checks that a number is finite before it is written.
@@ -243,6 +325,7 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
         plan,
         program,
         names,
+        written: written_moves,
     } = input;
     let poser = Poser::new(robot, placed.placement, cell.tool.as_ref());
     let name = |k: usize| names.get(k).cloned().unwrap_or_default();
@@ -290,6 +373,17 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
             limit: m.estimate.limit.name(),
             speed: target.map(|t| t.speed.clone()).unwrap_or_default(),
             zone: target.map(|t| t.zone.clone()).unwrap_or_default(),
+            written: match written_moves.get(i + 1) {
+                Some(w) => written(w)?,
+                None => Written {
+                    kind: m.kind.name(),
+                    instruction: "",
+                    target: name(i + 1),
+                    circle_point: None,
+                    offset_mm: None,
+                    actions: Vec::new(),
+                },
+            },
         });
     }
     let mut near = Vec::new();
@@ -376,6 +470,10 @@ pub fn report(input: &Input) -> Result<Report, ReportError> {
             },
         },
         waypoints,
+        start: match written_moves.first() {
+            Some(w) => Some(written(w)?),
+            None => None,
+        },
         moves,
         near_limits: near,
     })

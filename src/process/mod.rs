@@ -765,6 +765,7 @@ pub fn splice(
                 clearance: m.proof.clearance.clone(),
                 estimate,
                 kind: m.kind,
+                path: Some(std::sync::Arc::new(m.followed.clone())),
             });
             k += 1;
             advanced = true;

@@ -34,7 +34,9 @@ use crate::collision::CollisionModel;
 use crate::place::{MoveMotion, PlacedPoint};
 use crate::plan::motion::{self, Estimate, MoveEstimate, VIA_ZONE};
 use crate::plan::{self, Certified, Clearance, Route, WaypointKind};
+use crate::robot::ik::follow::FollowedPath;
 use crate::robot::ik::six::ConfData;
+use std::sync::Arc;
 
 /// What the refine stage needs besides the route.
 pub struct Settings<'a> {
@@ -105,6 +107,9 @@ pub struct Move {
     pub clearance: Option<Clearance>,
     /// Its estimated time, profile and limit.
     pub estimate: MoveEstimate,
+    /// A process move's TCP path and the joints the controller runs along it (the follow
+    /// stage's samples, what was proven); `None` for a straight joint move.
+    pub path: Option<Arc<FollowedPath>>,
 }
 
 /// The route as the module writes it: every move proven, certified and timed, every zone
@@ -317,6 +322,7 @@ fn finish(
             motion,
             clearance,
             estimate,
+            path: None,
         })
         .collect();
     Refined {

@@ -14,7 +14,11 @@
  *   radius 1) are placed by model matrices. One shader lights them (two fixed lights in the
  *   cell frame plus ambient, both faces lit); a flat shader draws lines (floor grid, cell
  *   axes, the base frame's x (long) and y axes, box edges, TCP trace, the clearance segment,
- *   the unjoined points of a failure).
+ *   the unjoined points of a failure). The TCP trace is drawn move by move in the colour of
+ *   the move's kind (scene.moves): air moves, seams (MoveL / MoveC) and approach and retract
+ *   lines; along a process move the keyframes follow the line or arc the controller runs.
+ * - A waypoint with actions (scene.waypoints[i].actions) gets a marker and a label listing
+ *   them as the module writes them (SetDO doWeld, 1; WaitTime 0.300).
  * - Draw order: opaque meshes, lines, then the translucent boxes back to front with depth
  *   writes off (back faces, then front faces).
  * - Text (waypoint and obstacle names, the clearance, failed points) is HTML laid over the
@@ -42,6 +46,9 @@
     link: [0.93, 0.5, 0.1, 1],
     tool: [0.1, 0.62, 0.55, 1],
     trace: [0.5, 0.2, 0.72, 1],
+    seam: [0.95, 0.1, 0.6, 1],
+    line: [0.0, 0.42, 0.95, 1],
+    action: [0.95, 0.7, 0.05, 1],
     cellPoint: [0.12, 0.15, 0.2, 1],
     via: [0.45, 0.5, 0.56, 1],
     clearance: [0.85, 0.05, 0.15, 1],
@@ -73,8 +80,25 @@
   }
   document.getElementById("facts").textContent = facts.join(" \u00b7 ");
   var legend = document.getElementById("legend");
-  [["obstacle", COLOURS.obstacle], ["link", COLOURS.link], ["tool", COLOURS.tool],
-    ["TCP trace", COLOURS.trace], ["clearance", COLOURS.clearance]].forEach(function (e) {
+  var moves = scene.moves || [];
+  // The colour of the TCP trace along a move, by its kind.
+  function moveColour(kind) {
+    if (kind === "linear" || kind === "circular") return COLOURS.seam;
+    if (kind === "approach" || kind === "retract") return COLOURS.line;
+    return COLOURS.trace;
+  }
+  function some(kinds) {
+    return moves.some(function (m) { return kinds.indexOf(m.kind) >= 0; });
+  }
+  var withActions = scene.waypoints.filter(function (w) { return w.actions && w.actions.length; });
+  var entries = [["obstacle", COLOURS.obstacle], ["link", COLOURS.link], ["tool", COLOURS.tool],
+    [moves.length && moves.some(function (m) { return m.kind !== "joint"; }) ?
+      "air move (TCP)" : "TCP trace", COLOURS.trace]];
+  if (some(["linear", "circular"])) entries.push(["seam (MoveL / MoveC)", COLOURS.seam]);
+  if (some(["approach", "retract"])) entries.push(["approach / retract line", COLOURS.line]);
+  if (withActions.length) entries.push(["actions", COLOURS.action]);
+  entries.push(["clearance", COLOURS.clearance]);
+  entries.forEach(function (e) {
     var s = document.createElement("span");
     s.textContent = e[0];
     var rgb = e[1].slice(0, 3).map(function (c) { return Math.round(c * 255); });
@@ -403,7 +427,18 @@
     lineSets.push(lines(b.concat(add(b, scale(bx, 1.5 * a))), COLOURS.axisX),
       lines(b.concat(add(b, scale(by, a))), COLOURS.axisY));
   })();
-  if (keys.length > 1) {
+  // The TCP trace, move by move (move i from waypoint i to i + 1), each in its kind's colour;
+  // without moves (a failure) or waypoints, one trace.
+  if (keys.length > 1 && moves.length && moves.length === scene.waypoints.length - 1) {
+    var k = 0;
+    moves.forEach(function (m, i) {
+      var t0 = scene.waypoints[i].time_s, t1 = scene.waypoints[i + 1].time_s, pts = [];
+      // From the last keyframe at or before the move's start to its end.
+      while (k + 1 < keys.length && keys[k + 1].time_s <= t0) k++;
+      for (var j = k; j < keys.length && keys[j].time_s <= t1; j++) pts.push(keys[j].tcp_mm);
+      if (pts.length > 1) lineSets.push(lines(polyline(pts), moveColour(m.kind)));
+    });
+  } else if (keys.length > 1) {
     lineSets.push(lines(polyline(keys.map(function (k) { return k.tcp_mm; })), COLOURS.trace));
   }
   var clearance = scene.clearance;
@@ -430,11 +465,14 @@
   function moveName(i) {
     var w = scene.waypoints;
     var ends = w[i] && w[i + 1] ? " (" + w[i].name + " \u2192 " + w[i + 1].name + ")" : "";
-    return "move " + (i + 1) + ends;
+    var how = moves[i] && moves[i].instruction ? ": " + moves[i].instruction : "";
+    return "move " + (i + 1) + ends + how;
   }
   var hitObstacle = clearance ? clearance.obstacle : null;
   obstacles.forEach(function (o) { label(o.name, o.top, "obstacle"); });
   scene.waypoints.forEach(function (w) { label(w.name, w.tcp_mm, w.kind).stack = true; });
+  // Just below the point's own label (the class moves it down a line), not stacked.
+  withActions.forEach(function (w) { label(w.actions.join("; "), w.tcp_mm, "action"); });
   failedPoints.forEach(function (p) {
     label(p.name + " (not joined)", p.position_mm, "failed").stack = true;
   });
@@ -559,6 +597,7 @@
       var cell = w.kind === "cell";
       ball(w.tcp_mm, cell ? marker : marker * 0.6, cell ? COLOURS.cellPoint : COLOURS.via);
     });
+    withActions.forEach(function (w) { ball(w.tcp_mm, marker * 1.3, COLOURS.action); });
     if (clearance && clearance.points_mm) {
       clearance.points_mm.forEach(function (p) { ball(p, marker * 0.7, COLOURS.clearance); });
     }

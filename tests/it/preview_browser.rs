@@ -10,7 +10,8 @@
 //! smallest clearance of a fly-by route (the gripper cell with `via_zone: z50`, whose least is
 //! a zoned corner's) is shown, named by its corner; the trunk cell with a floor 40 m wide still
 //! shows the robot large (the camera frames the robot, the tool and the points, not every box);
-//! two points at the same place (`tests/ok/same_point_twice.yaml`) have labels apart.
+//! two points at the same place (`tests/ok/same_point_twice.yaml`) have labels apart; the torch
+//! cell's weld actions are labelled and its seams drawn in their own colour.
 //!
 //! Without Chromium the test prints how to install it and passes. `GEN_RAPID_CHROMIUM` names
 //! another browser binary (set but empty: run as without Chromium); `GEN_RAPID_PREVIEW_OUT=DIR` keeps the pages and screenshots there.
@@ -451,6 +452,38 @@ fn preview_pages_render_in_headless_chromium() {
         .count();
     eprintln!("torch-trunk at L1: the tool covers {tool_px} px");
     assert!(tool_px > 50, "the tool covers {tool_px} px");
+    // The weld's actions are labelled at their points, as the module writes them.
+    for action in ["SetDO doWeld, 1", "SetDO doWeld, 0"] {
+        assert!(
+            torch.dom.contains(&format!(">{action}</div>")),
+            "the torch page does not label {action}"
+        );
+    }
+    // The seams are drawn in their own colour: the same page with the seams as air moves
+    // differs in the pixels of their trace.
+    // The labels (HTML over the canvas) hide the short seams' trace: both pages without them,
+    // the robot at its start, away from the seams.
+    let unlabelled = html.replace("</style>", "#labels { display: none; }\n</style>");
+    let seams_as_air = unlabelled.replace(r#""kind":"linear""#, r#""kind":"joint""#);
+    assert_ne!(seams_as_air, unlabelled, "the page has no seam");
+    let (seamed, plain) = (
+        load(&browser, &unlabelled, "#t=0"),
+        load(&browser, &seams_as_air, "#t=0"),
+    );
+    assert_healthy(&seamed, "torch-trunk without labels");
+    // Below the header and its legend (which names the seam colour only where there are
+    // seams), so only the drawing counts.
+    let below = 200 * seamed.image.width;
+    let seam_px = seamed.image.rgb[below..]
+        .iter()
+        .zip(&plain.image.rgb[below..])
+        .filter(|(p, q)| {
+            let (p, q) = (p.map(i32::from), q.map(i32::from));
+            (0..3).map(|k| (p[k] - q[k]).abs()).sum::<i32>() > 60
+        })
+        .count();
+    eprintln!("torch-trunk: the seams' own colour covers {seam_px} px");
+    assert!(seam_px > 20, "the seams' colour covers {seam_px} px");
 
     // A fly-by route: the gripper cell with `via_zone: z50`, whose smallest clearance is a
     // zoned corner's (no move has it): the page shows it, named by the corner's waypoint.

@@ -321,3 +321,107 @@ fn report_and_page_are_written_only_for_what_succeeded() {
     gen_rapid(&["tests/err/no_path.yaml", "--html", arg(&again)]);
     assert_eq!(std::fs::read(&again).ok(), Some(page.into_bytes()));
 }
+
+/// Each move of the report says how the module writes it: the instruction, the data its target
+/// names, the circle point, the `RelTool` offset and the actions after it, as the module's text
+/// says them (read by the strict grammar, move by move), and its kind as the cell asks it (the
+/// approach line into a point with `approach`, the `move: linear` / `circular` move, the
+/// retract line; air moves `joint`). `start` is the first instruction and its actions.
+#[test]
+fn report_moves_say_the_instruction_target_and_actions_the_module_writes() {
+    use crate::common::routine::{Instruction, ToPoint};
+    for (cell, process) in [
+        (
+            "cells/torch-trunk.yaml",
+            ["approach", "linear", "retract"].as_slice(),
+        ),
+        (
+            "cells/arc-seam.yaml",
+            ["approach", "circular", "retract"].as_slice(),
+        ),
+        ("cells/trunk.yaml", [].as_slice()),
+    ] {
+        let (text, report, _) = run(cell, &[]);
+        assert_eq!(report["format"], "gen-rapid report 4");
+        let module = Module::parse(&text).expect("the module");
+        // The module's motions, each with the actions written after it.
+        let mut written: Vec<(&crate::common::routine::Motion, Vec<String>)> = Vec::new();
+        for s in &module.body {
+            match &s.ins {
+                Instruction::Move(m) => written.push((m, Vec::new())),
+                Instruction::Action(_) => {
+                    let last = written.last_mut().expect("an action after a move");
+                    last.1.push(s.text.trim_end_matches(';').to_string());
+                }
+                _ => {}
+            }
+        }
+        let mut entries = vec![report["start"].clone()];
+        entries.extend(report["moves"].as_array().expect("moves").iter().cloned());
+        assert_eq!(entries.len(), written.len(), "{cell}: one entry a motion");
+        let mut kinds = Vec::new();
+        for (k, (e, (m, actions))) in entries.iter().zip(&written).enumerate() {
+            let what = format!("{cell}: instruction {k}");
+            assert_eq!(e["instruction"], m.kind.name(), "{what}");
+            assert_eq!(e["target"], m.to.data(), "{what}");
+            let circle = m.circle.as_ref().map(|c| c.data().to_string());
+            assert_eq!(
+                e["circle_point"].as_str().map(str::to_string),
+                circle,
+                "{what}"
+            );
+            let offset = match &m.to {
+                ToPoint::RelTool { offset_mm, .. } => Some(offset_mm[2]),
+                ToPoint::Name(_) => None,
+            };
+            assert_eq!(e["offset_mm"].as_f64(), offset, "{what}");
+            let texts: Vec<String> = (e["actions"].as_array().expect("actions").iter())
+                .map(|a| a["text"].as_str().expect("text").to_string())
+                .collect();
+            assert_eq!(&texts, actions, "{what}");
+            // The action as data says what its text says.
+            for a in e["actions"].as_array().expect("actions") {
+                let text = a["text"].as_str().expect("text");
+                let data = match a["kind"].as_str() {
+                    Some("set_do") => {
+                        format!("SetDO {}, {}", a["signal"].as_str().unwrap(), a["value"])
+                    }
+                    Some("pulse_do") => format!("PulseDO {}", a["signal"].as_str().unwrap()),
+                    Some("wait_di") => {
+                        format!("WaitDI {}, {}", a["signal"].as_str().unwrap(), a["value"])
+                    }
+                    Some("wait_time") => {
+                        format!("WaitTime {:.3}", a["seconds"].as_f64().unwrap())
+                    }
+                    Some("grip_load") => format!("GripLoad {}", a["load"].as_str().unwrap()),
+                    other => panic!("{what}: action kind {other:?}"),
+                };
+                assert_eq!(data, text, "{what}");
+            }
+            if k > 0 {
+                kinds.push(e["kind"].as_str().expect("kind").to_string());
+            }
+            match e["kind"].as_str() {
+                Some("joint") => assert!(matches!(m.kind.name(), "MoveAbsJ" | "MoveJ"), "{what}"),
+                Some("circular") => assert_eq!(m.kind.name(), "MoveC", "{what}"),
+                Some("approach" | "linear" | "retract") => {
+                    assert_eq!(m.kind.name(), "MoveL", "{what}")
+                }
+                other => panic!("{what}: kind {other:?}"),
+            }
+        }
+        let process_kinds: Vec<&str> = kinds
+            .iter()
+            .map(String::as_str)
+            .filter(|k| *k != "joint")
+            .collect();
+        let expected: Vec<&str> = match cell {
+            "cells/torch-trunk.yaml" => process.iter().chain(process).copied().collect(),
+            _ => process.to_vec(),
+        };
+        assert_eq!(
+            process_kinds, expected,
+            "{cell}: the process moves in order"
+        );
+    }
+}

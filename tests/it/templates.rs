@@ -171,3 +171,143 @@ fn the_routine_is_named_by_the_cell_or_the_command_line_under_the_one_name_rule(
         assert!(stderr(&out).contains(says), "{name}: {}", stderr(&out));
     }
 }
+
+/// The arc-welding example, `templates/arc-weld.mod.j2`, on the two welding cells: its module
+/// passes the strict grammar and runs as the controller runs it (`check_process_welding`: the
+/// arc instructions move as the MoveL / MoveC they make, every sample kept clear), writes each
+/// seam as `ArcLStart` / `ArcL` / `ArcLEnd` (`ArcC...` for the arc) with the seamdata and
+/// welddata given by `--set`, switches the weld where the cell's `SetDO doWeld` stood and writes
+/// no `SetDO doWeld` of its own; its targets and the path of every motion are the default
+/// module's (the same data, the same instruction kinds and arguments but for the welding data).
+#[test]
+fn the_arc_weld_template_writes_the_seams_as_arc_instructions_on_the_proven_paths() {
+    use crate::common::module::Module;
+    use crate::common::routine::Instruction;
+    let expected: [(&str, &[&str]); 2] = [
+        (
+            "cells/torch-trunk.yaml",
+            &[
+                "ArcLStart L1_rt, v300, seamA, weldA, fine, tTorch\\WObj:=wobjTrunk;",
+                "ArcLEnd L2_rt, v50, seamA, weldA, fine, tTorch\\WObj:=wobjTrunk;",
+                "ArcLStart R1_rt, v300, seamA, weldA, fine, tTorch\\WObj:=wobjTrunk;",
+                "ArcLEnd R2_rt, v50, seamA, weldA, fine, tTorch\\WObj:=wobjTrunk;",
+            ],
+        ),
+        (
+            "cells/arc-seam.yaml",
+            &[
+                "ArcLStart S1_rt, v300, seamA, weldA, fine, tTorch\\WObj:=wobjTrunk;",
+                "ArcCEnd S2_via, S2_rt, v20, seamA, weldA, fine, tTorch\\WObj:=wobjTrunk;",
+            ],
+        ),
+    ];
+    for (cell_file, arcs) in expected {
+        let cell = load_cell(&root().join(cell_file));
+        let out = gen_rapid(&[
+            cell_file,
+            "--template",
+            "templates/arc-weld.mod.j2",
+            "--set",
+            "seam=seamA",
+            "--set",
+            "weld=weldA",
+        ]);
+        assert!(out.status.success(), "{cell_file}: {}", stderr(&out));
+        let text = stdout(&out);
+        let run =
+            crate::common::process::check_process_welding(&cell, &text, cell_file, Some("doWeld"))
+                .unwrap_or_else(|f| panic!("{cell_file}:\n{}", f.join("\n")));
+        assert!(run.process_moves >= 3, "{cell_file}: {run:?}");
+        let m = Module::parse(&text).expect("the module");
+        let written: Vec<&str> = m
+            .body
+            .iter()
+            .filter(|s| s.text.starts_with("Arc"))
+            .map(|s| s.text.as_str())
+            .collect();
+        assert_eq!(written, arcs, "{cell_file}");
+        assert!(
+            !text.contains("SetDO doWeld"),
+            "{cell_file}: a SetDO doWeld is left"
+        );
+        assert!(text.contains("! arc welding: seams as ArcLStart/ArcL/ArcLEnd, seamdata seamA, welddata weldA, switched by doWeld\n"));
+        // The same data and the same motions as the default module, the welding data aside.
+        let plain = Module::parse(&stdout(&gen_rapid(&[cell_file]))).expect("the default module");
+        assert_eq!(m.targets, plain.targets, "{cell_file}");
+        assert_eq!(m.robtargets, plain.robtargets, "{cell_file}");
+        let motions = |m: &Module| -> Vec<_> {
+            m.motions()
+                .map(|(_, mo)| {
+                    let mut mo = mo.clone();
+                    mo.arc = None;
+                    mo
+                })
+                .collect()
+        };
+        assert_eq!(motions(&m), motions(&plain), "{cell_file}");
+        // The other actions as the default module writes them.
+        let others = |m: &Module| -> Vec<String> {
+            (m.body.iter())
+                .filter(|s| matches!(s.ins, Instruction::Action(_)))
+                .map(|s| s.text.clone())
+                .filter(|t| !t.starts_with("SetDO doWeld"))
+                .collect()
+        };
+        assert_eq!(others(&m), others(&plain), "{cell_file}");
+    }
+}
+
+/// Template settings: `--set NAME=VALUE` reaches the template as `settings.NAME`; a setting the
+/// template needs and the command line does not give is an error at the template's line (exit
+/// 1); a malformed one, one given twice, or `--set` without `--template` is a command-line
+/// error (exit 2); nothing reaches stdout.
+#[test]
+fn template_settings_come_from_the_command_line_and_are_checked() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let t = dir.path().join("settings.mod.j2");
+    std::fs::write(
+        &t,
+        "MODULE {{ module }}\n    ! site: {{ settings.site }}, cell {{ settings.cell | default(\"none\") }}\nENDMODULE\n",
+    )
+    .expect("write");
+    let out = gen_rapid(&[
+        "cells/trunk.yaml",
+        "--template",
+        arg(&t),
+        "--set",
+        "site=Plant 7",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(
+        stdout(&out),
+        "MODULE TrunkWeld\n    ! site: Plant 7, cell none\nENDMODULE\n"
+    );
+    // Not given: the template's line.
+    let out = gen_rapid(&["cells/trunk.yaml", "--template", arg(&t)]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(out.stdout.is_empty());
+    assert!(
+        stderr(&out).contains(&format!("--> {}:2:", t.display())),
+        "{}",
+        stderr(&out)
+    );
+    // The command line's errors.
+    for (args, says) in [
+        (vec!["--set", "site"], "is not NAME=VALUE"),
+        (vec!["--set", "2site=a"], "is not a setting name"),
+        (
+            vec!["--set", "site=a", "--set", "site=b"],
+            "--set site is given more than once",
+        ),
+    ] {
+        let mut all = vec!["cells/trunk.yaml", "--template", arg(&t)];
+        all.extend(args);
+        let out = gen_rapid(&all);
+        assert_eq!(out.status.code(), Some(2), "{all:?}: {}", stderr(&out));
+        assert!(out.stdout.is_empty());
+        assert!(stderr(&out).contains(says), "{all:?}: {}", stderr(&out));
+    }
+    let out = gen_rapid(&["cells/trunk.yaml", "--set", "site=a"]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(stderr(&out).contains("--template"), "{}", stderr(&out));
+}

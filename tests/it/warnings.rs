@@ -38,7 +38,7 @@ fn axes_4_and_6_near_a_limit_are_warned_and_reported() {
     }
     let r: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&report).expect("report")).expect("JSON");
-    assert_eq!(r["format"], "gen-rapid report 3");
+    assert_eq!(r["format"], "gen-rapid report 4");
     let near = r["near_limits"].as_array().expect("near_limits");
     let rows: Vec<(String, u64, f64, f64, f64)> = near
         .iter()

@@ -75,6 +75,9 @@ pub struct Scene {
     /// The program's waypoints (cell points and vias) in order; move `i` runs from waypoint
     /// `i` to waypoint `i + 1`.
     pub waypoints: Vec<SceneWaypoint>,
+    /// The moves, move `i` from waypoint `i` to waypoint `i + 1`: how each runs and the
+    /// instruction it is written with (the page colours the TCP trace by kind).
+    pub moves: Vec<SceneMove>,
     /// The smallest clearance of the whole program and where it occurs, if known.
     pub clearance: Option<SceneClearance>,
     /// The estimated time of the whole program (s), if estimated, as the module header
@@ -166,6 +169,21 @@ pub enum WaypointKind {
     Cell,
     /// An intermediate waypoint of the planner.
     Via,
+    /// A point's approach pose (where its approach line starts).
+    Approach,
+    /// A point's retract pose (where its retract line ends).
+    Retract,
+}
+
+/// A move of the program as the module writes it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SceneMove {
+    /// `joint` (an air move), `approach`, `linear`, `circular` or `retract`: the TCP runs the
+    /// line or arc of a process move (its keyframes follow the path), joint interpolation on
+    /// an air move.
+    pub kind: String,
+    /// The instruction and its target as written (`MoveL L2_rt`, `MoveC S2_via, S2_rt`).
+    pub instruction: String,
 }
 
 /// A waypoint of the program.
@@ -178,6 +196,9 @@ pub struct SceneWaypoint {
     pub time_s: f64,
     /// The TCP position there (mm).
     pub tcp_mm: [f64; 3],
+    /// The actions done there, after the move into it, as the module writes them (`SetDO
+    /// doWeld, 1`); the page marks the point and lists them.
+    pub actions: Vec<String>,
 }
 
 /// The smallest clearance of the program: how small, on which move, between which shape and

@@ -4,7 +4,11 @@
 //! the TCP trace, and the place of the smallest clearance; or, for a failed plan, the cell, the
 //! robot where it could be placed and the points that could not be joined.
 //!
-//! **Keyframes.** Move `i` starts when move `i - 1` ends and lasts its estimated time; within it all six axes run together along the straight joint move (`MoveAbsJ`)
+//! **Keyframes.** Move `i` starts when move `i - 1` ends and lasts its estimated time; within an
+//! air move all six axes run together along the straight joint move (`MoveAbsJ`, `MoveJ`); along
+//! a process move (`MoveL`, `MoveC`, approach and retract lines) the TCP runs its line or arc and
+//! the joints are the follow stage's (the plan's followed path: its samples, between them
+//! linearly), so the trace is the path the controller runs; both
 //! at the progress of the move's profile (`Profile::progress`, the leading axis' profile of the
 //! time stage: the leading axis', or the TCP path's when the speeddata leads). A move is sampled
 //! piece by piece (a ramp, the cruise, a ramp; or its one quintic) every [`KEYFRAME_STEP_S`] of
@@ -27,14 +31,16 @@
 //! points the page joins with a red line. That search certifies nothing.
 
 use super::{
-    FailedPoint, Keyframe, Scene, SceneBase, SceneClearance, SceneFailure, SceneObstacle,
-    ScenePose, SceneWaypoint, ShapeDef, ShapeGeometry, ShapeKind, WaypointKind,
+    FailedPoint, Keyframe, Scene, SceneBase, SceneClearance, SceneFailure, SceneMove,
+    SceneObstacle, ScenePose, SceneWaypoint, ShapeDef, ShapeGeometry, ShapeKind, WaypointKind,
 };
 use crate::cell::{Cell, Target, ToolGeometry};
 use crate::output::poses::Poser;
+use crate::output::rapid::WrittenMove;
 use crate::place::{Placed, PlacedPoint, Placement};
 use crate::plan::motion::Profile;
 use crate::refine::Plan;
+use crate::robot::ik::follow::FollowedPath;
 use crate::robot::{LinkFrame, Robot};
 use nalgebra::{Isometry3, Point3, Vector3};
 
@@ -126,8 +132,19 @@ fn scene_pose(iso: &Isometry3<f64>) -> ScenePose {
     }
 }
 
-/// The robot at one pose: every shape's frame and the TCP.
+/// The robot at one pose: every shape's frame and the TCP (on a process move's path: the path's
+/// point, `tcp`).
 fn keyframe(poser: &Poser, carriers: &[Carrier], time_s: f64, axes: &[f64; 6]) -> Keyframe {
+    keyframe_at(poser, carriers, time_s, axes, None)
+}
+
+fn keyframe_at(
+    poser: &Poser,
+    carriers: &[Carrier],
+    time_s: f64,
+    axes: &[f64; 6],
+    tcp: Option<[f64; 3]>,
+) -> Keyframe {
     let links = poser.links(axes);
     let flange = poser.tool0(axes);
     Keyframe {
@@ -140,7 +157,40 @@ fn keyframe(poser: &Poser, carriers: &[Carrier], time_s: f64, axes: &[f64; 6]) -
                 Carrier::Flange => scene_pose(&flange),
             })
             .collect(),
-        tcp_mm: poser.tcp_mm(axes),
+        tcp_mm: tcp.unwrap_or_else(|| poser.tcp_mm(axes)),
+    }
+}
+
+/// The joints a process move runs at progress `s` (0..1 of its path): between the follow
+/// stage's samples (each the controller's continuing solution, the chords between them within
+/// the follower's small deviation bound), linearly.
+fn along(path: &FollowedPath, s: f64) -> [f64; 6] {
+    let samples = path.samples();
+    let k = samples.partition_point(|p| p.s <= s);
+    match (
+        k.checked_sub(1).and_then(|j| samples.get(j)),
+        samples.get(k),
+    ) {
+        (Some(a), Some(b)) if b.s > a.s => {
+            lerp6(&a.joints_deg, &b.joints_deg, (s - a.s) / (b.s - a.s))
+        }
+        (Some(a), _) => a.joints_deg,
+        (None, Some(b)) => b.joints_deg,
+        (None, None) => [0.0; 6],
+    }
+}
+
+/// Move `i` of `plan` at `fraction` (0..1) of its progress: the joints, and on a process move
+/// the TCP on its path (the line or arc the controller runs, not the joint interpolation).
+fn move_at(plan: &Plan, i: usize, fraction: f64) -> ([f64; 6], Option<[f64; 3]>) {
+    let w = &plan.route.waypoints;
+    let (from, to) = (&w[i].joints_deg, &w[i + 1].joints_deg);
+    match plan.moves.get(i).and_then(|m| m.path.as_ref()) {
+        Some(path) => (
+            along(path, fraction),
+            Some(path.tcp_at(fraction).coords.into()),
+        ),
+        None => (lerp6(from, to, fraction), None),
     }
 }
 
@@ -232,8 +282,16 @@ fn timing(plan: &Plan) -> Vec<(f64, Profile)> {
 }
 
 /// The scene of a planned run: `names` are the module's names of the plan's waypoints (the
-/// cell points' own, `via<leg>_<index>` for the vias), in order.
-pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[String]) -> Scene {
+/// cell points' own, `via<leg>_<index>` for the vias), in order; `written` the module's moves
+/// (move `k` into waypoint `k`: its instruction and the actions after it).
+pub fn scene(
+    cell: &Cell,
+    robot: &Robot,
+    placed: &Placed,
+    plan: &Plan,
+    names: &[String],
+    written: &[WrittenMove],
+) -> Scene {
     let poser = Poser::new(robot, placed.placement, cell.tool.as_ref());
     let (defs, carriers) = shapes(robot, cell);
     let timing = timing(plan);
@@ -246,10 +304,14 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
         .waypoints
         .windows(2)
         .zip(&timing)
-        .map(|(pair, &(duration, profile))| {
-            let largest = (0..6)
-                .map(|a| (pair[1].joints_deg[a] - pair[0].joints_deg[a]).abs())
-                .fold(0.0, f64::max);
+        .zip(&plan.moves)
+        .map(|((pair, &(duration, profile)), m)| {
+            let largest = match &m.path {
+                Some(path) => path.axis_travel_deg().into_iter().fold(0.0, f64::max),
+                None => (0..6)
+                    .map(|a| (pair[1].joints_deg[a] - pair[0].joints_deg[a]).abs())
+                    .fold(0.0, f64::max),
+            };
             keyframe_pieces(duration, profile, largest)
         })
         .collect();
@@ -263,7 +325,6 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
         if k == 0 {
             keyframes.push(keyframe(&poser, &carriers, 0.0, &w.joints_deg));
         } else {
-            let from = &route.waypoints[k - 1].joints_deg;
             let (duration, profile) = timing[k - 1];
             starts.push(t0);
             let times = keyframe_times(&pieces[k - 1], counted, stride);
@@ -272,12 +333,12 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
                 .fold(counted, |sum, p| sum.saturating_add(p.2));
             let last = times.len() - 1;
             for (j, &t) in times.iter().enumerate() {
-                let axes = if j == last {
-                    w.joints_deg
+                let (axes, tcp) = if j == last {
+                    (w.joints_deg, move_at(plan, k - 1, 1.0).1)
                 } else {
-                    lerp6(from, &w.joints_deg, profile.progress(t, duration))
+                    move_at(plan, k - 1, profile.progress(t, duration))
                 };
-                keyframes.push(keyframe(&poser, &carriers, t0 + t, &axes));
+                keyframes.push(keyframe_at(&poser, &carriers, t0 + t, &axes, tcp));
             }
             t0 += duration;
         }
@@ -285,12 +346,16 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
             name: names.get(k).cloned().unwrap_or_default(),
             kind: match w.kind {
                 crate::plan::WaypointKind::CellPoint(_) => WaypointKind::Cell,
-                crate::plan::WaypointKind::Via { .. }
-                | crate::plan::WaypointKind::Approach(_)
-                | crate::plan::WaypointKind::Retract(_) => WaypointKind::Via,
+                crate::plan::WaypointKind::Via { .. } => WaypointKind::Via,
+                crate::plan::WaypointKind::Approach(_) => WaypointKind::Approach,
+                crate::plan::WaypointKind::Retract(_) => WaypointKind::Retract,
             },
             time_s: t0,
             tcp_mm: poser.tcp_mm(&w.joints_deg),
+            actions: written
+                .get(k)
+                .map(|m| m.actions.iter().map(|a| a.text.clone()).collect())
+                .unwrap_or_default(),
         });
     }
     let clearance = clearance(cell, plan, &poser, &defs, &carriers, &timing, &starts);
@@ -304,6 +369,18 @@ pub fn scene(cell: &Cell, robot: &Robot, placed: &Placed, plan: &Plan, names: &[
         shapes: defs,
         keyframes,
         waypoints,
+        moves: (plan.moves.iter().enumerate())
+            .map(|(i, m)| SceneMove {
+                kind: m.kind.name().to_string(),
+                instruction: written
+                    .get(i + 1)
+                    .map(|w| match &w.circle_point {
+                        Some(c) => format!("{} {c}, {}", w.instruction, w.to),
+                        None => format!("{} {}", w.instruction, w.to),
+                    })
+                    .unwrap_or_default(),
+            })
+            .collect(),
         clearance,
         // As the module header states it.
         total_time_s: Some(crate::precision::round(
@@ -363,15 +440,11 @@ fn clearance(
     type Best = (usize, f64, f64, [[f64; 3]; 2], Option<usize>);
     let mut best: Option<Best> = None;
     for (i, u0, u1, corner) in searched_pieces(plan, least) {
-        let (from, to) = (
-            &plan.route.waypoints[i].joints_deg,
-            &plan.route.waypoints[i + 1].joints_deg,
-        );
         let (duration, profile) = timing.get(i).copied().unwrap_or((0.0, Profile::Quintic));
         for j in 0..=CLEARANCE_SAMPLES {
             let u = u0 + (u1 - u0) * j as f64 / CLEARANCE_SAMPLES as f64;
             let t = duration * u;
-            let axes = lerp6(from, to, profile.progress(t, duration));
+            let (axes, _) = move_at(plan, i, profile.progress(t, duration));
             let frame = match carriers[s] {
                 Carrier::Base => poser.base(),
                 Carrier::Link(k) => poser.links(&axes)[k],
@@ -545,6 +618,7 @@ pub fn failure_scene(
         shapes: defs,
         keyframes,
         waypoints: Vec::new(),
+        moves: Vec::new(),
         clearance: None,
         total_time_s: None,
         failure: Some(SceneFailure {

@@ -34,6 +34,7 @@ fn scene_of(job: &Loaded, out: &pipeline::Outcome) -> Scene {
         &out.placed,
         &out.plan,
         &out.rendered.names,
+        &out.rendered.moves,
     )
 }
 
@@ -63,6 +64,7 @@ fn keyframes_follow_the_estimate_and_the_kinematics() {
         &out.placed,
         plan,
         &out.rendered.names,
+        &out.rendered.moves,
     );
     // Links 1..3, then the tool's three shapes; one pose each per keyframe.
     let kinds: Vec<_> = s.shapes.iter().map(|d| d.kind).collect();
@@ -256,6 +258,7 @@ fn a_zoned_corners_clearance_is_marked_at_its_waypoint() {
         &out.placed,
         &plan,
         &out.rendered.names,
+        &out.rendered.moves,
     );
     let c = s.clearance.expect("marked");
     assert_eq!(c.corner_waypoint, Some(1));
@@ -284,6 +287,7 @@ fn a_zoned_corners_clearance_is_marked_at_its_waypoint() {
         &out.placed,
         &plan,
         &out.rendered.names,
+        &out.rendered.moves,
     );
     assert!(s.clearance.is_none());
 }
@@ -354,4 +358,98 @@ fn a_failure_shows_the_cell_the_robot_and_the_points_not_joined() {
     assert_eq!(s.obstacles.len(), 2);
     // The page renders either way.
     assert!(super::super::render_html(&s).is_ok());
+}
+
+/// The torch cell's process moves on the page: every keyframe of a seam, an approach or a
+/// retract line puts the TCP on the straight line between the move's ends (within 0.01 mm),
+/// and the robot drawn there (the tool's frame in the keyframe, through the tooldata) within
+/// 0.5 mm of it, where the straight joint move between the same ends strays by millimetres
+/// (so keyframes of the joint interpolation would fail); the moves carry their kind and
+/// instruction, the waypoints the actions the module writes there.
+#[test]
+fn process_moves_follow_their_tcp_path_and_carry_their_actions() {
+    let job = pipeline::load(Path::new("cells/torch-trunk.yaml")).expect("the torch cell");
+    let out = pipeline::run(&job, &Options::new(Method::Extensile, 1.0)).expect("plans");
+    let s = scene_of(&job, &out);
+    let plan = &out.plan;
+    assert_eq!(s.moves.len(), s.waypoints.len() - 1);
+    let kinds: Vec<&str> = (s.moves.iter())
+        .map(|m| m.kind.as_str())
+        .filter(|k| *k != "joint")
+        .collect();
+    assert_eq!(
+        kinds,
+        ["approach", "linear", "retract", "approach", "linear", "retract"]
+    );
+    let tool = job.cell.tool.as_ref().expect("a tool");
+    let tframe = tool.tframe.written().isometry();
+    // The first tool shape's keyframe pose is the flange's.
+    let flange_shape = s
+        .shapes
+        .iter()
+        .position(|d| d.kind == ShapeKind::Tool)
+        .expect("tool shapes");
+    let poser = Poser::new(&job.robot, out.placed.placement, Some(tool));
+    let off_line = |p: [f64; 3], a: [f64; 3], b: [f64; 3]| {
+        let (p, a, b) = (Vector3::from(p), Vector3::from(a), Vector3::from(b));
+        let d = b - a;
+        let u = ((p - a).dot(&d) / d.norm_squared()).clamp(0.0, 1.0);
+        (p - (a + d * u)).norm()
+    };
+    let mut checked = 0;
+    let mut straying: f64 = 0.0;
+    for (i, m) in s.moves.iter().enumerate() {
+        let (a, b) = (&s.waypoints[i], &s.waypoints[i + 1]);
+        if m.kind == "joint" {
+            continue;
+        }
+        assert!(m.instruction.starts_with("MoveL "), "{}", m.instruction);
+        let (t0, t1) = (a.time_s, b.time_s);
+        for k in s
+            .keyframes
+            .iter()
+            .filter(|k| k.time_s >= t0 && k.time_s <= t1)
+        {
+            let on = off_line(k.tcp_mm, a.tcp_mm, b.tcp_mm);
+            assert!(on < 0.01, "move {}: the TCP {on} mm off its line", i + 1);
+            let f = &k.poses[flange_shape];
+            let q = f.quat_wxyz;
+            let flange = Isometry3::from_parts(
+                nalgebra::Translation3::from(Vector3::from(f.position_mm)),
+                nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+                    q[0], q[1], q[2], q[3],
+                )),
+            );
+            let drawn = (flange * tframe).translation.vector;
+            let on = off_line(drawn.into(), a.tcp_mm, b.tcp_mm);
+            assert!(
+                on < 0.5,
+                "move {}: the drawn TCP {on} mm off its line",
+                i + 1
+            );
+            checked += 1;
+        }
+        let w = &plan.route.waypoints;
+        let mid = lerp6(&w[i].joints_deg, &w[i + 1].joints_deg, 0.5);
+        straying = straying.max(off_line(poser.tcp_mm(&mid), a.tcp_mm, b.tcp_mm));
+    }
+    assert!(checked > 20, "{checked} keyframes on process moves");
+    assert!(
+        straying > 1.0,
+        "the joint interpolation strays only {straying} mm: the test would not tell"
+    );
+    let actions = |name: &str| -> Vec<String> {
+        (s.waypoints.iter())
+            .find(|w| w.name == name)
+            .map(|w| w.actions.clone())
+            .unwrap_or_default()
+    };
+    assert_eq!(actions("L1"), ["SetDO doWeld, 1"]);
+    assert_eq!(actions("L2"), ["SetDO doWeld, 0"]);
+    assert_eq!(actions("home"), Vec::<String>::new());
+    let approach = s
+        .waypoints
+        .iter()
+        .filter(|w| w.kind == WaypointKind::Approach);
+    assert_eq!(approach.count(), 2);
 }

@@ -70,14 +70,20 @@ fn scene() -> Scene {
                 kind: WaypointKind::Cell,
                 time_s: 0.0,
                 tcp_mm: [800.0, 0.0, 900.0],
+                actions: Vec::new(),
             },
             SceneWaypoint {
                 name: "B".into(),
                 kind: WaypointKind::Cell,
                 time_s: 1.5,
                 tcp_mm: [800.0, 100.0, 900.0],
+                actions: vec!["SetDO doWeld, 1".into()],
             },
         ],
+        moves: vec![SceneMove {
+            kind: "linear".into(),
+            instruction: "MoveL B_rt".into(),
+        }],
         clearance: Some(SceneClearance {
             distance_mm: 12.34,
             move_index: 0,

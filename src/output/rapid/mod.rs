@@ -8,7 +8,9 @@
 //! minijinja in strict-undefined mode, no auto-escaping, trailing newline kept),
 //! or the user's template (`--template FILE`, [`ModuleTemplate`]), which sees the
 //! same context (docs/outputs.md, "Your own module template": `module`, `proc`, `header`,
-//! `facts`, `tool`, `wobj`, `wobj_arg`, `targets`, `moves`). A template holds no
+//! `facts`, `tool`, `wobj`, `wobj_arg`, `targets`, `moves` with each move's instruction, kind,
+//! target and actions ([`written_moves`]), `loads`, `conf_on`, and `settings`, the template
+//! settings of `--set`). A template holds no
 //! logic beyond loops and variable output; every number is formatted here with
 //! [`format_fixed`]. An error of the user's template is an input error at its
 //! line ([`TemplateError`]). The guarantees below are the embedded template's; a
@@ -89,22 +91,26 @@
 mod data;
 mod format;
 mod header;
+mod moves;
+mod settings;
 mod tags;
 mod target_names;
 
 pub use data::{AxisRanges, Pose, RobTarget, ToolData, WobjData, NO_EXTERNAL_AXES};
 pub use format::format_fixed;
 pub use header::{Header, NO_CONTROLLER};
+pub use moves::{written_moves, WrittenAction, WrittenMove};
+pub use settings::{parse_setting, settings_map};
 pub use target_names::{target_names, target_names_avoiding};
 
 use crate::names::{check_data_name, check_identifier, robtarget_name, IdentifierError};
-use crate::precision::{JOINT_DECIMALS, POSITION_DECIMALS, WAIT_TIME_DECIMALS};
+use crate::precision::JOINT_DECIMALS;
 #[cfg(test)]
 use header::comment_text;
 
 use minijinja::{value::Serde, AutoEscape, Environment, UndefinedBehavior};
 use serde::Serialize;
-use std::collections::{HashMap, HashSet};
+use std::collections::{BTreeMap, BTreeSet, HashMap, HashSet};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
@@ -373,6 +379,8 @@ pub struct ModuleTemplate {
     /// The user's file; `None` for the embedded template.
     path: Option<PathBuf>,
     source: String,
+    /// The template settings (`--set NAME=VALUE`), the context's `settings`.
+    settings: BTreeMap<String, String>,
 }
 
 impl ModuleTemplate {
@@ -381,6 +389,7 @@ impl ModuleTemplate {
         ModuleTemplate {
             path: None,
             source: TEMPLATE.to_string(),
+            settings: BTreeMap::new(),
         }
     }
 
@@ -405,10 +414,16 @@ impl ModuleTemplate {
         let t = ModuleTemplate {
             path: Some(path.to_path_buf()),
             source,
+            settings: BTreeMap::new(),
         };
         on_template_stack(|| t.environment().map(drop))
             .map_err(|e| TemplateError::of(path, &t.source, &e))?;
         Ok(t)
+    }
+
+    /// This template with `settings` (`--set`), which it reads as `settings.NAME`.
+    pub fn with_settings(self, settings: BTreeMap<String, String>) -> ModuleTemplate {
+        ModuleTemplate { settings, ..self }
     }
 
     /// The name minijinja knows it by (its file name; `module.mod.j2` for the embedded one).
@@ -602,6 +617,8 @@ struct ModuleCtx {
     conf_on: bool,
     /// The `PERS loaddata` the module declares.
     loads: Vec<DataCtx>,
+    /// The template settings (`--set NAME=VALUE`), by name.
+    settings: BTreeMap<String, String>,
 }
 
 #[derive(Serialize)]
@@ -644,14 +661,32 @@ struct TargetCtx {
 
 #[derive(Serialize)]
 struct MoveCtx {
-    /// `MoveAbsJ` (to a jointtarget) or `MoveJ` (to a robtarget).
+    /// `MoveAbsJ` (to a jointtarget), `MoveJ`, `MoveL` or `MoveC` (to a robtarget).
     instruction: &'static str,
-    /// How it moves: `joint` (an air move).
+    /// `joint` (an air move), `approach`, `linear`, `circular` or `retract`.
     kind: &'static str,
-    /// The instructions done after it, in order, without their `;`.
-    actions: Vec<String>,
-    /// The data it goes to: the jointtarget, or the robtarget (`<point>_rt`).
+    /// The actions written after it, in order, as data (`kind`, `signal`, `value`, `load`,
+    /// `seconds`) with their `text` (the instruction without its `;`).
+    actions: Vec<WrittenAction>,
+    /// The arguments before the speed, without `\NoEOffs`: the `ToPoint`, or `<CirPoint>,
+    /// <ToPoint>` for `MoveC`.
     target: String,
+    /// The `ToPoint` as written: a jointtarget or robtarget name, or `RelTool(...)`.
+    to: String,
+    /// The cell point it belongs to, or none (a via).
+    point: Option<String>,
+    /// The robtarget it goes to or stands on, or none (`MoveAbsJ`).
+    robtarget: Option<String>,
+    /// The jointtarget of a `MoveAbsJ`, or none.
+    jointtarget: Option<String>,
+    /// `MoveC`'s circle point, or none.
+    circle_point: Option<String>,
+    /// `RelTool`'s z offset as written (`-40.000`), or none.
+    offset_mm: Option<String>,
+    /// The digital outputs the routine's own `SetDO` have left at 1 while it runs, and after
+    /// its actions (sorted).
+    outputs_on: Vec<String>,
+    outputs_on_after: Vec<String>,
     speed: String,
     zone: String,
     tool: String,
@@ -738,6 +773,8 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
         Some(w) => format!("\\WObj:={}", w.name),
         None => String::new(),
     };
+    let written = moves::written_moves(program, &target_names)?;
+    let mut outputs: BTreeSet<String> = BTreeSet::new();
     let mut targets = Vec::with_capacity(program.targets.len());
     let mut moves = Vec::with_capacity(program.targets.len());
     for (target, name) in program.targets.iter().zip(target_names) {
@@ -766,64 +803,43 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             }
             _ => None,
         };
-        // A robtarget point is moved to by its robtarget (the controller's tool, work object
-        // and touch-ups apply); a joint target and a via by their axis values; an approach or
-        // retract pose by RelTool on its point's robtarget.
-        let rel_tool = |point: &str| -> Result<String, RapidError> {
-            let d = finite(
-                format!("the offset of `{name}`"),
-                target.offset_mm.unwrap_or(0.0),
-            )?;
-            Ok(format!(
-                "RelTool({},0,0,{})",
-                robtarget_name(point),
-                format_fixed(-d, POSITION_DECIMALS)
-            ))
-        };
-        let (instruction, to, offs) = match (&target.kind, &target.how, &robtarget, &via) {
-            // An approach or retract pose in another configuration than its point: its own.
-            (TargetKind::Approach { .. }, _, Some(r), _) => ("MoveJ", r.name.clone(), ""),
-            (TargetKind::Retract { .. }, _, Some(r), _) => ("MoveL", r.name.clone(), ""),
-            (TargetKind::Approach { point }, _, _, _) => ("MoveJ", rel_tool(point)?, ""),
-            (TargetKind::Retract { point }, _, _, _) => ("MoveL", rel_tool(point)?, ""),
-            (_, MoveHow::Circular { .. }, Some(r), Some(v)) => {
-                ("MoveC", format!("{}, {}", v.name, r.name), "")
-            }
-            (_, MoveHow::Linear, Some(r), _) => ("MoveL", r.name.clone(), ""),
-            (_, _, Some(r), _) => ("MoveJ", r.name.clone(), ""),
-            (_, _, None, _) => ("MoveAbsJ", name.clone(), "\\NoEOffs"),
-        };
-        let mut actions = Vec::with_capacity(target.actions.len());
-        for a in &target.actions {
-            actions.push(match a {
-                Action::SetDo { signal, value } => format!("SetDO {signal}, {}", u8::from(*value)),
-                Action::PulseDo { signal } => format!("PulseDO {signal}"),
-                Action::WaitDi { signal, value } => {
-                    format!("WaitDI {signal}, {}", u8::from(*value))
+        let w = &written[moves.len()];
+        // The digital outputs the routine's own SetDO leave at 1 before this move and after
+        // its actions (a template tells a seam by them, e.g. the weld signal on).
+        let outputs_on = outputs.clone();
+        for a in &w.actions {
+            if let (Some(signal), Some(value)) = (&a.signal, a.value) {
+                if a.kind == "set_do" {
+                    match value {
+                        1 => outputs.insert(signal.clone()),
+                        _ => outputs.remove(signal),
+                    };
                 }
-                Action::WaitTime { time_s } => format!(
-                    "WaitTime {}",
-                    format_fixed(finite("a wait time", *time_s)?, WAIT_TIME_DECIMALS)
-                ),
-                Action::GripLoad { load } => format!("GripLoad {load}"),
-            });
+            }
         }
         moves.push(MoveCtx {
             args: format!(
-                "{to}{offs}, {}, {}, {}{wobj_arg}",
-                target.speed, target.zone, program.tool
+                "{}, {}, {}, {}{wobj_arg}",
+                w.points(),
+                target.speed,
+                target.zone,
+                program.tool
             ),
-            instruction,
-            kind: match (&target.kind, &target.how) {
-                (TargetKind::Approach { .. }, _) => "joint",
-                (TargetKind::Retract { .. }, _) => "retract",
-                (_, MoveHow::Circular { .. }) => "circular",
-                (_, MoveHow::Linear) if target.offset_mm.is_some() => "approach",
-                (_, MoveHow::Linear) => "linear",
-                (_, MoveHow::Joint) => "joint",
+            instruction: w.instruction,
+            kind: w.kind,
+            actions: w.actions.clone(),
+            target: match &w.circle_point {
+                Some(c) => format!("{c}, {}", w.to),
+                None => w.to.clone(),
             },
-            actions,
-            target: to,
+            to: w.to.clone(),
+            point: w.point.clone(),
+            robtarget: w.robtarget.clone(),
+            jointtarget: w.jointtarget.clone(),
+            circle_point: w.circle_point.clone(),
+            offset_mm: w.offset_mm.clone(),
+            outputs_on: outputs_on.into_iter().collect(),
+            outputs_on_after: outputs.iter().cloned().collect(),
             speed: target.speed.clone(),
             zone: target.zone.clone(),
             tool: program.tool.clone(),
@@ -884,6 +900,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
         wobj_arg,
         targets,
         moves,
+        settings: template.settings.clone(),
     };
     let text = template.render(&ctx)?;
     debug_assert!(

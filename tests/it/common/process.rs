@@ -10,10 +10,14 @@
 //! end admitted for the target's confdata, the clearance at every sample and along each chord
 //! between samples (the dense check, links and tool), and the header's smallest clearance a
 //! lower bound of what the samples measure. The robtargets are the cell's poses; the actions
-//! the cell's, in order, after the move into their point. A MoveC's circle point has the
-//! confdata of the joints at its arc fraction. With `robot.frame: base` (the header's frames
-//! line) the controller's world frame is its base frame, placed as the header says: the user
-//! frame and wobj0 robtargets are read in it.
+//! the cell's, in order, after the move into their point. Arc-welding instructions run as the
+//! `MoveL`/`MoveC` they make (`routine.rs`); with a weld signal given
+//! ([`check_process_welding`]), an `ArcLStart`/`ArcCStart` counts as `SetDO <signal>, 1` and an
+//! `ArcLEnd`/`ArcCEnd` as `SetDO <signal>, 0` right after its move (where the arc goes on and
+//! off), so the weld is switched where and in the order the cell switches it.
+//! A MoveC's circle point has the confdata of the joints at its arc fraction. With
+//! `robot.frame: base` (the header's frames line) the controller's world frame is its base
+//! frame, placed as the header says: the user frame and wobj0 robtargets are read in it.
 
 use super::dense::Scene;
 use super::library::{load_robot, Cell, Target};
@@ -114,6 +118,17 @@ fn arc_fraction(a: Point3<f64>, b: Point3<f64>, c: Point3<f64>) -> f64 {
 /// Runs `text`, the module written for `cell`, as the module docs say; `label` names it in
 /// messages. Every failure is collected.
 pub fn check_process(cell: &Cell, text: &str, label: &str) -> Result<Run, Vec<String>> {
+    check_process_welding(cell, text, label, None)
+}
+
+/// [`check_process`] of a module whose seams are arc-welding instructions switching `signal`
+/// (module docs).
+pub fn check_process_welding(
+    cell: &Cell,
+    text: &str,
+    label: &str,
+    signal: Option<&str>,
+) -> Result<Run, Vec<String>> {
     let module = Module::parse(text).map_err(|e| vec![format!("{label}: {e}")])?;
     let robot = load_robot(cell);
     let ik = Ik::new(&robot).map_err(|e| vec![e])?;
@@ -349,6 +364,15 @@ pub fn check_process(cell: &Cell, text: &str, label: &str) -> Result<Run, Vec<St
         .body
         .iter()
         .filter_map(|s| match &s.ins {
+            Instruction::Move(m) => {
+                let arc = m.arc.as_ref()?.instruction.as_str();
+                let value = match () {
+                    _ if arc.ends_with("Start") => 1,
+                    _ if arc.ends_with("End") => 0,
+                    _ => return None,
+                };
+                signal.map(|signal| format!("SetDO {signal}, {value}"))
+            }
             Instruction::Action(a) => Some(match a {
                 Action::SetDo { signal, value } => format!("SetDO {signal}, {value}"),
                 Action::PulseDo { signal } => format!("PulseDO {signal}"),

@@ -2,7 +2,11 @@
 //! writes (not through the library's types): the motion instructions `MoveAbsJ`, `MoveJ`,
 //! `MoveL` and `MoveC` with a target that is a data name or `RelTool(name, dx, dy, dz)`, their
 //! speed, zone, tool and `\WObj:=`; `ConfJ` and `ConfL`; and the actions `SetDO`, `PulseDO`,
-//! `WaitDI`, `WaitTime` and `GripLoad` with their plain arguments. Anything else in the routine
+//! `WaitDI`, `WaitTime` and `GripLoad` with their plain arguments; and RobotWare Arc's welding
+//! instructions, which move the TCP as `MoveL` (`ArcLStart`, `ArcL`, `ArcLEnd`) and `MoveC`
+//! (`ArcCStart`, `ArcC`, `ArcCEnd`) do, with a seamdata and a welddata name between the speed
+//! and the zone (`ArcL p, v50, seam1, weld1, fine, tTorch\WObj:=wobj1;`, no optional
+//! argument). Anything else in the routine
 //! (another instruction, an optional argument such as `\SDelay:=`, `\Conc` or `\V:=`, a
 //! function other than `RelTool`, a malformed number) is refused with the line, so a module that
 //! runs something this check does not simulate fails.
@@ -83,6 +87,18 @@ pub struct Motion {
     pub tool: String,
     /// `\WObj:=` (None: wobj0).
     pub wobj: Option<String>,
+    /// An arc-welding instruction's name (`ArcLStart`, ...) with its seamdata and welddata;
+    /// None for a `Move` instruction.
+    pub arc: Option<Box<Arc>>,
+}
+
+/// What an arc-welding instruction adds to the move it makes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Arc {
+    /// `ArcLStart`, `ArcL`, `ArcLEnd`, `ArcCStart`, `ArcC` or `ArcCEnd`.
+    pub instruction: String,
+    pub seam: String,
+    pub weld: String,
 }
 
 /// One action between motion instructions, with its arguments as written.
@@ -161,7 +177,8 @@ pub fn statement(line: &str) -> Result<Option<Instruction>, String> {
                 _ => Instruction::ConfL(on),
             }
         }
-        "MoveAbsJ" | "MoveJ" | "MoveL" | "MoveC" => {
+        "MoveAbsJ" | "MoveJ" | "MoveL" | "MoveC" | "ArcLStart" | "ArcL" | "ArcLEnd"
+        | "ArcCStart" | "ArcC" | "ArcCEnd" => {
             Instruction::Move(motion(word, rest).map_err(|e| bad(&e))?)
         }
         "SetDO" | "WaitDI" => {
@@ -189,7 +206,7 @@ pub fn statement(line: &str) -> Result<Option<Instruction>, String> {
             let s = decimal(rest).map_err(|e| bad(&e))?;
             Instruction::Action(Action::WaitTime { s })
         }
-        _ => return Err(bad("not an instruction this check knows (the grammar of the module's routine: MoveAbsJ, MoveJ, MoveL, MoveC, ConfJ, ConfL, SetDO, PulseDO, WaitDI, WaitTime, GripLoad)")),
+        _ => return Err(bad("not an instruction this check knows (the grammar of the module's routine: MoveAbsJ, MoveJ, MoveL, MoveC, ArcLStart, ArcL, ArcLEnd, ArcCStart, ArcC, ArcCEnd, ConfJ, ConfL, SetDO, PulseDO, WaitDI, WaitTime, GripLoad)")),
     };
     Ok(Some(ins))
 }
@@ -199,19 +216,35 @@ fn motion(word: &str, rest: &str) -> Result<Motion, String> {
     let kind = match word {
         "MoveAbsJ" => MoveKind::AbsJ,
         "MoveJ" => MoveKind::J,
-        "MoveL" => MoveKind::L,
+        "MoveL" | "ArcLStart" | "ArcL" | "ArcLEnd" => MoveKind::L,
         _ => MoveKind::C,
     };
+    let welds = word.starts_with("Arc");
     let parts = args(rest)?;
     let points = if kind == MoveKind::C { 2 } else { 1 };
-    if parts.len() != points + 3 {
+    let data = if welds { 2 } else { 0 };
+    if parts.len() != points + 3 + data {
         return Err(format!(
-            "{word} takes {} arguments (target{}, speed, zone, tool), found {}",
-            points + 3,
+            "{word} takes {} arguments (target{}, speed, {}zone, tool), found {}",
+            points + 3 + data,
             if points == 2 { "s" } else { "" },
+            if welds { "seam, weld, " } else { "" },
             parts.len()
         ));
     }
+    let mut parts = parts;
+    let arc = match welds {
+        true => {
+            let weld = identifier(parts.remove(points + 2))?;
+            let seam = identifier(parts.remove(points + 1))?;
+            Some(Box::new(Arc {
+                instruction: word.to_string(),
+                seam,
+                weld,
+            }))
+        }
+        false => None,
+    };
     let mut targets = Vec::new();
     for p in &parts[..points] {
         targets.push(match kind {
@@ -239,6 +272,7 @@ fn motion(word: &str, rest: &str) -> Result<Motion, String> {
         zone,
         tool,
         wobj,
+        arc,
     })
 }
 
