@@ -24,17 +24,12 @@
 //! loaddata the module declares ([`Load`], for `grip_load`); several work objects (each robtarget
 //! point names its own, [`Point::wobj`]), orientations as RAPID's `OrientZYX` angles (read into
 //! the same normalised quaternions), revisits of a point's target ([`Point::revisit_of`]), the
-//! closed cycle ([`Motion::cycle`]) and the frame uframes are written in ([`RobotFrame`]). The
-//! later stages do not use all of these yet: [`unsupported`] says which, and the pipeline
-//! refuses a cell that uses them.
+//! closed cycle ([`Motion::cycle`]) and the frame uframes are written in ([`RobotFrame`]).
 
 mod present;
 mod raw;
 mod syntax;
-mod unsupported;
 mod validate;
-
-pub use unsupported::unsupported;
 
 use crate::geometry::Aabb;
 use crate::robot::ik::six::ConfData;

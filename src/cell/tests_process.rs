@@ -1,7 +1,6 @@
 //! Tests of the cell stage's process keys: `move` (with `via`), `approach`, `retract`, the
-//! actions of `do`, `loads`, the signals in the module's name space, and the guard that refuses
-//! what the later stages do not carry out (`unsupported`): what they give, and every refusal at
-//! its line.
+//! actions of `do`, `loads`, the signals in the module's name space: what they give, and every
+//! refusal at its line.
 
 use super::*;
 
@@ -359,53 +358,4 @@ fn a_signal_used_twice_the_same_way_is_one_signal() {
     );
     // An output pulsed and set is one output too.
     parse_str(&seam_with("pulse_do: doDone", "pulse_do: DOWELD")).expect("one output");
-}
-
-#[test]
-fn the_guard_refuses_what_the_later_stages_do_not_carry_out_at_its_first_line() {
-    let plain = "module: M\nrobot:\n  urdf: ../robots/r.urdf\n  base: [0, 0, 0]\npoints:\n  - { name: A, joints: [1, 2, 3] }\n  - { name: B, robtarget: [[600, 0, 500], { zyx: [0, 180, 0] }], move: joint }\nmotion:\n  cycle: false\n";
-    let c = parse_str(plain).expect("valid");
-    unsupported(&c).expect("zyx, `move: joint` and `cycle: false` are carried out");
-    let wobj = "wobjs:\n  - { name: wA, uframe: [[0, 0, 0], [1, 0, 0, 0]] }\n";
-    let c = parse_str(&format!("{plain}{wobj}")).expect("one work object in a list");
-    unsupported(&c).expect("one work object");
-    let base = plain.replace("  base: [0, 0, 0]\n", "  base: [0, 0, 0]\n  frame: base\n");
-    unsupported(&parse_str(&base).expect("valid")).expect("`robot.frame: base` is carried out");
-    // Process moves, approach and retract lines, actions and loads are carried out.
-    unsupported(&parse_str(SEAM).expect("valid")).expect("the seam is carried out");
-    // Several work objects are carried out.
-    let two = format!("{plain}{wobj}  - {{ name: wB, uframe: [[0, 0, 0], [1, 0, 0, 0]] }}\n")
-        .replace("move: joint", "move: joint, wobj: wB");
-    unsupported(&parse_str(&two).expect("valid")).expect("two work objects are carried out");
-    let cases = [(
-        base.replace("move: joint", "move: joint, retract: 50"),
-        "`robot.frame: base` with process moves",
-        "frame: base",
-    )];
-    // Revisits and the closed cycle are carried out.
-    let revisit = plain.replace("motion:\n", "  - { revisit: a }\nmotion:\n");
-    unsupported(&parse_str(&revisit).expect("valid")).expect("a revisit is carried out");
-    let cycle = plain.replace("cycle: false", "cycle: true");
-    assert!(cycle.contains("cycle: true"));
-    unsupported(&parse_str(&cycle).expect("valid")).expect("the cycle is carried out");
-    for (text, needle, at) in cases {
-        let c = parse_str(&text).unwrap_or_else(|e| panic!("{needle}: {e}\n{text}"));
-        let err = unsupported(&c).expect_err(needle);
-        assert!(err.to_string().contains(needle), "'{err}' lacks '{needle}'");
-        assert!(
-            err.to_string()
-                .ends_with("is read but not yet planned or written"),
-            "{err}"
-        );
-        assert_eq!(
-            err.loc().map(|l| l.line),
-            Some(line_of(&text, at)),
-            "{needle}: {err}"
-        );
-        assert!(
-            err.help()
-                .is_some_and(|h| h.starts_with("not yet supported")),
-            "{err:?}"
-        );
-    }
 }

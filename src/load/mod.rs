@@ -48,8 +48,7 @@ impl Loaded {
     }
 }
 
-/// Reads the cell file and the robot it names. A cell that asks for what the later stages do
-/// not carry out is refused at its line (`cell::unsupported`). A robot file's error points at
+/// Reads the cell file and the robot it names. A robot file's error points at
 /// the cell's line that names it (`robot.controller` for the controller file when given, else
 /// `robot.urdf`).
 pub fn load(path: &Path) -> Result<Loaded, Failure> {
@@ -60,7 +59,7 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
         notes: Vec::new(),
     };
     let text = cell::read(path).map_err(|e| fail(e.into(), None))?;
-    let cell = match cell::parse(path, &text).and_then(|c| cell::unsupported(&c).map(|()| c)) {
+    let cell = match cell::parse(path, &text) {
         Ok(c) => c,
         Err(e) => return Err(fail(e.into(), Some(text))),
     };

@@ -14,7 +14,7 @@ use super::rapid::{
 use crate::cell::{ActionKind, Cell, Frame};
 use crate::place::{Origin, Placed};
 use crate::plan::WaypointKind;
-use crate::refine::{MoveKind, Plan};
+use crate::refine::{MoveKind, OwnTarget, Plan};
 use crate::robot::{Coupling, Robot};
 use std::path::Path;
 
@@ -102,7 +102,17 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             .map(|p| p.name.clone())
             .unwrap_or_default()
     };
-    let kinds = std::iter::once(MoveKind::Joint).chain(plan.moves.iter().map(|m| m.kind));
+    let kinds: Vec<MoveKind> = std::iter::once(MoveKind::Joint)
+        .chain(plan.moves.iter().map(|m| m.kind))
+        .collect();
+    // An approach or retract pose's own robtarget: on the approach line out of it, on the
+    // retract line into it.
+    let own = |o: &Option<OwnTarget>| {
+        o.map(|o| RobTarget {
+            pose: pose(&o.pose),
+            conf: o.conf.to_array(),
+        })
+    };
     // The entries reached so far: an entry reached again (the leg closing the cycle) is a
     // revisit without actions.
     let mut reached = vec![false; cell.points.len()];
@@ -111,8 +121,9 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
         .waypoints
         .iter()
         .zip(plan.motions())
-        .zip(kinds)
-        .map(|((w, motion), move_kind)| {
+        .enumerate()
+        .map(|(k, (w, motion))| {
+            let move_kind = kinds.get(k).copied().unwrap_or(MoveKind::Joint);
             let (kind, robtarget, actions) = match w.kind {
                 WaypointKind::CellPoint(i) => {
                     let again = reached.get(i).copied().unwrap_or(false);
@@ -133,12 +144,22 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
                 WaypointKind::Via { leg, index } => {
                     (TargetKind::Via { leg, index }, None, Vec::new())
                 }
-                WaypointKind::Approach(i) => {
-                    (TargetKind::Approach { point: name_of(i) }, None, Vec::new())
-                }
-                WaypointKind::Retract(i) => {
-                    (TargetKind::Retract { point: name_of(i) }, None, Vec::new())
-                }
+                WaypointKind::Approach(i) => (
+                    TargetKind::Approach { point: name_of(i) },
+                    match kinds.get(k + 1) {
+                        Some(MoveKind::Approach { own: o, .. }) => own(o),
+                        _ => None,
+                    },
+                    Vec::new(),
+                ),
+                WaypointKind::Retract(i) => (
+                    TargetKind::Retract { point: name_of(i) },
+                    match move_kind {
+                        MoveKind::Retract { own: o, .. } => own(&o),
+                        _ => None,
+                    },
+                    Vec::new(),
+                ),
             };
             // The entry the move goes towards: a via's is its leg's end (the first entry for
             // the leg closing the cycle).
@@ -151,12 +172,13 @@ pub fn build(cell: &Cell, placed: &Placed, plan: &Plan, robot: &RobotFacts) -> P
             let (how, offset_mm) = match move_kind {
                 MoveKind::Joint => (MoveHow::Joint, None),
                 MoveKind::Linear => (MoveHow::Linear, None),
-                MoveKind::Approach { dz_mm } => (MoveHow::Linear, Some(dz_mm)),
-                MoveKind::Retract { dz_mm } => (MoveHow::Linear, Some(dz_mm)),
+                MoveKind::Approach { dz_mm, .. } => (MoveHow::Linear, Some(dz_mm)),
+                MoveKind::Retract { dz_mm, .. } => (MoveHow::Linear, Some(dz_mm)),
+                // The circle point's numbers as the follow stage wrote them.
                 MoveKind::Circular { via, via_conf } => (
                     MoveHow::Circular {
                         via: RobTarget {
-                            pose: pose(&robtarget_as_written(towards, &via)),
+                            pose: pose(&via),
                             conf: via_conf.to_array(),
                         },
                     },

@@ -73,6 +73,32 @@ impl Placement {
             quat_wxyz: quat.map(|v| sign * v + 0.0),
         }
     }
+
+    /// The numbers the module writes for a robtarget pose the cell gives in a work object whose
+    /// user frame is `uframe` (`None`: wobj0), rounded as written: in a work object the pose as
+    /// given (the uframe carries the frame), in wobj0 [`Self::written`].
+    pub fn robtarget_data(&self, frame: RobotFrame, uframe: Option<&Frame>, pose: &Frame) -> Frame {
+        match uframe {
+            Some(_) => pose.written(),
+            None => self.written(frame, pose).written(),
+        }
+    }
+
+    /// The frame a robtarget's written numbers ([`Self::robtarget_data`]) are in, as the
+    /// controller reads them, in the cell frame: the user frame as written (with `base`, written
+    /// in the base frame and placed by the base), or without a work object the world frame (the
+    /// cell frame; with `base`, the base frame). So a pose written `d` is the cell pose
+    /// `data_frame * d`.
+    pub fn data_frame(&self, frame: RobotFrame, uframe: Option<&Frame>) -> Isometry3<f64> {
+        match (frame, uframe) {
+            (RobotFrame::Cell, Some(u)) => u.written().isometry(),
+            (RobotFrame::Cell, None) => Isometry3::identity(),
+            (RobotFrame::Base, Some(u)) => {
+                self.cell_from_robot() * self.written(RobotFrame::Base, u).isometry()
+            }
+            (RobotFrame::Base, None) => self.cell_from_robot(),
+        }
+    }
 }
 
 #[cfg(test)]
@@ -138,5 +164,49 @@ mod tests {
         // Rz(-30) = [cos 15, 0, 0, -sin 15].
         let (s15, c15) = 15f64.to_radians().sin_cos();
         assert_eq!(w.quat_wxyz, [round(c15, 9), 0.0, 0.0, round(-s15, 9)]);
+    }
+
+    /// The written data in their frame are the cell's pose, in each of the four cases (the cell
+    /// or the base frame, a work object or wobj0), to the written rounding.
+    #[test]
+    fn data_in_their_frame_are_the_cells_pose() {
+        let pl = Placement {
+            base_mm: [100.0, -850.0, 20.0],
+            yaw_deg: 30.0,
+        };
+        let u = Frame {
+            pos_mm: [-830.0, -380.0, 100.0],
+            quat_wxyz: [0.9238795, 0.0, 0.0, 0.3826834],
+        };
+        let u = Frame {
+            quat_wxyz: {
+                let q = u.isometry().rotation.into_inner();
+                [q.w, q.i, q.j, q.k]
+            },
+            ..u
+        };
+        let pose = Frame {
+            pos_mm: [330.0, 280.0, 0.0],
+            quat_wxyz: [0.1830127, -0.6830127, -0.6830127, -0.1830127],
+        };
+        for frame in [RobotFrame::Cell, RobotFrame::Base] {
+            for uframe in [Some(&u), None] {
+                let want = uframe.map_or(Isometry3::identity(), |u| u.isometry()) * pose.isometry();
+                let data = pl.robtarget_data(frame, uframe, &pose);
+                let got = pl.data_frame(frame, uframe) * data.isometry();
+                let mm = (got.translation.vector - want.translation.vector).norm();
+                let deg = got.rotation.angle_to(&want.rotation).to_degrees();
+                assert!(
+                    mm < 2e-3 && deg < 1e-5,
+                    "{frame:?} {uframe:?}: {mm} mm {deg} deg"
+                );
+                // The data are as written: rounding them again changes nothing.
+                assert_eq!(data.written(), data, "{frame:?} {uframe:?}");
+            }
+        }
+        // In the base frame without a work object the data are the base-frame pose.
+        let d = pl.robtarget_data(RobotFrame::Base, None, &pose);
+        assert_eq!(d, pl.written(RobotFrame::Base, &pose));
+        assert_eq!(pl.data_frame(RobotFrame::Base, None), pl.cell_from_robot());
     }
 }

@@ -1,4 +1,5 @@
-//! The follow stage (beyond the paper): the cell's process moves resolved, followed and proven
+//! The follow stage (beyond the paper; long: the stops, how each is reached and their splice
+//! into one plan are one stage): the cell's process moves resolved, followed and proven
 //! before the air route is planned between them. [`follow`]: `Cell` + `Placed` + the collision
 //! model -> [`Followed`], the *stops* in the routine's order and how each is reached; [`splice`]
 //! puts the refined air plans and the process moves together into the one `Plan` the module
@@ -26,13 +27,29 @@
 //! joints (a robtarget's the inverse of its robtarget as written, in its confdata; the end of
 //! a followed move must agree with them); at an approach pose the inverse of the pose in the
 //! point's confdata (what `MoveJ RelTool(p, 0, 0, -D)` reaches with ConfJ on); at a retract
-//! pose the followed line's end. An approach or retract pose that lies in another configuration
-//! quadrant than its point (which would need a robtarget of its own) is refused.
+//! pose the followed line's end. An approach pose with no solution in the point's
+//! configuration is reached in the configuration the approach line, run backwards from the
+//! point, reaches it in, and a retract line that ends in another configuration ends there: such
+//! a pose is written as its own robtarget (`OwnTarget`, `<point>_app` / `<point>_ret`: the pose
+//! moved back along the tool's z axis, its position rounded as written, in that configuration),
+//! and its joints are the exact inverse of those written numbers.
+//!
+//! **As written.** Every pose is built from the numbers the module writes, in the frame it
+//! writes them in (`Placement::robtarget_data`, `Placement::data_frame`: the cell frame, or
+//! with `robot.frame: base` the robot's base frame, a wobj0 robtarget rounded there): the
+//! target, its `RelTool` poses, the circle point's position. So the path proven is the one the
+//! controller computes from the module. The circle point is written with the orientation at its
+//! arc fraction and the confdata of the followed joints there.
+//!
+//! **Zones.** A corner next to a process move (the point reached or left by one) is not proven
+//! yet: the point is reached `fine`, and a zone asked there is warned about.
 
-use crate::cell::{Arrival, Cell, Frame, Loc, Point, Target};
+mod poses;
+
+use crate::cell::{Arrival, Cell, Frame, Loc, Point, RobotFrame, Target};
 use crate::collision::{CollisionModel, PathBlocked, PathClearance};
-use crate::geometry::path::{rel_tool, CartesianPath, PathError};
-use crate::place::{MoveMotion, Origin, Placed, PlacedPoint};
+use crate::geometry::path::{CartesianPath, PathError};
+use crate::place::{MoveMotion, Origin, Placed, PlacedPoint, Placement};
 use crate::plan::motion::MoveEstimate;
 use crate::plan::{Leg, Route, Waypoint, WaypointKind};
 use crate::rapid_data::predefined_speed;
@@ -42,6 +59,7 @@ use crate::robot::ik::six::{ConfData, SixAxisError, SixAxisIk};
 use crate::robot::{Axes6, Robot};
 use crate::timing::process::{process_move_time, ProcessTime};
 use nalgebra::{Isometry3, Point3};
+use poses::{approach_pose, retract_line, Written};
 use std::ops::Range;
 
 /// How far the end of a followed move may lie from the joints placed for its target, deg: the
@@ -253,13 +271,17 @@ impl ProcessError {
     }
 }
 
-/// The robot, tool and work object a cell's process moves run with.
+/// The robot, tool and work object a cell's process moves run with, and the frame the module
+/// writes their robtargets in.
 struct Setting<'a> {
     ik: SixAxisIk,
     robot: &'a Robot,
     frames: TcpFrames,
-    /// The work objects' user frames in the cell frame, as written, in the cell's order.
-    uframes: Vec<Isometry3<f64>>,
+    placement: Placement,
+    /// `robot.frame`: the frame the module writes the uframe and wobj0 robtargets in.
+    frame: RobotFrame,
+    /// The work objects' user frames as the cell gives them, in the cell's order.
+    uframes: Vec<Frame>,
 }
 
 impl Setting<'_> {
@@ -268,16 +290,42 @@ impl Setting<'_> {
         self.frames.cell_from_robot * self.robot.tool0(joints) * self.frames.tframe
     }
 
-    /// The user frame of work object `wobj` (`Point::wobj`; `None`: wobj0, the cell frame).
-    fn uframe(&self, wobj: Option<usize>) -> Isometry3<f64> {
+    /// The user frame of work object `wobj` as the cell gives it (`Point::wobj`; `None`:
+    /// wobj0).
+    fn uframe(&self, wobj: Option<usize>) -> Option<&Frame> {
         wobj.and_then(|i| self.uframes.get(i))
-            .copied()
-            .unwrap_or_else(Isometry3::identity)
     }
 
-    /// A robtarget pose in work object `wobj` as written, cell frame.
-    fn pose_in_cell(&self, pose: &Frame, wobj: Option<usize>) -> Isometry3<f64> {
-        self.uframe(wobj) * pose.written().isometry()
+    /// The numbers the module writes for a robtarget pose of the cell in work object `wobj`
+    /// (`Placement::robtarget_data`).
+    fn data(&self, pose: &Frame, wobj: Option<usize>) -> Frame {
+        self.placement
+            .robtarget_data(self.frame, self.uframe(wobj), pose)
+    }
+
+    /// The cell pose of robtarget numbers as written in work object `wobj`: what the
+    /// controller runs to.
+    fn in_cell(&self, data: &Frame, wobj: Option<usize>) -> Isometry3<f64> {
+        self.placement.data_frame(self.frame, self.uframe(wobj)) * data.isometry()
+    }
+
+    /// Pose `tcp` (cell frame) as robtarget numbers written in the module's frame and work
+    /// object `wobj`, its quaternion of the sign nearest `like`'s (the point it belongs to).
+    fn written(&self, tcp: &Isometry3<f64>, like: &Frame, wobj: Option<usize>) -> Frame {
+        let d = self
+            .placement
+            .data_frame(self.frame, self.uframe(wobj))
+            .inverse()
+            * tcp;
+        let q = d.rotation.into_inner();
+        let quat = [q.w, q.i, q.j, q.k];
+        let dot: f64 = quat.iter().zip(like.quat_wxyz).map(|(a, b)| a * b).sum();
+        let sign = if dot < 0.0 { -1.0 } else { 1.0 };
+        Frame {
+            pos_mm: [d.translation.x, d.translation.y, d.translation.z],
+            quat_wxyz: quat.map(|v| sign * v),
+        }
+        .written()
     }
 
     /// The joints `MoveJ` reaches for TCP pose `tcp` (cell frame) in configuration `conf`: the
@@ -328,37 +376,39 @@ pub fn follow(
             speed: motion.speed.clone(),
             zone: "fine".into(),
         };
+        // A point reached through the air keeps its zone unless it stops there or the move out
+        // of it is a process move (its corner is not proven: `fine`, with a warning).
+        let before_process = cell
+            .points
+            .get(i + 1)
+            .is_some_and(|q| q.arrival.is_process());
+        if before_process && !p.arrival.is_process() {
+            warn_zone(&mut out.warnings, p, &motion);
+        }
+        let air_motion = match p.stops() || before_process {
+            true => fine.clone(),
+            false => motion.clone(),
+        };
         let (Some(s), Target::Robtarget { pose, .. }, Origin::Robtarget { conf, .. }) =
             (&setting, &p.target, &placed_point.origin)
         else {
             out.stops.push(Stop {
                 kind: StopKind::Entry(i),
                 joints_deg: placed_point.joints_deg,
-                motion: match p.stops() {
-                    true => fine,
-                    false => motion,
-                },
+                motion: air_motion,
             });
             out.into.push(Reach::Air);
             continue;
         };
-        let conf = *conf;
-        let target = s.pose_in_cell(pose, p.wobj);
+        let point = Written {
+            data: s.data(pose, p.wobj),
+            conf: *conf,
+        };
+        let target = s.in_cell(&point.data, p.wobj);
         let at = placed_point.joints_deg;
-        let label = p.label();
         // Into the point: an approach line, a process move, or the air.
         if let Some(d) = p.approach_mm {
-            let kind = MoveKind::Approach { dz_mm: d };
-            let app = rel_tool(&target, 0.0, 0.0, -d);
-            let app_joints = s.joints_in(&app, conf, &at).ok_or_else(|| ProcessError::Pose {
-                label: label.clone(),
-                what: "the approach pose",
-                why: format!(
-                    "RelTool({}, 0, 0, -{d}) has no solution in range in the point's configuration {conf}",
-                    p.name
-                ),
-                loc: p.approach_loc,
-            })?;
+            let (app, app_joints, own) = approach_pose(s, p, &point, &target, &at, d)?;
             out.stops.push(Stop {
                 kind: StopKind::Approach(i),
                 joints_deg: app_joints,
@@ -370,12 +420,12 @@ pub fn follow(
                 model,
                 p,
                 &motion.speed,
-                kind,
+                MoveKind::Approach { dz_mm: d, own },
                 &app,
                 &target,
                 None,
                 &app_joints,
-                conf,
+                Some(point.conf),
             )?;
             agree(p, &m, &at, p.approach_loc)?;
             warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
@@ -388,34 +438,40 @@ pub fn follow(
         } else if let (true, Some(before)) = (p.arrival.is_process(), out.stops.last()) {
             let from = before.joints_deg;
             let start = s.tcp(&from);
-            let (kind, via) = match p.arrival {
+            let via = match p.arrival {
+                // The circle point's position as written, in the cell frame.
                 Arrival::Circular { via_mm, .. } => {
-                    let via = s.uframe(p.wobj) * Point3::from(via_mm);
-                    (MoveKind::Linear, Some(via))
+                    let given = Frame {
+                        pos_mm: via_mm,
+                        quat_wxyz: Frame::IDENTITY.quat_wxyz,
+                    };
+                    let written = Frame {
+                        quat_wxyz: Frame::IDENTITY.quat_wxyz,
+                        ..s.data(&given, p.wobj)
+                    };
+                    Some((
+                        written,
+                        s.in_cell(&written, p.wobj).translation.vector.into(),
+                    ))
                 }
-                _ => (MoveKind::Linear, None),
+                _ => None,
             };
             let m = process_move(
                 s,
                 model,
                 p,
                 &motion.speed,
-                kind,
+                MoveKind::Linear,
                 &start,
                 &target,
-                via,
+                via.map(|(w, cell)| (w.pos_mm, cell, point.data)),
                 &from,
-                conf,
+                Some(point.conf),
             )?;
             agree(p, &m, &at, p.arrival_loc)?;
             warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
             // A corner next to a process move is not proven yet: `fine`.
-            if p.zone.as_deref().is_some_and(|z| z != "fine") {
-                out.warnings.push(format!(
-                    "warning: {label}: zone {} is written fine: the corner next to a process move is not proven",
-                    motion.zone
-                ));
-            }
+            warn_zone(&mut out.warnings, p, &motion);
             out.stops.push(Stop {
                 kind: StopKind::Entry(i),
                 joints_deg: at,
@@ -426,29 +482,13 @@ pub fn follow(
             out.stops.push(Stop {
                 kind: StopKind::Entry(i),
                 joints_deg: at,
-                motion: match p.stops() {
-                    true => fine.clone(),
-                    false => motion.clone(),
-                },
+                motion: air_motion,
             });
             out.into.push(Reach::Air);
         }
         // Out of the point: the retract line, after the actions.
         if let Some(d) = p.retract_mm {
-            let kind = MoveKind::Retract { dz_mm: d };
-            let ret = rel_tool(&target, 0.0, 0.0, -d);
-            let m = process_move(
-                s,
-                model,
-                p,
-                &motion.speed,
-                kind,
-                &target,
-                &ret,
-                None,
-                &at,
-                conf,
-            )?;
+            let m = retract_line(s, model, p, &motion.speed, &point, &target, &at, d)?;
             warn_speed(s, &mut out.warnings, p, &m, &motion.speed);
             out.stops.push(Stop {
                 kind: StopKind::Retract(i),
@@ -486,23 +526,32 @@ fn setting_of<'a>(
         why: e.to_string(),
         loc: cell.robot.urdf_loc,
     })?;
-    let written = |f: Option<Frame>| f.unwrap_or(Frame::IDENTITY).written().isometry();
     Ok(Setting {
         ik,
         robot,
         frames: TcpFrames {
             cell_from_robot: placed.placement.cell_from_robot(),
-            tframe: written(cell.tool.as_ref().map(|t| t.tframe)),
+            tframe: cell
+                .tool
+                .as_ref()
+                .map_or(Frame::IDENTITY, |t| t.tframe)
+                .written()
+                .isometry(),
         },
-        uframes: (cell.wobjs.iter())
-            .map(|w| written(Some(w.uframe)))
-            .collect(),
+        placement: placed.placement,
+        frame: cell.robot.frame,
+        uframes: cell.wobjs.iter().map(|w| w.uframe).collect(),
     })
 }
 
+/// The circle point of an arc: its position as written (the module's frame for the point's
+/// robtargets), the same in the cell frame, and the point's robtarget numbers (whose
+/// quaternion's sign the circle point's takes).
+type CirclePoint = ([f64; 3], Point3<f64>, Frame);
+
 /// Follows, proves and times one process move of point `p` from `start` (joints `from`) to
-/// `end` (through `via` for an arc), ending in `conf`, timed at `speed` (the speeddata it is
-/// written with: the point's own, else `motion.speed`).
+/// `end` (through `via` for an arc), ending in `conf` if given, timed at `speed` (the speeddata
+/// it is written with: the point's own, else `motion.speed`).
 #[allow(clippy::too_many_arguments)]
 fn process_move(
     s: &Setting,
@@ -512,50 +561,33 @@ fn process_move(
     kind: MoveKind,
     start: &Isometry3<f64>,
     end: &Isometry3<f64>,
-    via: Option<Point3<f64>>,
+    via: Option<CirclePoint>,
     from: &Axes6,
-    conf: ConfData,
+    conf: Option<ConfData>,
 ) -> Result<ProcessMove, ProcessError> {
-    let (loc, kind) = match (&kind, via, p.arrival) {
-        (MoveKind::Approach { .. }, _, _) => (p.approach_loc, kind),
-        (MoveKind::Retract { .. }, _, _) => (p.retract_loc, kind),
-        (_, Some(_), Arrival::Circular { via_loc, .. }) => (via_loc, kind),
-        _ => (p.arrival_loc, kind),
+    let loc = match (&kind, via, p.arrival) {
+        (MoveKind::Approach { .. }, _, _) => p.approach_loc,
+        (MoveKind::Retract { .. }, _, _) => p.retract_loc,
+        (_, Some(_), Arrival::Circular { via_loc, .. }) => via_loc,
+        _ => p.arrival_loc,
     };
     let label = p.label();
     let path = match via {
-        Some(v) => CartesianPath::arc(start, &v, end),
+        Some((_, v, _)) => CartesianPath::arc(start, &v, end),
         None => CartesianPath::line(start, end),
     };
-    let kind = match (via, kind) {
-        (Some(_), _) => {
-            // The circle point as written: the via with the orientation at its arc fraction.
-            let cir = path.as_ref().ok().and_then(|p| p.cir_point());
-            let via = cir.map(|c| s.uframe(p.wobj).inverse() * c);
-            match via {
-                Some(v) => MoveKind::Circular {
-                    via: Frame {
-                        pos_mm: [v.translation.x, v.translation.y, v.translation.z],
-                        quat_wxyz: {
-                            let q = v.rotation.into_inner();
-                            [q.w, q.i, q.j, q.k]
-                        },
-                    },
-                    via_conf: conf,
-                },
-                None => MoveKind::Linear,
-            }
-        }
-        (None, k) => k,
+    // Named as a circular move in messages before it is followed.
+    let what = match via {
+        Some(_) => "the circular move (MoveC)",
+        None => move_name(&kind),
     };
-    let what = move_name(&kind);
     let path = path.map_err(|source| ProcessError::Path {
         label: label.clone(),
         what,
         source,
         loc,
     })?;
-    let followed = follow_path(&s.ik, &s.frames, &path, from, Some(conf)).map_err(|source| {
+    let followed = follow_path(&s.ik, &s.frames, &path, from, conf).map_err(|source| {
         ProcessError::Follow {
             label: label.clone(),
             what,
@@ -563,6 +595,27 @@ fn process_move(
             loc,
         }
     })?;
+    let kind = match (via, path.cir_point(), path.via_fraction()) {
+        (Some((pos_mm, _, like)), Some(cir), Some(f)) => {
+            // The circle point as written: the via's position as written, the orientation at
+            // its arc fraction; its confdata those of the followed joints there.
+            let via = Frame {
+                pos_mm,
+                ..s.written(&cir, &like, p.wobj)
+            };
+            let via_conf =
+                s.ik.conf(
+                    &joints_at(s, &followed, f).ok_or_else(|| ProcessError::Pose {
+                        label: label.clone(),
+                        what,
+                        why: "the joints at the circle point cannot be found".into(),
+                        loc,
+                    })?,
+                );
+            MoveKind::Circular { via, via_conf }
+        }
+        _ => kind,
+    };
     let proof = model
         .prove_path(&followed)
         .map_err(|source| ProcessError::Blocked {
@@ -578,6 +631,19 @@ fn process_move(
         proof,
         time,
     })
+}
+
+/// The joints of a followed path at progress `f`: the continuing solution from the last sample
+/// at or before it (a sample's chord moves no axis far, so the nearest branch continues).
+fn joints_at(s: &Setting, followed: &FollowedPath, f: f64) -> Option<Axes6> {
+    let samples = followed.samples();
+    let before = samples.iter().rev().find(|x| x.s <= f)?;
+    if before.s == f {
+        return Some(before.joints_deg);
+    }
+    let tool0 =
+        s.frames.cell_from_robot.inverse() * followed.path().pose_at(f) * s.frames.tframe.inverse();
+    s.ik.continuing(&tool0, &before.joints_deg).ok()
 }
 
 /// The end of a followed move into point `p` must be the joints placed for it.
@@ -600,6 +666,18 @@ fn agree(p: &Point, m: &ProcessMove, at: &Axes6, loc: Loc) -> Result<(), Process
         ),
         loc,
     })
+}
+
+/// The warning for a zone point `p` asks on a corner next to a process move: it is written
+/// `fine` (such a corner is not proven).
+fn warn_zone(warnings: &mut Vec<String>, p: &Point, motion: &MoveMotion) {
+    if p.zone.as_deref().is_some_and(|z| z != "fine") {
+        warnings.push(format!(
+            "warning: {}: zone {} is written fine: the corner next to a process move is not proven",
+            p.label(),
+            motion.zone
+        ));
+    }
 }
 
 /// A warning where the point's speed needs an axis beyond its maximum along the move.

@@ -60,14 +60,25 @@ pub enum MoveKind {
     Joint,
     /// A `move: linear` line (`MoveL`).
     Linear,
-    /// A `move: circular` arc (`MoveC`) through its circle point: `via` (the work object's
-    /// frame: the cell's via position, the orientation at its arc fraction) in configuration
-    /// `via_conf`.
+    /// A `move: circular` arc (`MoveC`) through its circle point: `via`, the numbers the module
+    /// writes (in the frame of the point's robtarget: the via position, the orientation at its
+    /// arc fraction), in `via_conf`, the configuration of the followed joints there.
     Circular { via: Frame, via_conf: ConfData },
-    /// The approach line into a point, from `dz_mm` back along its tool's z axis (`MoveL`).
-    Approach { dz_mm: f64 },
-    /// The retract line out of a point, `dz_mm` back along its tool's z axis (`MoveL`).
-    Retract { dz_mm: f64 },
+    /// The approach line into a point, from `dz_mm` back along its tool's z axis (`MoveL`);
+    /// `own`: the approach pose's own robtarget, where its configuration is not the point's.
+    Approach { dz_mm: f64, own: Option<OwnTarget> },
+    /// The retract line out of a point, `dz_mm` back along its tool's z axis (`MoveL`); `own`:
+    /// the retract pose's own robtarget, where its configuration is not the point's.
+    Retract { dz_mm: f64, own: Option<OwnTarget> },
+}
+
+/// An approach or retract pose written as a robtarget of its own (`<point>_app`,
+/// `<point>_ret`) because the controller reaches it in another configuration than its point:
+/// the numbers written (in the frame of the point's robtarget) and its confdata.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OwnTarget {
+    pub pose: Frame,
+    pub conf: ConfData,
 }
 
 impl MoveKind {

@@ -1,7 +1,6 @@
 //! `robot.frame: base`: the torch cell (`cells/torch-trunk.yaml`, base at (0, -850, 0) turned 90
-//! deg) without its process keys (the base frame is not yet carried out with process moves: the
-//! guard refuses the two together) run with the key, against the same cell in the cell frame
-//! (the default). The written numbers are checked against a transform worked out by hand, the
+//! deg) with its seams as air moves (the process moves in the base frame: `process.rs`) run with
+//! the key, against the same cell in the cell frame (the default). The written numbers are checked against a transform worked out by hand, the
 //! vias' jointtargets must be the same (the controller, its world frame its base frame, computes
 //! the same joints), and every written robtarget is reached, as the controller reads it, by the
 //! forward kinematics of the point's joints (the report's) in the base frame.

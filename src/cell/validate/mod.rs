@@ -623,7 +623,7 @@ fn one_name_space(d: &Declared, points: &[Point], motion: &Motion) -> Result<(),
         }
         taken.insert(key, d.what.as_str());
     }
-    Ok(())
+    process::own_pose_names(points)
 }
 
 /// One speeddata, zonedata, tooldata or signal name the module uses, for [`distinct_data`].

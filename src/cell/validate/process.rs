@@ -8,6 +8,7 @@ use super::super::raw::RawPoint;
 use super::super::{defaults, Arrival, CellError, Point, Target};
 use super::values::{in_range, invalid_help, loc, position};
 use crate::excerpt;
+use crate::names::check_identifier;
 use crate::precision::POSITION_DECIMALS;
 use serde_saphyr::Spanned;
 
@@ -170,4 +171,26 @@ pub(super) fn stop_zone(point: &Point, who: &str, raw: &RawPoint) -> Result<(), 
         format!("{who} has {why}, so it is reached fine: zone '{}' cannot apply", z.value),
         "actions run once the move into the point has ended, and approach and retract lines start and end at a stop: remove the zone (or write fine)",
     ))
+}
+
+/// The names an approach or retract pose in another configuration than its point is written
+/// under, `CONST robtarget <point>_app` or `<point>_ret` (stepping aside, `_x1`, from a name
+/// taken): whether it is, planning tells, so the name must be one RAPID takes.
+pub(super) fn own_pose_names(points: &[Point]) -> Result<(), CellError> {
+    for p in points.iter().filter(|p| p.revisit_of.is_none()) {
+        for (given, suffix, pose, loc) in [
+            (p.approach_mm, "app", "approach", p.approach_loc),
+            (p.retract_mm, "ret", "retract", p.retract_loc),
+        ] {
+            let name = format!("{}_{suffix}", p.name);
+            if let (Some(_), Err(e)) = (given, check_identifier(&name)) {
+                return Err(invalid_help(
+                    loc,
+                    format!("the {pose} pose of this point may be written as CONST robtarget '{name}', not a valid RAPID name: {e}"),
+                    "an approach or retract pose in another configuration than its point is written as a CONST robtarget named <name>_app or <name>_ret; shorten the point's name".to_string(),
+                ));
+            }
+        }
+    }
+    Ok(())
 }

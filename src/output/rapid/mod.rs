@@ -165,12 +165,14 @@ pub enum TargetKind {
         /// The point's name.
         point: String,
     },
-    /// A robtarget point's approach pose, `RelTool(<point>_rt, 0, 0, -D)` (declares nothing).
+    /// A robtarget point's approach pose, `RelTool(<point>_rt, 0, 0, -D)` (declares nothing), or
+    /// with a robtarget of its own (another configuration than the point's) `<point>_app`.
     Approach {
         /// The point's name.
         point: String,
     },
-    /// A robtarget point's retract pose, `RelTool(<point>_rt, 0, 0, -D)` (declares nothing).
+    /// A robtarget point's retract pose, `RelTool(<point>_rt, 0, 0, -D)` (declares nothing), or
+    /// with a robtarget of its own `<point>_ret`.
     Retract {
         /// The point's name.
         point: String,
@@ -225,7 +227,8 @@ pub struct JointTarget {
     /// RAPID zonedata of the move into it, e.g. `"fine"`.
     pub zone: String,
     /// For a cell point given as a robtarget: the `CONST robtarget` written beside it (named
-    /// by [`robtarget_name`]).
+    /// by [`robtarget_name`]); for an approach or retract pose, its own robtarget (named as the
+    /// target), if it has one.
     pub robtarget: Option<RobTarget>,
     /// How the move into it runs.
     pub how: MoveHow,
@@ -803,7 +806,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
         }
         let robtarget = match &target.robtarget {
             Some(r) => {
-                let rname = robtarget_name(&name);
+                let rname = data_name_of(target, &name);
                 let value = data::robtarget(&rname, r)?;
                 Some(DataCtx { name: rname, value })
             }
@@ -942,6 +945,15 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
     Ok(text)
 }
 
+/// The name of a target's `CONST robtarget`: a cell point's `<name>_rt`; an approach or retract
+/// pose's own robtarget is named as the target (`<point>_app`, `<point>_ret`).
+fn data_name_of(target: &JointTarget, name: &str) -> String {
+    match target.kind {
+        TargetKind::Approach { .. } | TargetKind::Retract { .. } => name.to_string(),
+        _ => robtarget_name(name),
+    }
+}
+
 /// The names of the module's `CONST jointtarget`s, in order: the cell points' own, and the
 /// vias' (`via<leg>_<index>`), which step aside for the module's other names (a cell point that
 /// takes one is a clash, refused by the cell validation at its line, and by [`render`] as a
@@ -953,7 +965,7 @@ pub fn module_target_names(program: &Program) -> Result<Vec<String>, RapidError>
 }
 
 /// The module's names other than its `CONST jointtarget`s: the module, the routine, the tool, the
-/// work object, every speed and zone, and the `CONST robtarget`s of the cell points that have
+/// work object, the loads, every speed and zone, and the `CONST robtarget`s of the cell points that have
 /// one. The vias' names avoid them ([`target_names_avoiding`]).
 fn other_names(program: &Program) -> Vec<String> {
     let mut names = vec![
@@ -962,6 +974,7 @@ fn other_names(program: &Program) -> Vec<String> {
         program.tool.clone(),
     ];
     names.extend(program.wobjs.iter().map(|w| w.name.clone()));
+    names.extend(program.loads.iter().map(|l| l.name.clone()));
     for t in &program.targets {
         names.push(t.speed.clone());
         names.push(t.zone.clone());
@@ -1025,7 +1038,7 @@ fn check_name_space(program: &Program, target_names: &[String]) -> Result<(), Ra
             declared.push((v.clone(), format!("the circle point `{v}`")));
         }
         if let (Some(_), false) = (&t.robtarget, matches!(t.kind, TargetKind::Revisit { .. })) {
-            let r = robtarget_name(name);
+            let r = data_name_of(t, name);
             check_identifier(&r).map_err(|source| RapidError::InvalidGeneratedName {
                 name: r.clone(),
                 what: format!("the robtarget of point `{name}`"),

@@ -8,9 +8,10 @@
 //! robtarget point by `MoveJ` to its robtarget (an air move), `MoveL` (a `move: linear` line or
 //! its approach line) or `MoveC` through its circle point `<point>_via`; an approach pose by
 //! `MoveJ RelTool(<point>_rt,0,0,-D)` (the air move's end), a retract pose by
-//! `MoveL RelTool(<point>_rt,0,0,-D)`.
+//! `MoveL RelTool(<point>_rt,0,0,-D)`, or where such a pose has a robtarget of its own (another
+//! configuration than its point's) by `MoveJ <point>_app` or `MoveL <point>_ret`.
 
-use super::{finite, format_fixed, Action, MoveHow, Program, RapidError, TargetKind};
+use super::{data_name_of, finite, format_fixed, Action, MoveHow, Program, RapidError, TargetKind};
 use crate::names::robtarget_name;
 use crate::precision::{POSITION_DECIMALS, WAIT_TIME_DECIMALS};
 use serde::Serialize;
@@ -89,8 +90,15 @@ pub fn written_moves(program: &Program, names: &[String]) -> Result<Vec<WrittenM
             let dz = format_fixed(-d, POSITION_DECIMALS);
             Ok((format!("RelTool({rt},0,0,{dz})"), rt, dz))
         };
-        let own = target.robtarget.as_ref().map(|_| robtarget_name(name));
+        let own = target
+            .robtarget
+            .as_ref()
+            .map(|_| data_name_of(target, name));
         let (instruction, to, robtarget, offset, circle) = match (&target.kind, &target.how, own) {
+            // An approach or retract pose in another configuration than its point: its own
+            // robtarget.
+            (TargetKind::Approach { .. }, _, Some(r)) => ("MoveJ", r.clone(), Some(r), None, None),
+            (TargetKind::Retract { .. }, _, Some(r)) => ("MoveL", r.clone(), Some(r), None, None),
             (TargetKind::Approach { point }, _, _) => {
                 let (to, rt, dz) = rel_tool(point)?;
                 ("MoveJ", to, Some(rt), Some(dz), None)

@@ -25,6 +25,8 @@ fn digits(n: usize) -> usize {
 ///   earlier in the list, the suffix `_x1`, `_x2`, ... is appended, taking the
 ///   first that is free. Cell point names are reserved before any via is
 ///   named, so the result does not depend on where the clashing point sits.
+/// - An approach or retract pose is named `<point>_app` or `<point>_ret` (declared as a
+///   `CONST robtarget` only where it has its own), stepping aside as a via does.
 /// - Two via targets with the same `(leg, index)` are a [`RapidError::NameClash`]
 ///   (an upstream bug), as is a via name that would exceed 32 characters
 ///   ([`RapidError::InvalidGeneratedName`]).
@@ -81,9 +83,23 @@ pub fn target_names_avoiding(
             TargetKind::CellPoint { name } => names.push(name.clone()),
             // The point's own name: its data, declared once by the point.
             TargetKind::Revisit { point } => names.push(point.clone()),
-            // Not declared: named for the report and the pictures only.
-            TargetKind::Approach { point } => names.push(format!("{point}_app")),
-            TargetKind::Retract { point } => names.push(format!("{point}_ret")),
+            // Declared only with a robtarget of their own; named for the report and the
+            // pictures too. They step aside as vias do.
+            TargetKind::Approach { point } | TargetKind::Retract { point } => {
+                let suffix = match target.kind {
+                    TargetKind::Approach { .. } => "app",
+                    _ => "ret",
+                };
+                let base = format!("{point}_{suffix}");
+                let name = step_aside(&base, &taken);
+                check_identifier(&name).map_err(|source| RapidError::InvalidGeneratedName {
+                    name: name.clone(),
+                    what: format!("the {suffix} pose of point `{point}`"),
+                    source,
+                })?;
+                taken.insert(name.to_ascii_lowercase());
+                names.push(name);
+            }
             &TargetKind::Via { leg, index } => {
                 let base = format!("via{:0leg_w$}_{:0index_w$}", leg as u128 + 1, index);
                 if !seen_vias.insert((leg, index)) {
@@ -92,12 +108,7 @@ pub fn target_names_avoiding(
                         other: format!("another via target with leg {leg} and index {index}"),
                     });
                 }
-                let mut name = base.clone();
-                let mut n = 0u64;
-                while taken.contains(&name.to_ascii_lowercase()) {
-                    n += 1;
-                    name = format!("{base}_x{n}");
-                }
+                let name = step_aside(&base, &taken);
                 check_identifier(&name).map_err(|source| RapidError::InvalidGeneratedName {
                     name: name.clone(),
                     what: format!("via {index} of leg {leg}"),
@@ -109,6 +120,17 @@ pub fn target_names_avoiding(
         }
     }
     Ok(names)
+}
+
+/// `base`, or where it is taken (any case) the first of `base_x1`, `base_x2`, ... that is free.
+fn step_aside(base: &str, taken: &HashSet<String>) -> String {
+    let mut name = base.to_string();
+    let mut n = 0u64;
+    while taken.contains(&name.to_ascii_lowercase()) {
+        n += 1;
+        name = format!("{base}_x{n}");
+    }
+    name
 }
 
 #[cfg(test)]
@@ -143,6 +165,31 @@ mod tests {
             actions: Vec::new(),
             wobj: None,
         }
+    }
+
+    #[test]
+    fn approach_and_retract_poses_step_aside_as_vias_do() {
+        let pose = |kind: TargetKind| JointTarget { kind, ..point("x") };
+        let app = pose(TargetKind::Approach { point: "P1".into() });
+        let ret = pose(TargetKind::Retract { point: "P1".into() });
+        // A cell point named like P1's approach pose, in any case, and a reserved name like its
+        // retract pose.
+        let t = [point("p1_APP"), app, point("P1"), ret];
+        assert_eq!(
+            target_names_avoiding(&t, &["P1_ret"]).unwrap(),
+            ["p1_APP", "P1_app_x1", "P1", "P1_ret_x1"]
+        );
+        let long = "P".repeat(29);
+        let t = [
+            pose(TargetKind::Approach {
+                point: long.clone(),
+            }),
+            point(&long),
+        ];
+        assert!(matches!(
+            target_names(&t),
+            Err(RapidError::InvalidGeneratedName { .. })
+        ));
     }
 
     #[test]

@@ -42,12 +42,11 @@ fn refusal(error: Error, file: &str, text: Option<&str>) -> Refusal {
     }
 }
 
-/// The load stage's reading of a cell file's bytes (UTF-8, YAML, validation, and as the pipeline
-/// the refusal of what the later stages do not carry out, `cell::unsupported`), as if read from
+/// The load stage's reading of a cell file's bytes (UTF-8, YAML, validation), as if read from
 /// `path` (`file` names it in messages); no file is read.
 pub fn cell_from_bytes(path: &Path, file: &str, bytes: Vec<u8>) -> Result<(Cell, String), Refusal> {
     let text = cell::text_of(bytes).map_err(|e| refusal(e.into(), file, None))?;
-    match cell::parse(path, &text).and_then(|c| cell::unsupported(&c).map(|()| c)) {
+    match cell::parse(path, &text) {
         Ok(c) => Ok((c, text)),
         Err(e) => Err(refusal(e.into(), file, Some(&text))),
     }

@@ -15,6 +15,9 @@
 //! ([`check_process_welding`]), an `ArcLStart`/`ArcCStart` counts as `SetDO <signal>, 1` and an
 //! `ArcLEnd`/`ArcCEnd` as `SetDO <signal>, 0` right after its move (where the arc goes on and
 //! off), so the weld is switched where and in the order the cell switches it.
+//! A MoveC's circle point has the confdata of the joints at its arc fraction. With
+//! `robot.frame: base` (the header's frames line) the controller's world frame is its base
+//! frame, placed as the header says: the user frame and wobj0 robtargets are read in it.
 
 use super::dense::Scene;
 use super::library::{load_robot, Cell, Target};
@@ -38,6 +41,9 @@ fn iso(p: &[f64], q: &[f64]) -> Isometry3<f64> {
     )
 }
 
+/// A process move's start and end poses and its circle point (cell frame, mm).
+pub type Ends = (Isometry3<f64>, Isometry3<f64>, Option<Point3<f64>>);
+
 /// What running a module measured.
 #[derive(Debug, Default)]
 pub struct Run {
@@ -49,29 +55,64 @@ pub struct Run {
     pub process_moves: usize,
     /// The farthest a process sample's TCP (by forward kinematics) lies from its path, mm.
     pub off_path_mm: f64,
+    /// Each process move's start and end poses and its circle point (cell frame, mm).
+    pub ends: Vec<Ends>,
+    /// Circle points whose confdata were checked against the joints at their arc fraction.
+    pub circle_points: usize,
 }
 
 /// A point of the circle through `a`, `b`, `c` from `a` (s = 0) over `b` to `c` (s = 1).
 fn arc(a: Point3<f64>, b: Point3<f64>, c: Point3<f64>) -> impl Fn(f64) -> Point3<f64> {
-    let (u, v) = (b - a, c - a);
-    let n = u.cross(&v);
-    let centre = a
-        + (n.cross(&u) * v.norm_squared() + v.cross(&n) * u.norm_squared())
-            / (2.0 * n.norm_squared());
-    let (r1, r3) = (a - centre, c - centre);
-    let radius = r1.norm();
-    let e1 = r1 / radius;
-    let e2 = n.normalize().cross(&e1);
-    let angle = |p: Vector3<f64>| {
-        let t = p.dot(&e2).atan2(p.dot(&e1));
+    let k = Circle::through(a, b, c);
+    let end = k.angle(c);
+    move |s| k.centre + k.radius * ((s * end).cos() * k.e1 + (s * end).sin() * k.e2)
+}
+
+/// The circle through three points: its centre and radius, the unit vector from the centre to
+/// the first, and the one a quarter turn ahead in the direction first -> second -> third.
+struct Circle {
+    centre: Point3<f64>,
+    radius: f64,
+    e1: Vector3<f64>,
+    e2: Vector3<f64>,
+}
+
+impl Circle {
+    fn through(a: Point3<f64>, b: Point3<f64>, c: Point3<f64>) -> Circle {
+        let (u, v) = (b - a, c - a);
+        let n = u.cross(&v);
+        let centre = a
+            + (n.cross(&u) * v.norm_squared() + v.cross(&n) * u.norm_squared())
+                / (2.0 * n.norm_squared());
+        let r1 = a - centre;
+        let radius = r1.norm();
+        let e1 = r1 / radius;
+        let e2 = n.normalize().cross(&e1);
+        Circle {
+            centre,
+            radius,
+            e1,
+            e2,
+        }
+    }
+
+    /// The angle of `p` from the first point in the direction of travel (0 .. 2 pi).
+    fn angle(&self, p: Point3<f64>) -> f64 {
+        let d = p - self.centre;
+        let t = d.dot(&self.e2).atan2(d.dot(&self.e1));
         if t < 0.0 {
             t + std::f64::consts::TAU
         } else {
             t
         }
-    };
-    let end = angle(r3);
-    move |s| centre + radius * ((s * end).cos() * e1 + (s * end).sin() * e2)
+    }
+}
+
+/// The arc fraction of `b` on the arc from `a` through `b` to `c`: the angle at the centre from
+/// `a` to `b` over the one from `a` to `c`.
+fn arc_fraction(a: Point3<f64>, b: Point3<f64>, c: Point3<f64>) -> f64 {
+    let k = Circle::through(a, b, c);
+    k.angle(b) / k.angle(c)
 }
 
 /// Runs `text`, the module written for `cell`, as the module docs say; `label` names it in
@@ -108,12 +149,19 @@ pub fn check_process_welding(
         .map_or(Isometry3::identity(), |(_, t)| {
             iso(&t.tframe[..3], &t.tframe[3..])
         });
+    // The controller's world frame: the cell frame, or with `robot.frame: base` (the header's
+    // frames line) its base frame, placed in the cell as the header says.
+    let world = match module.frames.as_deref() {
+        Some(f) if f.contains("written in the robot's base frame") => placed,
+        _ => Isometry3::identity(),
+    };
     let uframe_of = |w: &Option<String>| {
-        module
-            .wobjdata
-            .iter()
-            .find(|(n, _)| Some(n) == w.as_ref())
-            .map_or(Isometry3::identity(), |(_, u)| iso(&u[..3], &u[3..]))
+        world
+            * module
+                .wobjdata
+                .iter()
+                .find(|(n, _)| Some(n) == w.as_ref())
+                .map_or(Isometry3::identity(), |(_, u)| iso(&u[..3], &u[3..]))
     };
     // A written target as a TCP pose in the cell frame, with its confdata.
     let pose_of = |to: &ToPoint, w: &Option<String>| -> Option<(Isometry3<f64>, [i32; 4])> {
@@ -181,16 +229,22 @@ pub fn check_process_welding(
                     Point3::from(start.translation.vector),
                     Point3::from(end.translation.vector),
                 );
+                // The circle point: its position, its confdata and its arc fraction.
+                let mut circle: Option<(Point3<f64>, [i32; 4], f64)> = None;
                 let position: Box<dyn Fn(f64) -> Point3<f64>> = match &m.circle {
                     Some(c) => {
-                        let Some((cp, _)) = pose_of(c, &m.wobj) else {
+                        let Some((cp, cconf)) = pose_of(c, &m.wobj) else {
                             fail(format!("{what}: no circle point"));
                             continue;
                         };
-                        Box::new(arc(pa, Point3::from(cp.translation.vector), pc))
+                        let b = Point3::from(cp.translation.vector);
+                        let f = arc_fraction(pa, b, pc);
+                        circle = Some((b, cconf, f));
+                        Box::new(arc(pa, b, pc))
                     }
                     None => Box::new(move |s| pa + s * (pc - pa)),
                 };
+                run.ends.push((start, end, circle.map(|c| c.0)));
                 let length: f64 = (1..=1000)
                     .map(|k| {
                         (position(k as f64 / 1000.0) - position((k - 1) as f64 / 1000.0)).norm()
@@ -201,6 +255,25 @@ pub fn check_process_welding(
                 let mut prev = from;
                 for k in 1..=n {
                     let s = k as f64 / n as f64;
+                    // The circle point's confdata: those of the joints at its arc fraction (the
+                    // branch nearest the sample before).
+                    if let Some((b, cconf, f)) = circle {
+                        if f <= s {
+                            let rot = start.rotation.slerp(&end.rotation, f);
+                            let pose = Isometry3::from_parts(b.coords.into(), rot);
+                            match ik.nearest(&tool0_for(&pose), &prev) {
+                                Some(j) if conf_admits(&j, confdata(&robot, &j)[3], &cconf) => {
+                                    run.circle_points += 1;
+                                }
+                                Some(j) => fail(format!(
+                                    "{what}: the circle point's confdata {cconf:?}, the joints there {:?} ({j:?})",
+                                    confdata(&robot, &j)
+                                )),
+                                None => fail(format!("{what}: no joints at the circle point")),
+                            }
+                            circle = None;
+                        }
+                    }
                     let rot = start.rotation.slerp(&end.rotation, s);
                     let pose = Isometry3::from_parts(position(s).coords.into(), rot);
                     let Some(next) = ik.nearest(&tool0_for(&pose), &prev) else {
@@ -258,6 +331,20 @@ pub fn check_process_welding(
     for p in &cell.points {
         if let Target::Robtarget { pose, .. } = &p.target {
             match module.robtarget(&format!("{}_rt", p.name)) {
+                // In wobj0 with `robot.frame: base`: the cell's pose written in the base frame,
+                // rounded (0.0005 mm a coordinate, 5e-10 a quaternion component).
+                Some(r) if world != Isometry3::identity() && module.wobjdata.is_empty() => {
+                    let w = world * iso(&r.pos_mm, &r.quat_wxyz);
+                    let want = iso(&pose.pos_mm, &pose.quat_wxyz);
+                    let mm = (w.translation.vector - want.translation.vector).norm();
+                    let deg = w.rotation.angle_to(&want.rotation).to_degrees();
+                    if mm > 1e-3 || deg > 1e-6 {
+                        fail(format!(
+                            "{}_rt is not the cell's pose: {mm:.6} mm, {deg:.2e} deg off",
+                            p.name
+                        ));
+                    }
+                }
                 Some(r) => {
                     let off = (0..3)
                         .map(|k| (r.pos_mm[k] - pose.pos_mm[k]).abs())
