@@ -140,7 +140,35 @@ pub(super) fn points(
         process::stop_zone(&point, &who, &p.value)?;
         points.push(point);
     }
+    one_arc_per_point(&points)?;
     Ok(points)
+}
+
+/// A circular move's circle point is written once per point, `<point>_via`: a point reached by
+/// two circular moves (by its own entry and a revisit, or by two revisits) is refused at the
+/// second's `move` line.
+fn one_arc_per_point(points: &[Point]) -> Result<(), CellError> {
+    let mut arcs: HashMap<String, u64> = HashMap::new();
+    for p in points {
+        if !matches!(p.arrival, Arrival::Circular { .. }) {
+            continue;
+        }
+        let key = p.name.to_ascii_lowercase();
+        if let Some(first) = arcs.get(&key) {
+            return Err(invalid_help(
+                p.arrival_loc,
+                format!(
+                    "{} is a second circular move into '{}' (the first at line {first}): the module writes one circle point `{}_via` per point",
+                    p.label(),
+                    p.name,
+                    p.name
+                ),
+                "reach the point by `move: circular` once; for another arc ending there, give that end a point of its own (a new `name:` with the same `robtarget`)",
+            ));
+        }
+        arcs.insert(key, p.arrival_loc.line);
+    }
+    Ok(())
 }
 
 /// A revisit takes the named point's target: it gives none of its own (nor a work object, the
