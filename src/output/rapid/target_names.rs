@@ -90,15 +90,12 @@ pub fn target_names_avoiding(
                     TargetKind::Approach { .. } => "app",
                     _ => "ret",
                 };
-                let base = format!("{point}_{suffix}");
-                let name = step_aside(&base, &taken);
-                check_identifier(&name).map_err(|source| RapidError::InvalidGeneratedName {
-                    name: name.clone(),
-                    what: format!("the {suffix} pose of point `{point}`"),
-                    source,
-                })?;
-                taken.insert(name.to_ascii_lowercase());
-                names.push(name);
+                let what = format!("the {suffix} pose of point `{point}`");
+                names.push(take_made_up(
+                    &format!("{point}_{suffix}"),
+                    what,
+                    &mut taken,
+                )?);
             }
             &TargetKind::Via { leg, index } => {
                 let base = format!("via{:0leg_w$}_{:0index_w$}", leg as u128 + 1, index);
@@ -108,18 +105,32 @@ pub fn target_names_avoiding(
                         other: format!("another via target with leg {leg} and index {index}"),
                     });
                 }
-                let name = step_aside(&base, &taken);
-                check_identifier(&name).map_err(|source| RapidError::InvalidGeneratedName {
-                    name: name.clone(),
-                    what: format!("via {index} of leg {leg}"),
-                    source,
-                })?;
-                taken.insert(name.to_ascii_lowercase());
-                names.push(name);
+                names.push(take_made_up(
+                    &base,
+                    format!("via {index} of leg {leg}"),
+                    &mut taken,
+                )?);
             }
         }
     }
     Ok(names)
+}
+
+/// A made-up name (`what` says what it names): `base` stepped aside from the names `taken`, a
+/// valid RAPID identifier, then taken.
+fn take_made_up(
+    base: &str,
+    what: String,
+    taken: &mut HashSet<String>,
+) -> Result<String, RapidError> {
+    let name = step_aside(base, taken);
+    check_identifier(&name).map_err(|source| RapidError::InvalidGeneratedName {
+        name: name.clone(),
+        what,
+        source,
+    })?;
+    taken.insert(name.to_ascii_lowercase());
+    Ok(name)
 }
 
 /// `base`, or where it is taken (any case) the first of `base_x1`, `base_x2`, ... that is free.
