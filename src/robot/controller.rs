@@ -44,6 +44,14 @@ pub struct AxisSpec {
 }
 
 impl AxisSpec {
+    /// An axis not yet read: every figure zero (each is set before use).
+    pub const UNSET: AxisSpec = AxisSpec {
+        min_deg: 0.0,
+        max_deg: 0.0,
+        speed_deg_s: 0.0,
+        acceleration_deg_s2: None,
+    };
+
     /// The peak acceleration, deg/s^2: as stated, or the one that reaches full speed in
     /// [`DEFAULT_RAMP_S`] on the quintic ramp (15 v / (8 t_ramp)).
     pub fn acceleration(&self) -> f64 {
@@ -186,12 +194,7 @@ pub fn parse(text: &str) -> Result<Controller, ControllerFault> {
             format!("`axes` must list 6 axes, found {}", raw.axes.value.len()),
         ));
     }
-    let mut axes = [AxisSpec {
-        min_deg: 0.0,
-        max_deg: 0.0,
-        speed_deg_s: 0.0,
-        acceleration_deg_s2: None,
-    }; 6];
+    let mut axes = [AxisSpec::UNSET; 6];
     for (i, (slot, a)) in axes.iter_mut().zip(&raw.axes.value).enumerate() {
         let a = &a.value;
         let axis = i + 1;

@@ -304,12 +304,7 @@ fn cylinders_of(
 
 /// A serial convention from the URDF's own limits and velocities.
 fn serial_controller(joints: &[&urdf_rs::Joint]) -> Result<Controller, String> {
-    let mut axes = [AxisSpec {
-        min_deg: 0.0,
-        max_deg: 0.0,
-        speed_deg_s: 0.0,
-        acceleration_deg_s2: None,
-    }; 6];
+    let mut axes = [AxisSpec::UNSET; 6];
     for (a, j) in axes.iter_mut().zip(joints) {
         let (lo, hi) = if j.joint_type == urdf_rs::JointType::Continuous {
             (-180.0, 180.0)

@@ -252,14 +252,17 @@ fn a_zoned_corners_clearance_is_marked_at_its_waypoint() {
         mm: least.mm - 0.3,
         ..least.clone()
     });
-    let s = scene(
-        &job.cell,
-        &job.robot,
-        &out.placed,
-        &plan,
-        &out.rendered.names,
-        &out.rendered.moves,
-    );
+    let scene_of_plan = |plan: &crate::refine::Plan| {
+        scene(
+            &job.cell,
+            &job.robot,
+            &out.placed,
+            plan,
+            &out.rendered.names,
+            &out.rendered.moves,
+        )
+    };
+    let s = scene_of_plan(&plan);
     let c = s.clearance.expect("marked");
     assert_eq!(c.corner_waypoint, Some(1));
     assert!(c.move_index <= 1, "{}", c.move_index);
@@ -281,14 +284,7 @@ fn a_zoned_corners_clearance_is_marked_at_its_waypoint() {
     assert!(t >= a - 1e-9 && t <= b + 1e-9, "{t} outside {a} .. {b}");
     // Without the fly-by zone no corner holds it: nothing is marked rather than a wrong move.
     plan.moves[0].motion.zone = "fine".into();
-    let s = scene(
-        &job.cell,
-        &job.robot,
-        &out.placed,
-        &plan,
-        &out.rendered.names,
-        &out.rendered.moves,
-    );
+    let s = scene_of_plan(&plan);
     assert!(s.clearance.is_none());
 }
 

@@ -387,40 +387,20 @@ impl Module {
         })
     }
 
-    /// The joint moves as the controller runs them: [`targets`](Self::targets),
+    /// The waypoints as the controller reaches them: [`targets`](Self::targets),
     /// [`moves`](Self::moves) and [`move_args`](Self::move_args) rebuilt in the routine's
-    /// order from every `MoveAbsJ` (its jointtarget as written) and every `MoveJ` to a robtarget
-    /// `<point>_rt` (named `<point>`, its joints the independent inverse kinematics of the
-    /// robtarget as written, through the tooldata and wobjdata it names, robot base at
-    /// `cell_from_robot`, of the written confdata: ConfJ on; of several such solutions, the one
-    /// nearest the joints before). An error when a robtarget has no such solution, or when the
-    /// routine has a `MoveL` or `MoveC` (not a joint move).
-    pub fn resolve_joint_moves(
-        &mut self,
-        robot: &super::library::Robot,
-        cell_from_robot: &nalgebra::Isometry3<f64>,
-    ) -> Result<(), String> {
-        self.resolve_moves(robot, cell_from_robot, false)
-    }
-
-    /// [`resolve_joint_moves`](Self::resolve_joint_moves), where a `MoveL` or `MoveC` and a
-    /// `RelTool` target are taken too, by where they end (the robtarget, moved by `RelTool`, in
-    /// its confdata; named `<point>`, `<point>_app` for a MoveJ to a RelTool pose and
-    /// `<point>_ret` for a MoveL to one, as the report names them): the waypoints of a module
-    /// with process moves, not the paths between them (`process.rs` runs those).
+    /// order from every `MoveAbsJ` (its jointtarget as written) and every move to a robtarget
+    /// (named `<point>`, `<point>_app` for a MoveJ to a RelTool pose and `<point>_ret` for a
+    /// MoveL to one, as the report names them), taken by where it ends: its joints the
+    /// independent inverse kinematics of the robtarget as written (moved by `RelTool`), through
+    /// the tooldata and wobjdata it names, robot base at `cell_from_robot`, of the written
+    /// confdata: ConfJ on; of several such solutions, the one nearest the joints before. An
+    /// error when a robtarget has no such solution. The waypoints only, not the paths between
+    /// them (`process.rs` runs those).
     pub fn resolve_waypoints(
         &mut self,
         robot: &super::library::Robot,
         cell_from_robot: &nalgebra::Isometry3<f64>,
-    ) -> Result<(), String> {
-        self.resolve_moves(robot, cell_from_robot, true)
-    }
-
-    fn resolve_moves(
-        &mut self,
-        robot: &super::library::Robot,
-        cell_from_robot: &nalgebra::Isometry3<f64>,
-        process: bool,
     ) -> Result<(), String> {
         use super::opw::{max_diff, Ik};
         let ik = Ik::new(robot)?;
@@ -446,9 +426,7 @@ impl Module {
                     let axes = self.target(&name);
                     (name.clone(), axes)
                 }
-                MoveKind::J | MoveKind::L | MoveKind::C
-                    if process || (m.kind == MoveKind::J && matches!(m.to, ToPoint::Name(_))) =>
-                {
+                MoveKind::J | MoveKind::L | MoveKind::C => {
                     let r = self
                         .robtarget(&name)
                         .ok_or_else(|| format!("{label}: no robtarget {name}"))?;
@@ -492,9 +470,6 @@ impl Module {
                         _ => point.to_string(),
                     };
                     (point, axes)
-                }
-                _ => {
-                    return Err(format!("{label}: not a joint move to a name"));
                 }
             };
             moves.push(point.clone());
