@@ -36,6 +36,7 @@ fn waves(c: &mut Criterion) {
         check: &check,
         schedule: &schedule,
         eager: false,
+        floor: None,
         memo: &memo,
     };
     let mut g = c.benchmark_group("trunk_1deg_leg1");

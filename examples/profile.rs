@@ -45,6 +45,7 @@ fn main() {
                 check: &check,
                 schedule: &schedule,
                 eager,
+                floor: None,
                 memo: &memo,
             };
             let t = Instant::now();

@@ -285,6 +285,10 @@ pub struct LegGraph<'a> {
     /// Whether the wave numbers over accepted steps only (else over every step between usable
     /// nodes, the optimistic first try of [`search`]).
     pub eager: bool,
+    /// A floor of the ends' distance over the graph's steps, where known (the eager graph's:
+    /// the optimistic wave's distance, over a graph that holds this one): its node-by-node
+    /// waves are then bounded (`Graph::steps_floor`).
+    pub floor: Option<u32>,
     /// The tool's answers so far (the same memo for every graph of one leg).
     pub memo: &'a ToolMemo,
 }
@@ -437,6 +441,10 @@ impl Graph for LegGraph<'_> {
         Some(GridCheck::TOOL_NEAR_BITS)
     }
 
+    fn steps_floor(&self) -> Option<u32> {
+        self.floor
+    }
+
     fn wave_step_ok(&self, a: Node, b: Node) -> bool {
         !self.eager || self.step_ok(a, b)
     }
@@ -494,6 +502,7 @@ pub fn plan_leg(
         check,
         schedule: &schedule,
         eager: false,
+        floor: None,
         memo: &memo,
     };
     let s = join(&graph, &from.joints_deg).ok_or(LegFailure::NoJoin { last: false })?;
@@ -551,7 +560,10 @@ pub fn plan_leg(
 /// over every step between usable nodes, as the paper's wave is), walking back over accepted
 /// steps only; where that walk runs out, on the eager wave (numbered over accepted steps only),
 /// whose walk cannot run out. The optimistic wave's graph holds the true one, so where it does
-/// not join the nodes, nothing does.
+/// not join the nodes, nothing does, and the ends' distance on it is a floor of their distance
+/// over accepted steps: the eager waves, which ask the step proof at every node they number,
+/// are bounded from it (`Graph::steps_floor`) and number the nodes between the ends, not the
+/// balls around them.
 fn search(
     graph: &LegGraph<'_>,
     method: Method,
@@ -559,9 +571,14 @@ fn search(
     g: Node,
 ) -> Result<Vec<Node>, SearchFailure> {
     match method.search(graph.cs, s, g, graph) {
-        Err(SearchFailure::OnlyDiagonal | SearchFailure::WalkFailed) => {
+        Err(failure @ (SearchFailure::OnlyDiagonal | SearchFailure::WalkFailed { .. })) => {
+            let floor = match failure {
+                SearchFailure::WalkFailed { steps } => Some(steps),
+                _ => None,
+            };
             let eager = LegGraph {
                 eager: true,
+                floor,
                 ..*graph
             };
             method.search(graph.cs, s, g, &eager)

@@ -10,7 +10,7 @@ use crate::geometry::{Aabb, Point};
 use crate::place::{Origin, Placement};
 use crate::plan::cspace::Grid;
 use crate::plan::search::{add, testing::grid};
-use crate::plan::wave::{offsets, Connectivity};
+use crate::plan::wave::{offsets, Connectivity, Graph};
 use crate::robot::Robot;
 use std::collections::VecDeque;
 
@@ -69,6 +69,7 @@ fn graph_of<'a>(
         check,
         schedule,
         eager: false,
+        floor: None,
         memo,
     }
 }
@@ -96,6 +97,7 @@ fn per_leg_inspection_is_the_six_axis_node_test_at_every_node() {
         check: &check,
         schedule: &schedule,
         eager: true,
+        floor: None,
         memo: &memo,
     };
     // The code bits the row wave trusts (`Graph::look_bits`): a free node without them is free
@@ -224,7 +226,7 @@ fn the_search_finds_a_path_exactly_where_the_accepted_steps_join_the_points() {
                 Err(SearchFailure::OnlyDiagonal) => {
                     assert!(method == Method::DepthFirst && j26 && !j6, "{method}")
                 }
-                Err(SearchFailure::WalkFailed) => panic!("{method}: the walk ran out"),
+                Err(SearchFailure::WalkFailed { .. }) => panic!("{method}: the walk ran out"),
             }
         }
         // The whole leg: every move proven on six axes.
@@ -279,9 +281,11 @@ fn where_the_optimistic_walk_runs_out_the_eager_wave_finds_the_way() {
     let step = move |a: Node, b: Node| !crosses(a, b) || (a[1] == 4 && b[1] == 4);
     let (s, e) = ([0, 0, 0], [8, 0, 0]);
     for method in Method::ALL {
-        assert_eq!(
-            method.search(&cs, s, e, &Optimistic(step)),
-            Err(SearchFailure::WalkFailed),
+        assert!(
+            matches!(
+                method.search(&cs, s, e, &Optimistic(step)),
+                Err(SearchFailure::WalkFailed { .. })
+            ),
             "{method}"
         );
         let path = method.search(&cs, s, e, &step).expect("round by the top");
@@ -339,9 +343,11 @@ fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_acce
         g.node_at(&[to[0], to[1], to[2]]).expect("on the grid"),
     );
     for method in [Method::Neighboring, Method::Extensile] {
-        assert_eq!(
-            method.search(&cs, s, e, &optimistic),
-            Err(SearchFailure::WalkFailed),
+        assert!(
+            matches!(
+                method.search(&cs, s, e, &optimistic),
+                Err(SearchFailure::WalkFailed { .. })
+            ),
             "{method}: the paper's wave offers a path of accepted steps here"
         );
         let path = method
@@ -355,6 +361,99 @@ fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_acce
         for w in leg.waypoints.windows(2) {
             assert!(m.move_is_safe(&w[0], &w[1]));
         }
+    }
+}
+
+/// A leg's graph counting the steps its waves ask (each a step proof where the codes do not
+/// prove it).
+struct Counted<'a> {
+    graph: &'a LegGraph<'a>,
+    asked: std::sync::atomic::AtomicUsize,
+}
+
+impl Graph for Counted<'_> {
+    fn node_ok(&self, n: Node) -> bool {
+        self.graph.node_ok(n)
+    }
+    fn node_ok_coded(&self, n: Node, code: u8) -> bool {
+        self.graph.node_ok_coded(n, code)
+    }
+    fn step_ok(&self, a: Node, b: Node) -> bool {
+        self.graph.step_ok(a, b)
+    }
+    fn wave_step_ok(&self, a: Node, b: Node) -> bool {
+        self.asked
+            .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        self.graph.wave_step_ok(a, b)
+    }
+    fn wave_steps_all(&self) -> bool {
+        self.graph.wave_steps_all()
+    }
+    fn look_bits(&self) -> Option<u8> {
+        self.graph.look_bits()
+    }
+    fn steps_floor(&self) -> Option<u32> {
+        self.graph.steps_floor()
+    }
+}
+
+#[test]
+fn the_eager_waves_bounded_by_the_optimistic_distance_ask_a_fraction_of_the_proofs() {
+    // The cell of the test above: the optimistic walk runs out, the eager waves find the way.
+    // Bounded from the optimistic wave's distance (what `search` gives them) they find the same
+    // path, asking the step check at a small part of the steps the whole waves ask.
+    let boxes = refusing_boxes();
+    let robot = Robot::irb1400();
+    let placement = Placement {
+        base_mm: [0.0, 0.0, 0.0],
+        yaw_deg: 0.0,
+    };
+    let m = CollisionModel::new(&robot, placement, boxes, 25.0, None);
+    let a = &robot.controller.axes;
+    let g = Grid::over([0, 1, 2].map(|k| [a[k].min_deg, a[k].max_deg]), 2.0);
+    let check = m.grid_check(g.step_deg);
+    let cs = CSpace::build(g, &check);
+    let (from, to) = (
+        [-34.0, 34.0, 36.0, 0.0, 0.0, 0.0],
+        [120.0, 30.0, 40.0, 0.0, 0.0, 0.0],
+    );
+    let schedule = WristSchedule::new(&from, &to);
+    let memo = ToolMemo::new(&cs, &check, &schedule);
+    let optimistic = graph_of(&cs, &check, &schedule, &memo);
+    let (s, e) = (
+        g.node_at(&[from[0], from[1], from[2]])
+            .expect("on the grid"),
+        g.node_at(&[to[0], to[1], to[2]]).expect("on the grid"),
+    );
+    for method in [Method::Neighboring, Method::Extensile] {
+        let Err(SearchFailure::WalkFailed { steps }) = method.search(&cs, s, e, &optimistic) else {
+            panic!("{method}: the optimistic walk finds a way here");
+        };
+        let (whole, bounded) = (
+            LegGraph {
+                eager: true,
+                ..optimistic
+            },
+            LegGraph {
+                eager: true,
+                floor: Some(steps),
+                ..optimistic
+            },
+        );
+        let count = |graph| Counted {
+            graph,
+            asked: Default::default(),
+        };
+        let (whole, bounded) = (count(&whole), count(&bounded));
+        let want = method.search(&cs, s, e, &whole);
+        assert!(want.is_ok(), "{method}: {want:?}");
+        assert_eq!(method.search(&cs, s, e, &bounded), want, "{method}");
+        let asked = |c: &Counted| c.asked.load(std::sync::atomic::Ordering::Relaxed);
+        let (all, few) = (asked(&whole), asked(&bounded));
+        assert!(
+            few > 0 && 4 * few < all,
+            "{method}: {few} steps asked, whole {all}"
+        );
     }
 }
 

@@ -490,7 +490,7 @@ fn route_leg(
                 grid_deg: cs.grid.step_deg,
                 clearance_mm: model.clearance_mm(),
             },
-            LegFailure::Search(SearchFailure::OnlyDiagonal | SearchFailure::WalkFailed) => {
+            LegFailure::Search(SearchFailure::OnlyDiagonal | SearchFailure::WalkFailed { .. }) => {
                 PlanError::SearchFailed {
                     from: i,
                     to: i + 1,

@@ -44,7 +44,7 @@ pub fn search<G: Graph>(
             },
         );
     };
-    descend(&w, &candidates, graph).ok_or(SearchFailure::WalkFailed)
+    descend(&w, &candidates, graph).ok_or(SearchFailure::WalkFailed { steps: w.n() - 1 })
 }
 
 #[cfg(test)]
@@ -61,7 +61,10 @@ mod tests {
         for (cs, graph, start, end) in refusing_cases() {
             let got = search(&cs, start, end, &graph);
             let whole = match wave::expand(&cs, &graph, start, end, Connectivity::Six) {
-                Some(w) => descend(&w, &candidates, &graph).ok_or(SearchFailure::WalkFailed),
+                Some(w) => {
+                    let steps = w.n() - 1;
+                    descend(&w, &candidates, &graph).ok_or(SearchFailure::WalkFailed { steps })
+                }
                 None => Err(
                     match wave::expand(&cs, &graph, start, end, Connectivity::TwentySix) {
                         Some(_) => SearchFailure::OnlyDiagonal,

@@ -63,7 +63,8 @@ pub fn search<G: Graph>(
         // A panic in the other walk is a defect; fall back to walking it here.
         (here, other.join().unwrap_or_else(|_| walk_back()))
     });
-    let forward = forward.ok_or(SearchFailure::WalkFailed)?;
+    let steps = from_start.n() - 1;
+    let forward = forward.ok_or(SearchFailure::WalkFailed { steps })?;
     Ok(match backward {
         Some(b) => merge_paths(&forward, &b, graph),
         None => forward,
@@ -154,7 +155,9 @@ pub(crate) fn search_with_whole_waves<G: Graph>(
 ) -> Result<GridPath, SearchFailure> {
     let from_start = wave::expand(cs, graph, start, end, Connectivity::TwentySix)
         .ok_or(SearchFailure::NotConnected)?;
-    let forward = descend(&from_start, &candidates, graph).ok_or(SearchFailure::WalkFailed)?;
+    let steps = from_start.n() - 1;
+    let forward =
+        descend(&from_start, &candidates, graph).ok_or(SearchFailure::WalkFailed { steps })?;
     let backward = wave::expand(cs, graph, end, start, Connectivity::TwentySix)
         .and_then(|w| descend(&w, &candidates, graph))
         .map(|mut p| {

@@ -67,9 +67,10 @@ pub enum SearchFailure {
     /// The depth-first search: the graph joins the nodes, but not through axis steps (the
     /// paper's Fig. 8).
     OnlyDiagonal,
-    /// The walk back found no step: impossible on a wave of the same graph (module doc); a
-    /// defect if it happens.
-    WalkFailed,
+    /// The walk back found no step: impossible on a wave of the same graph (module doc); on
+    /// a leg's optimistic wave, the sign to number the eager one. `steps`: the ends' distance
+    /// on the wave walked, a floor of their distance over the steps the walk may take.
+    WalkFailed { steps: u32 },
 }
 
 use crate::plan::cspace::{CSpace, Node};

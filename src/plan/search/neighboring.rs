@@ -42,7 +42,7 @@ pub fn search<G: Graph>(
 ) -> Result<GridPath, SearchFailure> {
     let w = wave::expand_corridor(cs, graph, start, end, Connectivity::TwentySix)
         .ok_or(SearchFailure::NotConnected)?;
-    descend(&w, &candidates, graph).ok_or(SearchFailure::WalkFailed)
+    descend(&w, &candidates, graph).ok_or(SearchFailure::WalkFailed { steps: w.n() - 1 })
 }
 
 #[cfg(test)]
@@ -60,7 +60,10 @@ mod tests {
             let got = search(&cs, start, end, &graph);
             let whole = wave::expand(&cs, &graph, start, end, Connectivity::TwentySix)
                 .ok_or(SearchFailure::NotConnected)
-                .and_then(|w| descend(&w, &candidates, &graph).ok_or(SearchFailure::WalkFailed));
+                .and_then(|w| {
+                    let steps = w.n() - 1;
+                    descend(&w, &candidates, &graph).ok_or(SearchFailure::WalkFailed { steps })
+                });
             assert_eq!(got, whole, "{end:?}");
             match got {
                 Ok(_) => found += 1,

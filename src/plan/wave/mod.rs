@@ -44,6 +44,7 @@ macro_rules! by_row_words {
     };
 }
 
+mod bounded;
 mod corridor;
 mod queue;
 mod reach;
@@ -55,7 +56,7 @@ pub use corridor::{expand_both, expand_corridor};
 
 use crate::plan::cspace::{CSpace, Node};
 use crate::zeroed::ZeroBuf;
-use queue::{number_of, number_scalar, TooLong};
+use queue::{number_of, number_scalar, Bound, Numbered, TooLong};
 use rows::number_rows;
 
 /// What a wave and a search walk on: which free nodes of the grid they may use and which
@@ -89,6 +90,14 @@ pub trait Graph: Sync {
     /// row-by-row wave numbers it without asking. `None` (the default): every free node is
     /// asked. A graph whose answer depends on more than its code's bits keeps `None`.
     fn look_bits(&self) -> Option<u8> {
+        None
+    }
+    /// A lower bound of the ends' distance in steps of this graph, where one is known (a leg's
+    /// eager graph knows its optimistic wave's: that graph holds this one). A node-by-node wave
+    /// is then bounded as A* is, first by this floor, the bound grown until the wave reaches its
+    /// end (`bounded.rs`): the same numbers on the shortest paths between the ends, far fewer
+    /// nodes numbered and steps asked. `None` (the default): numbered whole.
+    fn steps_floor(&self) -> Option<u32> {
         None
     }
 }
@@ -327,21 +336,10 @@ pub fn expand<G: Graph + ?Sized>(
     }
     let (labels, n) = if graph.wave_steps_all() && connectivity == Connectivity::TwentySix {
         by_row_words!(cs, number_rows::<G>(cs, graph, start, end))?
+    } else if let Some(floor) = graph.steps_floor() {
+        bounded::number(cs, graph, start, end, connectivity, floor)?
     } else {
-        let end_index = g.index(end);
-        match number_scalar::<u16, G>(cs, graph, start, end, connectivity) {
-            Ok(labels) => {
-                let labels = labels?;
-                let n = number_of(labels[end_index]);
-                (Labels::Narrow(labels), n)
-            }
-            Err(TooLong) => {
-                let labels =
-                    number_scalar::<u32, G>(cs, graph, start, end, connectivity).ok()??;
-                let n = number_of(labels[end_index]);
-                (Labels::Wide(labels), n)
-            }
-        }
+        number_nodes(cs, graph, start, end, connectivity, None).ok()??
     };
     Some(Wave {
         start,
@@ -351,6 +349,49 @@ pub fn expand<G: Graph + ?Sized>(
         dims: g.dims,
         n,
     })
+}
+
+/// The node-by-node wave ([`number_scalar`]) in narrow words, again in wide ones where a
+/// number does not fit: the labels and the end's number, `Ok(None)` when the end cannot be
+/// reached, `Err(Pruned)` when the bound left nodes out and the end was not reached.
+fn number_nodes<G: Graph + ?Sized>(
+    cs: &CSpace,
+    graph: &G,
+    start: Node,
+    end: Node,
+    connectivity: Connectivity,
+    bound: Option<Bound<'_>>,
+) -> Result<Option<(Labels, u32)>, Pruned> {
+    let end_index = cs.grid.index(end);
+    let narrow = number_scalar::<u16, G>(cs, graph, start, end, connectivity, bound);
+    let (labels, n) = match narrow {
+        Ok(Numbered::Reached(labels)) => {
+            let n = number_of(labels[end_index]);
+            (Labels::Narrow(labels), n)
+        }
+        Ok(Numbered::Exhausted { pruned }) => return exhausted(pruned),
+        Err(TooLong) => match number_scalar::<u32, G>(cs, graph, start, end, connectivity, bound) {
+            Ok(Numbered::Reached(labels)) => {
+                let n = number_of(labels[end_index]);
+                (Labels::Wide(labels), n)
+            }
+            Ok(Numbered::Exhausted { pruned }) => return exhausted(pruned),
+            Err(TooLong) => return Ok(None),
+        },
+    };
+    Ok(Some((labels, n)))
+}
+
+/// A bounded wave ran out having left nodes out: a larger bound may reach the end.
+struct Pruned;
+
+/// [`number_nodes`]'s answer for a wave that ran out.
+fn exhausted(pruned: bool) -> Result<Option<(Labels, u32)>, Pruned> {
+    if pruned {
+        Err(Pruned)
+    } else {
+        Ok(None)
+    }
 }
 
 /// Whether both ends are free on the grid and usable in `graph` (a wave needs both).

@@ -1,7 +1,8 @@
 //! The node-by-node wave: a first-in first-out queue over the neighbours of either
 //! connectivity, every step asked of the graph, keeping the numbers (2 bytes a node, 4 for a
 //! path of over 65 533 steps). The wave of a graph whose wave does not count every step between
-//! usable nodes, and of the 6 axis neighbours numbered whole.
+//! usable nodes, and of the 6 axis neighbours numbered whole; bounded as A* is where the graph
+//! knows a floor of the ends' distance ([`Graph::steps_floor`], `expand`).
 
 use super::{offsets, Connectivity, Graph};
 use crate::plan::cspace::{CSpace, Node, FREE};
@@ -61,17 +62,56 @@ pub(super) fn number_of<W: Word>(l: W) -> u32 {
 /// A number outgrew the label word of the node-by-node wave.
 pub(super) struct TooLong;
 
-/// The expansion node by node in words `W`: the labels when `end` was numbered, `Ok(None)`
+/// What a node-by-node wave came to.
+pub(super) enum Numbered<W: Word> {
+    /// The end was numbered: the labels.
+    Reached(ZeroBuf<W>),
+    /// The end cannot be reached; `pruned` when the bound left nodes out (then a larger bound
+    /// may reach it).
+    Exhausted { pruned: bool },
+}
+
+/// The steps a wave over `connectivity` needs from `a` to `b` without obstacles: the largest
+/// index difference over 26 neighbours, their sum over the 6 axis neighbours. A step changes it
+/// by at most one, so it never exceeds the distance in any graph of those steps.
+pub(super) fn grid_steps(a: Node, b: Node, connectivity: Connectivity) -> u32 {
+    let d = [0, 1, 2].map(|k| a[k].abs_diff(b[k]));
+    match connectivity {
+        Connectivity::TwentySix => d[0].max(d[1]).max(d[2]),
+        Connectivity::Six => d[0] + d[1] + d[2],
+    }
+}
+
+/// The bound of a node-by-node wave ([`number_scalar`]): the most steps, and the estimate of a
+/// node's steps to the end (by the node and its grid index; `u32::MAX` rules it out).
+#[derive(Clone, Copy)]
+pub(super) struct Bound<'a> {
+    pub steps: u32,
+    pub estimate: &'a dyn Fn(Node, usize) -> u32,
+}
+
+/// The expansion node by node in words `W`: the labels when `end` was numbered, `Exhausted`
 /// when it cannot be reached, `Err(TooLong)` when a number does not fit in `W`. A first-in
 /// first-out queue, each node's neighbours in the order of
 /// [`offsets`], the wave's steps asked of the graph.
+///
+/// With a [`Bound`], a node `x` whose distance `d(x)` from `start` plus its estimate `h(x)` of
+/// the steps to `end` exceeds the bound's steps is left out (never numbered, never asked of the
+/// graph), as A* leaves out what its estimate rules out. The estimate must never exceed the
+/// distance to `end` and be consistent (`h(x) <= 1 + h(y)` across a step of the graph), so every
+/// node of a shortest path to a kept node is kept too, and a kept node gets its distance over
+/// the whole wave: with a bound no less than the ends' distance, every node of a shortest path
+/// between them is kept with its number, and a walk back from `end` (which only stands on such
+/// nodes, and reads every other node as unnumbered or refuses the step to it) takes the same
+/// steps as over the whole wave (`corridor.rs` says why for the row waves).
 pub(super) fn number_scalar<W: Word, G: Graph + ?Sized>(
     cs: &CSpace,
     graph: &G,
     start: Node,
     end: Node,
     connectivity: Connectivity,
-) -> Result<Option<ZeroBuf<W>>, TooLong> {
+    bound: Option<Bound<'_>>,
+) -> Result<Numbered<W>, TooLong> {
     let g = &cs.grid;
     let mut labels = ZeroBuf::<W>::zeros(g.len());
     let mut queue = std::collections::VecDeque::new();
@@ -87,12 +127,15 @@ pub(super) fn number_scalar<W: Word, G: Graph + ?Sized>(
         .collect();
     let end_index = g.index(end);
     let mut found = start == end;
+    let mut pruned = false;
     while let Some(n) = queue.pop_front() {
         if found {
             break;
         }
         let here = g.index(n);
         let next = labels[here].next().ok_or(TooLong)?;
+        // A neighbour's distance from the start is this node's number (numbers start at 1).
+        let distance = labels[here].wide();
         let interior = (0..3).all(|k| n[k] > 0 && n[k] < dims[k] - 1);
         for (o, &step) in offs.iter().zip(&steps) {
             let i = if interior {
@@ -115,6 +158,10 @@ pub(super) fn number_scalar<W: Word, G: Graph + ?Sized>(
                 continue; // numbered, or not usable
             }
             let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
+            if bound.is_some_and(|b| distance.saturating_add((b.estimate)(m, i)) > b.steps) {
+                pruned = true;
+                continue;
+            }
             if l == W::default() {
                 let code = cs.code_in(m);
                 if code & FREE == 0 {
@@ -137,7 +184,11 @@ pub(super) fn number_scalar<W: Word, G: Graph + ?Sized>(
             queue.push_back(m);
         }
     }
-    Ok(found.then_some(labels))
+    Ok(if found {
+        Numbered::Reached(labels)
+    } else {
+        Numbered::Exhausted { pruned }
+    })
 }
 
 #[cfg(test)]
