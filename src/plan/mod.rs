@@ -526,7 +526,9 @@ const LEGS_EXTRA_MAX_BYTES: usize = 64 << 20;
 /// `u16`, for a node-by-node wave; the row wave's residues take 2 bits, and the two waves
 /// numbered together from both ends hold four sets of 2-bit residues while they gather the
 /// shortest paths' nodes), their bit sets (the decided nodes and the candidates, with the
-/// rows' words rounded up: up to 4 bits a node a wave) and its tool memo (2 bits with a tool,
+/// rows' words rounded up: up to 4 bits a node a wave; a node-by-node wave bounded from a floor
+/// keeps its estimates in their place, a row wave's, then its 2-bit residues:
+/// `wave/bounded.rs`) and its tool memo (2 bits with a tool,
 /// `leg::ToolMemo`): 5.25 bytes a node with a tool, 5 without. Over the IRB 1400's ranges at 1
 /// deg (341 x 141 x 136 = 6.5 M nodes) that is 34 MB with a tool: two legs at once; at 0.5 deg
 /// (681 x 281 x 271 = 52 M nodes) 272 MB: leg by leg, as on any grid of more than 12.8 M nodes

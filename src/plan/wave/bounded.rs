@@ -6,8 +6,9 @@
 //!
 //! *The estimate.* Over 26 neighbours, a node's steps to the end over every step between usable
 //! nodes ([`Every`]), numbered by a row wave from the end ([`Ahead`]; bitwise, no proofs, the
-//! same tool looks the wave needs): no more than its steps over the graph's (which are among
-//! them), and consistent (neighbours' distances differ by at most one). Where a wave is forced
+//! same tool looks the wave needs, its residues kept: 2 bits a node): no more than its steps
+//! over the graph's (which are among them), and consistent (neighbours' distances differ by at
+//! most one). Where a wave is forced
 //! round a few refused steps, that keeps it within about those few steps of the shortest paths,
 //! where the ends' grid steps (the largest index difference, which the estimate never falls
 //! below) would keep the whole region the obstacles' detour leaves room for. The row wave is
@@ -27,9 +28,8 @@
 
 use super::queue::grid_steps;
 use super::rows::{Level, RowWave};
-use super::{number_nodes, Bound, Connectivity, Graph, Labels, Pruned};
+use super::{number_nodes, Bound, Connectivity, Graph, Labels, Pruned, Wave};
 use crate::plan::cspace::{CSpace, Node};
-use crate::zeroed::ZeroBuf;
 use std::collections::HashMap;
 use std::sync::Mutex;
 
@@ -55,20 +55,27 @@ pub(super) fn number<G: Graph + ?Sized>(
     let mut steps = floor.max(grid_steps(start, end, connectivity));
     let mut grow = 1u32;
     let mut ahead: Option<Ahead> = None;
+    let grid = |m: Node, _: u32| grid_steps(m, end, connectivity);
     for _ in 0..TRIES {
         if connectivity == Connectivity::TwentySix && ahead.as_ref().is_none_or(|a| a.steps < steps)
         {
-            // Room for a few tries more.
-            let reach = steps.saturating_add((steps / 8).max(2));
-            ahead = Ahead::new(cs, graph, end, start, reach);
+            // Room for the next two tries (the bound grown by `grow`, then twice that): a wider
+            // reach numbers more of the open side's ball.
+            let reach = steps.saturating_add(3 * grow);
+            ahead = Some(Ahead::new(cs, graph, end, start, reach));
         }
-        let estimate = |m: Node, i: usize| match &ahead {
-            Some(a) => a.steps_to(i),
-            None => grid_steps(m, end, connectivity),
-        };
-        let bound = Bound {
-            steps,
-            estimate: &estimate,
+        let next_to = |m: Node, h: u32| ahead.as_ref().map_or(u32::MAX, |a| a.steps_next_to(m, h));
+        let bound = match ahead.as_ref().and_then(|a| a.start) {
+            Some(h) => Bound {
+                steps,
+                start: h,
+                estimate: &next_to,
+            },
+            None => Bound {
+                steps,
+                start: grid_steps(start, end, connectivity),
+                estimate: &grid,
+            },
         };
         match number_nodes(cs, &remembered, start, end, connectivity, Some(bound)) {
             Ok(numbered) => return numbered,
@@ -82,11 +89,15 @@ pub(super) fn number<G: Graph + ?Sized>(
 }
 
 /// Every node's steps to one end over every step between the graph's usable nodes (the module
-/// doc's estimate), for the nodes within a bound.
+/// doc's estimate), for the nodes within a bound: the residues of a row wave from that end
+/// (2 bits a node, as the row waves keep them), read next to a node whose steps are known (the
+/// node-by-node wave carries them from its start, whose steps the row wave gives): a step
+/// between usable nodes changes them by at most one.
 struct Ahead {
-    /// Per grid index, the steps plus one; 0 for a node not numbered (beyond the bound, or not
-    /// reached).
-    levels: ZeroBuf<u16>,
+    /// The row wave's residues, from the end.
+    wave: Wave,
+    /// The other end's (the node-by-node wave's start's) steps, if the row wave numbered it.
+    start: Option<u32>,
     /// The bound: a node whose steps from the end plus its grid steps to the other end exceed
     /// it was left out.
     steps: u32,
@@ -94,62 +105,67 @@ struct Ahead {
 
 impl Ahead {
     /// The steps from `from` over [`Every`] step of `graph`, for the nodes whose steps plus
-    /// their grid steps to `toward` are at most `steps`; `None` where the numbers would not fit
-    /// (then the grid steps estimate alone).
+    /// their grid steps to `toward` are at most `steps`.
     fn new<G: Graph + ?Sized>(
         cs: &CSpace,
         graph: &G,
         from: Node,
         toward: Node,
         steps: u32,
-    ) -> Option<Ahead> {
-        if steps >= u32::from(u16::MAX) - 1 {
-            return None;
-        }
+    ) -> Ahead {
         let every = Every(graph);
-        let levels = by_row_words!(cs, levels::<Every<G>>(cs, &every, from, toward, steps));
-        Some(Ahead { levels, steps })
+        let (labels, start) =
+            by_row_words!(cs, residues::<Every<G>>(cs, &every, from, toward, steps));
+        Ahead {
+            wave: Wave {
+                start: from,
+                end: toward,
+                connectivity: Connectivity::TwentySix,
+                labels,
+                dims: cs.grid.dims,
+                n: 0,
+            },
+            start,
+            steps,
+        }
     }
 
-    /// The estimate at grid index `i`: `u32::MAX` for a node left out.
+    /// The steps of node `m`, a usable neighbour of a node `h` steps from the end;
+    /// `u32::MAX` for a node left out.
     #[inline]
-    fn steps_to(&self, i: usize) -> u32 {
-        match self.levels.get(i) {
-            Some(&l) if l > 0 => u32::from(l) - 1,
-            _ => u32::MAX,
+    fn steps_next_to(&self, m: Node, h: u32) -> u32 {
+        match self.wave.label_next_to(m, h.saturating_add(1)) {
+            0 => u32::MAX,
+            l => l - 1,
         }
     }
 }
 
-/// [`Ahead::new`]'s numbers: a row wave from `from` bounded by `steps` toward `toward`, each
-/// level's front written down as it is numbered.
-fn levels<G: Graph + ?Sized, const K: usize>(
+/// [`Ahead::new`]'s row wave from `from` bounded by `steps` toward `toward`, numbered until it
+/// runs out: its residues, and the steps at which it numbered `toward`.
+fn residues<G: Graph + ?Sized, const K: usize>(
     cs: &CSpace,
     graph: &G,
     from: Node,
     toward: Node,
     steps: u32,
-) -> ZeroBuf<u16> {
+) -> (Labels, Option<u32>) {
     let g = &cs.grid;
-    let mut levels = ZeroBuf::<u16>::zeros(g.len());
-    let first = g.index(from);
-    levels[first] = 1;
+    let (first, target) = (g.index(from), g.index(toward));
     let mut wave =
         RowWave::<G, K>::new(cs, graph, first, None, false).bounded(toward, i64::from(steps));
     let (words, d2) = (wave.reach.words, g.dims[2]);
+    let (word, bit) = (
+        (target / d2) * words + (target % d2) / 64,
+        1u64 << ((target % d2) % 64),
+    );
+    let mut at = (first == target).then_some(0);
     while let Level::Numbered = wave.next_level() {
-        // The levels stay below the bound plus one, which fits (`Ahead::new`).
-        let l = u16::try_from(wave.level).unwrap_or(u16::MAX);
-        for &(w, bits) in &wave.front {
-            let row = (w / words) * d2 + (w % words) * 64;
-            let mut b = bits;
-            while b != 0 {
-                levels[row + b.trailing_zeros() as usize] = l;
-                b &= b - 1;
-            }
+        if at.is_none() && wave.front.iter().any(|&(w, b)| w == word && b & bit != 0) {
+            at = Some(wave.level - 1);
         }
     }
-    levels
+    (wave.labels(), at)
 }
 
 /// A graph's usable nodes with every step between them (the optimistic graph of any graph).

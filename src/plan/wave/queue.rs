@@ -83,11 +83,13 @@ pub(super) fn grid_steps(a: Node, b: Node, connectivity: Connectivity) -> u32 {
 }
 
 /// The bound of a node-by-node wave ([`number_scalar`]): the most steps, and the estimate of a
-/// node's steps to the end (by the node and its grid index; `u32::MAX` rules it out).
+/// node's steps to the end: the start's, and a neighbour's from the node and the estimate at the
+/// numbered node it is reached from (`u32::MAX` rules it out).
 #[derive(Clone, Copy)]
 pub(super) struct Bound<'a> {
     pub steps: u32,
-    pub estimate: &'a dyn Fn(Node, usize) -> u32,
+    pub start: u32,
+    pub estimate: &'a dyn Fn(Node, u32) -> u32,
 }
 
 /// The expansion node by node in words `W`: the labels when `end` was numbered, `Exhausted`
@@ -116,7 +118,8 @@ pub(super) fn number_scalar<W: Word, G: Graph + ?Sized>(
     let mut labels = ZeroBuf::<W>::zeros(g.len());
     let mut queue = std::collections::VecDeque::new();
     labels[g.index(start)] = W::ONE;
-    queue.push_back(start);
+    // Each queued node with its estimate (0 without a bound).
+    queue.push_back((start, bound.map_or(0, |b| b.start)));
     let offs = offsets(connectivity);
     let dims = [g.dims[0] as i32, g.dims[1] as i32, g.dims[2] as i32];
     // Linear-index steps of the offsets, for nodes off the grid's border (no bounds checks).
@@ -128,7 +131,7 @@ pub(super) fn number_scalar<W: Word, G: Graph + ?Sized>(
     let end_index = g.index(end);
     let mut found = start == end;
     let mut pruned = false;
-    while let Some(n) = queue.pop_front() {
+    while let Some((n, estimate)) = queue.pop_front() {
         if found {
             break;
         }
@@ -158,7 +161,8 @@ pub(super) fn number_scalar<W: Word, G: Graph + ?Sized>(
                 continue; // numbered, or not usable
             }
             let m = [n[0] + o[0], n[1] + o[1], n[2] + o[2]];
-            if bound.is_some_and(|b| distance.saturating_add((b.estimate)(m, i)) > b.steps) {
+            let ahead = bound.map_or(0, |b| (b.estimate)(m, estimate));
+            if bound.is_some_and(|b| distance.saturating_add(ahead) > b.steps) {
                 pruned = true;
                 continue;
             }
@@ -181,7 +185,7 @@ pub(super) fn number_scalar<W: Word, G: Graph + ?Sized>(
                 found = true;
                 break;
             }
-            queue.push_back(m);
+            queue.push_back((m, ahead));
         }
     }
     Ok(if found {
