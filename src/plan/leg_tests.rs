@@ -309,19 +309,24 @@ fn refusing_boxes() -> Vec<Obstacle> {
     ]
 }
 
-#[test]
-fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_accepted_ones() {
-    // tests/ok/complete_search_2deg.yaml (found by a seeded generator of random cells): on a
-    // 2 deg grid every path the paper's wave offers from P to Q has a step the step check
-    // refuses, so the walk on it runs out (a search on that wave alone gives up here); the
-    // wave over accepted steps has a path, and the leg plans.
-    let boxes = refusing_boxes();
+/// The leg of [`refusing_boxes`] from P to Q on its 2 deg grid, and its two nodes.
+struct RefusingLeg {
+    m: CollisionModel,
+    check: GridCheck,
+    cs: CSpace,
+    from: [f64; 6],
+    to: [f64; 6],
+    s: Node,
+    e: Node,
+}
+
+fn refusing_leg() -> RefusingLeg {
     let robot = Robot::irb1400();
     let placement = Placement {
         base_mm: [0.0, 0.0, 0.0],
         yaw_deg: 0.0,
     };
-    let m = CollisionModel::new(&robot, placement, boxes, 25.0, None);
+    let m = CollisionModel::new(&robot, placement, refusing_boxes(), 25.0, None);
     let a = &robot.controller.axes;
     let g = Grid::over([0, 1, 2].map(|k| [a[k].min_deg, a[k].max_deg]), 2.0);
     let check = m.grid_check(g.step_deg);
@@ -330,6 +335,34 @@ fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_acce
         [-34.0, 34.0, 36.0, 0.0, 0.0, 0.0],
         [120.0, 30.0, 40.0, 0.0, 0.0, 0.0],
     );
+    let node = |p: &[f64; 6]| g.node_at(&[p[0], p[1], p[2]]).expect("on the grid");
+    let (s, e) = (node(&from), node(&to));
+    RefusingLeg {
+        m,
+        check,
+        cs,
+        from,
+        to,
+        s,
+        e,
+    }
+}
+
+#[test]
+fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_accepted_ones() {
+    // tests/ok/complete_search_2deg.yaml (found by a seeded generator of random cells): on a
+    // 2 deg grid every path the paper's wave offers from P to Q has a step the step check
+    // refuses, so the walk on it runs out (a search on that wave alone gives up here); the
+    // wave over accepted steps has a path, and the leg plans.
+    let RefusingLeg {
+        m,
+        check,
+        cs,
+        from,
+        to,
+        s,
+        e,
+    } = refusing_leg();
     let schedule = WristSchedule::new(&from, &to);
     let memo = ToolMemo::new(&cs, &check, &schedule);
     let optimistic = graph_of(&cs, &check, &schedule, &memo);
@@ -337,11 +370,6 @@ fn a_real_cell_where_the_papers_wave_offers_only_refused_steps_plans_on_the_acce
         eager: true,
         ..optimistic
     };
-    let (s, e) = (
-        g.node_at(&[from[0], from[1], from[2]])
-            .expect("on the grid"),
-        g.node_at(&[to[0], to[1], to[2]]).expect("on the grid"),
-    );
     for method in [Method::Neighboring, Method::Extensile] {
         assert!(
             matches!(
@@ -402,29 +430,18 @@ fn the_eager_waves_bounded_by_the_optimistic_distance_ask_a_fraction_of_the_proo
     // The cell of the test above: the optimistic walk runs out, the eager waves find the way.
     // Bounded from the optimistic wave's distance (what `search` gives them) they find the same
     // path, asking the step check at a small part of the steps the whole waves ask.
-    let boxes = refusing_boxes();
-    let robot = Robot::irb1400();
-    let placement = Placement {
-        base_mm: [0.0, 0.0, 0.0],
-        yaw_deg: 0.0,
-    };
-    let m = CollisionModel::new(&robot, placement, boxes, 25.0, None);
-    let a = &robot.controller.axes;
-    let g = Grid::over([0, 1, 2].map(|k| [a[k].min_deg, a[k].max_deg]), 2.0);
-    let check = m.grid_check(g.step_deg);
-    let cs = CSpace::build(g, &check);
-    let (from, to) = (
-        [-34.0, 34.0, 36.0, 0.0, 0.0, 0.0],
-        [120.0, 30.0, 40.0, 0.0, 0.0, 0.0],
-    );
+    let RefusingLeg {
+        check,
+        cs,
+        from,
+        to,
+        s,
+        e,
+        ..
+    } = refusing_leg();
     let schedule = WristSchedule::new(&from, &to);
     let memo = ToolMemo::new(&cs, &check, &schedule);
     let optimistic = graph_of(&cs, &check, &schedule, &memo);
-    let (s, e) = (
-        g.node_at(&[from[0], from[1], from[2]])
-            .expect("on the grid"),
-        g.node_at(&[to[0], to[1], to[2]]).expect("on the grid"),
-    );
     for method in [Method::Neighboring, Method::Extensile] {
         let Err(SearchFailure::WalkFailed { steps }) = method.search(&cs, s, e, &optimistic) else {
             panic!("{method}: the optimistic walk finds a way here");

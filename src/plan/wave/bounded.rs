@@ -8,9 +8,8 @@
 //! nodes ([`Every`]), numbered by a row wave from the end ([`Ahead`]; bitwise, no proofs, the
 //! same tool looks the wave needs, its residues kept: 2 bits a node): no more than its steps
 //! over the graph's (which are among them), and consistent (neighbours' distances differ by at
-//! most one). Where a wave is forced
-//! round a few refused steps, that keeps it within about those few steps of the shortest paths,
-//! where the ends' grid steps (the largest index difference, which the estimate never falls
+//! most one). Where a wave is forced round a few refused steps, that keeps it within about
+//! those few steps of the shortest paths, where the ends' grid steps (the largest index difference, which the estimate never falls
 //! below) would keep the whole region the obstacles' detour leaves room for. The row wave is
 //! itself bounded by the grid steps to the wave's start (a node it leaves out lies on no path
 //! within its bound: its estimate is "too far"). Over 6 neighbours the estimate is the sum of the
