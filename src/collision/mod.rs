@@ -81,6 +81,8 @@ mod path;
 mod path_tests;
 mod proof;
 #[cfg(test)]
+mod proof_tests;
+#[cfg(test)]
 mod robots_tests;
 #[cfg(test)]
 mod tests;

@@ -74,7 +74,7 @@ const BOUND_LEVELS: usize = 10;
 
 /// Most distance evaluations one (part, box) pair may spend on a move before the move is
 /// rejected (or, in [`CollisionModel::min_clearance_along`], before its bound is returned as is).
-const MAX_EVALS_PER_PAIR: usize = 1 << 20;
+pub(super) const MAX_EVALS_PER_PAIR: usize = 1 << 20;
 
 /// The smallest clearance along a move (or a route): a certified lower bound, and the part
 /// (link or tool shape) and obstacle it belongs to.
