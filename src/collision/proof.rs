@@ -277,9 +277,9 @@ impl CollisionModel {
                     // Prune on the raw bound (so the slack cannot stall the search), record the
                     // slack-lowered one. Every decision is the one the distances themselves
                     // give (`geometry::decide2`).
-                    let (mut d0, mut d1) = (seen[i0], seen[i1]);
+                    let (d0, d1) = two_of(&mut seen, i0, i1);
                     let prune = evals >= MAX_EVALS_PER_PAIR
-                        || decide2(&mut d0, &mut d1, bx, |x, y| {
+                        || decide2(d0, d1, bx, |x, y| {
                             (0.5 * (x + y - reach)).min(x).min(y) >= upper.0 - tol
                         });
                     if prune {
@@ -289,10 +289,8 @@ impl CollisionModel {
                             let (x, y) = (d0.value(bx), d1.value(bx));
                             result = result.min(interval_bound(x, y, reach));
                         }
-                        (seen[i0], seen[i1]) = (d0, d1);
                         continue;
                     }
-                    (seen[i0], seen[i1]) = (d0, d1);
                     let tm = 0.5 * (t0 + t1);
                     let mut dm = self.pair_measured_at(p, k, from, to, tm);
                     evals += 1;
@@ -462,17 +460,15 @@ impl CollisionModel {
                 continue; // right of a witness
             }
             let reach = m * (t1 - t0);
-            let (mut d0, mut d1) = (seen[i0], seen[i1]);
-            let clear = decide2(&mut d0, &mut d1, b, |x, y| interval_bound(x, y, reach) >= c);
-            (seen[i0], seen[i1]) = (d0, d1);
-            if clear {
+            let (d0, d1) = two_of(&mut seen, i0, i1);
+            if decide2(d0, d1, b, |x, y| interval_bound(x, y, reach) >= c) {
                 continue;
             }
             let tm = 0.5 * (t0 + t1);
             if reach < MOVE_FLOOR_MM || evals >= MAX_EVALS_PER_PAIR || top + 2 > stack.len() {
                 // Everything left of t0 is certified. A failing right end (t = 1 or a witness)
                 // is the answer; otherwise this interval could not be proven clear.
-                return if decide(&mut d1, b, fails) {
+                return if decide(d1, b, fails) {
                     PairVerdict::Fails {
                         t: t1,
                         d: d1.value(b),
@@ -517,6 +513,18 @@ pub(super) fn tight_lower_bound(s: &Solid, b: &Aabb, capsule: f64) -> f64 {
     match s {
         Solid::Cylinder(c) => capsule.max(rim_capsules_lower_bound(c, b)),
         _ => capsule,
+    }
+}
+
+/// Two different elements of `v`, both mutable (`i != j`).
+#[inline]
+fn two_of<T>(v: &mut [T], i: usize, j: usize) -> (&mut T, &mut T) {
+    if i < j {
+        let (a, b) = v.split_at_mut(j);
+        (&mut a[i], &mut b[0])
+    } else {
+        let (a, b) = v.split_at_mut(i);
+        (&mut b[0], &mut a[j])
     }
 }
 
