@@ -2,9 +2,11 @@
 //! again the moves the plan stage proved (each candidate route as a whole, after the shortcut
 //! pass), and the pass's slides prove a via's moves to its neighbours round after round.
 //!
-//! A proof is a pure function of the model and the move's two ends (their exact bits), so an
-//! answer read back is the one the proof would give: the memo changes no result, whatever
-//! thread fills it first. It holds at most [`MEMO_MOVES`] moves; beyond that, moves are proven
+//! A proof is a pure function of the model, its clearance and the move's two ends, so an
+//! answer read back under the same clearance and ends (their exact bits) is the one the proof
+//! would give: the memo changes no result, whatever thread fills it first. A clone of the model
+//! starts with an empty memo, as a clone may change what a proof depends on (`with_margin`
+//! raises the clearance). It holds at most [`MEMO_MOVES`] moves; beyond that, moves are proven
 //! as if it were not there.
 
 use std::collections::HashMap;
@@ -13,10 +15,10 @@ use std::sync::Mutex;
 /// Most moves the memo keeps (about 120 bytes each).
 pub const MEMO_MOVES: usize = 1 << 16;
 
-/// A move's two ends, controller values' bits.
-type Key = ([u64; 6], [u64; 6]);
+/// The clearance and a move's two ends, their bits.
+type Key = (u64, [u64; 6], [u64; 6]);
 
-/// Proven (or refused) moves and their verdicts. A clone starts with the same moves.
+/// Proven (or refused) moves and their verdicts. A clone starts empty (module doc).
 #[derive(Debug, Default)]
 pub(crate) struct ProofMemo {
     moves: Mutex<HashMap<Key, bool>>,
@@ -24,22 +26,21 @@ pub(crate) struct ProofMemo {
 
 impl Clone for ProofMemo {
     fn clone(&self) -> ProofMemo {
-        ProofMemo {
-            moves: Mutex::new(self.lock().clone()),
-        }
+        ProofMemo::default()
     }
 }
 
 impl ProofMemo {
-    /// The verdict of the move `from -> to`: read back where it was given before, else
-    /// `prove()`'s, kept while there is room.
+    /// The verdict of the move `from -> to` at clearance `c`: read back where it was given
+    /// before, else `prove()`'s, kept while there is room.
     pub(crate) fn verdict(
         &self,
+        c: f64,
         from: &[f64; 6],
         to: &[f64; 6],
         prove: impl FnOnce() -> bool,
     ) -> bool {
-        let key = (from.map(f64::to_bits), to.map(f64::to_bits));
+        let key = (c.to_bits(), from.map(f64::to_bits), to.map(f64::to_bits));
         if let Some(&v) = self.lock().get(&key) {
             return v;
         }

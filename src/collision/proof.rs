@@ -54,6 +54,14 @@
 //! closed forms) and are lowered by [`DISTANCE_SLACK_REL`] before use, which covers GJK's
 //! relative stopping tolerance (about `5e-8` in f64) and rounding.
 //!
+//! The bisection (and [`CollisionModel::min_clearance_along`]'s branch and bound) uses each
+//! distance only through monotone tests: an interval's bound against the clearance, a midpoint
+//! against the clearance or the best distance so far. Each test is taken on bounds of the
+//! distance ([`Measured`]: the capsule bounds, the rim capsules, a loose bracket) and the
+//! distance itself is computed only where they leave it open, so every decision, and every
+//! figure reported, is the one the distances themselves give (`proof_tests.rs` holds them
+//! against the bisections on exact distances, bit for bit).
+//!
 //! [`Robot::urdf_joints_deg`]: crate::robot::Robot::urdf_joints_deg
 
 use super::{Blocked, CollisionModel, Part, Poses};
@@ -106,7 +114,7 @@ impl CollisionModel {
     pub fn move_is_safe(&self, from: &[f64; 6], to: &[f64; 6]) -> bool {
         self.robot.check_range6(from).is_ok()
             && self.robot.check_range6(to).is_ok()
-            && self.proven.verdict(from, to, || {
+            && self.proven.verdict(self.clearance_mm, from, to, || {
                 self.parts_are_safe(from, to, 0..self.part_count(), self.clearance_mm)
             })
     }

@@ -231,7 +231,27 @@ fn a_move_proven_twice_is_proven_once() {
     for ((a, b), v) in moves.iter().zip(&first) {
         assert_eq!(fresh.move_keeps(a, b, 10.0), *v, "{a:?} -> {b:?}");
     }
-    // A clone carries the moves; another clearance is another model with its own memo.
-    assert_eq!(model.clone().proven.len(), in_range);
-    assert_eq!(torch_model(20.0).proven.len(), 0);
+    // A clone starts empty: a model with more clearance (a clone) proves its moves anew, and
+    // refuses the moves this one proved that come within its clearance.
+    // The margin: 1 mm beyond the least clearance certified along a proven move.
+    let least = (moves.iter().zip(&first))
+        .filter(|(_, &v)| v)
+        .filter_map(|((a, b), _)| model.min_clearance_along(a, b, 0.05))
+        .fold(f64::INFINITY, |m, c| m.min(c.mm));
+    let margin = least - 10.0 + 1.0;
+    assert!(margin > 0.0 && margin < 100.0, "{least}");
+    let wider = model.with_margin(margin);
+    assert_eq!(wider.proven.len(), 0);
+    let mut now_refused = 0;
+    for ((a, b), v) in moves.iter().zip(&first) {
+        let w = wider.move_is_safe(a, b);
+        assert_eq!(w, fresh.move_keeps(a, b, 10.0 + margin), "{a:?} -> {b:?}");
+        if *v && !w {
+            now_refused += 1;
+        }
+    }
+    assert!(
+        now_refused > 0,
+        "no move proven at 10 mm is refused {margin} mm beyond"
+    );
 }
