@@ -73,12 +73,15 @@ mod grid;
 mod look;
 #[cfg(test)]
 mod look_tests;
+mod memo;
 mod near;
 mod parts;
 mod path;
 #[cfg(test)]
 mod path_tests;
 mod proof;
+#[cfg(test)]
+mod proof_tests;
 #[cfg(test)]
 mod robots_tests;
 #[cfg(test)]
@@ -210,6 +213,8 @@ pub struct CollisionModel {
     /// the boxes by coordinate (the tool looks of a leg's search,
     /// [`tool_look_sincos`](Self::tool_look_sincos)).
     look: Option<Box<ToolLook>>,
+    /// The whole moves [`move_is_safe`](Self::move_is_safe) has answered (`memo.rs`).
+    proven: memo::ProofMemo,
 }
 
 /// The poses a configuration puts the parts at: links 1..3, and link 6 (the flange) when the
@@ -297,6 +302,7 @@ impl CollisionModel {
             cyl,
             tool,
             look,
+            proven: memo::ProofMemo::default(),
         }
     }
 

@@ -54,10 +54,18 @@
 //! closed forms) and are lowered by [`DISTANCE_SLACK_REL`] before use, which covers GJK's
 //! relative stopping tolerance (about `5e-8` in f64) and rounding.
 //!
+//! The bisection (and [`CollisionModel::min_clearance_along`]'s branch and bound) uses each
+//! distance only through monotone tests: an interval's bound against the clearance, a midpoint
+//! against the clearance or the best distance so far. Each test is taken on bounds of the
+//! distance ([`Measured`]: the capsule bounds, the rim capsules, a loose bracket) and the
+//! distance itself is computed only where they leave it open, so every decision, and every
+//! figure reported, is the one the distances themselves give (`proof_tests.rs` holds them
+//! against the bisections on exact distances, bit for bit).
+//!
 //! [`Robot::urdf_joints_deg`]: crate::robot::Robot::urdf_joints_deg
 
 use super::{Blocked, CollisionModel, Part, Poses};
-use crate::geometry::{distance_segment_aabb, Aabb, Solid};
+use crate::geometry::{decide, decide2, rim_capsules_lower_bound, Aabb, Measured, Solid};
 use std::ops::Range;
 
 /// Bisection of a move stops (and rejects it) when the largest displacement of a part over the
@@ -74,7 +82,7 @@ const BOUND_LEVELS: usize = 10;
 
 /// Most distance evaluations one (part, box) pair may spend on a move before the move is
 /// rejected (or, in [`CollisionModel::min_clearance_along`], before its bound is returned as is).
-const MAX_EVALS_PER_PAIR: usize = 1 << 20;
+pub(super) const MAX_EVALS_PER_PAIR: usize = 1 << 20;
 
 /// The smallest clearance along a move (or a route): a certified lower bound, and the part
 /// (link or tool shape) and obstacle it belongs to.
@@ -101,10 +109,14 @@ impl CollisionModel {
     /// keeps every link cylinder and every tool shape at least the clearance from every box. May
     /// reject a safe move (a grazing one, see [`MOVE_FLOOR_MM`]); never accepts an unsafe one.
     /// See the module doc for the proof.
+    /// A move answered before is answered again from the model's memo (`memo.rs`), with the
+    /// verdict the proof gave.
     pub fn move_is_safe(&self, from: &[f64; 6], to: &[f64; 6]) -> bool {
         self.robot.check_range6(from).is_ok()
             && self.robot.check_range6(to).is_ok()
-            && self.parts_are_safe(from, to, 0..self.part_count(), self.clearance_mm)
+            && self.proven.verdict(self.clearance_mm, from, to, || {
+                self.parts_are_safe(from, to, 0..self.part_count(), self.clearance_mm)
+            })
     }
 
     /// The geometry of [`move_is_safe`](Self::move_is_safe) at another clearance: `true` only if
@@ -167,9 +179,9 @@ impl CollisionModel {
                 if self.certify_pair_on_bounds(p, k, from, to, m, (l0, l1), c) {
                     continue;
                 }
-                let (d0, d1) = (s0.distance_aabb(b), s1.distance_aabb(b));
+                let ends = (Measured::new(s0, b), Measured::new(s1, b));
                 if let PairVerdict::Fails { .. } =
-                    self.certify_pair(p, k, from, to, m, (d0, d1), c, false)
+                    self.certify_pair(p, k, from, to, m, ends, c, false)
                 {
                     return false;
                 }
@@ -239,41 +251,64 @@ impl CollisionModel {
     ) -> Option<Clearance> {
         let tol = if tol_mm >= 1e-6 { tol_mm } else { 1e-6 };
         let speeds = self.part_speeds(from, to);
-        let ends: Vec<_> = (0..self.part_count())
-            .map(|p| (self.pair_distances(p, from), self.pair_distances(p, to)))
+        let mut ends: Vec<_> = (0..self.part_count())
+            .map(|p| (self.pair_measures(p, from), self.pair_measures(p, to)))
             .collect();
-        // Best attained distance so far: an upper bound of the minimum, and its pair.
+        // Best attained distance so far: an upper bound of the minimum, and its pair; the first
+        // pair (in part, end, box order) at the least distance of the ends. Only the ends whose
+        // bounds reach below every end's upper bound can be it: those are made exact.
+        let least_hi = ends
+            .iter()
+            .flat_map(|(a, b)| a.iter().chain(b))
+            .fold(f64::INFINITY, |m, d| m.min(d.hi));
         let mut upper = (f64::INFINITY, None);
-        for (p, (a, b)) in ends.iter().enumerate() {
-            for (k, &d) in a.iter().chain(b).enumerate() {
-                if d < upper.0 {
-                    upper = (d, Some((p, k % a.len())));
+        for (p, (a, b)) in ends.iter_mut().enumerate() {
+            let n = a.len();
+            for (k, d) in a.iter_mut().chain(b.iter_mut()).enumerate() {
+                let bx = &self.obstacles[k % n].aabb;
+                if d.lo <= least_hi && d.value(bx) < upper.0 {
+                    upper = (d.lo, Some((p, k % n)));
                 }
             }
         }
         let mut result = f64::INFINITY;
+        // The distances measured along one pair (its ends first); the intervals name theirs.
+        let mut seen: Vec<Measured> = Vec::new();
         for (p, &m) in speeds.iter().enumerate() {
-            for (k, _) in self.part_boxes(p) {
-                let (d0, d1) = (ends[p].0[k], ends[p].1[k]);
+            for (k, bx) in self.part_boxes(p) {
+                seen.clear();
+                seen.extend([ends[p].0[k], ends[p].1[k]]);
                 let mut evals = 0usize;
-                let mut stack = vec![(0.0f64, 1.0f64, d0, d1)];
-                while let Some((t0, t1, d0, d1)) = stack.pop() {
+                let mut stack = vec![(0.0f64, 1.0f64, 0usize, 1usize)];
+                while let Some((t0, t1, i0, i1)) = stack.pop() {
                     let reach = m * (t1 - t0);
                     // Prune on the raw bound (so the slack cannot stall the search), record the
-                    // slack-lowered one.
-                    let raw = (0.5 * (d0 + d1 - reach)).min(d0).min(d1);
-                    if raw >= upper.0 - tol || evals >= MAX_EVALS_PER_PAIR {
-                        result = result.min(interval_bound(d0, d1, reach));
+                    // slack-lowered one. Every decision is the one the distances themselves
+                    // give (`geometry::decide2`).
+                    let (d0, d1) = two_of(&mut seen, i0, i1);
+                    let prune = evals >= MAX_EVALS_PER_PAIR
+                        || decide2(d0, d1, bx, |x, y| {
+                            (0.5 * (x + y - reach)).min(x).min(y) >= upper.0 - tol
+                        });
+                    if prune {
+                        // An interval whose bound is no lower than the best attained distance
+                        // cannot lower the result (which is at most that distance).
+                        if interval_bound(d0.lo, d1.lo, reach) < upper.0 {
+                            let (x, y) = (d0.value(bx), d1.value(bx));
+                            result = result.min(interval_bound(x, y, reach));
+                        }
                         continue;
                     }
                     let tm = 0.5 * (t0 + t1);
-                    let dm = self.pair_distance_at(p, k, from, to, tm);
+                    let mut dm = self.pair_measured_at(p, k, from, to, tm);
                     evals += 1;
-                    if dm < upper.0 {
-                        upper = (dm, Some((p, k)));
+                    if decide(&mut dm, bx, |x| x < upper.0) {
+                        upper = (dm.value(bx), Some((p, k)));
                     }
-                    stack.push((tm, t1, dm, d1));
-                    stack.push((t0, tm, d0, dm));
+                    seen.push(dm);
+                    let im = seen.len() - 1;
+                    stack.push((tm, t1, im, i1));
+                    stack.push((t0, tm, i0, im));
                 }
             }
         }
@@ -311,8 +346,8 @@ impl CollisionModel {
         let speeds = self.part_speeds(from, to);
         let mut first: Option<(f64, usize, usize, f64)> = None;
         for (p, &m) in speeds.iter().enumerate() {
-            let d0 = self.pair_distances(p, from);
-            let d1 = self.pair_distances(p, to);
+            let d0 = self.pair_measures(p, from);
+            let d1 = self.pair_measures(p, to);
             for (k, _) in self.part_boxes(p) {
                 if let PairVerdict::Fails { t, d } =
                     self.certify_pair(p, k, from, to, m, (d0[k], d1[k]), c, true)
@@ -353,22 +388,34 @@ impl CollisionModel {
         }
     }
 
-    /// Distances from part `p` to every box at `axes` (`f64::INFINITY` for an exempt pair;
-    /// callers skip those pairs, the slack of `lowered` is not meant for infinities).
-    fn pair_distances(&self, p: usize, axes: &[f64; 6]) -> Vec<f64> {
-        let solid = self.solid(p, &self.poses_for(axes, self.is_tool_part(p)));
-        let mut out = vec![f64::INFINITY; self.obstacles.len()];
+    /// Part `p` placed at `axes`.
+    fn part_solid(&self, p: usize, axes: &[f64; 6]) -> Solid {
+        self.solid(p, &self.poses_for(axes, self.is_tool_part(p)))
+    }
+
+    /// The distances from part `p` to every box at `axes`, as first bounds ([`Measured`]; an
+    /// exempt pair's infinite: callers skip those pairs, the slack of `lowered` is not meant
+    /// for infinities).
+    fn pair_measures(&self, p: usize, axes: &[f64; 6]) -> Vec<Measured> {
+        let solid = self.part_solid(p, axes);
+        let mut out = vec![Measured::infinite(solid); self.obstacles.len()];
         for (k, b) in self.part_boxes(p) {
-            out[k] = solid.distance_aabb(b);
+            out[k] = Measured::new(solid, b);
         }
         out
     }
 
-    /// Distance from part `p` to box `k` at parameter `t` of the move.
-    fn pair_distance_at(&self, p: usize, k: usize, from: &[f64; 6], to: &[f64; 6], t: f64) -> f64 {
-        let axes = lerp(from, to, t);
-        let solid = self.solid(p, &self.poses_for(&axes, self.is_tool_part(p)));
-        solid.distance_aabb(&self.obstacles[k].aabb)
+    /// The distance from part `p` to box `k` at parameter `t` of the move, as first bounds.
+    fn pair_measured_at(
+        &self,
+        p: usize,
+        k: usize,
+        from: &[f64; 6],
+        to: &[f64; 6],
+        t: f64,
+    ) -> Measured {
+        let solid = self.part_solid(p, &lerp(from, to, t));
+        Measured::new(solid, &self.obstacles[k].aabb)
     }
 
     /// Bisection proof that part `p` keeps clearance `c` from box `k` along the move; `m` is
@@ -384,60 +431,78 @@ impl CollisionModel {
         from: &[f64; 6],
         to: &[f64; 6],
         m: f64,
-        (d0, d1): (f64, f64),
+        (e0, e1): (Measured, Measured),
         c: f64,
         earliest: bool,
     ) -> PairVerdict {
-        if lowered(d0) < c {
-            return PairVerdict::Fails { t: 0.0, d: d0 };
+        // Every test below is taken as the distances themselves answer it
+        // (`geometry::decide`); a distance reported is exact.
+        let b = &self.obstacles[k].aabb;
+        let fails = |d: f64| lowered(d) < c;
+        let mut seen = vec![e0, e1];
+        if decide(&mut seen[0], b, fails) {
+            return PairVerdict::Fails {
+                t: 0.0,
+                d: seen[0].value(b),
+            };
         }
         // The earliest witness found so far.
         let mut best: Option<(f64, f64)> = None;
-        if lowered(d1) < c {
+        if decide(&mut seen[1], b, fails) {
+            let d = seen[1].value(b);
             if !earliest {
-                return PairVerdict::Fails { t: 1.0, d: d1 };
+                return PairVerdict::Fails { t: 1.0, d };
             }
-            best = Some((1.0, d1));
+            best = Some((1.0, d));
         }
-        // The stack holds (t0, t1, d0, d1); the left half is pushed last, popped first.
-        let mut stack = [(0.0f64, 0.0f64, 0.0f64, 0.0f64); 64];
-        stack[0] = (0.0, 1.0, d0, d1);
+        // The stack holds (t0, t1, i0, i1), the ends' distances in `seen`; the left half is
+        // pushed last, popped first.
+        let mut stack = [(0.0f64, 0.0f64, 0usize, 0usize); 64];
+        stack[0] = (0.0, 1.0, 0, 1);
         let mut top = 1usize;
         let mut evals = 0usize;
         while top > 0 {
             top -= 1;
-            let (t0, t1, d0, d1) = stack[top];
+            let (t0, t1, i0, i1) = stack[top];
             if best.is_some_and(|(tb, _)| t0 >= tb) {
                 continue; // right of a witness
             }
             let reach = m * (t1 - t0);
-            let lb = interval_bound(d0, d1, reach);
-            if lb >= c {
+            let (d0, d1) = two_of(&mut seen, i0, i1);
+            if decide2(d0, d1, b, |x, y| interval_bound(x, y, reach) >= c) {
                 continue;
             }
             let tm = 0.5 * (t0 + t1);
             if reach < MOVE_FLOOR_MM || evals >= MAX_EVALS_PER_PAIR || top + 2 > stack.len() {
                 // Everything left of t0 is certified. A failing right end (t = 1 or a witness)
                 // is the answer; otherwise this interval could not be proven clear.
-                return if lowered(d1) < c {
-                    PairVerdict::Fails { t: t1, d: d1 }
+                return if decide(d1, b, fails) {
+                    PairVerdict::Fails {
+                        t: t1,
+                        d: d1.value(b),
+                    }
                 } else {
+                    let lb = interval_bound(d0.value(b), d1.value(b), reach);
                     PairVerdict::Fails { t: tm, d: lb }
                 };
             }
-            let dm = self.pair_distance_at(p, k, from, to, tm);
+            let mut dm = self.pair_measured_at(p, k, from, to, tm);
             evals += 1;
-            if lowered(dm) < c {
+            let failing = decide(&mut dm, b, fails);
+            seen.push(dm);
+            let im = seen.len() - 1;
+            if failing {
+                let d = seen[im].value(b);
                 if !earliest {
-                    return PairVerdict::Fails { t: tm, d: dm };
+                    return PairVerdict::Fails { t: tm, d };
                 }
-                best = Some((tm, dm));
-                stack[top] = (t0, tm, d0, dm);
+                best = Some((tm, d));
+                stack[top] = (t0, tm, i0, im);
                 top += 1;
                 continue;
             }
-            stack[top] = (tm, t1, dm, d1);
-            stack[top + 1] = (t0, tm, d0, dm);
+            stack[top] = (tm, t1, im, i1);
+            stack[top + 1] = (t0, tm, i0, im);
             top += 2;
         }
         match best {
@@ -449,25 +514,26 @@ impl CollisionModel {
 
 /// A lower bound of a solid's distance to a box, better than `capsule` (its cheap bound) where a
 /// flat cap of a cylinder faces the box: capsules about shortened axes that still hold the cap
-/// rims (as `link_clear_of_box` uses them). Closed forms only, no GJK.
+/// rims (`geometry::rim_capsules_lower_bound`), as `link_clear_of_box` uses them. Closed forms
+/// only, no GJK.
 #[inline]
 pub(super) fn tight_lower_bound(s: &Solid, b: &Aabb, capsule: f64) -> f64 {
-    let Solid::Cylinder(c) = s else {
-        return capsule;
-    };
-    let d = c.b - c.a;
-    let len = d.norm();
-    let r = c.radius.max(0.0);
-    let mut best = capsule;
-    if len > 0.0 && r > 0.0 {
-        let u = d / len;
-        for k in [1.0, 2.5, 6.0] {
-            let sh = (k * r).min(0.5 * len);
-            let lb = distance_segment_aabb(&(c.a + u * sh), &(c.b - u * sh), b) - r.hypot(sh);
-            best = best.max(lb);
-        }
+    match s {
+        Solid::Cylinder(c) => capsule.max(rim_capsules_lower_bound(c, b)),
+        _ => capsule,
     }
-    best
+}
+
+/// Two different elements of `v`, both mutable (`i != j`).
+#[inline]
+fn two_of<T>(v: &mut [T], i: usize, j: usize) -> (&mut T, &mut T) {
+    if i < j {
+        let (a, b) = v.split_at_mut(j);
+        (&mut a[i], &mut b[0])
+    } else {
+        let (a, b) = v.split_at_mut(i);
+        (&mut b[0], &mut a[j])
+    }
 }
 
 /// A distance lowered by the slack that covers GJK's tolerance.

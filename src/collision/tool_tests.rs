@@ -89,7 +89,7 @@ pub(super) fn torch_model(clearance: f64) -> CollisionModel {
     )
 }
 
-fn random_six(rng: &mut Rng, robot: &Robot) -> [f64; 6] {
+pub(super) fn random_six(rng: &mut Rng, robot: &Robot) -> [f64; 6] {
     loop {
         let a = [
             rng.range(-170.0, 170.0),

@@ -26,9 +26,11 @@
 use nalgebra::{Point3, Vector3};
 
 mod certify;
+mod lazy;
 pub mod path;
 mod solids;
 pub use certify::{bracket_by_projection, clamp_to_box, clear_by_projection, Bracket};
+pub use lazy::{decide, decide2, Measured, NARROW_REL};
 pub use solids::{
     distance_obb_aabb, distance_sphere_aabb, gap_sq_aabb_aabb, obb_clear_of_aabb, Obb, Solid,
     Sphere, OBB_AXIS_SLACK_MM,
@@ -383,6 +385,74 @@ fn distance_in_band(c: &Cylinder, bx: &Aabb, lo: f64, hi: f64) -> f64 {
         return b.lower;
     }
     distance_cylinder_aabb_exact_in_band(c, bx, b.lower, b.upper)
+}
+
+/// A lower bound of the cylinder–box distance, mm, good where a flat cap faces the box (where
+/// the capsule bound is up to the radius low): the best of three capsules about the axis
+/// shortened by `k r` (k = 1, 2.5, 6, at most half the length) at each end, of radius
+/// `hypot(r, k r)`, each holding the cap rims and so the cylinder. `-inf` for a cylinder
+/// without radius or length.
+#[inline]
+pub fn rim_capsules_lower_bound(c: &Cylinder, bx: &Aabb) -> f64 {
+    let d = c.b - c.a;
+    let len = d.norm();
+    let r = c.radius.max(0.0);
+    let mut best = f64::NEG_INFINITY;
+    if len > 0.0 && r > 0.0 {
+        let u = d / len;
+        for k in [1.0, 2.5, 6.0] {
+            let sh = (k * r).min(0.5 * len);
+            let lb = distance_segment_aabb(&(c.a + u * sh), &(c.b - u * sh), bx) - r.hypot(sh);
+            best = best.max(lb);
+        }
+    }
+    best
+}
+
+/// Bounds of the value [`distance_cylinder_aabb`] gives, mm, from the capsule bounds alone (two
+/// segment queries): `(lo, hi)` with `lo <= distance_cylinder_aabb(c, bx) <= hi`, equal where
+/// that value is `lo` itself (bounds within [`BOUNDS_AGREE_TOL`]). Narrowed by
+/// [`distance_cylinder_aabb_narrowed`], made exact by [`distance_cylinder_aabb_in_band`].
+#[inline]
+pub fn distance_cylinder_aabb_bounds(c: &Cylinder, bx: &Aabb) -> (f64, f64) {
+    let (lo, hi) = bounds(c, bx);
+    if hi - lo <= BOUNDS_AGREE_TOL {
+        (lo, lo)
+    } else {
+        (lo, hi.max(lo))
+    }
+}
+
+/// Bounds of the value [`distance_cylinder_aabb`] gives in the band `lo < hi` of
+/// [`distance_cylinder_aabb_bounds`], narrower than them: the same alternating projections
+/// stopped once their bracket is within `rel_tol (1 + upper)`. Their steps are a prefix of
+/// the steps that value is read from (the bracket only narrows from step to step, and a
+/// narrower tolerance stops no sooner), so the bracket holds it: its lower end where the
+/// steps ran to [`BRACKET_TOL_REL`], parry's value clamped into the final bracket where they
+/// gave up. Both ends that value where it is reached as cheaply.
+#[inline]
+pub fn distance_cylinder_aabb_narrowed(
+    c: &Cylinder,
+    bx: &Aabb,
+    lo: f64,
+    hi: f64,
+    rel_tol: f64,
+) -> (f64, f64) {
+    let Some(b) = bracket_by_projection(c, bx, lo, hi, rel_tol.max(BRACKET_TOL_REL)) else {
+        let d = distance_cylinder_aabb_exact_in_band(c, bx, lo, hi);
+        return (d, d);
+    };
+    if b.upper - b.lower <= BRACKET_TOL_REL * (1.0 + b.upper) {
+        return (b.lower, b.lower);
+    }
+    (b.lower, b.upper.max(b.lower))
+}
+
+/// [`distance_cylinder_aabb`] where its capsule bounds `lo < hi` are known (from
+/// [`distance_cylinder_aabb_bounds`]): the same value, without measuring them again.
+#[inline]
+pub fn distance_cylinder_aabb_in_band(c: &Cylinder, bx: &Aabb, lo: f64, hi: f64) -> f64 {
+    distance_in_band(c, bx, lo, hi)
 }
 
 /// Shared by the tests of this crate's geometry and collision modules.
