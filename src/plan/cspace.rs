@@ -13,15 +13,17 @@
 //!
 //! *Inspected as the route needs it* (beyond the paper, for speed only). The paper inspects
 //! every node before the first wave; a wave between two points reaches a small part of the
-//! grid. The grid is kept in *blocks* of [`BLOCK_COLUMNS`] columns (whole along axis 3), each
-//! inspected the first time anything reads one of its nodes ([`CSpace::lazy`]) and kept for
-//! the rest of the run (every wave and leg of the route, every method of a comparison). A row
-//! wave asks, before each level, for the blocks around its front ([`CSpace::inspect_around`]):
-//! those not yet inspected are inspected together, on all cores when there are several. A
-//! node's code is its column's alone (the inspector's contract), so every read gives the code
-//! the whole grid's inspection would: the same waves, the same plans; the work and the memory
-//! grow with the part of the grid the waves explore. [`CSpace::build`] inspects every block at
-//! once (the paper's order; tests, `compare`, the `--svg` picture).
+//! grid. The grid is kept in *blocks* of [`BLOCK_COLUMNS`] columns by [`BLOCK_NODES`] values of
+//! axis 3 (a column's part), each inspected the first time anything reads one of its nodes
+//! ([`CSpace::lazy`]) and kept for the rest of the run (every wave and leg of the route, every
+//! method of a comparison). A row wave asks, before each level, for the blocks around its front
+//! ([`CSpace::inspect_around`]: the rows next to the front's, the axis-3 values next to its
+//! nodes): those not yet inspected are inspected together, on all cores when there are several.
+//! A node's code is its column's alone, whichever part of the column is inspected (the
+//! inspector's contract), so every read gives the code the whole grid's inspection would: the
+//! same waves, the same plans; the work and the memory grow with the part of the grid the
+//! waves explore. [`CSpace::build`] inspects every block at once (the paper's order; tests,
+//! `compare`, the `--svg` picture).
 
 use crate::progress::{Progress, Silent};
 use std::sync::{Arc, OnceLock};
@@ -178,6 +180,32 @@ pub trait Inspector: Sync {
         code: &mut [u8],
         column: &mut [u8],
     );
+    /// The nodes `part` (indices into `a3_deg`) of the columns `[a1, a2[j], a3[k]]` of one
+    /// value of axis 1: column `j`'s codes of `a3[part]` into
+    /// `code[j * part.len()..][..part.len()]` and its own bytes into
+    /// `column[j * column_bytes()..][..column_bytes()]`, each what the whole column's
+    /// inspection ([`inspect_slice`](Self::inspect_slice)) gives there. By default the whole
+    /// columns, the part copied out; an inspector overrides it to inspect little more than
+    /// the part.
+    fn inspect_slice_part(
+        &self,
+        a1_deg: f64,
+        a2_deg: &[f64],
+        a3_deg: &[f64],
+        part: std::ops::Range<usize>,
+        code: &mut [u8],
+        column: &mut [u8],
+    ) {
+        let d2 = a3_deg.len();
+        let mut whole = vec![0u8; a2_deg.len() * d2];
+        self.inspect_slice(a1_deg, a2_deg, a3_deg, &mut whole, column);
+        if part.is_empty() || d2 == 0 {
+            return;
+        }
+        for (to, from) in code.chunks_mut(part.len()).zip(whole.chunks(d2)) {
+            to.copy_from_slice(&from[part.clone()]);
+        }
+    }
     /// The columns `[a1, a2[j], a3[k]]` of one value of axis 1: column `j`'s codes into
     /// `code[j * a3.len()..][..a3.len()]` and its own bytes into
     /// `column[j * column_bytes()..][..column_bytes()]`. By default column by column; an
@@ -217,21 +245,28 @@ pub fn each_column(
     }
 }
 
-/// The columns of a block along axes 1 and 2 (the last blocks of an axis may hold fewer): at
-/// 1 deg over the IRB 1400's axis 3, 8 columns of 136 nodes. Smaller blocks inspect less past
-/// what the waves read, larger ones share more of a slice's work; whole runs at 1 deg took the
-/// fewest instructions from 1 x 4 to 2 x 4 columns, 3 % more at 4 x 4, 15 % more at 8 x 8
-/// (`benches/README.md`).
+/// The columns of a block along axes 1 and 2 (the last blocks of an axis may hold fewer).
+/// Smaller blocks inspect less past what the waves read, larger ones share more of a slice's
+/// work; whole runs at 1 deg took the fewest instructions from 1 x 4 to 2 x 4 columns, 3 % more
+/// at 4 x 4, 15 % more at 8 x 8 (`benches/README.md`).
 pub const BLOCK_COLUMNS: [usize; 2] = [2, 4];
+
+/// The values of axis 3 a block holds of each of its columns (the last block of a column may
+/// hold fewer): half a row word, so a row word is read from at most two blocks, and a whole
+/// run of the collision model's column inspection (`collision::block`), which a block
+/// inspects alone. The waves read about a third of a column at 1 deg on the trunk cell, so
+/// blocks whole along axis 3 inspected about three times the nodes (`benches/README.md`).
+pub const BLOCK_NODES: usize = 32;
+const _: () = assert!(64 % BLOCK_NODES == 0, "a row word holds whole blocks");
 
 /// Blocks inspected one after another on the asking thread below this many at once; from it on
 /// all cores (`crate::parallel`: handing work to threads costs about as much as inspecting a
 /// few blocks).
-const PARALLEL_BLOCKS: usize = 6;
+const PARALLEL_BLOCKS: usize = 12;
 
 /// One block of the grid, inspected: its columns in order (axis 1, then axis 2), each with its
-/// codes (`dims[2]` bytes), its own bytes ([`Inspector::column_bytes`]) and its row words
-/// ([`Row::plain`], when the grid keeps them).
+/// codes (its axis-3 part's), its own bytes ([`Inspector::column_bytes`], the column's) and its
+/// row word's bits ([`Row::plain`], when the grid keeps them; in their place in the word).
 #[derive(Clone)]
 struct Block {
     code: Box<[u8]>,
@@ -247,9 +282,10 @@ pub struct CSpace {
     column_bytes: usize,
     /// The code bits of the row words the blocks keep ([`Row::plain`]), if any.
     kept: Option<u8>,
-    /// Blocks along axes 1 and 2.
-    blocks_along: [usize; 2],
-    /// Every block, by `b0 * blocks_along[1] + b1`; filled once, when first read.
+    /// Blocks along axes 1, 2 and 3.
+    blocks_along: [usize; 3],
+    /// Every block, by `(b0 * blocks_along[1] + b1) * blocks_along[2] + b2`; filled once, when
+    /// first read.
     blocks: Vec<OnceLock<Block>>,
     /// The controller values of axis 3's nodes.
     a3_deg: Arc<[f64]>,
@@ -267,15 +303,25 @@ impl std::fmt::Debug for CSpace {
     }
 }
 
-/// One row of the grid (the nodes of fixed axes 1 and 2): its codes and its row words.
+/// One word of a row of the grid (the nodes of fixed axes 1 and 2): axis-3 indices `64 j ..
+/// 64 j + 64`, read from the blocks that hold the bits asked for ([`CSpace::row_word`]).
 #[derive(Clone, Copy, Debug)]
 pub struct Row<'a> {
-    /// The codes, `dims[2]` of them.
-    pub code: &'a [u8],
     /// The free nodes whose code has none of the kept bits ([`CSpace::kept_bits`]), one bit a
-    /// node: axis-3 index `64 j + b` is bit `b` of word `j`, the bits past the row's last node
-    /// clear. Empty when the grid keeps none.
-    pub plain: &'a [u64],
+    /// node: axis-3 index `64 j + b` is bit `b`; the bits past the row's last node, and those
+    /// of blocks not asked for, clear. 0 when the grid keeps none.
+    pub plain: u64,
+    /// Per block of the word (`BLOCK_NODES` bits each) its codes of the row; empty for a block
+    /// not asked for.
+    code: [&'a [u8]; 64 / BLOCK_NODES],
+}
+
+impl Row<'_> {
+    /// The code of bit `b` of the word, which must be a bit asked for.
+    #[inline]
+    pub fn code(&self, b: usize) -> u8 {
+        self.code[b / BLOCK_NODES][b % BLOCK_NODES]
+    }
 }
 
 impl CSpace {
@@ -300,12 +346,12 @@ impl CSpace {
 
     /// The grid's layout with no block inspected and no inspector.
     fn empty(grid: Grid, inspector: &dyn Inspector) -> CSpace {
-        let blocks_along = [0, 1].map(|k| grid.dims[k].div_ceil(BLOCK_COLUMNS[k]));
-        let n = if grid.dims[2] == 0 {
-            0
-        } else {
-            blocks_along[0] * blocks_along[1]
-        };
+        let blocks_along = [
+            grid.dims[0].div_ceil(BLOCK_COLUMNS[0]),
+            grid.dims[1].div_ceil(BLOCK_COLUMNS[1]),
+            grid.dims[2].div_ceil(BLOCK_NODES),
+        ];
+        let n = blocks_along.iter().product();
         CSpace {
             grid,
             column_bytes: inspector.column_bytes(),
@@ -329,12 +375,12 @@ impl CSpace {
             fn inspect_column(&self, _: f64, _: f64, _: &[f64], _: &mut [u8], _: &mut [u8]) {}
         }
         let cs = CSpace::empty(grid, &Plain);
-        let d2 = grid.dims[2];
         for (b, block) in cs.blocks.iter().enumerate() {
-            let r1 = cs.block_range(b)[1].clone();
+            let [_, r1, r2] = cs.block_range(b);
             let made = cs.make_block(b, |i0, code, _| {
                 for (j, i1) in r1.clone().enumerate() {
-                    for (z, c) in code[j * d2..][..d2].iter_mut().enumerate() {
+                    let codes = &mut code[j * r2.len()..][..r2.len()];
+                    for (z, c) in r2.clone().zip(codes) {
                         let n = [i0 as i32, i1 as i32, z as i32];
                         *c = if is_free(n) { FREE } else { 0 };
                     }
@@ -350,34 +396,36 @@ impl CSpace {
         self.kept
     }
 
-    /// The node ranges of block `b` along axes 1 and 2.
-    fn block_range(&self, b: usize) -> [std::ops::Range<usize>; 2] {
-        let at = [b / self.blocks_along[1], b % self.blocks_along[1]];
-        [0, 1].map(|k| {
-            let lo = at[k] * BLOCK_COLUMNS[k];
-            lo..(lo + BLOCK_COLUMNS[k]).min(self.grid.dims[k])
+    /// The node ranges of block `b` along axes 1, 2 and 3.
+    fn block_range(&self, b: usize) -> [std::ops::Range<usize>; 3] {
+        let [_, n1, n2] = self.blocks_along;
+        let at = [b / n2 / n1, b / n2 % n1, b % n2];
+        let size = [BLOCK_COLUMNS[0], BLOCK_COLUMNS[1], BLOCK_NODES];
+        [0, 1, 2].map(|k| {
+            let lo = at[k] * size[k];
+            lo..(lo + size[k]).min(self.grid.dims[k])
         })
     }
 
     /// Inspects block `b` with `inspector`.
     fn inspect_block(&self, b: usize, inspector: &dyn Inspector) -> Block {
-        let r1 = self.block_range(b)[1].clone();
+        let [_, r1, r2] = self.block_range(b);
         let a2: Vec<f64> = r1.map(|i| self.grid.value(1, i as i64)).collect();
         self.make_block(b, |i0, code, column| {
             let a1 = self.grid.value(0, i0 as i64);
-            inspector.inspect_slice(a1, &a2, &self.a3_deg, code, column)
+            inspector.inspect_slice_part(a1, &a2, &self.a3_deg, r2.clone(), code, column)
         })
     }
 
     /// Block `b`, its columns of each value `i0` of axis 1 filled by `fill(i0, codes, bytes)`
-    /// (the layout of [`Inspector::inspect_slice`]), with its row words.
+    /// (the layout of [`Inspector::inspect_slice_part`]), with its row words' bits.
     fn make_block(&self, b: usize, mut fill: impl FnMut(usize, &mut [u8], &mut [u8])) -> Block {
-        let [r0, r1] = self.block_range(b);
-        let (d2, width) = (self.grid.dims[2], self.column_bytes);
+        let [r0, r1, r2] = self.block_range(b);
+        let (len, width) = (r2.len(), self.column_bytes);
         let columns = r0.len() * r1.len();
-        let mut code = vec![0u8; columns * d2];
+        let mut code = vec![0u8; columns * len];
         let mut column = vec![0u8; columns * width];
-        let (slab, colslab) = (r1.len() * d2, r1.len() * width);
+        let (slab, colslab) = (r1.len() * len, r1.len() * width);
         for (k, i0) in r0.enumerate() {
             fill(
                 i0,
@@ -387,8 +435,12 @@ impl CSpace {
         }
         let plain = match self.kept {
             Some(bits) => {
-                let mut plain = vec![0u64; columns * d2.div_ceil(64)];
-                row_words(&code, d2, bits, &mut plain);
+                // A block's part of a row fits one word (`BLOCK_NODES` divides 64): its bits
+                // moved to their place in the row's word.
+                let mut plain = vec![0u64; columns];
+                row_words(&code, len, bits, &mut plain);
+                let shift = r2.start % 64;
+                plain.iter_mut().for_each(|p| *p <<= shift);
                 plain
             }
             None => Vec::new(),
@@ -421,68 +473,106 @@ impl CSpace {
         })
     }
 
-    /// The block of the column `(i0, i1)` and the column's place in it.
+    /// The column `(i0, i1)`'s blocks (the first, along axis 3; the next ones follow it), and
+    /// the column's place in them.
     #[inline]
     fn block_of(&self, i0: usize, i1: usize) -> (usize, usize) {
         let [c0, c1] = BLOCK_COLUMNS;
         let (b0, b1) = (i0 / c0, i1 / c1);
         let width = (self.grid.dims[1] - b1 * c1).min(c1);
         (
-            b0 * self.blocks_along[1] + b1,
+            (b0 * self.blocks_along[1] + b1) * self.blocks_along[2],
             (i0 - b0 * c0) * width + (i1 - b1 * c1),
         )
     }
 
-    /// Row `t` (axes 1 and 2 at `t / dims[1]`, `t % dims[1]`), inspected now if its block was
-    /// not yet.
+    /// The codes of column `c` (its place in its blocks) in block `b`, and how many the block
+    /// holds of a column.
     #[inline]
-    pub fn row(&self, t: usize) -> Row<'_> {
+    fn codes_of(&self, b: usize, c: usize) -> &[u8] {
+        let z = (b % self.blocks_along[2]) * BLOCK_NODES;
+        let len = (self.grid.dims[2] - z).min(BLOCK_NODES);
+        &self.block(b).code[c * len..][..len]
+    }
+
+    /// Word `j` of row `t` (axes 1 and 2 at `t / dims[1]`, `t % dims[1]`) for the bits `want`:
+    /// the blocks holding those bits inspected now if they were not yet ([`Row`]; bits past
+    /// the row's last node ask for nothing).
+    #[inline]
+    pub fn row_word(&self, t: usize, j: usize, want: u64) -> Row<'_> {
+        const PER_WORD: usize = 64 / BLOCK_NODES;
+        const HALF: u64 = if BLOCK_NODES == 64 {
+            u64::MAX
+        } else {
+            (1u64 << BLOCK_NODES) - 1
+        };
         let d1 = self.grid.dims[1] as u32;
         let (i0, i1) = ((t as u32 / d1) as usize, (t as u32 % d1) as usize);
-        let (b, c) = self.block_of(i0, i1);
-        let block = self.block(b);
-        let (d2, words) = (self.grid.dims[2], self.grid.dims[2].div_ceil(64));
-        Row {
-            code: &block.code[c * d2..][..d2],
-            plain: block.plain.get(c * words..(c + 1) * words).unwrap_or(&[]),
+        let (first, c) = self.block_of(i0, i1);
+        let mut row = Row {
+            plain: 0,
+            code: [&[]; PER_WORD],
+        };
+        for (k, code) in row.code.iter_mut().enumerate() {
+            let at = j * PER_WORD + k;
+            if want & (HALF << (k * BLOCK_NODES)) == 0 || at >= self.blocks_along[2] {
+                continue;
+            }
+            let b = first + at;
+            *code = self.codes_of(b, c);
+            row.plain |= self.block(b).plain.get(c).copied().unwrap_or(0);
         }
+        row
     }
 
     /// Inspects, together (on all cores when there are several), the blocks not inspected yet
-    /// that hold a row next to one of `rows` (axes 1 and 2 at most one step away) and, with a
-    /// `bound` (`[i0, i1]` and `r`), lies within `r` of it on both axes: what a row wave's next
-    /// level reads.
+    /// that a row wave's next level reads around its front: per front word (`(t, j, bits)`:
+    /// bits `bits` of word `j` of row `t`, [`row_word`](Self::row_word)) the rows next to row
+    /// `t` (axes 1 and 2 at most one step away), at the axis-3 values at most one step from
+    /// the bits; with a `bound` (a node and `r`), only those within `r` of the node on every
+    /// axis.
     pub fn inspect_around(
         &self,
-        rows: impl Iterator<Item = usize>,
-        bound: Option<([i64; 2], i64)>,
+        front: impl Iterator<Item = (usize, usize, u64)>,
+        bound: Option<([i64; 3], i64)>,
     ) {
-        let [d0, d1, _] = self.grid.dims;
+        let [d0, d1, d2] = self.grid.dims.map(|d| d as i64);
         let mut wanted: Vec<usize> = Vec::new();
-        let mut last = usize::MAX;
-        for t in rows {
-            if t == last {
+        for (t, j, bits) in front {
+            if bits == 0 {
                 continue;
             }
-            last = t;
-            let (i0, i1) = ((t / d1) as i64, (t % d1) as i64);
-            let mut lo = [(i0 - 1).max(0), (i1 - 1).max(0)];
-            let mut hi = [(i0 + 1).min(d0 as i64 - 1), (i1 + 1).min(d1 as i64 - 1)];
+            let (i0, i1) = ((t as i64 / d1), (t as i64 % d1));
+            let z = 64 * j as i64;
+            let mut lo = [
+                (i0 - 1).max(0),
+                (i1 - 1).max(0),
+                (z + i64::from(bits.trailing_zeros()) - 1).max(0),
+            ];
+            let mut hi = [
+                (i0 + 1).min(d0 - 1),
+                (i1 + 1).min(d1 - 1),
+                (z + 64 - i64::from(bits.leading_zeros())).min(d2 - 1),
+            ];
             if let Some((to, r)) = bound {
-                for k in 0..2 {
+                for k in 0..3 {
                     lo[k] = lo[k].max(to[k] - r);
                     hi[k] = hi[k].min(to[k] + r);
                 }
             }
-            if lo[0] > hi[0] || lo[1] > hi[1] {
+            if (0..3).any(|k| lo[k] > hi[k]) {
                 continue;
             }
             let [c0, c1] = BLOCK_COLUMNS.map(|c| c as i64);
+            let c2 = BLOCK_NODES as i64;
+            let [_, n1, n2] = self.blocks_along.map(|n| n as i64);
             for b0 in lo[0] / c0..=hi[0] / c0 {
                 for b1 in lo[1] / c1..=hi[1] / c1 {
-                    let b = (b0 * self.blocks_along[1] as i64 + b1) as usize;
-                    if self.blocks[b].get().is_none() {
-                        wanted.push(b);
+                    for b2 in lo[2] / c2..=hi[2] / c2 {
+                        let b = ((b0 * n1 + b1) * n2 + b2) as usize;
+                        if self.blocks[b].get().is_none() {
+                            wanted.push(b);
+                        }
                     }
                 }
             }
@@ -533,12 +623,13 @@ impl CSpace {
         self.blocks.len()
     }
 
-    /// The inspector's bytes of the column holding node `n` (empty when it keeps none).
+    /// The inspector's bytes of the column holding node `n` (empty when it keeps none), read
+    /// from the block holding the node (every block of a column holds them).
     #[inline]
     pub fn column(&self, n: Node) -> &[u8] {
         let (b, c) = self.block_of(n[0] as usize, n[1] as usize);
         let w = self.column_bytes;
-        &self.block(b).column[c * w..][..w]
+        &self.block(b + n[2] as usize / BLOCK_NODES).column[c * w..][..w]
     }
 
     #[inline]
@@ -565,7 +656,8 @@ impl CSpace {
     #[inline]
     pub fn code_in(&self, n: Node) -> u8 {
         let (b, c) = self.block_of(n[0] as usize, n[1] as usize);
-        self.block(b).code[c * self.grid.dims[2] + n[2] as usize]
+        let z = n[2] as usize;
+        self.codes_of(b + z / BLOCK_NODES, c)[z % BLOCK_NODES]
     }
 
     /// The code of the node with linear index `i`.
