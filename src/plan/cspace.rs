@@ -284,9 +284,12 @@ pub struct CSpace {
     kept: Option<u8>,
     /// Blocks along axes 1, 2 and 3.
     blocks_along: [usize; 3],
-    /// Every block, by `(b0 * blocks_along[1] + b1) * blocks_along[2] + b2`; filled once, when
-    /// first read.
-    blocks: Vec<OnceLock<Block>>,
+    /// Every block: per column block (the blocks of the same columns, by `b0 * blocks_along[1]
+    /// + b1`) its blocks along axis 3, made when the first of them is read (so a grid costs
+    /// memory for the columns its waves reach, a fraction of a page per column block it does
+    /// not); each block filled once, when first read. Block `b` of the flat numbering is block
+    /// `b % blocks_along[2]` of column block `b / blocks_along[2]`.
+    blocks: Vec<OnceLock<Box<[OnceLock<Block>]>>>,
     /// The controller values of axis 3's nodes.
     a3_deg: Arc<[f64]>,
     /// What inspects a block not inspected yet (`None`: every block was inspected when made).
@@ -337,9 +340,10 @@ impl CSpace {
     /// not depend on the number of threads.
     pub fn build(grid: Grid, inspector: &dyn Inspector) -> CSpace {
         let cs = CSpace::empty(grid, inspector);
-        let all: Vec<usize> = (0..cs.blocks.len()).collect();
+        let all: Vec<usize> = (0..cs.block_count()).collect();
+        let n2 = cs.blocks_along[2];
         crate::parallel::map(&all, |&b| {
-            let _ = cs.blocks[b].set(cs.inspect_block(b, inspector));
+            let _ = cs.along(b / n2)[b % n2].set(cs.inspect_block(b, inspector));
         });
         cs
     }
@@ -351,7 +355,11 @@ impl CSpace {
             grid.dims[1].div_ceil(BLOCK_COLUMNS[1]),
             grid.dims[2].div_ceil(BLOCK_NODES),
         ];
-        let n = blocks_along.iter().product();
+        let n = if blocks_along[2] == 0 {
+            0
+        } else {
+            blocks_along[0] * blocks_along[1]
+        };
         CSpace {
             grid,
             column_bytes: inspector.column_bytes(),
@@ -375,7 +383,8 @@ impl CSpace {
             fn inspect_column(&self, _: f64, _: f64, _: &[f64], _: &mut [u8], _: &mut [u8]) {}
         }
         let cs = CSpace::empty(grid, &Plain);
-        for (b, block) in cs.blocks.iter().enumerate() {
+        let n2 = cs.blocks_along[2];
+        for b in 0..cs.block_count() {
             let [_, r1, r2] = cs.block_range(b);
             let made = cs.make_block(b, |i0, code, _| {
                 for (j, i1) in r1.clone().enumerate() {
@@ -386,7 +395,7 @@ impl CSpace {
                     }
                 }
             });
-            let _ = block.set(made);
+            let _ = cs.along(b / n2)[b % n2].set(made);
         }
         cs
     }
@@ -452,47 +461,72 @@ impl CSpace {
         }
     }
 
-    /// Block `b`, inspected now if it was not yet.
+    /// The blocks along axis 3 of column block `cb`, made now if they were not yet.
     #[inline]
-    fn block(&self, b: usize) -> &Block {
-        match self.blocks[b].get() {
+    fn along(&self, cb: usize) -> &[OnceLock<Block>] {
+        self.blocks[cb].get_or_init(|| (0..self.blocks_along[2]).map(|_| OnceLock::new()).collect())
+    }
+
+    /// Whether block `b2` of column block `cb` has been inspected.
+    #[inline]
+    fn inspected_at(&self, cb: usize, b2: usize) -> bool {
+        self.blocks[cb]
+            .get()
+            .is_some_and(|along| along[b2].get().is_some())
+    }
+
+    /// Whether block `b` (flat numbering) has been inspected.
+    fn inspected(&self, b: usize) -> bool {
+        let n2 = self.blocks_along[2];
+        self.inspected_at(b / n2, b % n2)
+    }
+
+    /// Block `b2` along axis 3 of column block `cb`, inspected now if it was not yet.
+    #[inline]
+    fn block(&self, cb: usize, b2: usize) -> &Block {
+        match self.blocks[cb].get().and_then(|along| along[b2].get()) {
             Some(block) => block,
-            None => self.fill(b),
+            None => self.fill(cb, b2),
         }
     }
 
-    /// Block `b`, inspected by the grid's inspector (once, whichever thread asks first; the
-    /// others wait for it).
+    /// Block `b` of the flat numbering, inspected now if it was not yet.
+    fn block_flat(&self, b: usize) -> &Block {
+        let n2 = self.blocks_along[2];
+        self.block(b / n2, b % n2)
+    }
+
+    /// Block `b2` of column block `cb`, inspected by the grid's inspector (once, whichever
+    /// thread asks first; the others wait for it).
     #[cold]
     #[inline(never)]
-    fn fill(&self, b: usize) -> &Block {
-        self.blocks[b].get_or_init(|| match &self.inspector {
+    fn fill(&self, cb: usize, b2: usize) -> &Block {
+        let b = cb * self.blocks_along[2] + b2;
+        self.along(cb)[b2].get_or_init(|| match &self.inspector {
             Some(inspector) => self.inspect_block(b, &**inspector),
             // Never: a grid without an inspector had every block inspected when made.
             None => self.inspect_block(b, &Blocked),
         })
     }
 
-    /// The column `(i0, i1)`'s blocks (the first, along axis 3; the next ones follow it), and
-    /// the column's place in them.
+    /// The column block of column `(i0, i1)`, and the column's place in its blocks.
     #[inline]
     fn block_of(&self, i0: usize, i1: usize) -> (usize, usize) {
         let [c0, c1] = BLOCK_COLUMNS;
         let (b0, b1) = (i0 / c0, i1 / c1);
         let width = (self.grid.dims[1] - b1 * c1).min(c1);
         (
-            (b0 * self.blocks_along[1] + b1) * self.blocks_along[2],
+            b0 * self.blocks_along[1] + b1,
             (i0 - b0 * c0) * width + (i1 - b1 * c1),
         )
     }
 
-    /// The codes of column `c` (its place in its blocks) in block `b`, and how many the block
-    /// holds of a column.
+    /// The codes of column `c` (its place in its blocks) in block `b2` of column block `cb`.
     #[inline]
-    fn codes_of(&self, b: usize, c: usize) -> &[u8] {
-        let z = (b % self.blocks_along[2]) * BLOCK_NODES;
+    fn codes_of(&self, cb: usize, b2: usize, c: usize) -> &[u8] {
+        let z = b2 * BLOCK_NODES;
         let len = (self.grid.dims[2] - z).min(BLOCK_NODES);
-        &self.block(b).code[c * len..][..len]
+        &self.block(cb, b2).code[c * len..][..len]
     }
 
     /// Word `j` of row `t` (axes 1 and 2 at `t / dims[1]`, `t % dims[1]`) for the bits `want`:
@@ -508,19 +542,18 @@ impl CSpace {
         };
         let d1 = self.grid.dims[1] as u32;
         let (i0, i1) = ((t as u32 / d1) as usize, (t as u32 % d1) as usize);
-        let (first, c) = self.block_of(i0, i1);
+        let (cb, c) = self.block_of(i0, i1);
         let mut row = Row {
             plain: 0,
             code: [&[]; PER_WORD],
         };
         for (k, code) in row.code.iter_mut().enumerate() {
-            let at = j * PER_WORD + k;
-            if want & (HALF << (k * BLOCK_NODES)) == 0 || at >= self.blocks_along[2] {
+            let b2 = j * PER_WORD + k;
+            if want & (HALF << (k * BLOCK_NODES)) == 0 || b2 >= self.blocks_along[2] {
                 continue;
             }
-            let b = first + at;
-            *code = self.codes_of(b, c);
-            row.plain |= self.block(b).plain.get(c).copied().unwrap_or(0);
+            *code = self.codes_of(cb, b2, c);
+            row.plain |= self.block(cb, b2).plain.get(c).copied().unwrap_or(0);
         }
         row
     }
@@ -568,10 +601,10 @@ impl CSpace {
             let [_, n1, n2] = self.blocks_along.map(|n| n as i64);
             for b0 in lo[0] / c0..=hi[0] / c0 {
                 for b1 in lo[1] / c1..=hi[1] / c1 {
+                    let cb = b0 * n1 + b1;
                     for b2 in lo[2] / c2..=hi[2] / c2 {
-                        let b = ((b0 * n1 + b1) * n2 + b2) as usize;
-                        if self.blocks[b].get().is_none() {
-                            wanted.push(b);
+                        if !self.inspected_at(cb as usize, b2 as usize) {
+                            wanted.push((cb * n2 + b2) as usize);
                         }
                     }
                 }
@@ -585,14 +618,14 @@ impl CSpace {
     fn inspect_blocks(&self, mut wanted: Vec<usize>) {
         wanted.sort_unstable();
         wanted.dedup();
-        wanted.retain(|&b| self.blocks[b].get().is_none());
+        wanted.retain(|&b| !self.inspected(b));
         if wanted.len() < PARALLEL_BLOCKS {
             for &b in &wanted {
-                self.block(b);
+                self.block_flat(b);
             }
         } else {
             crate::parallel::map(&wanted, |&b| {
-                self.block(b);
+                self.block_flat(b);
             });
         }
     }
@@ -600,36 +633,37 @@ impl CSpace {
     /// Inspects every block not inspected yet, on all cores, reporting one unit of `progress`
     /// per block (the caller announces nothing: this announces the stage when there is work).
     pub fn inspect_all(&self, progress: &dyn Progress) {
-        let wanted: Vec<usize> = (0..self.blocks.len())
-            .filter(|&b| self.blocks[b].get().is_none())
+        let wanted: Vec<usize> = (0..self.block_count())
+            .filter(|&b| !self.inspected(b))
             .collect();
         if wanted.is_empty() {
             return;
         }
         progress.stage("inspecting the grid", wanted.len() as u64);
         crate::parallel::map(&wanted, |&b| {
-            self.block(b);
+            self.block_flat(b);
             progress.advance(1);
         });
     }
 
     /// How many blocks have been inspected so far, of [`block_count`](Self::block_count).
     pub fn inspected_blocks(&self) -> usize {
-        self.blocks.iter().filter(|b| b.get().is_some()).count()
+        let along = self.blocks.iter().filter_map(OnceLock::get);
+        along.flatten().filter(|b| b.get().is_some()).count()
     }
 
     /// How many blocks the grid has.
     pub fn block_count(&self) -> usize {
-        self.blocks.len()
+        self.blocks.len() * self.blocks_along[2]
     }
 
     /// The inspector's bytes of the column holding node `n` (empty when it keeps none), read
     /// from the block holding the node (every block of a column holds them).
     #[inline]
     pub fn column(&self, n: Node) -> &[u8] {
-        let (b, c) = self.block_of(n[0] as usize, n[1] as usize);
+        let (cb, c) = self.block_of(n[0] as usize, n[1] as usize);
         let w = self.column_bytes;
-        &self.block(b + n[2] as usize / BLOCK_NODES).column[c * w..][..w]
+        &self.block(cb, n[2] as usize / BLOCK_NODES).column[c * w..][..w]
     }
 
     #[inline]
@@ -655,9 +689,9 @@ impl CSpace {
     /// The code of node `n`, which lies in the grid.
     #[inline]
     pub fn code_in(&self, n: Node) -> u8 {
-        let (b, c) = self.block_of(n[0] as usize, n[1] as usize);
+        let (cb, c) = self.block_of(n[0] as usize, n[1] as usize);
         let z = n[2] as usize;
-        self.codes_of(b + z / BLOCK_NODES, c)[z % BLOCK_NODES]
+        self.codes_of(cb, z / BLOCK_NODES, c)[z % BLOCK_NODES]
     }
 
     /// The code of the node with linear index `i`.
@@ -669,9 +703,9 @@ impl CSpace {
     /// The free nodes of the whole grid (every block inspected first).
     pub fn free_count(&self) -> usize {
         self.inspect_all(&Silent);
-        (0..self.blocks.len())
+        (0..self.block_count())
             .map(|b| {
-                let code = &self.block(b).code;
+                let code = &self.block_flat(b).code;
                 code.iter().filter(|&&c| c & FREE != 0).count()
             })
             .sum()

@@ -154,6 +154,17 @@ fn a_lazy_grid_reads_what_the_whole_inspection_holds() {
     let n = [9, 13, 5];
     assert_eq!(lazy.code(n), whole.code(n));
     assert_eq!(lazy.inspected_blocks(), 1);
+    // Only the read column block holds its blocks along axis 3; asking whether the others
+    // were inspected makes none.
+    let made = |cs: &CSpace| cs.blocks.iter().filter(|b| b.get().is_some()).count();
+    assert_eq!(made(&lazy), 1);
+    assert!(
+        (0..lazy.block_count())
+            .filter(|&b| lazy.inspected(b))
+            .count()
+            == 1
+    );
+    assert_eq!(made(&lazy), 1);
     assert_eq!(
         lazy.column(n),
         &[(9 - 17) as i8 as u8, (13 - 9) as i8 as u8]
