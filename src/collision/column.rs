@@ -106,7 +106,8 @@ impl GridCheck {
     }
 
     /// What every column `[a1_deg, *, a3_deg]` of one slice of axis 1 shares
-    /// (`Slice`): made once per slice by the grid build.
+    /// (`Slice`): made once per block of the slice by the grid build, link 1's part once per
+    /// slice (`grid.rs`, `SliceMemo`).
     pub(crate) fn slice(&self, a1_deg: f64, a3_deg: &[f64]) -> Slice<'_> {
         // The grid's slices share their axis-3 values: their angles are made once.
         let kept = self.angles.get_or_init(|| Angles::new(a3_deg));
@@ -116,10 +117,14 @@ impl GridCheck {
                 .iter()
                 .zip(a3_deg)
                 .all(|(a, b)| a.to_bits() == b.to_bits());
+        let (bytes, pose1) = self.slices.get(a1_deg, || {
+            let pose1 = self.chain.pose1(a1_deg.to_radians().sin_cos());
+            (self.slice_bytes(a1_deg), pose1)
+        });
         Slice {
             a1_deg,
-            bytes: self.slice_bytes(a1_deg),
-            pose1: self.chain.pose1(a1_deg.to_radians().sin_cos()),
+            bytes,
+            pose1,
             angles: if same {
                 Cow::Borrowed(kept)
             } else {
