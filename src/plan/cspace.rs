@@ -426,6 +426,52 @@ impl CSpace {
         })
     }
 
+    /// Blocks `b2s` (along axis 3) of column block `cb` inspected together by the grid's
+    /// inspector: each column's part that the blocks cover inspected at once (what the
+    /// column's parts share is done once), then cut into the blocks, each kept unless another
+    /// thread kept it first (the same codes either way).
+    fn inspect_run(&self, cb: usize, b2s: std::ops::Range<usize>) {
+        let inspector: &dyn Inspector = match &self.inspector {
+            Some(inspector) => &**inspector,
+            // Never: a grid without an inspector had every block inspected when made.
+            None => &Blocked,
+        };
+        let n2 = self.blocks_along[2];
+        let [r0, r1, first] = self.block_range(cb * n2 + b2s.start);
+        let z = first.start..self.block_range(cb * n2 + b2s.end - 1)[2].end;
+        let a2: Vec<f64> = r1.clone().map(|i| self.grid.value(1, i as i64)).collect();
+        let (len, width) = (z.len(), self.column_bytes);
+        let (slab, colslab) = (r1.len() * len, r1.len() * width);
+        let mut code = vec![0u8; r0.len() * slab];
+        let mut column = vec![0u8; r0.len() * colslab];
+        for (k, i0) in r0.clone().enumerate() {
+            let a1 = self.grid.value(0, i0 as i64);
+            let (code, own) = (&mut code[k * slab..][..slab], &mut column[k * colslab..]);
+            inspector.inspect_slice_part(
+                a1,
+                &a2,
+                &self.a3_deg,
+                z.clone(),
+                code,
+                &mut own[..colslab],
+            );
+        }
+        let along = self.along(cb);
+        for b2 in b2s {
+            let b = cb * n2 + b2;
+            let part = self.block_range(b)[2].clone();
+            let at = part.start - z.start;
+            let made = self.make_block(b, |i0, out, own| {
+                let k = i0 - r0.start;
+                for (j, out) in out.chunks_mut(part.len()).enumerate() {
+                    out.copy_from_slice(&code[k * slab + j * len + at..][..part.len()]);
+                }
+                own.copy_from_slice(&column[k * colslab..][..colslab]);
+            });
+            let _ = along[b2].set(made);
+        }
+    }
+
     /// Block `b`, its columns of each value `i0` of axis 1 filled by `fill(i0, codes, bytes)`
     /// (the layout of [`Inspector::inspect_slice_part`]), with its row words' bits.
     fn make_block(&self, b: usize, mut fill: impl FnMut(usize, &mut [u8], &mut [u8])) -> Block {
@@ -619,14 +665,22 @@ impl CSpace {
         wanted.sort_unstable();
         wanted.dedup();
         wanted.retain(|&b| !self.inspected(b));
+        // The blocks of one column block together, from its first wanted to its last.
+        let n2 = self.blocks_along[2];
+        let mut runs: Vec<(usize, std::ops::Range<usize>)> = Vec::new();
+        for &b in &wanted {
+            let (cb, b2) = (b / n2, b % n2);
+            match runs.last_mut() {
+                Some((last, b2s)) if *last == cb => b2s.end = b2 + 1,
+                _ => runs.push((cb, b2..b2 + 1)),
+            }
+        }
         if wanted.len() < PARALLEL_BLOCKS {
-            for &b in &wanted {
-                self.block_flat(b);
+            for (cb, b2s) in runs {
+                self.inspect_run(cb, b2s);
             }
         } else {
-            crate::parallel::map(&wanted, |&b| {
-                self.block_flat(b);
-            });
+            crate::parallel::map(&runs, |(cb, b2s)| self.inspect_run(*cb, b2s.clone()));
         }
     }
 

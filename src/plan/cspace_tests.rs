@@ -219,6 +219,23 @@ fn a_lazy_grid_reads_what_the_whole_inspection_holds() {
         around(&fresh, 4 * d1 + 4, 0, 1 << 5, Some(([5, 5, 5], 1))),
         1
     );
+    // Two front words of one row far apart along axis 3 (values 0..2 and 93..95): the blocks
+    // between them are inspected with them (a column block's wanted blocks together, from the
+    // first to the last), every code the whole grid's.
+    let fresh = CSpace::lazy(g, Arc::new(Own));
+    let words = [(4 * d1 + 4, 0, 1 << 1), (4 * d1 + 4, 1, 1 << 30)];
+    fresh.inspect_around(words.into_iter(), None);
+    assert_eq!(fresh.inspected_blocks(), blocks_of(&rows, 0..=95));
+    assert_eq!(blocks_of(&rows, 0..=95), 12);
+    for i in 0..g.len() {
+        let m = g.node(i);
+        let (cb, _) = fresh.block_of(m[0] as usize, m[1] as usize);
+        if fresh.inspected_at(cb, m[2] as usize / BLOCK_NODES) {
+            assert_eq!(fresh.code_index(i), whole.code_index(i), "{m:?}");
+            assert_eq!(fresh.column(m), whole.column(m), "{m:?}");
+        }
+    }
+    assert_eq!(fresh.inspected_blocks(), 12);
     // On the grid's edge.
     let rows: Vec<(i64, i64)> = corner(0, 0).into_iter().flatten().collect();
     let fresh = CSpace::lazy(g, Arc::new(Own));
