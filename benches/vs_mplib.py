@@ -19,6 +19,10 @@ time is marked). Wall clock on a shared machine is noisy: take the figures when 
 
     pip install mplib pyyaml
     python3 benches/vs_mplib.py --binary target/release/gen-rapid [CELL ...]
+
+Where mplib cannot be installed, `--recorded benches/mplib-recorded.json` takes the peer's
+times from a table recorded by `--record FILE` on a machine that has it (its date, machine and
+mplib version are in the file; the ratio then compares minutes that were not the same).
 """
 
 import argparse
@@ -154,8 +158,12 @@ def main():
     ap.add_argument("--binary", default=str(ROOT / "target/release/gen-rapid"))
     ap.add_argument("--runs", type=int, default=5)
     ap.add_argument("--peer-runs", type=int, default=3)
+    ap.add_argument("--record", metavar="FILE", help="also write mplib's times to FILE (JSON)")
+    ap.add_argument("--recorded", metavar="FILE", help="mplib's times from FILE, not mplib")
     ap.add_argument("cells", nargs="*")
     args = ap.parse_args()
+    recorded = json.loads(Path(args.recorded).read_text()) if args.recorded else None
+    record = {}
     cells = [Path(c) for c in args.cells] or sorted((ROOT / "benches/cells").glob("*.yaml"))
     with tempfile.TemporaryDirectory() as d:
         urdf = Path(d) / "irb1400.urdf"
@@ -164,6 +172,13 @@ def main():
         print("| cell | mplib plan (ms) | gen-rapid end to end (ms) | ratio |")
         print("|---|---|---|---|")
         for cell in cells:
+            if recorded is not None:
+                if cell.stem not in recorded["cells"]:
+                    sys.exit(f"{args.recorded} has no time for {cell.stem}")
+                o = gen_rapid_ms(args.binary, cell, args.runs)
+                p = recorded["cells"][cell.stem]
+                print(f"| {cell.stem} | {p:.1f} (recorded) | {o:.1f} | {o / p:.2f}x |", flush=True)
+                continue
             points = placed_points(args.binary, cell)
             peer = Peer(cell, urdf)
             peer_ms, ours_ms, failed = [], [], 0
@@ -176,9 +191,21 @@ def main():
                 if k < args.runs:
                     ours_ms.append(gen_rapid_ms(args.binary, cell, 1))
             p, o = statistics.median(peer_ms), statistics.median(ours_ms)
+            record[cell.stem] = round(p, 1)
             note = f" ({failed} of {args.peer_runs} runs with a leg failed)" if failed else ""
             print(f"| {cell.stem} | {p:.1f}{note} | {o:.1f} | {o / p:.2f}x |", flush=True)
         print(f"load after: {os.getloadavg()[0]:.2f}", file=sys.stderr)
+    if args.record:
+        import mplib
+
+        table = {
+            "what": "mplib RRTConnect plan-only time, ms, median of --peer-runs (benches/vs_mplib.py)",
+            "mplib": getattr(mplib, "__version__", "unknown"),
+            "date": time.strftime("%Y-%m-%d"),
+            "machine": f"{os.cpu_count()} CPUs, load {os.getloadavg()[0]:.2f} after",
+            "cells": record,
+        }
+        Path(args.record).write_text(json.dumps(table, indent=2) + "\n")
 
 
 if __name__ == "__main__":
