@@ -33,6 +33,7 @@
 
 pub mod cspace;
 pub mod direct;
+mod lattice;
 pub mod leg;
 pub mod merge;
 pub mod motion;
