@@ -40,12 +40,7 @@ use std::borrow::Cow;
 /// Safety margin (mm) of the per-column culling of boxes.
 const CULL_MARGIN_MM: f64 = 1e-6;
 
-/// Most fixed cylinders (links 1 and 2) whose slice answers are kept (link 1's beyond them are
-/// placed and checked per column, on link 1's pose of the slice).
-pub const MAX_FIXED: usize = 8;
-
-/// Per fixed cylinder, the slice's answer for link 1 (`GridCheck::slice_bytes`).
-pub type SliceBytes = [Option<Option<u8>>; MAX_FIXED];
+pub use super::grid::{SliceBytes, MAX_FIXED};
 
 /// What the columns of one slice of axis 1 share ([`GridCheck::slice`]): link 1's answers
 /// ([`GridCheck::slice_bytes`]) and pose, and the axis-3 values with their sines and cosines

@@ -47,7 +47,6 @@
 //! wrist at the node decides ([`CollisionModel::tool_is_free`]).
 
 use super::angles::Angles;
-use super::column::SliceBytes;
 use super::proof::lowered;
 use super::CollisionModel;
 use crate::robot::{Pose, SinCosChain};
@@ -114,6 +113,13 @@ pub struct GridCheck {
     /// Link 1's answers and pose per value of axis 1 (`column.rs`, [`SliceMemo`]).
     pub(super) slices: SliceMemo,
 }
+
+/// Most fixed cylinders (links 1 and 2) whose slice answers are kept (link 1's beyond them are
+/// placed and checked per column, on link 1's pose of the slice; `column.rs`).
+pub const MAX_FIXED: usize = 8;
+
+/// Per fixed cylinder, the slice's answer for link 1 (`GridCheck::slice_bytes`, `column.rs`).
+pub type SliceBytes = [Option<Option<u8>>; MAX_FIXED];
 
 /// What link 1 gives every column of a slice of axis 1 (`column.rs`: its column bytes or
 /// blocked, and its pose), per value of axis 1 (its bits), made by the first block of the
