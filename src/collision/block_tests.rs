@@ -254,7 +254,8 @@ fn a_grid_built_on_threads_equals_a_column_by_column_fill() {
 }
 
 /// Every column of `grid` inspected alone (`inspect_column`: a fresh slice and memo) gives the
-/// codes and column bytes of `built`, and `at_node` sees every node with its axes.
+/// codes and column bytes of `built` (the bytes as every block of the column along axis 3
+/// holds them), and `at_node` sees every node with its axes.
 fn each_column_alone(
     check: &GridCheck,
     grid: &Grid,
@@ -273,10 +274,75 @@ fn each_column_alone(
             for (i3, &code) in codes.iter().enumerate() {
                 let n = [i1 as i32, i2 as i32, i3 as i32];
                 assert_eq!(built.code(n), code, "{n:?}");
+                assert_eq!(built.column(n), &bytes[..], "{n:?}");
                 at_node(n, [a1, a2, a3[i3]]);
             }
         }
     }
+}
+
+/// A part of a slice's columns (`Inspector::inspect_slice_part`: only the runs holding nodes
+/// of the part inspected) holds the codes and column bytes of the whole slice's inspection
+/// there, on random cells (with and without the torch) at 1 deg, for parts on the runs'
+/// boundaries and across them, of one node, of the last nodes, and the whole column; the free
+/// bits are `arm_is_free`'s. A part that left out a run holding one of its nodes, or read a
+/// run's carried bound from another run's slot, would leave a code the whole slice does not
+/// have.
+#[test]
+fn a_part_of_a_slice_holds_the_whole_slices_codes() {
+    use crate::plan::cspace::Inspector;
+    let mut rng = Rng(0x9A27_0001_5EED_0042);
+    let grid = Grid::over([[-170.0, 170.0], [-70.0, 70.0], [-65.0, 70.0]], 1.0);
+    let a3: Vec<f64> = (0..grid.dims[2] as i64).map(|i| grid.value(2, i)).collect();
+    let d2 = a3.len();
+    let parts = [
+        0..32,
+        32..64,
+        128..d2,
+        5..40,
+        31..33,
+        70..71,
+        0..d2,
+        100..d2,
+    ];
+    let (mut free, mut compared) = (0, 0);
+    for _ in 0..12 {
+        let model = random_model(&mut rng);
+        let check = model.grid_check(grid.step_deg);
+        let a1 = rng.range(-160.0, 160.0).round();
+        let lo2 = rng.range(-60.0, 50.0).round();
+        let a2: Vec<f64> = (0..4).map(|k| lo2 + f64::from(k)).collect();
+        let width = check.column_bytes();
+        let mut whole = vec![0u8; a2.len() * d2];
+        let mut bytes = vec![0u8; a2.len() * width];
+        Inspector::inspect_slice(&check, a1, &a2, &a3, &mut whole, &mut bytes);
+        for part in parts.clone() {
+            let mut code = vec![0u8; a2.len() * part.len()];
+            let mut own = vec![0u8; a2.len() * width];
+            check.inspect_slice_part(a1, &a2, &a3, part.clone(), &mut code, &mut own);
+            assert_eq!(own, bytes, "{a1} {a2:?} {part:?}");
+            for (j, &v2) in a2.iter().enumerate() {
+                let want = &whole[j * d2..][part.clone()];
+                assert_eq!(
+                    &code[j * part.len()..][..part.len()],
+                    want,
+                    "{a1} {v2} {part:?}"
+                );
+                for (k, &c) in want.iter().enumerate() {
+                    if k % 3 == 0 {
+                        let axes = [a1, v2, a3[part.start + k]];
+                        assert_eq!(c & 0x80 != 0, model.arm_is_free(&axes), "{axes:?}");
+                        compared += 1;
+                        free += usize::from(c != 0);
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        free > compared / 10 && free < compared,
+        "{free} of {compared}"
+    );
 }
 
 /// The blocked bound of `block.rs` under random rigid motions of at most `m` per point: the

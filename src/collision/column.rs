@@ -40,12 +40,7 @@ use std::borrow::Cow;
 /// Safety margin (mm) of the per-column culling of boxes.
 const CULL_MARGIN_MM: f64 = 1e-6;
 
-/// Most fixed cylinders (links 1 and 2) whose slice answers are kept (link 1's beyond them are
-/// placed and checked per column, on link 1's pose of the slice).
-pub const MAX_FIXED: usize = 8;
-
-/// Per fixed cylinder, the slice's answer for link 1 (`GridCheck::slice_bytes`).
-pub type SliceBytes = [Option<Option<u8>>; MAX_FIXED];
+pub use super::grid::{SliceBytes, MAX_FIXED};
 
 /// What the columns of one slice of axis 1 share ([`GridCheck::slice`]): link 1's answers
 /// ([`GridCheck::slice_bytes`]) and pose, and the axis-3 values with their sines and cosines
@@ -95,7 +90,8 @@ impl GridCheck {
         column: &mut [u8],
     ) {
         let mut memo = self.fixed_memo();
-        self.inspect_column_in(a2_deg, out, column, &self.slice(a1_deg, a3_deg), &mut memo);
+        let slice = self.slice(a1_deg, a3_deg);
+        self.inspect_column_in(a2_deg, out, column, &slice, &mut memo, 0..a3_deg.len());
     }
 
     /// An empty `FixedMemo` (nothing measured yet) for the columns of one slice.
@@ -105,7 +101,8 @@ impl GridCheck {
     }
 
     /// What every column `[a1_deg, *, a3_deg]` of one slice of axis 1 shares
-    /// (`Slice`): made once per slice by the grid build.
+    /// (`Slice`): made once per block of the slice by the grid build, link 1's part once per
+    /// slice (`grid.rs`, `SliceMemo`).
     pub(crate) fn slice(&self, a1_deg: f64, a3_deg: &[f64]) -> Slice<'_> {
         // The grid's slices share their axis-3 values: their angles are made once.
         let kept = self.angles.get_or_init(|| Angles::new(a3_deg));
@@ -115,10 +112,14 @@ impl GridCheck {
                 .iter()
                 .zip(a3_deg)
                 .all(|(a, b)| a.to_bits() == b.to_bits());
+        let (bytes, pose1) = self.slices.get(a1_deg, || {
+            let pose1 = self.chain.pose1(a1_deg.to_radians().sin_cos());
+            (self.slice_bytes(a1_deg), pose1)
+        });
         Slice {
             a1_deg,
-            bytes: self.slice_bytes(a1_deg),
-            pose1: self.chain.pose1(a1_deg.to_radians().sin_cos()),
+            bytes,
+            pose1,
             angles: if same {
                 Cow::Borrowed(kept)
             } else {
@@ -187,7 +188,13 @@ impl GridCheck {
 
     /// [`inspect_column`](Self::inspect_column) of the column at `a2_deg` of `slice`
     /// ([`slice`](Self::slice): its `a1_deg`, axis-3 values, link 1's answers and pose), with
-    /// `memo` the link-2 distances of the slice's columns inspected before (any order).
+    /// `memo` the link-2 distances of the slice's columns inspected before (any order). Only
+    /// the codes of the nodes `part` are asked for: the runs (`block.rs`) that hold none of
+    /// them are left out, so the other codes of `out` are not the column's (where the axis-3
+    /// values do not ascend every node is inspected). A node's code does not depend on which
+    /// runs are inspected: each run's work is its own, the per-column work (the ranges, the
+    /// fixed cylinders, the culled boxes) covers every node, and the memo drops a box only
+    /// where its measurement would (module doc).
     pub(crate) fn inspect_column_in(
         &self,
         a2_deg: f64,
@@ -195,7 +202,9 @@ impl GridCheck {
         column: &mut [u8],
         slice: &Slice<'_>,
         memo: &mut FixedMemo,
+        part: std::ops::Range<usize>,
     ) {
+        let asked = |&(_, (lo, hi)): &(usize, (usize, usize))| lo < part.end && hi > part.start;
         let model = &*self.model;
         let (a1_deg, ang) = (slice.a1_deg, &*slice.angles);
         let a3_deg = &ang.deg[..];
@@ -338,7 +347,7 @@ impl GridCheck {
                     span,
                 };
                 if runs {
-                    for (t, (lo, hi)) in top_runs(n).enumerate() {
+                    for (t, (lo, hi)) in top_runs(n).enumerate().filter(asked) {
                         let at = ((slot * chunks + ch) * tops + t) * CULL_CHUNK;
                         let memo = (&mut memo.1[at..at + CULL_CHUNK], a2_rad);
                         self.arm_run(&swept, ang, out, lo, hi, &kept[..nk], Some(memo));
@@ -357,16 +366,25 @@ impl GridCheck {
                 perp * ct + cross * st,
                 cross * ct - perp * st,
             );
-            self.tool_codes(ang, out, &origin, split, runs);
+            self.tool_codes(ang, out, &origin, split, runs, &part);
         }
     }
 
     /// The tool's bits of the column's free nodes (`grid.rs`): the wrist centre `C` (a point of
     /// link 3, `split` about joint 3's axis for axis 3's values as the cylinders' ends are,
     /// joint 3's origin at `origin`), its distance to the boxes less the tool's radius `R_T`,
-    /// and from it the near bit and the tool's depth; by runs where `runs` (`block.rs`), else
-    /// node by node. The nodes' sines and cosines are the slice's (`ang`).
-    fn tool_codes(&self, ang: &Angles, out: &mut [u8], origin: &Point, split: Split, runs: bool) {
+    /// and from it the near bit and the tool's depth; by runs where `runs` (`block.rs`: those
+    /// holding nodes of `part`), else node by node. The nodes' sines and cosines are the
+    /// slice's (`ang`).
+    fn tool_codes(
+        &self,
+        ang: &Angles,
+        out: &mut [u8],
+        origin: &Point,
+        split: Split,
+        runs: bool,
+        part: &std::ops::Range<usize>,
+    ) {
         let model = &*self.model;
         let Some(tool) = &model.tool else {
             return;
@@ -399,7 +417,8 @@ impl GridCheck {
                 deep,
             };
             if runs {
-                for (lo, hi) in top_runs(n) {
+                let asked = |&(lo, hi): &(usize, usize)| lo < part.end && hi > part.start;
+                for (lo, hi) in top_runs(n).filter(asked) {
                     self.tool_run(&centre, ang, out, lo, hi, &set[..nk]);
                 }
             } else {

@@ -49,9 +49,10 @@
 use super::angles::Angles;
 use super::proof::lowered;
 use super::CollisionModel;
-use crate::robot::SinCosChain;
+use crate::robot::{Pose, SinCosChain};
 use nalgebra::{Point3, Vector3};
-use std::sync::{Arc, OnceLock};
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// The node-code bit of a free node (the paper's node test of the arm); the grid
 /// (`plan::cspace`) reads only this bit.
@@ -109,6 +110,47 @@ pub struct GridCheck {
     pub(super) centre_sweep: f64,
     /// The first slice's axis-3 angles, for every slice with the same values (the grid's).
     pub(super) angles: OnceLock<Angles>,
+    /// Link 1's answers and pose per value of axis 1 (`column.rs`, [`SliceMemo`]).
+    pub(super) slices: SliceMemo,
+}
+
+/// Most fixed cylinders (links 1 and 2) whose slice answers are kept (link 1's beyond them are
+/// placed and checked per column, on link 1's pose of the slice; `column.rs`).
+pub const MAX_FIXED: usize = 8;
+
+/// Per fixed cylinder, the slice's answer for link 1 (`GridCheck::slice_bytes`, `column.rs`).
+pub type SliceBytes = [Option<Option<u8>>; MAX_FIXED];
+
+/// What link 1 gives every column of a slice of axis 1 (`column.rs`: its column bytes or
+/// blocked, and its pose), per value of axis 1 (its bits), made by the first block of the
+/// slice that is inspected and read by the others: the grid inspects a slice a block at a
+/// time. A clone starts empty (what it holds is the model's alone, made again when asked).
+#[derive(Debug, Default)]
+pub(super) struct SliceMemo(Mutex<HashMap<u64, (SliceBytes, Pose)>>);
+
+impl Clone for SliceMemo {
+    fn clone(&self) -> SliceMemo {
+        SliceMemo::default()
+    }
+}
+
+impl SliceMemo {
+    /// The answers for `a1_deg`, made by `make` when no thread has made them yet (two threads
+    /// asking at once may both make them: the same values).
+    pub(super) fn get(
+        &self,
+        a1_deg: f64,
+        make: impl FnOnce() -> (SliceBytes, Pose),
+    ) -> (SliceBytes, Pose) {
+        let key = a1_deg.to_bits();
+        let lock = || self.0.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(&known) = lock().get(&key) {
+            return known;
+        }
+        let made = make();
+        lock().insert(key, made);
+        made
+    }
 }
 
 impl CollisionModel {
@@ -247,6 +289,7 @@ impl GridCheck {
             centre3,
             centre_sweep,
             angles: OnceLock::new(),
+            slices: SliceMemo::default(),
         }
     }
 

@@ -144,7 +144,7 @@ fn draw(
         if !in_range(&grid.axes_deg(n)) {
             continue;
         }
-        let blocked = u32::from(cs.row(i / d[2]).code[n[2] as usize] & FREE == 0);
+        let blocked = u32::from(cs.code_in(n) & FREE == 0);
         let (a, b, c) = (n[0] as usize, n[1] as usize, n[2] as usize);
         for cell in [
             &mut c01[a * d[1] + b],

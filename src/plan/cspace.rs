@@ -13,141 +13,22 @@
 //!
 //! *Inspected as the route needs it* (beyond the paper, for speed only). The paper inspects
 //! every node before the first wave; a wave between two points reaches a small part of the
-//! grid. The grid is kept in *blocks* of [`BLOCK_COLUMNS`] columns (whole along axis 3), each
-//! inspected the first time anything reads one of its nodes ([`CSpace::lazy`]) and kept for
-//! the rest of the run (every wave and leg of the route, every method of a comparison). A row
-//! wave asks, before each level, for the blocks around its front ([`CSpace::inspect_around`]):
-//! those not yet inspected are inspected together, on all cores when there are several. A
-//! node's code is its column's alone (the inspector's contract), so every read gives the code
-//! the whole grid's inspection would: the same waves, the same plans; the work and the memory
-//! grow with the part of the grid the waves explore. [`CSpace::build`] inspects every block at
-//! once (the paper's order; tests, `compare`, the `--svg` picture).
+//! grid. The grid is kept in *blocks* of [`BLOCK_COLUMNS`] columns by [`BLOCK_NODES`] values of
+//! axis 3 (a column's part), each inspected the first time anything reads one of its nodes
+//! ([`CSpace::lazy`]) and kept for the rest of the run (every wave and leg of the route, every
+//! method of a comparison). A row wave asks, before each level, for the blocks around its front
+//! ([`CSpace::inspect_around`]: the rows next to the front's, the axis-3 values next to its
+//! nodes): those not yet inspected are inspected together, on all cores when there are several.
+//! A node's code is its column's alone, whichever part of the column is inspected (the
+//! inspector's contract), so every read gives the code the whole grid's inspection would: the
+//! same waves, the same plans; the work and the memory grow with the part of the grid the
+//! waves explore. [`CSpace::build`] inspects every block at once (the paper's order; tests,
+//! `compare`, the `--svg` picture).
 
 use crate::progress::{Progress, Silent};
 use std::sync::{Arc, OnceLock};
 
-/// A grid node: indices along axes 1..3 (0-based within the grid).
-pub type Node = [i32; 3];
-
-/// The lattice: node `n` has controller values `(origin[k] + n[k]) * step_deg`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Grid {
-    pub step_deg: f64,
-    /// Integer multiple of `step_deg` of the first node along each axis.
-    pub origin: [i64; 3],
-    pub dims: [usize; 3],
-}
-
-/// Largest grid a run makes (nodes; `budget::MAX_GRID_NODES`, checked before the grid is
-/// made); 0.25 deg over the IRB 1400's ranges is 413 M.
-pub const MAX_NODES: usize = crate::budget::MAX_GRID_NODES as usize;
-
-impl Grid {
-    /// The nodes k*step inside `[lo, hi]` of each axis (deg).
-    pub fn over(ranges_deg: [[f64; 2]; 3], step_deg: f64) -> Grid {
-        let mut origin = [0i64; 3];
-        let mut dims = [0usize; 3];
-        for k in 0..3 {
-            let [lo, hi] = ranges_deg[k];
-            let first = (lo / step_deg - 1e-9).ceil() as i64;
-            let last = (hi / step_deg + 1e-9).floor() as i64;
-            origin[k] = first;
-            dims[k] = (last - first + 1).max(0) as usize;
-        }
-        Grid {
-            step_deg,
-            origin,
-            dims,
-        }
-    }
-
-    pub fn len(&self) -> usize {
-        self.dims.iter().product()
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-
-    pub fn contains(&self, n: Node) -> bool {
-        (0..3).all(|k| n[k] >= 0 && (n[k] as usize) < self.dims[k])
-    }
-
-    /// Linear index; axis 3 varies fastest so a column (fixed axes 1, 2) is contiguous.
-    #[inline]
-    pub fn index(&self, n: Node) -> usize {
-        (n[0] as usize * self.dims[1] + n[1] as usize) * self.dims[2] + n[2] as usize
-    }
-
-    #[inline]
-    pub fn node(&self, i: usize) -> Node {
-        let z = i % self.dims[2];
-        let r = i / self.dims[2];
-        [
-            (r / self.dims[1]) as i32,
-            (r % self.dims[1]) as i32,
-            z as i32,
-        ]
-    }
-
-    /// Controller value (deg) of index `i` along axis `k`.
-    #[inline]
-    pub fn value(&self, k: usize, i: i64) -> f64 {
-        (self.origin[k] + i) as f64 * self.step_deg
-    }
-
-    /// Controller values of a node, deg.
-    pub fn axes_deg(&self, n: Node) -> [f64; 3] {
-        [
-            self.value(0, n[0] as i64),
-            self.value(1, n[1] as i64),
-            self.value(2, n[2] as i64),
-        ]
-    }
-
-    /// The node at `axes` if `axes` lies on the lattice (within 1e-9 deg) and in the grid.
-    pub fn node_at(&self, axes: &[f64; 3]) -> Option<Node> {
-        let mut n = [0i32; 3];
-        for k in 0..3 {
-            let f = axes[k] / self.step_deg;
-            let r = f.round();
-            if (f - r).abs() * self.step_deg > 1e-9 {
-                return None;
-            }
-            n[k] = (r as i64 - self.origin[k]) as i32;
-        }
-        self.contains(n).then_some(n)
-    }
-
-    /// Grid nodes within `rings` cells of `axes` (Chebyshev), nearest first (Euclidean in
-    /// degrees, ties by index): the candidates to join an off-grid point to the grid.
-    pub fn nodes_near(&self, axes: &[f64; 3], rings: i32) -> Vec<Node> {
-        let base: Vec<i64> = (0..3)
-            .map(|k| (axes[k] / self.step_deg).floor() as i64 - self.origin[k])
-            .collect();
-        let mut out = Vec::new();
-        for d0 in -rings + 1..=rings {
-            for d1 in -rings + 1..=rings {
-                for d2 in -rings + 1..=rings {
-                    let n = [
-                        (base[0] + d0 as i64) as i32,
-                        (base[1] + d1 as i64) as i32,
-                        (base[2] + d2 as i64) as i32,
-                    ];
-                    if self.contains(n) {
-                        out.push(n);
-                    }
-                }
-            }
-        }
-        let dist = |n: &Node| {
-            let v = self.axes_deg(*n);
-            (0..3).map(|k| (v[k] - axes[k]).powi(2)).sum::<f64>()
-        };
-        out.sort_by(|a, b| dist(a).total_cmp(&dist(b)).then(a.cmp(b)));
-        out
-    }
-}
+pub use super::lattice::{Grid, Node, MAX_NODES};
 
 /// The code bit of a free node; the other bits of a code are the inspector's.
 pub const FREE: u8 = 0x80;
@@ -178,6 +59,32 @@ pub trait Inspector: Sync {
         code: &mut [u8],
         column: &mut [u8],
     );
+    /// The nodes `part` (indices into `a3_deg`) of the columns `[a1, a2[j], a3[k]]` of one
+    /// value of axis 1: column `j`'s codes of `a3[part]` into
+    /// `code[j * part.len()..][..part.len()]` and its own bytes into
+    /// `column[j * column_bytes()..][..column_bytes()]`, each what the whole column's
+    /// inspection ([`inspect_slice`](Self::inspect_slice)) gives there. By default the whole
+    /// columns, the part copied out; an inspector overrides it to inspect little more than
+    /// the part.
+    fn inspect_slice_part(
+        &self,
+        a1_deg: f64,
+        a2_deg: &[f64],
+        a3_deg: &[f64],
+        part: std::ops::Range<usize>,
+        code: &mut [u8],
+        column: &mut [u8],
+    ) {
+        let d2 = a3_deg.len();
+        let mut whole = vec![0u8; a2_deg.len() * d2];
+        self.inspect_slice(a1_deg, a2_deg, a3_deg, &mut whole, column);
+        for (to, from) in code
+            .chunks_mut(part.len().max(1))
+            .zip(whole.chunks(d2.max(1)))
+        {
+            to.copy_from_slice(&from[part.clone()]);
+        }
+    }
     /// The columns `[a1, a2[j], a3[k]]` of one value of axis 1: column `j`'s codes into
     /// `code[j * a3.len()..][..a3.len()]` and its own bytes into
     /// `column[j * column_bytes()..][..column_bytes()]`. By default column by column; an
@@ -217,21 +124,28 @@ pub fn each_column(
     }
 }
 
-/// The columns of a block along axes 1 and 2 (the last blocks of an axis may hold fewer): at
-/// 1 deg over the IRB 1400's axis 3, 8 columns of 136 nodes. Smaller blocks inspect less past
-/// what the waves read, larger ones share more of a slice's work; whole runs at 1 deg took the
-/// fewest instructions from 1 x 4 to 2 x 4 columns, 3 % more at 4 x 4, 15 % more at 8 x 8
-/// (`benches/README.md`).
+/// The columns of a block along axes 1 and 2 (the last blocks of an axis may hold fewer).
+/// Smaller blocks inspect less past what the waves read, larger ones share more of a slice's
+/// work; whole runs at 1 deg took the fewest instructions from 1 x 4 to 2 x 4 columns, 3 % more
+/// at 4 x 4, 15 % more at 8 x 8 (`benches/README.md`).
 pub const BLOCK_COLUMNS: [usize; 2] = [2, 4];
+
+/// The values of axis 3 a block holds of each of its columns (the last block of a column may
+/// hold fewer): half a row word, so a row word is read from at most two blocks, and a whole
+/// run of the collision model's column inspection (`collision::block`), which a block
+/// inspects alone. The waves read about a third of a column at 1 deg on the trunk cell, so
+/// blocks whole along axis 3 inspected about three times the nodes (`benches/README.md`).
+pub const BLOCK_NODES: usize = 32;
+const _: () = assert!(64 % BLOCK_NODES == 0, "a row word holds whole blocks");
 
 /// Blocks inspected one after another on the asking thread below this many at once; from it on
 /// all cores (`crate::parallel`: handing work to threads costs about as much as inspecting a
 /// few blocks).
-const PARALLEL_BLOCKS: usize = 6;
+const PARALLEL_BLOCKS: usize = 12;
 
 /// One block of the grid, inspected: its columns in order (axis 1, then axis 2), each with its
-/// codes (`dims[2]` bytes), its own bytes ([`Inspector::column_bytes`]) and its row words
-/// ([`Row::plain`], when the grid keeps them).
+/// codes (its axis-3 part's), its own bytes ([`Inspector::column_bytes`], the column's) and its
+/// row word's bits ([`Row::plain`], when the grid keeps them; in their place in the word).
 #[derive(Clone)]
 struct Block {
     code: Box<[u8]>,
@@ -247,10 +161,14 @@ pub struct CSpace {
     column_bytes: usize,
     /// The code bits of the row words the blocks keep ([`Row::plain`]), if any.
     kept: Option<u8>,
-    /// Blocks along axes 1 and 2.
-    blocks_along: [usize; 2],
-    /// Every block, by `b0 * blocks_along[1] + b1`; filled once, when first read.
-    blocks: Vec<OnceLock<Block>>,
+    /// Blocks along axes 1, 2 and 3.
+    blocks_along: [usize; 3],
+    /// Every block: per column block (the blocks of the same columns, by `b0 * blocks_along[1]
+    /// + b1`) its blocks along axis 3, made when the first of them is read (so a grid costs
+    /// memory for the columns its waves reach, a fraction of a page per column block it does
+    /// not); each block filled once, when first read. Block `b` of the flat numbering is block
+    /// `b % blocks_along[2]` of column block `b / blocks_along[2]`.
+    blocks: Vec<OnceLock<Box<[OnceLock<Block>]>>>,
     /// The controller values of axis 3's nodes.
     a3_deg: Arc<[f64]>,
     /// What inspects a block not inspected yet (`None`: every block was inspected when made).
@@ -267,15 +185,25 @@ impl std::fmt::Debug for CSpace {
     }
 }
 
-/// One row of the grid (the nodes of fixed axes 1 and 2): its codes and its row words.
+/// One word of a row of the grid (the nodes of fixed axes 1 and 2): axis-3 indices `64 j ..
+/// 64 j + 64`, read from the blocks that hold the bits asked for ([`CSpace::row_word`]).
 #[derive(Clone, Copy, Debug)]
 pub struct Row<'a> {
-    /// The codes, `dims[2]` of them.
-    pub code: &'a [u8],
     /// The free nodes whose code has none of the kept bits ([`CSpace::kept_bits`]), one bit a
-    /// node: axis-3 index `64 j + b` is bit `b` of word `j`, the bits past the row's last node
-    /// clear. Empty when the grid keeps none.
-    pub plain: &'a [u64],
+    /// node: axis-3 index `64 j + b` is bit `b`; the bits past the row's last node, and those
+    /// of blocks not asked for, clear. 0 when the grid keeps none.
+    pub plain: u64,
+    /// Per block of the word (`BLOCK_NODES` bits each) its codes of the row; empty for a block
+    /// not asked for.
+    code: [&'a [u8]; 64 / BLOCK_NODES],
+}
+
+impl Row<'_> {
+    /// The code of bit `b` of the word, which must be a bit asked for.
+    #[inline]
+    pub fn code(&self, b: usize) -> u8 {
+        self.code[b / BLOCK_NODES][b % BLOCK_NODES]
+    }
 }
 
 impl CSpace {
@@ -291,17 +219,22 @@ impl CSpace {
     /// not depend on the number of threads.
     pub fn build(grid: Grid, inspector: &dyn Inspector) -> CSpace {
         let cs = CSpace::empty(grid, inspector);
-        let all: Vec<usize> = (0..cs.blocks.len()).collect();
+        let all: Vec<usize> = (0..cs.block_count()).collect();
+        let n2 = cs.blocks_along[2];
         crate::parallel::map(&all, |&b| {
-            let _ = cs.blocks[b].set(cs.inspect_block(b, inspector));
+            let _ = cs.along(b / n2)[b % n2].set(cs.inspect_block(b, inspector));
         });
         cs
     }
 
     /// The grid's layout with no block inspected and no inspector.
     fn empty(grid: Grid, inspector: &dyn Inspector) -> CSpace {
-        let blocks_along = [0, 1].map(|k| grid.dims[k].div_ceil(BLOCK_COLUMNS[k]));
-        let n = if grid.dims[2] == 0 {
+        let blocks_along = [
+            grid.dims[0].div_ceil(BLOCK_COLUMNS[0]),
+            grid.dims[1].div_ceil(BLOCK_COLUMNS[1]),
+            grid.dims[2].div_ceil(BLOCK_NODES),
+        ];
+        let n = if blocks_along[2] == 0 {
             0
         } else {
             blocks_along[0] * blocks_along[1]
@@ -329,18 +262,19 @@ impl CSpace {
             fn inspect_column(&self, _: f64, _: f64, _: &[f64], _: &mut [u8], _: &mut [u8]) {}
         }
         let cs = CSpace::empty(grid, &Plain);
-        let d2 = grid.dims[2];
-        for (b, block) in cs.blocks.iter().enumerate() {
-            let r1 = cs.block_range(b)[1].clone();
+        let n2 = cs.blocks_along[2];
+        for b in 0..cs.block_count() {
+            let [_, r1, r2] = cs.block_range(b);
             let made = cs.make_block(b, |i0, code, _| {
                 for (j, i1) in r1.clone().enumerate() {
-                    for (z, c) in code[j * d2..][..d2].iter_mut().enumerate() {
+                    let codes = &mut code[j * r2.len()..][..r2.len()];
+                    for (z, c) in r2.clone().zip(codes) {
                         let n = [i0 as i32, i1 as i32, z as i32];
                         *c = if is_free(n) { FREE } else { 0 };
                     }
                 }
             });
-            let _ = block.set(made);
+            let _ = cs.along(b / n2)[b % n2].set(made);
         }
         cs
     }
@@ -350,34 +284,82 @@ impl CSpace {
         self.kept
     }
 
-    /// The node ranges of block `b` along axes 1 and 2.
-    fn block_range(&self, b: usize) -> [std::ops::Range<usize>; 2] {
-        let at = [b / self.blocks_along[1], b % self.blocks_along[1]];
-        [0, 1].map(|k| {
-            let lo = at[k] * BLOCK_COLUMNS[k];
-            lo..(lo + BLOCK_COLUMNS[k]).min(self.grid.dims[k])
+    /// The node ranges of block `b` along axes 1, 2 and 3.
+    fn block_range(&self, b: usize) -> [std::ops::Range<usize>; 3] {
+        let [_, n1, n2] = self.blocks_along;
+        let at = [b / n2 / n1, b / n2 % n1, b % n2];
+        let size = [BLOCK_COLUMNS[0], BLOCK_COLUMNS[1], BLOCK_NODES];
+        [0, 1, 2].map(|k| {
+            let lo = at[k] * size[k];
+            lo..(lo + size[k]).min(self.grid.dims[k])
         })
     }
 
     /// Inspects block `b` with `inspector`.
     fn inspect_block(&self, b: usize, inspector: &dyn Inspector) -> Block {
-        let r1 = self.block_range(b)[1].clone();
+        let [_, r1, r2] = self.block_range(b);
         let a2: Vec<f64> = r1.map(|i| self.grid.value(1, i as i64)).collect();
         self.make_block(b, |i0, code, column| {
             let a1 = self.grid.value(0, i0 as i64);
-            inspector.inspect_slice(a1, &a2, &self.a3_deg, code, column)
+            inspector.inspect_slice_part(a1, &a2, &self.a3_deg, r2.clone(), code, column)
         })
     }
 
+    /// Blocks `b2s` (along axis 3) of column block `cb` inspected together by the grid's
+    /// inspector: each column's part that the blocks cover inspected at once (what the
+    /// column's parts share is done once), then cut into the blocks, each kept unless another
+    /// thread kept it first (the same codes either way).
+    fn inspect_run(&self, cb: usize, b2s: std::ops::Range<usize>) {
+        let inspector: &dyn Inspector = match &self.inspector {
+            Some(inspector) => &**inspector,
+            // Never: a grid without an inspector had every block inspected when made.
+            None => &Blocked,
+        };
+        let n2 = self.blocks_along[2];
+        let [r0, r1, first] = self.block_range(cb * n2 + b2s.start);
+        let z = first.start..self.block_range(cb * n2 + b2s.end - 1)[2].end;
+        let a2: Vec<f64> = r1.clone().map(|i| self.grid.value(1, i as i64)).collect();
+        let (len, width) = (z.len(), self.column_bytes);
+        let (slab, colslab) = (r1.len() * len, r1.len() * width);
+        let mut code = vec![0u8; r0.len() * slab];
+        let mut column = vec![0u8; r0.len() * colslab];
+        for (k, i0) in r0.clone().enumerate() {
+            let a1 = self.grid.value(0, i0 as i64);
+            let (code, own) = (&mut code[k * slab..][..slab], &mut column[k * colslab..]);
+            inspector.inspect_slice_part(
+                a1,
+                &a2,
+                &self.a3_deg,
+                z.clone(),
+                code,
+                &mut own[..colslab],
+            );
+        }
+        let along = self.along(cb);
+        for b2 in b2s {
+            let b = cb * n2 + b2;
+            let part = self.block_range(b)[2].clone();
+            let at = part.start - z.start;
+            let made = self.make_block(b, |i0, out, own| {
+                let k = i0 - r0.start;
+                for (j, out) in out.chunks_mut(part.len()).enumerate() {
+                    out.copy_from_slice(&code[k * slab + j * len + at..][..part.len()]);
+                }
+                own.copy_from_slice(&column[k * colslab..][..colslab]);
+            });
+            let _ = along[b2].set(made);
+        }
+    }
+
     /// Block `b`, its columns of each value `i0` of axis 1 filled by `fill(i0, codes, bytes)`
-    /// (the layout of [`Inspector::inspect_slice`]), with its row words.
+    /// (the layout of [`Inspector::inspect_slice_part`]), with its row words' bits.
     fn make_block(&self, b: usize, mut fill: impl FnMut(usize, &mut [u8], &mut [u8])) -> Block {
-        let [r0, r1] = self.block_range(b);
-        let (d2, width) = (self.grid.dims[2], self.column_bytes);
+        let [r0, r1, r2] = self.block_range(b);
+        let (len, width) = (r2.len(), self.column_bytes);
         let columns = r0.len() * r1.len();
-        let mut code = vec![0u8; columns * d2];
+        let mut code = vec![0u8; columns * len];
         let mut column = vec![0u8; columns * width];
-        let (slab, colslab) = (r1.len() * d2, r1.len() * width);
+        let (slab, colslab) = (r1.len() * len, r1.len() * width);
         for (k, i0) in r0.enumerate() {
             fill(
                 i0,
@@ -387,8 +369,12 @@ impl CSpace {
         }
         let plain = match self.kept {
             Some(bits) => {
-                let mut plain = vec![0u64; columns * d2.div_ceil(64)];
-                row_words(&code, d2, bits, &mut plain);
+                // A block's part of a row fits one word (`BLOCK_NODES` divides 64): its bits
+                // moved to their place in the row's word.
+                let mut plain = vec![0u64; columns];
+                row_words(&code, len, bits, &mut plain);
+                let shift = r2.start % 64;
+                plain.iter_mut().for_each(|p| *p <<= shift);
                 plain
             }
             None => Vec::new(),
@@ -400,28 +386,55 @@ impl CSpace {
         }
     }
 
-    /// Block `b`, inspected now if it was not yet.
+    /// The blocks along axis 3 of column block `cb`, made now if they were not yet.
     #[inline]
-    fn block(&self, b: usize) -> &Block {
-        match self.blocks[b].get() {
+    fn along(&self, cb: usize) -> &[OnceLock<Block>] {
+        self.blocks[cb].get_or_init(|| (0..self.blocks_along[2]).map(|_| OnceLock::new()).collect())
+    }
+
+    /// Whether block `b2` of column block `cb` has been inspected.
+    #[inline]
+    fn inspected_at(&self, cb: usize, b2: usize) -> bool {
+        self.blocks[cb]
+            .get()
+            .is_some_and(|along| along[b2].get().is_some())
+    }
+
+    /// Whether block `b` (flat numbering) has been inspected.
+    fn inspected(&self, b: usize) -> bool {
+        let n2 = self.blocks_along[2];
+        self.inspected_at(b / n2, b % n2)
+    }
+
+    /// Block `b2` along axis 3 of column block `cb`, inspected now if it was not yet.
+    #[inline]
+    fn block(&self, cb: usize, b2: usize) -> &Block {
+        match self.blocks[cb].get().and_then(|along| along[b2].get()) {
             Some(block) => block,
-            None => self.fill(b),
+            None => self.fill(cb, b2),
         }
     }
 
-    /// Block `b`, inspected by the grid's inspector (once, whichever thread asks first; the
-    /// others wait for it).
+    /// Block `b` of the flat numbering, inspected now if it was not yet.
+    fn block_flat(&self, b: usize) -> &Block {
+        let n2 = self.blocks_along[2];
+        self.block(b / n2, b % n2)
+    }
+
+    /// Block `b2` of column block `cb`, inspected by the grid's inspector (once, whichever
+    /// thread asks first; the others wait for it).
     #[cold]
     #[inline(never)]
-    fn fill(&self, b: usize) -> &Block {
-        self.blocks[b].get_or_init(|| match &self.inspector {
+    fn fill(&self, cb: usize, b2: usize) -> &Block {
+        let b = cb * self.blocks_along[2] + b2;
+        self.along(cb)[b2].get_or_init(|| match &self.inspector {
             Some(inspector) => self.inspect_block(b, &**inspector),
             // Never: a grid without an inspector had every block inspected when made.
             None => self.inspect_block(b, &Blocked),
         })
     }
 
-    /// The block of the column `(i0, i1)` and the column's place in it.
+    /// The column block of column `(i0, i1)`, and the column's place in its blocks.
     #[inline]
     fn block_of(&self, i0: usize, i1: usize) -> (usize, usize) {
         let [c0, c1] = BLOCK_COLUMNS;
@@ -433,56 +446,87 @@ impl CSpace {
         )
     }
 
-    /// Row `t` (axes 1 and 2 at `t / dims[1]`, `t % dims[1]`), inspected now if its block was
-    /// not yet.
+    /// The codes of column `c` (its place in its blocks) in block `b2` of column block `cb`.
     #[inline]
-    pub fn row(&self, t: usize) -> Row<'_> {
+    fn codes_of(&self, cb: usize, b2: usize, c: usize) -> &[u8] {
+        let z = b2 * BLOCK_NODES;
+        let len = (self.grid.dims[2] - z).min(BLOCK_NODES);
+        &self.block(cb, b2).code[c * len..][..len]
+    }
+
+    /// Word `j` of row `t` (axes 1 and 2 at `t / dims[1]`, `t % dims[1]`) for the bits `want`:
+    /// the blocks holding those bits inspected now if they were not yet ([`Row`]; bits past
+    /// the row's last node ask for nothing).
+    #[inline]
+    pub fn row_word(&self, t: usize, j: usize, want: u64) -> Row<'_> {
+        const PER_WORD: usize = 64 / BLOCK_NODES;
+        const HALF: u64 = u64::MAX >> (64 - BLOCK_NODES);
         let d1 = self.grid.dims[1] as u32;
         let (i0, i1) = ((t as u32 / d1) as usize, (t as u32 % d1) as usize);
-        let (b, c) = self.block_of(i0, i1);
-        let block = self.block(b);
-        let (d2, words) = (self.grid.dims[2], self.grid.dims[2].div_ceil(64));
-        Row {
-            code: &block.code[c * d2..][..d2],
-            plain: block.plain.get(c * words..(c + 1) * words).unwrap_or(&[]),
+        let (cb, c) = self.block_of(i0, i1);
+        let mut row = Row {
+            plain: 0,
+            code: [&[]; PER_WORD],
+        };
+        for (k, code) in row.code.iter_mut().enumerate() {
+            let b2 = j * PER_WORD + k;
+            if want & (HALF << (k * BLOCK_NODES)) == 0 || b2 >= self.blocks_along[2] {
+                continue;
+            }
+            *code = self.codes_of(cb, b2, c);
+            row.plain |= self.block(cb, b2).plain.get(c).copied().unwrap_or(0);
         }
+        row
     }
 
     /// Inspects, together (on all cores when there are several), the blocks not inspected yet
-    /// that hold a row next to one of `rows` (axes 1 and 2 at most one step away) and, with a
-    /// `bound` (`[i0, i1]` and `r`), lies within `r` of it on both axes: what a row wave's next
-    /// level reads.
+    /// that a row wave's next level reads around its front: per front word (`(t, j, bits)`:
+    /// bits `bits` of word `j` of row `t`, [`row_word`](Self::row_word)) the rows next to row
+    /// `t` (axes 1 and 2 at most one step away), at the axis-3 values at most one step from
+    /// the bits; with a `bound` (a node and `r`), only those within `r` of the node on every
+    /// axis.
     pub fn inspect_around(
         &self,
-        rows: impl Iterator<Item = usize>,
-        bound: Option<([i64; 2], i64)>,
+        front: impl Iterator<Item = (usize, usize, u64)>,
+        bound: Option<([i64; 3], i64)>,
     ) {
-        let [d0, d1, _] = self.grid.dims;
+        let [d0, d1, d2] = self.grid.dims.map(|d| d as i64);
         let mut wanted: Vec<usize> = Vec::new();
-        let mut last = usize::MAX;
-        for t in rows {
-            if t == last {
+        for (t, j, bits) in front {
+            if bits == 0 {
                 continue;
             }
-            last = t;
-            let (i0, i1) = ((t / d1) as i64, (t % d1) as i64);
-            let mut lo = [(i0 - 1).max(0), (i1 - 1).max(0)];
-            let mut hi = [(i0 + 1).min(d0 as i64 - 1), (i1 + 1).min(d1 as i64 - 1)];
+            let (i0, i1) = ((t as i64 / d1), (t as i64 % d1));
+            let z = 64 * j as i64;
+            let mut lo = [
+                (i0 - 1).max(0),
+                (i1 - 1).max(0),
+                (z + i64::from(bits.trailing_zeros()) - 1).max(0),
+            ];
+            let mut hi = [
+                (i0 + 1).min(d0 - 1),
+                (i1 + 1).min(d1 - 1),
+                (z + 64 - i64::from(bits.leading_zeros())).min(d2 - 1),
+            ];
             if let Some((to, r)) = bound {
-                for k in 0..2 {
+                for k in 0..3 {
                     lo[k] = lo[k].max(to[k] - r);
                     hi[k] = hi[k].min(to[k] + r);
                 }
             }
-            if lo[0] > hi[0] || lo[1] > hi[1] {
+            if (0..3).any(|k| lo[k] > hi[k]) {
                 continue;
             }
             let [c0, c1] = BLOCK_COLUMNS.map(|c| c as i64);
+            let c2 = BLOCK_NODES as i64;
+            let [_, n1, n2] = self.blocks_along.map(|n| n as i64);
             for b0 in lo[0] / c0..=hi[0] / c0 {
                 for b1 in lo[1] / c1..=hi[1] / c1 {
-                    let b = (b0 * self.blocks_along[1] as i64 + b1) as usize;
-                    if self.blocks[b].get().is_none() {
-                        wanted.push(b);
+                    let cb = b0 * n1 + b1;
+                    for b2 in lo[2] / c2..=hi[2] / c2 {
+                        if !self.inspected_at(cb as usize, b2 as usize) {
+                            wanted.push((cb * n2 + b2) as usize);
+                        }
                     }
                 }
             }
@@ -495,50 +539,60 @@ impl CSpace {
     fn inspect_blocks(&self, mut wanted: Vec<usize>) {
         wanted.sort_unstable();
         wanted.dedup();
-        wanted.retain(|&b| self.blocks[b].get().is_none());
+        wanted.retain(|&b| !self.inspected(b));
+        // The blocks of one column block together, from its first wanted to its last.
+        let n2 = self.blocks_along[2];
+        let mut runs: Vec<(usize, std::ops::Range<usize>)> = Vec::new();
+        for &b in &wanted {
+            let (cb, b2) = (b / n2, b % n2);
+            match runs.last_mut() {
+                Some((last, b2s)) if *last == cb => b2s.end = b2 + 1,
+                _ => runs.push((cb, b2..b2 + 1)),
+            }
+        }
         if wanted.len() < PARALLEL_BLOCKS {
-            for &b in &wanted {
-                self.block(b);
+            for (cb, b2s) in runs {
+                self.inspect_run(cb, b2s);
             }
         } else {
-            crate::parallel::map(&wanted, |&b| {
-                self.block(b);
-            });
+            crate::parallel::map(&runs, |(cb, b2s)| self.inspect_run(*cb, b2s.clone()));
         }
     }
 
     /// Inspects every block not inspected yet, on all cores, reporting one unit of `progress`
     /// per block (the caller announces nothing: this announces the stage when there is work).
     pub fn inspect_all(&self, progress: &dyn Progress) {
-        let wanted: Vec<usize> = (0..self.blocks.len())
-            .filter(|&b| self.blocks[b].get().is_none())
+        let wanted: Vec<usize> = (0..self.block_count())
+            .filter(|&b| !self.inspected(b))
             .collect();
         if wanted.is_empty() {
             return;
         }
         progress.stage("inspecting the grid", wanted.len() as u64);
         crate::parallel::map(&wanted, |&b| {
-            self.block(b);
+            self.block_flat(b);
             progress.advance(1);
         });
     }
 
     /// How many blocks have been inspected so far, of [`block_count`](Self::block_count).
     pub fn inspected_blocks(&self) -> usize {
-        self.blocks.iter().filter(|b| b.get().is_some()).count()
+        let along = self.blocks.iter().filter_map(OnceLock::get);
+        along.flatten().filter(|b| b.get().is_some()).count()
     }
 
     /// How many blocks the grid has.
     pub fn block_count(&self) -> usize {
-        self.blocks.len()
+        self.blocks.len() * self.blocks_along[2]
     }
 
-    /// The inspector's bytes of the column holding node `n` (empty when it keeps none).
+    /// The inspector's bytes of the column holding node `n` (empty when it keeps none), read
+    /// from the block holding the node (every block of a column holds them).
     #[inline]
     pub fn column(&self, n: Node) -> &[u8] {
-        let (b, c) = self.block_of(n[0] as usize, n[1] as usize);
+        let (cb, c) = self.block_of(n[0] as usize, n[1] as usize);
         let w = self.column_bytes;
-        &self.block(b).column[c * w..][..w]
+        &self.block(cb, n[2] as usize / BLOCK_NODES).column[c * w..][..w]
     }
 
     #[inline]
@@ -564,8 +618,9 @@ impl CSpace {
     /// The code of node `n`, which lies in the grid.
     #[inline]
     pub fn code_in(&self, n: Node) -> u8 {
-        let (b, c) = self.block_of(n[0] as usize, n[1] as usize);
-        self.block(b).code[c * self.grid.dims[2] + n[2] as usize]
+        let (cb, c) = self.block_of(n[0] as usize, n[1] as usize);
+        let z = n[2] as usize;
+        self.codes_of(cb, z / BLOCK_NODES, c)[z % BLOCK_NODES]
     }
 
     /// The code of the node with linear index `i`.
@@ -577,9 +632,9 @@ impl CSpace {
     /// The free nodes of the whole grid (every block inspected first).
     pub fn free_count(&self) -> usize {
         self.inspect_all(&Silent);
-        (0..self.blocks.len())
+        (0..self.block_count())
             .map(|b| {
-                let code = &self.block(b).code;
+                let code = &self.block_flat(b).code;
                 code.iter().filter(|&&c| c & FREE != 0).count()
             })
             .sum()

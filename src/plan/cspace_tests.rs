@@ -81,10 +81,11 @@ impl Inspector for Noise {
     }
 }
 
-/// The row words a block keeps, made 8 codes at a time, against each node's code read
+/// The row words the blocks keep, made 8 codes at a time, against each node's code read
 /// alone: pseudo-random codes (free or not, any other bits), rows of 1 to 130 nodes (partly
-/// used last words, whole words, several words), several sets of bits kept, blocks whole and
-/// cut short at the grid's edges; without kept bits no row words.
+/// used last words, whole words, several words, words of one block and of two), several sets
+/// of bits kept, blocks whole and cut short at the grid's edges, a word read for some of its
+/// blocks (the others' bits clear); without kept bits no row words.
 #[test]
 fn row_words_match_each_nodes_code() {
     for d2 in [1usize, 7, 63, 64, 65, 70, 128, 130] {
@@ -94,19 +95,25 @@ fn row_words_match_each_nodes_code() {
             let words = d2.div_ceil(64);
             let (mut plain, mut looked) = (0, 0);
             for t in 0..g.dims[0] * g.dims[1] {
-                let row = cs.row(t);
-                assert_eq!(row.plain.len(), words);
+                let row = |j| cs.row_word(t, j, u64::MAX);
                 for z in 0..d2 {
                     let code = cs.code_index(t * d2 + z);
-                    assert_eq!(row.code[z], code);
-                    let bit = row.plain[z / 64] >> (z % 64) & 1 == 1;
+                    assert_eq!(row(z / 64).code(z % 64), code);
+                    let bit = row(z / 64).plain >> (z % 64) & 1 == 1;
                     let want = code & FREE != 0 && code & bits == 0;
                     assert_eq!(bit, want, "d2 {d2} bits {bits:#x} row {t} z {z}");
+                    // Asked for its own block only, the node's bit is the same.
+                    let alone = cs.row_word(t, z / 64, 1 << (z % 64));
+                    assert_eq!(alone.plain >> (z % 64) & 1 == 1, want);
+                    assert_eq!(alone.code(z % 64), code);
                     plain += usize::from(want);
                     looked += usize::from(code & FREE != 0 && !want);
                 }
                 let past = if d2 % 64 == 0 { 0 } else { !0u64 << (d2 % 64) };
-                assert_eq!(row.plain[words - 1] & past, 0);
+                assert_eq!(row(words - 1).plain & past, 0);
+                // A word asked for its first block only: the other block's bits clear.
+                let first = cs.row_word(t, 0, 1);
+                assert_eq!(first.plain & !((1u64 << BLOCK_NODES) - 1), 0);
             }
             assert!(plain + looked > 0);
             if bits == 0x40 && d2 >= 64 {
@@ -114,13 +121,14 @@ fn row_words_match_each_nodes_code() {
             }
         }
         let none = CSpace::build(g, &Noise(None));
-        assert!(none.row(0).plain.is_empty());
+        assert_eq!(none.row_word(0, 0, u64::MAX).plain, 0);
     }
 }
 
 /// A grid inspected as it is read holds, node by node and column by column, the codes and
 /// bytes of the grid inspected whole; a read inspects the one block holding the node; the
-/// blocks around a row (and only those, within a bound when given) are inspected together.
+/// blocks around a front word (the rows next to its row, the axis-3 values next to its bits,
+/// and only those, within a bound when given) are inspected together.
 #[test]
 fn a_lazy_grid_reads_what_the_whole_inspection_holds() {
     /// `Noise` with two column bytes from the column's values.
@@ -138,7 +146,7 @@ fn a_lazy_grid_reads_what_the_whole_inspection_holds() {
             own[1] = a2 as i8 as u8;
         }
     }
-    let g = Grid::over([[-17.0, 13.0], [-9.0, 10.0], [0.0, 70.0]], 1.0);
+    let g = Grid::over([[-17.0, 13.0], [-9.0, 10.0], [0.0, 100.0]], 1.0);
     let whole = CSpace::build(g, &Own);
     let lazy = CSpace::lazy(g, Arc::new(Own));
     assert_eq!(lazy.inspected_blocks(), 0);
@@ -146,39 +154,92 @@ fn a_lazy_grid_reads_what_the_whole_inspection_holds() {
     let n = [9, 13, 5];
     assert_eq!(lazy.code(n), whole.code(n));
     assert_eq!(lazy.inspected_blocks(), 1);
+    // Only the read column block holds its blocks along axis 3; asking whether the others
+    // were inspected makes none.
+    let made = |cs: &CSpace| cs.blocks.iter().filter(|b| b.get().is_some()).count();
+    assert_eq!(made(&lazy), 1);
+    assert!(
+        (0..lazy.block_count())
+            .filter(|&b| lazy.inspected(b))
+            .count()
+            == 1
+    );
+    assert_eq!(made(&lazy), 1);
     assert_eq!(
         lazy.column(n),
         &[(9 - 17) as i8 as u8, (13 - 9) as i8 as u8]
     );
-    // Around a row: the blocks holding the 3 x 3 rows about it.
+    // Around a front word: the blocks holding the 3 x 3 rows about it, at the axis-3 values
+    // next to its bits.
     let [d0, d1, d2] = g.dims;
-    let around = |cs: &CSpace, t: usize, bound| {
-        cs.inspect_around([t, t].into_iter(), bound);
+    let around = |cs: &CSpace, t: usize, j: usize, bits: u64, bound| {
+        cs.inspect_around([(t, j, bits), (t, j, bits)].into_iter(), bound);
         cs.inspected_blocks()
     };
-    let blocks_of = |rows: &[(i64, i64)]| {
-        let mut b: Vec<(i64, i64)> = rows
+    let blocks_of = |rows: &[(i64, i64)], z: std::ops::RangeInclusive<i64>| {
+        let mut b: Vec<(i64, i64, i64)> = rows
             .iter()
             .filter(|&&(i, j)| i >= 0 && j >= 0 && i < d0 as i64 && j < d1 as i64)
-            .map(|&(i, j)| (i / BLOCK_COLUMNS[0] as i64, j / BLOCK_COLUMNS[1] as i64))
+            .flat_map(|&(i, j)| {
+                z.clone()
+                    .filter(|&z| z >= 0 && z < d2 as i64)
+                    .map(move |z| (i, j, z))
+            })
+            .map(|(i, j, z)| {
+                let [c0, c1] = BLOCK_COLUMNS.map(|c| c as i64);
+                (i / c0, j / c1, z / BLOCK_NODES as i64)
+            })
             .collect();
         b.sort_unstable();
         b.dedup();
         b.len()
     };
     let fresh = CSpace::lazy(g, Arc::new(Own));
-    // A row at a block's corner (4, 4): its neighbours reach four blocks.
+    // A row at a block's corner (4, 4): its neighbours reach four blocks' columns; one node
+    // inside a block along axis 3 (bit 5 of word 0) only that block's values.
     let corner = |i: i64, j: i64| [-1, 0, 1].map(|a| [-1, 0, 1].map(move |b| (i + a, j + b)));
     let rows: Vec<(i64, i64)> = corner(4, 4).into_iter().flatten().collect();
-    assert_eq!(around(&fresh, 4 * d1 + 4, None), blocks_of(&rows));
-    assert_eq!(blocks_of(&rows), 4);
-    // Bounded to the row's own column band: only its own block.
+    assert_eq!(
+        around(&fresh, 4 * d1 + 4, 0, 1 << 5, None),
+        blocks_of(&rows, 4..=6)
+    );
+    assert_eq!(blocks_of(&rows, 4..=6), 4);
+    // Nodes at the edge of an axis-3 block (bits 31 and 40 of word 1: values 95 and 104) reach
+    // the next block along axis 3 (the grid ends at 100).
     let fresh = CSpace::lazy(g, Arc::new(Own));
-    assert_eq!(around(&fresh, 4 * d1 + 4, Some(([5, 5], 1))), 1);
+    let bits = 1 << 31 | 1 << 40;
+    assert_eq!(
+        around(&fresh, 4 * d1 + 4, 1, bits, None),
+        blocks_of(&rows, 94..=105)
+    );
+    assert_eq!(blocks_of(&rows, 94..=105), 8);
+    // Bounded to the row's own column band and axis-3 values: only its own block.
+    let fresh = CSpace::lazy(g, Arc::new(Own));
+    assert_eq!(
+        around(&fresh, 4 * d1 + 4, 0, 1 << 5, Some(([5, 5, 5], 1))),
+        1
+    );
+    // Two front words of one row far apart along axis 3 (values 0..2 and 93..95): the blocks
+    // between them are inspected with them (a column block's wanted blocks together, from the
+    // first to the last), every code the whole grid's.
+    let fresh = CSpace::lazy(g, Arc::new(Own));
+    let words = [(4 * d1 + 4, 0, 1 << 1), (4 * d1 + 4, 1, 1 << 30)];
+    fresh.inspect_around(words.into_iter(), None);
+    assert_eq!(fresh.inspected_blocks(), blocks_of(&rows, 0..=95));
+    assert_eq!(blocks_of(&rows, 0..=95), 12);
+    for i in 0..g.len() {
+        let m = g.node(i);
+        let (cb, _) = fresh.block_of(m[0] as usize, m[1] as usize);
+        if fresh.inspected_at(cb, m[2] as usize / BLOCK_NODES) {
+            assert_eq!(fresh.code_index(i), whole.code_index(i), "{m:?}");
+            assert_eq!(fresh.column(m), whole.column(m), "{m:?}");
+        }
+    }
+    assert_eq!(fresh.inspected_blocks(), 12);
     // On the grid's edge.
     let rows: Vec<(i64, i64)> = corner(0, 0).into_iter().flatten().collect();
     let fresh = CSpace::lazy(g, Arc::new(Own));
-    assert_eq!(around(&fresh, 0, None), blocks_of(&rows));
+    assert_eq!(around(&fresh, 0, 0, 1, None), blocks_of(&rows, -1..=1));
     // Every node in a scattered order: the same codes and bytes.
     let mut next = crate::plan::search::testing::xorshift(0x9e37_79b9_7f4a_7c15);
     for _ in 0..4000 {
@@ -186,8 +247,9 @@ fn a_lazy_grid_reads_what_the_whole_inspection_holds() {
         let m = g.node(i);
         assert_eq!(lazy.code_index(i), whole.code_index(i), "{m:?}");
         assert_eq!(lazy.column(m), whole.column(m), "{m:?}");
-        let t = i / d2;
-        assert_eq!(lazy.row(t).plain, whole.row(t).plain);
+        let (t, z) = (i / d2, i % d2);
+        let word = |cs: &CSpace| cs.row_word(t, z / 64, u64::MAX).plain;
+        assert_eq!(word(&lazy), word(&whole));
     }
     assert_eq!(lazy.free_count(), whole.free_count());
     assert_eq!(lazy.inspected_blocks(), lazy.block_count());

@@ -33,6 +33,7 @@
 
 pub mod cspace;
 pub mod direct;
+mod lattice;
 pub mod leg;
 pub mod merge;
 pub mod motion;
@@ -264,8 +265,31 @@ impl cspace::Inspector for GridCheck {
             width,
             code,
             column,
-            |a2, codes, own| self.inspect_column_in(a2, codes, own, &slice, &mut memo),
+            |a2, codes, own| {
+                self.inspect_column_in(a2, codes, own, &slice, &mut memo, 0..a3_deg.len())
+            },
         );
+    }
+    /// The slice's work once, then each column's runs that hold nodes of `part`
+    /// (`collision::column`), the part copied out.
+    fn inspect_slice_part(
+        &self,
+        a1_deg: f64,
+        a2_deg: &[f64],
+        a3_deg: &[f64],
+        part: std::ops::Range<usize>,
+        code: &mut [u8],
+        column: &mut [u8],
+    ) {
+        let slice = self.slice(a1_deg, a3_deg);
+        let mut memo = self.fixed_memo();
+        let width = GridCheck::column_bytes(self);
+        let mut whole = vec![0u8; a3_deg.len()];
+        let len = part.len();
+        cspace::each_column(a2_deg, len, width, code, column, |a2, codes, own| {
+            self.inspect_column_in(a2, &mut whole, own, &slice, &mut memo, part.clone());
+            codes.copy_from_slice(&whole[part.clone()]);
+        });
     }
 }
 

@@ -192,8 +192,10 @@ impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
             .map(|(to, steps)| (to, steps - i64::from(next - 1)));
         // The blocks this level reads, inspected together (on all cores when there are several).
         cs.inspect_around(
-            self.front.iter().map(|&(w, _)| w / words),
-            keep.map(|(to, r)| ([to[0], to[1]], r)),
+            self.front
+                .iter()
+                .map(|&(w, bits)| (w / words, w % words, bits)),
+            keep,
         );
         let pruned = &mut self.pruned;
         let ended = self.reach.drain(first, last, |t, j, w, taken| {
@@ -220,17 +222,17 @@ impl<'a, G: Graph + ?Sized, const K: usize> RowWave<'a, G, K> {
                 c &= upto_end;
             }
             decided[w] |= c;
-            let row = cs.row(t);
+            let row = cs.row_word(t, j, c);
             // The usable candidates: the plain ones at once, the others looked at.
             let (mut numbered, mut look) = if plain {
-                (c & row.plain[j], c & !row.plain[j])
+                (c & row.plain, c & !row.plain)
             } else {
                 (0, c)
             };
             while look != 0 {
                 let b = look.trailing_zeros() as usize;
                 look &= look - 1;
-                let code = row.code[j * 64 + b];
+                let code = row.code(b);
                 if code & FREE != 0
                     && graph.node_ok_coded(
                         [(t / d1) as i32, (t % d1) as i32, (j * 64 + b) as i32],
