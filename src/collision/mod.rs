@@ -84,6 +84,7 @@ mod proof;
 mod proof_tests;
 #[cfg(test)]
 mod robots_tests;
+mod slots;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]

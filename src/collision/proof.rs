@@ -64,6 +64,7 @@
 //!
 //! [`Robot::urdf_joints_deg`]: crate::robot::Robot::urdf_joints_deg
 
+use super::slots::Slots;
 use super::{Blocked, CollisionModel, Part, Poses};
 use crate::geometry::{decide, decide2, rim_capsules_lower_bound, Aabb, Measured, Solid};
 use std::ops::Range;
@@ -272,20 +273,20 @@ impl CollisionModel {
             }
         }
         let mut result = f64::INFINITY;
-        // The distances measured along one pair (its ends first); the intervals name theirs.
-        let mut seen: Vec<Measured> = Vec::new();
+        // The distances measured along one pair that the intervals on the stack name.
+        let mut seen: Slots<Measured> = Slots::new();
         for (p, &m) in speeds.iter().enumerate() {
             for (k, bx) in self.part_boxes(p) {
                 seen.clear();
-                seen.extend([ends[p].0[k], ends[p].1[k]]);
+                let (e0, e1) = (seen.put(ends[p].0[k], 1), seen.put(ends[p].1[k], 1));
                 let mut evals = 0usize;
-                let mut stack = vec![(0.0f64, 1.0f64, 0usize, 1usize)];
+                let mut stack = vec![(0.0f64, 1.0f64, e0, e1)];
                 while let Some((t0, t1, i0, i1)) = stack.pop() {
                     let reach = m * (t1 - t0);
                     // Prune on the raw bound (so the slack cannot stall the search), record the
                     // slack-lowered one. Every decision is the one the distances themselves
                     // give (`geometry::decide2`).
-                    let (d0, d1) = two_of(&mut seen, i0, i1);
+                    let (d0, d1) = seen.two(i0, i1);
                     let prune = evals >= MAX_EVALS_PER_PAIR
                         || decide2(d0, d1, bx, |x, y| {
                             (0.5 * (x + y - reach)).min(x).min(y) >= upper.0 - tol
@@ -297,6 +298,8 @@ impl CollisionModel {
                             let (x, y) = (d0.value(bx), d1.value(bx));
                             result = result.min(interval_bound(x, y, reach));
                         }
+                        seen.release(i0);
+                        seen.release(i1);
                         continue;
                     }
                     let tm = 0.5 * (t0 + t1);
@@ -305,8 +308,7 @@ impl CollisionModel {
                     if decide(&mut dm, bx, |x| x < upper.0) {
                         upper = (dm.value(bx), Some((p, k)));
                     }
-                    seen.push(dm);
-                    let im = seen.len() - 1;
+                    let im = seen.put(dm, 2);
                     stack.push((tm, t1, im, i1));
                     stack.push((t0, tm, i0, im));
                 }
@@ -439,17 +441,18 @@ impl CollisionModel {
         // (`geometry::decide`); a distance reported is exact.
         let b = &self.obstacles[k].aabb;
         let fails = |d: f64| lowered(d) < c;
-        let mut seen = vec![e0, e1];
-        if decide(&mut seen[0], b, fails) {
+        let mut seen = Slots::new();
+        let (e0, e1) = (seen.put(e0, 1), seen.put(e1, 1));
+        if decide(seen.get(e0), b, fails) {
             return PairVerdict::Fails {
                 t: 0.0,
-                d: seen[0].value(b),
+                d: seen.get(e0).value(b),
             };
         }
         // The earliest witness found so far.
         let mut best: Option<(f64, f64)> = None;
-        if decide(&mut seen[1], b, fails) {
-            let d = seen[1].value(b);
+        if decide(seen.get(e1), b, fails) {
+            let d = seen.get(e1).value(b);
             if !earliest {
                 return PairVerdict::Fails { t: 1.0, d };
             }
@@ -458,18 +461,23 @@ impl CollisionModel {
         // The stack holds (t0, t1, i0, i1), the ends' distances in `seen`; the left half is
         // pushed last, popped first.
         let mut stack = [(0.0f64, 0.0f64, 0usize, 0usize); 64];
-        stack[0] = (0.0, 1.0, 0, 1);
+        stack[0] = (0.0, 1.0, e0, e1);
         let mut top = 1usize;
         let mut evals = 0usize;
         while top > 0 {
             top -= 1;
             let (t0, t1, i0, i1) = stack[top];
             if best.is_some_and(|(tb, _)| t0 >= tb) {
-                continue; // right of a witness
+                // Right of a witness.
+                seen.release(i0);
+                seen.release(i1);
+                continue;
             }
             let reach = m * (t1 - t0);
-            let (d0, d1) = two_of(&mut seen, i0, i1);
+            let (d0, d1) = seen.two(i0, i1);
             if decide2(d0, d1, b, |x, y| interval_bound(x, y, reach) >= c) {
+                seen.release(i0);
+                seen.release(i1);
                 continue;
             }
             let tm = 0.5 * (t0 + t1);
@@ -489,18 +497,20 @@ impl CollisionModel {
             let mut dm = self.pair_measured_at(p, k, from, to, tm);
             evals += 1;
             let failing = decide(&mut dm, b, fails);
-            seen.push(dm);
-            let im = seen.len() - 1;
             if failing {
-                let d = seen[im].value(b);
+                let d = dm.value(b);
                 if !earliest {
                     return PairVerdict::Fails { t: tm, d };
                 }
                 best = Some((tm, d));
+                // Only the left half stays: it names the start and the midpoint.
+                seen.release(i1);
+                let im = seen.put(dm, 1);
                 stack[top] = (t0, tm, i0, im);
                 top += 1;
                 continue;
             }
+            let im = seen.put(dm, 2);
             stack[top] = (tm, t1, im, i1);
             stack[top + 1] = (t0, tm, i0, im);
             top += 2;
@@ -521,18 +531,6 @@ pub(super) fn tight_lower_bound(s: &Solid, b: &Aabb, capsule: f64) -> f64 {
     match s {
         Solid::Cylinder(c) => capsule.max(rim_capsules_lower_bound(c, b)),
         _ => capsule,
-    }
-}
-
-/// Two different elements of `v`, both mutable (`i != j`).
-#[inline]
-fn two_of<T>(v: &mut [T], i: usize, j: usize) -> (&mut T, &mut T) {
-    if i < j {
-        let (a, b) = v.split_at_mut(j);
-        (&mut a[i], &mut b[0])
-    } else {
-        let (a, b) = v.split_at_mut(i);
-        (&mut b[0], &mut a[j])
     }
 }
 

@@ -192,8 +192,12 @@ impl<G: Graph + ?Sized> Graph for Every<'_, G> {
     }
 }
 
-/// A graph's wave steps, each asked once over the tries of one bounded wave; the rest is the
-/// graph's.
+/// The most steps a bounded wave remembers (about 40 bytes each with the map's own share: some
+/// 20 MB), so a leg's memory does not grow with the grid.
+const REMEMBERED_STEPS: usize = 1 << 19;
+
+/// A graph's wave steps, each asked once over the tries of one bounded wave (up to
+/// [`REMEMBERED_STEPS`]); the rest is the graph's.
 struct Remembered<'a, G: ?Sized> {
     graph: &'a G,
     cs: &'a CSpace,
@@ -224,7 +228,11 @@ impl<G: Graph + ?Sized> Graph for Remembered<'_, G> {
         }
         let answer = self.graph.wave_step_ok(a, b);
         if let Ok(mut s) = self.steps.lock() {
-            s.insert(key, answer);
+            // Past the cap a step is asked again on a later try: the same answer, at the cost
+            // of its proof, and the memory stays bounded whatever the grid.
+            if s.len() < REMEMBERED_STEPS {
+                s.insert(key, answer);
+            }
         }
         answer
     }
