@@ -150,7 +150,8 @@ impl CollisionModel {
     /// Every (part, box) pair of `parts` certified along the move at clearance `c`. A pair whose cheap lower
     /// bounds at the ends already prove it (the interval bound of the module doc on lower
     /// bounds: the distance is at least a lower bound) costs no exact distance; the others go
-    /// through the bisection on exact distances, which gives the same verdict it always gave.
+    /// through the bisection on distances known as far as each decision needs (`Measured`),
+    /// which gives the verdict the exact distances give.
     fn parts_are_safe(&self, from: &[f64; 6], to: &[f64; 6], parts: Range<usize>, c: f64) -> bool {
         if parts.is_empty() {
             return true;
@@ -275,12 +276,13 @@ impl CollisionModel {
         let mut result = f64::INFINITY;
         // The distances measured along one pair that the intervals on the stack name.
         let mut seen: Slots<Measured> = Slots::new();
+        let mut stack = Vec::new();
         for (p, &m) in speeds.iter().enumerate() {
             for (k, bx) in self.part_boxes(p) {
                 seen.clear();
                 let (e0, e1) = (seen.put(ends[p].0[k], 1), seen.put(ends[p].1[k], 1));
                 let mut evals = 0usize;
-                let mut stack = vec![(0.0f64, 1.0f64, e0, e1)];
+                stack.push((0.0f64, 1.0f64, e0, e1));
                 while let Some((t0, t1, i0, i1)) = stack.pop() {
                     let reach = m * (t1 - t0);
                     // Prune on the raw bound (so the slack cannot stall the search), record the

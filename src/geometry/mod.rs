@@ -366,25 +366,11 @@ fn distance_cylinder_aabb_exact_in_band(c: &Cylinder, bx: &Aabb, lo: f64, hi: f6
 /// always within `[distance_capsule_aabb, distance_inner_capsule_aabb]`.
 #[inline]
 pub fn distance_cylinder_aabb(c: &Cylinder, bx: &Aabb) -> f64 {
-    let (lo, hi) = bounds(c, bx);
-    if hi - lo <= BOUNDS_AGREE_TOL {
+    let (lo, hi) = distance_cylinder_aabb_bounds(c, bx);
+    if lo == hi {
         return lo;
     }
-    distance_in_band(c, bx, lo, hi)
-}
-
-/// The distance in the band `lo < hi` of the capsule bounds: the lower end of the alternating
-/// projections' bracket (`certify.rs`) when it is within [`BRACKET_TOL_REL`]` (1 + d)` of its
-/// upper end, else parry's GJK clamped into the bracket.
-#[inline]
-fn distance_in_band(c: &Cylinder, bx: &Aabb, lo: f64, hi: f64) -> f64 {
-    let Some(b) = bracket_by_projection(c, bx, lo, hi, BRACKET_TOL_REL) else {
-        return distance_cylinder_aabb_exact_in_band(c, bx, lo, hi);
-    };
-    if b.upper - b.lower <= BRACKET_TOL_REL * (1.0 + b.upper) {
-        return b.lower;
-    }
-    distance_cylinder_aabb_exact_in_band(c, bx, b.lower, b.upper)
+    distance_cylinder_aabb_in_band(c, bx, lo, hi)
 }
 
 /// A lower bound of the cylinder–box distance, mm, good where a flat cap faces the box (where
@@ -449,10 +435,16 @@ pub fn distance_cylinder_aabb_narrowed(
 }
 
 /// [`distance_cylinder_aabb`] where its capsule bounds `lo < hi` are known (from
-/// [`distance_cylinder_aabb_bounds`]): the same value, without measuring them again.
+/// [`distance_cylinder_aabb_bounds`]): the same value, without measuring them again. The lower
+/// end of the alternating projections' bracket (`certify.rs`) when it is within
+/// [`BRACKET_TOL_REL`]` (1 + d)` of its upper end, else parry's GJK clamped into the bracket.
 #[inline]
 pub fn distance_cylinder_aabb_in_band(c: &Cylinder, bx: &Aabb, lo: f64, hi: f64) -> f64 {
-    distance_in_band(c, bx, lo, hi)
+    let (lower, upper) = distance_cylinder_aabb_narrowed(c, bx, lo, hi, BRACKET_TOL_REL);
+    if lower == upper {
+        return lower;
+    }
+    distance_cylinder_aabb_exact_in_band(c, bx, lower, upper)
 }
 
 /// Shared by the tests of this crate's geometry and collision modules.

@@ -310,11 +310,7 @@ impl CSpace {
     /// column's parts share is done once), then cut into the blocks, each kept unless another
     /// thread kept it first (the same codes either way).
     fn inspect_run(&self, cb: usize, b2s: std::ops::Range<usize>) {
-        let inspector: &dyn Inspector = match &self.inspector {
-            Some(inspector) => &**inspector,
-            // Never: a grid without an inspector had every block inspected when made.
-            None => &Blocked,
-        };
+        let inspector = self.inspector();
         let n2 = self.blocks_along[2];
         let [r0, r1, first] = self.block_range(cb * n2 + b2s.start);
         let z = first.start..self.block_range(cb * n2 + b2s.end - 1)[2].end;
@@ -427,11 +423,16 @@ impl CSpace {
     #[inline(never)]
     fn fill(&self, cb: usize, b2: usize) -> &Block {
         let b = cb * self.blocks_along[2] + b2;
-        self.along(cb)[b2].get_or_init(|| match &self.inspector {
-            Some(inspector) => self.inspect_block(b, &**inspector),
-            // Never: a grid without an inspector had every block inspected when made.
-            None => self.inspect_block(b, &Blocked),
-        })
+        self.along(cb)[b2].get_or_init(|| self.inspect_block(b, self.inspector()))
+    }
+
+    /// The grid's inspector (never `Blocked`: a grid without an inspector had every block
+    /// inspected when made).
+    fn inspector(&self) -> &dyn Inspector {
+        match &self.inspector {
+            Some(inspector) => &**inspector,
+            None => &Blocked,
+        }
     }
 
     /// The column block of column `(i0, i1)`, and the column's place in its blocks.
@@ -446,12 +447,11 @@ impl CSpace {
         )
     }
 
-    /// The codes of column `c` (its place in its blocks) in block `b2` of column block `cb`.
+    /// The codes of column `c` (its place in its blocks) in `block`, block `b2` along axis 3.
     #[inline]
-    fn codes_of(&self, cb: usize, b2: usize, c: usize) -> &[u8] {
-        let z = b2 * BLOCK_NODES;
-        let len = (self.grid.dims[2] - z).min(BLOCK_NODES);
-        &self.block(cb, b2).code[c * len..][..len]
+    fn codes_of<'a>(&self, block: &'a Block, b2: usize, c: usize) -> &'a [u8] {
+        let len = (self.grid.dims[2] - b2 * BLOCK_NODES).min(BLOCK_NODES);
+        &block.code[c * len..][..len]
     }
 
     /// Word `j` of row `t` (axes 1 and 2 at `t / dims[1]`, `t % dims[1]`) for the bits `want`:
@@ -473,8 +473,9 @@ impl CSpace {
             if want & (HALF << (k * BLOCK_NODES)) == 0 || b2 >= self.blocks_along[2] {
                 continue;
             }
-            *code = self.codes_of(cb, b2, c);
-            row.plain |= self.block(cb, b2).plain.get(c).copied().unwrap_or(0);
+            let block = self.block(cb, b2);
+            *code = self.codes_of(block, b2, c);
+            row.plain |= block.plain.get(c).copied().unwrap_or(0);
         }
         row
     }
@@ -620,7 +621,8 @@ impl CSpace {
     pub fn code_in(&self, n: Node) -> u8 {
         let (cb, c) = self.block_of(n[0] as usize, n[1] as usize);
         let z = n[2] as usize;
-        self.codes_of(cb, z / BLOCK_NODES, c)[z % BLOCK_NODES]
+        let b2 = z / BLOCK_NODES;
+        self.codes_of(self.block(cb, b2), b2, c)[z % BLOCK_NODES]
     }
 
     /// The code of the node with linear index `i`.

@@ -374,10 +374,7 @@ pub fn scene(
                 kind: m.kind.name().to_string(),
                 instruction: written
                     .get(i + 1)
-                    .map(|w| match &w.circle_point {
-                        Some(c) => format!("{} {c}, {}", w.instruction, w.to),
-                        None => format!("{} {}", w.instruction, w.to),
-                    })
+                    .map(|w| format!("{} {}", w.instruction, w.target()))
                     .unwrap_or_default(),
             })
             .collect(),

@@ -782,20 +782,20 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
     let target_names = module_target_names(program)?;
     check_name_space(program, &target_names)?;
 
-    let wobj_arg_of = |w: Option<usize>| match w.and_then(|i| program.wobjs.get(i)) {
+    let wobj_arg_of = |w: Option<&WobjData>| match w {
         Some(w) => format!("\\WObj:={}", w.name),
         None => String::new(),
     };
     // The one work object's argument, for a template that writes one for every move.
     let wobj_arg = match program.wobjs.as_slice() {
-        [_] => wobj_arg_of(Some(0)),
+        [w] => wobj_arg_of(Some(w)),
         _ => String::new(),
     };
     let written = moves::written_moves(program, &target_names)?;
     let mut outputs: BTreeSet<String> = BTreeSet::new();
     let mut targets = Vec::with_capacity(program.targets.len());
     let mut moves = Vec::with_capacity(program.targets.len());
-    for (target, name) in program.targets.iter().zip(target_names) {
+    for ((target, name), w) in program.targets.iter().zip(target_names).zip(&written) {
         let mut axes = Vec::with_capacity(6);
         for (k, &value) in target.axes_deg.iter().enumerate() {
             let value = finite(format!("axis {} of target `{name}`", k + 1), value)?;
@@ -821,21 +821,19 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             }
             _ => None,
         };
-        let w = &written[moves.len()];
         // The digital outputs the routine's own SetDO leave at 1 before this move and after
         // its actions (a template tells a seam by them, e.g. the weld signal on).
         let outputs_on = outputs.clone();
-        for a in &w.actions {
-            if let (Some(signal), Some(value)) = (&a.signal, a.value) {
-                if a.kind == "set_do" {
-                    match value {
-                        1 => outputs.insert(signal.clone()),
-                        _ => outputs.remove(signal),
-                    };
-                }
+        for a in &target.actions {
+            if let Action::SetDo { signal, value } = a {
+                match value {
+                    true => outputs.insert(signal.clone()),
+                    false => outputs.remove(signal),
+                };
             }
         }
-        let wobj_arg = wobj_arg_of(target.wobj);
+        let wobj = target.wobj.and_then(|i| program.wobjs.get(i));
+        let wobj_arg = wobj_arg_of(wobj);
         moves.push(MoveCtx {
             args: format!(
                 "{}, {}, {}, {}{wobj_arg}",
@@ -847,10 +845,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             instruction: w.instruction,
             kind: w.kind,
             actions: w.actions.clone(),
-            target: match &w.circle_point {
-                Some(c) => format!("{c}, {}", w.to),
-                None => w.to.clone(),
-            },
+            target: w.target(),
             to: w.to.clone(),
             point: w.point.clone(),
             robtarget: w.robtarget.clone(),
@@ -862,9 +857,7 @@ pub fn render_with(program: &Program, template: &ModuleTemplate) -> Result<Strin
             speed: target.speed.clone(),
             zone: target.zone.clone(),
             tool: program.tool.clone(),
-            wobj: (target.wobj)
-                .and_then(|i| program.wobjs.get(i))
-                .map(|w| w.name.clone()),
+            wobj: wobj.map(|w| w.name.clone()),
             wobj_arg,
         });
         // A revisit moves to its point's data and declares none.

@@ -68,10 +68,17 @@ impl WrittenMove {
     /// The instruction's arguments before the speed: `<ToPoint>`, `<CirPoint>, <ToPoint>` for
     /// `MoveC`, with `\NoEOffs` after a `MoveAbsJ`'s jointtarget.
     pub fn points(&self) -> String {
-        match (&self.circle_point, self.instruction) {
-            (Some(c), _) => format!("{c}, {}", self.to),
-            (None, "MoveAbsJ") => format!("{}\\NoEOffs", self.to),
-            (None, _) => self.to.clone(),
+        match self.instruction {
+            "MoveAbsJ" => format!("{}\\NoEOffs", self.target()),
+            _ => self.target(),
+        }
+    }
+
+    /// The move's targets: `<ToPoint>`, or `<CirPoint>, <ToPoint>` for `MoveC`.
+    pub fn target(&self) -> String {
+        match &self.circle_point {
+            Some(c) => format!("{c}, {}", self.to),
+            None => self.to.clone(),
         }
     }
 }
@@ -133,10 +140,9 @@ pub fn written_moves(program: &Program, names: &[String]) -> Result<Vec<WrittenM
             | TargetKind::Retract { point: p } => Some(p.clone()),
             TargetKind::Via { .. } => None,
         };
-        let mut actions = Vec::with_capacity(target.actions.len());
-        for a in &target.actions {
-            actions.push(written_action(a)?);
-        }
+        let actions = (target.actions.iter())
+            .map(written_action)
+            .collect::<Result<Vec<_>, _>>()?;
         moves.push(WrittenMove {
             instruction,
             kind,
